@@ -1,0 +1,221 @@
+#pragma once
+// Registering C++ classes and their methods with Godot's ClassDB through the C interface.
+// Methods are bound from member-function pointers; both the variant call (GDScript's dynamic calls)
+// and the ptrcall (typed calls) are generated from the signature.
+#include "godot_api.h"
+
+#include <initializer_list>
+#include <tuple>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace gdx {
+
+// Long-lived StringNames/Strings handed to the engine; all destroyed by release_api().
+const StringName *intern_name(const char *p_name);
+const String *intern_string(const char *p_text);
+
+// --- How each argument/return type crosses the interface ----------------------------------------
+
+template <class T>
+struct Traits;
+
+template <GDExtensionVariantType TYPE, class Storage, GDExtensionClassMethodArgumentMetadata META = GDEXTENSION_METHOD_ARGUMENT_METADATA_NONE>
+struct PodTraits {
+	static constexpr GDExtensionVariantType type = TYPE;
+	static constexpr GDExtensionClassMethodArgumentMetadata metadata = META;
+	using StorageType = Storage;
+};
+
+template <>
+struct Traits<bool> : PodTraits<GDEXTENSION_VARIANT_TYPE_BOOL, GDExtensionBool> {
+	static bool get(const GDExtensionBool &p_s) { return p_s != 0; }
+	static GDExtensionBool put(bool p_v) { return p_v ? 1 : 0; }
+};
+template <>
+struct Traits<int64_t> : PodTraits<GDEXTENSION_VARIANT_TYPE_INT, int64_t, GDEXTENSION_METHOD_ARGUMENT_METADATA_INT_IS_INT64> {
+	static int64_t get(const int64_t &p_s) { return p_s; }
+	static int64_t put(int64_t p_v) { return p_v; }
+};
+template <>
+struct Traits<double> : PodTraits<GDEXTENSION_VARIANT_TYPE_FLOAT, double, GDEXTENSION_METHOD_ARGUMENT_METADATA_REAL_IS_DOUBLE> {
+	static double get(const double &p_s) { return p_s; }
+	static double put(double p_v) { return p_v; }
+};
+
+template <class T, GDExtensionVariantType TYPE>
+struct SameTraits : PodTraits<TYPE, T> {
+	static const T &get(const T &p_s) { return p_s; }
+	static const T &put(const T &p_v) { return p_v; }
+};
+template <>
+struct Traits<Vector2> : SameTraits<Vector2, GDEXTENSION_VARIANT_TYPE_VECTOR2> {};
+template <>
+struct Traits<Vector3> : SameTraits<Vector3, GDEXTENSION_VARIANT_TYPE_VECTOR3> {};
+template <>
+struct Traits<AABB> : SameTraits<AABB, GDEXTENSION_VARIANT_TYPE_AABB> {};
+template <>
+struct Traits<Rid> : SameTraits<Rid, GDEXTENSION_VARIANT_TYPE_RID> {};
+template <>
+struct Traits<String> : SameTraits<String, GDEXTENSION_VARIANT_TYPE_STRING> {};
+template <>
+struct Traits<PackedByteArray> : SameTraits<PackedByteArray, GDEXTENSION_VARIANT_TYPE_PACKED_BYTE_ARRAY> {};
+template <>
+struct Traits<PackedInt32Array> : SameTraits<PackedInt32Array, GDEXTENSION_VARIANT_TYPE_PACKED_INT32_ARRAY> {};
+template <>
+struct Traits<PackedFloat32Array> : SameTraits<PackedFloat32Array, GDEXTENSION_VARIANT_TYPE_PACKED_FLOAT32_ARRAY> {};
+
+template <class T>
+using TraitsOf = Traits<std::remove_cv_t<std::remove_reference_t<T>>>;
+
+// Reads a Variant argument into r_storage, converting where Godot would (int → float); false when
+// the argument cannot be converted.
+bool variant_to(GDExtensionVariantType p_type, GDExtensionConstVariantPtr p_variant, GDExtensionTypePtr r_storage);
+void variant_from(GDExtensionVariantType p_type, GDExtensionVariantPtr r_variant, GDExtensionConstTypePtr p_value);
+
+// --- Method binds --------------------------------------------------------------------------------
+
+class MethodBind {
+public:
+	virtual ~MethodBind() = default;
+	virtual void call(void *p_instance, const GDExtensionConstVariantPtr *p_args, GDExtensionInt p_count,
+			GDExtensionVariantPtr r_return, GDExtensionCallError *r_error) = 0;
+	virtual void ptrcall(void *p_instance, const GDExtensionConstTypePtr *p_args, GDExtensionTypePtr r_return) = 0;
+};
+
+template <class F>
+struct FunctionTraits;
+template <class C, class R, class... A>
+struct FunctionTraits<R (C::*)(A...)> {
+	using Class = C;
+	using Return = R;
+	using Args = std::tuple<A...>;
+	static constexpr bool is_const = false;
+};
+template <class C, class R, class... A>
+struct FunctionTraits<R (C::*)(A...) const> : FunctionTraits<R (C::*)(A...)> {
+	static constexpr bool is_const = true;
+};
+
+template <class F>
+class MethodBindT : public MethodBind {
+	using FT = FunctionTraits<F>;
+	using C = typename FT::Class;
+	using R = typename FT::Return;
+	using Args = typename FT::Args;
+	static constexpr size_t N = std::tuple_size_v<Args>;
+	template <size_t I>
+	using ArgTraits = TraitsOf<std::tuple_element_t<I, Args>>;
+
+public:
+	explicit MethodBindT(F p_function) :
+			_function(p_function) {}
+
+	void call(void *p_instance, const GDExtensionConstVariantPtr *p_args, GDExtensionInt p_count,
+			GDExtensionVariantPtr r_return, GDExtensionCallError *r_error) override {
+		if (p_count != static_cast<GDExtensionInt>(N)) {
+			r_error->error = p_count < static_cast<GDExtensionInt>(N) ? GDEXTENSION_CALL_ERROR_TOO_FEW_ARGUMENTS : GDEXTENSION_CALL_ERROR_TOO_MANY_ARGUMENTS;
+			r_error->expected = static_cast<int32_t>(N);
+			return;
+		}
+		call_variant(static_cast<C *>(p_instance), p_args, r_return, r_error, std::make_index_sequence<N>{});
+	}
+
+	void ptrcall(void *p_instance, const GDExtensionConstTypePtr *p_args, GDExtensionTypePtr r_return) override {
+		call_ptr(static_cast<C *>(p_instance), p_args, r_return, std::make_index_sequence<N>{});
+	}
+
+private:
+	template <size_t... I>
+	void call_variant(C *p_self, const GDExtensionConstVariantPtr *p_args, GDExtensionVariantPtr r_return,
+			GDExtensionCallError *r_error, std::index_sequence<I...>) {
+		std::tuple<typename ArgTraits<I>::StorageType...> storage;
+		int32_t failed = -1;
+		const auto read = [&](size_t p_index, GDExtensionVariantType p_type, GDExtensionTypePtr r_slot) {
+			if (failed < 0 && !variant_to(p_type, p_args[p_index], r_slot)) {
+				failed = static_cast<int32_t>(p_index);
+				r_error->expected = p_type;
+			}
+		};
+		(read(I, ArgTraits<I>::type, &std::get<I>(storage)), ...);
+		(void)read; // unused for methods without arguments
+		if (failed >= 0) {
+			r_error->error = GDEXTENSION_CALL_ERROR_INVALID_ARGUMENT;
+			r_error->argument = failed;
+			return;
+		}
+		if constexpr (std::is_void_v<R>) {
+			(p_self->*_function)(ArgTraits<I>::get(std::get<I>(storage))...);
+		} else {
+			using RT = TraitsOf<R>;
+			const typename RT::StorageType result = RT::put((p_self->*_function)(ArgTraits<I>::get(std::get<I>(storage))...));
+			variant_from(RT::type, r_return, &result);
+		}
+	}
+
+	template <size_t... I>
+	void call_ptr(C *p_self, const GDExtensionConstTypePtr *p_args, GDExtensionTypePtr r_return, std::index_sequence<I...>) {
+		if constexpr (std::is_void_v<R>) {
+			(p_self->*_function)(ArgTraits<I>::get(*static_cast<const typename ArgTraits<I>::StorageType *>(p_args[I]))...);
+		} else {
+			using RT = TraitsOf<R>;
+			// The return slot is already constructed: assign into it.
+			*static_cast<typename RT::StorageType *>(r_return) =
+					RT::put((p_self->*_function)(ArgTraits<I>::get(*static_cast<const typename ArgTraits<I>::StorageType *>(p_args[I]))...));
+		}
+	}
+
+	F _function;
+};
+
+// --- Class registration ---------------------------------------------------------------------------
+
+struct ArgumentInfo {
+	GDExtensionVariantType type;
+	GDExtensionClassMethodArgumentMetadata metadata;
+};
+
+void register_method(const char *p_class, const char *p_name, MethodBind *p_bind, bool p_const,
+		bool p_has_return, ArgumentInfo p_return, const std::vector<ArgumentInfo> &p_args,
+		std::initializer_list<const char *> p_arg_names);
+
+template <class Args, size_t... I>
+std::vector<ArgumentInfo> argument_infos(std::index_sequence<I...>) {
+	return { ArgumentInfo{ TraitsOf<std::tuple_element_t<I, Args>>::type, TraitsOf<std::tuple_element_t<I, Args>>::metadata }... };
+}
+
+template <class F>
+void bind_method(const char *p_class, const char *p_name, F p_function, std::initializer_list<const char *> p_arg_names = {}) {
+	using FT = FunctionTraits<F>;
+	using R = typename FT::Return;
+	const std::vector<ArgumentInfo> args = argument_infos<typename FT::Args>(std::make_index_sequence<std::tuple_size_v<typename FT::Args>>{});
+	ArgumentInfo ret{ GDEXTENSION_VARIANT_TYPE_NIL, GDEXTENSION_METHOD_ARGUMENT_METADATA_NONE };
+	if constexpr (!std::is_void_v<R>) {
+		ret = ArgumentInfo{ TraitsOf<R>::type, TraitsOf<R>::metadata };
+	}
+	register_method(p_class, p_name, new MethodBindT<F>(p_function), FT::is_const, !std::is_void_v<R>, ret, args, p_arg_names);
+}
+
+void bind_integer_constant(const char *p_class, const char *p_enum, const char *p_name, int64_t p_value);
+
+// Registers T (default-constructible, holding a public GDExtensionObjectPtr `owner`) as a subclass of
+// p_parent, then calls T::bind_methods().
+struct ClassInfo {
+	const StringName *name;
+	const StringName *parent;
+	void *(*create)();
+	void (*destroy)(void *);
+};
+void register_class(const ClassInfo &p_info);
+void unregister_classes();
+
+template <class T>
+void register_class(const char *p_name, const char *p_parent) {
+	register_class(ClassInfo{ intern_name(p_name), intern_name(p_parent),
+			[]() -> void * { return new T(); },
+			[](void *p_instance) { delete static_cast<T *>(p_instance); } });
+	T::bind_methods();
+}
+
+} // namespace gdx

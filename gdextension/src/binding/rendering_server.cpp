@@ -1,0 +1,61 @@
+#include "rendering_server.h"
+
+#include "api_hashes.gen.h"
+
+namespace gdx {
+
+namespace {
+
+struct Methods {
+	GDExtensionObjectPtr singleton = nullptr;
+	GDExtensionMethodBindPtr allocate_data = nullptr;
+	GDExtensionMethodBindPtr set_buffer = nullptr;
+	GDExtensionMethodBindPtr set_visible_instances = nullptr;
+};
+Methods methods;
+
+void call(GDExtensionMethodBindPtr p_method, std::initializer_list<GDExtensionConstTypePtr> p_args) {
+	api.object_method_bind_ptrcall(p_method, methods.singleton, p_args.begin(), nullptr);
+}
+
+} // namespace
+
+bool RenderingServer::ensure_loaded() {
+	if (methods.singleton) {
+		return methods.allocate_data && methods.set_buffer && methods.set_visible_instances;
+	}
+	StringName class_name("RenderingServer");
+	methods.singleton = api.global_get_singleton(class_name.ptr());
+	const auto bind = [&](const char *p_name, int64_t p_hash) {
+		StringName name(p_name);
+		GDExtensionMethodBindPtr method = api.classdb_get_method_bind(class_name.ptr(), name.ptr(), p_hash);
+		if (!method) {
+			print_error(std::string("RenderingServer.") + p_name + " with the expected signature is missing", __func__, __FILE__, __LINE__);
+		}
+		return method;
+	};
+	methods.allocate_data = bind("multimesh_allocate_data", hashes::RS_MULTIMESH_ALLOCATE_DATA);
+	methods.set_buffer = bind("multimesh_set_buffer", hashes::RS_MULTIMESH_SET_BUFFER);
+	methods.set_visible_instances = bind("multimesh_set_visible_instances", hashes::RS_MULTIMESH_SET_VISIBLE_INSTANCES);
+	return methods.singleton && methods.allocate_data && methods.set_buffer && methods.set_visible_instances;
+}
+
+void RenderingServer::unload() {
+	methods = Methods{};
+}
+
+void RenderingServer::multimesh_allocate_data(Rid p_multimesh, int64_t p_instances) {
+	const int64_t transform_3d = 1; // RenderingServer.MULTIMESH_TRANSFORM_3D
+	const GDExtensionBool no = 0;
+	call(methods.allocate_data, { &p_multimesh, &p_instances, &transform_3d, &no, &no, &no });
+}
+
+void RenderingServer::multimesh_set_buffer(Rid p_multimesh, const PackedFloat32Array &p_buffer) {
+	call(methods.set_buffer, { &p_multimesh, p_buffer.ptr() });
+}
+
+void RenderingServer::multimesh_set_visible_instances(Rid p_multimesh, int64_t p_visible) {
+	call(methods.set_visible_instances, { &p_multimesh, &p_visible });
+}
+
+} // namespace gdx

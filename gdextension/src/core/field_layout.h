@@ -1,0 +1,48 @@
+#pragma once
+// Plant layout (thesis 5.3): every '*' cell becomes one plant at
+// x = (column + α)·cell, z = (row + α)·cell with α ∈ [0, 0.5) drawn once per plant from the seed.
+#include "field_map.h"
+
+#include <glm/common.hpp>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include <cstdint>
+#include <vector>
+
+namespace sunflower {
+
+struct LayoutParams {
+	float cell_size = 0.5f; // metres per map character (thesis: 0.5 m)
+	uint64_t seed = 1;
+	bool independent_jitter = false; // false: the same α on x and z, as in the thesis
+	float jitter = 0.5f; // α ∈ [0, jitter) in cells (thesis: 0.5)
+	float yaw_jitter = 0.35f; // radians either side of facing +z, for variety between plants
+	float chunk_size = 16.0f; // metres; the far representations are grouped in square chunks
+};
+
+struct Plant {
+	glm::vec2 position{ 0.0f }; // x, z in the field's space, metres
+	float alpha = 0.0f; // the thesis' α, also used for height variety (s' = s + α/10)
+	float yaw = 0.0f; // radians about +y
+	uint32_t chunk = 0;
+};
+
+struct Chunk {
+	glm::vec2 min{ 0.0f }; // x, z bounds of its plants' roots, metres
+	glm::vec2 max{ 0.0f };
+	uint32_t first = 0; // range in FieldLayout::chunk_plants
+	uint32_t count = 0;
+};
+
+struct FieldLayout {
+	std::vector<Plant> plants; // in map order: row by row, column by column
+	std::vector<Chunk> chunks; // only chunks that hold plants
+	std::vector<uint32_t> chunk_plants; // plant indices grouped by chunk
+	glm::vec2 size{ 0.0f }; // columns·cell, rows·cell
+};
+
+// Fills r_layout from p_map. Deterministic: the same map, params and seed give the same layout.
+void build_layout(const FieldMap &p_map, const LayoutParams &p_params, FieldLayout &r_layout);
+
+} // namespace sunflower

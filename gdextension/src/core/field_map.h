@@ -1,0 +1,52 @@
+#pragma once
+// The plain-text field map (fields/FORMAT.md): a header "COLUMNS ROWS", then one line per row,
+// '*' a sunflower, ' ' or '.' nothing, other characters only when the legend names them.
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace sunflower {
+
+struct MapError {
+	std::string source;
+	int line = 0; // 1-based; 0 when the error concerns the whole file
+	int column = 0; // 1-based character (not byte) column; 0 when it concerns the whole line
+	std::string message;
+
+	// "source:line:column: message", the form editors and compilers use.
+	std::string to_string() const;
+};
+
+struct MapObject {
+	int column = 0; // 0-based cell coordinates
+	int row = 0;
+	char32_t symbol = 0;
+};
+
+struct FieldMap {
+	int columns = 0;
+	int rows = 0;
+	// One byte per cell, row-major: 1 where a sunflower stands, 0 elsewhere.
+	std::vector<uint8_t> plants;
+	// Cells holding a legend character (e.g. the thesis' "big stone").
+	std::vector<MapObject> objects;
+	int64_t plant_count = 0;
+
+	bool has_plant(int p_column, int p_row) const {
+		return plants[static_cast<size_t>(p_row) * static_cast<size_t>(columns) + static_cast<size_t>(p_column)] != 0;
+	}
+};
+
+struct MapLimits {
+	int64_t max_cells = int64_t(1) << 32; // columns × rows
+	int64_t max_plants = 16'000'000;
+	int max_side = 1'000'000;
+};
+
+// Parses p_text (raw bytes of the file). p_legend lists the extra symbols allowed in rows.
+// On failure returns false and fills r_error; r_map is then left unspecified.
+bool parse_field_map(std::string_view p_text, std::u32string_view p_legend, const std::string &p_source,
+		const MapLimits &p_limits, FieldMap &r_map, MapError &r_error);
+
+} // namespace sunflower

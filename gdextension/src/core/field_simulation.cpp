@@ -1,0 +1,218 @@
+#include "field_simulation.h"
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace sunflower {
+
+FieldSimulation::FieldSimulation() {
+	_wind.configure(WindParams{});
+	_lod.configure(LodParams{});
+}
+
+bool FieldSimulation::load_map(const std::string &p_text, const std::u32string &p_legend, const std::string &p_source,
+		const MapLimits &p_limits, MapError &r_error) {
+	FieldMap parsed;
+	if (!parse_field_map(p_text, p_legend, p_source, p_limits, parsed, r_error)) {
+		return false;
+	}
+	_map = std::move(parsed);
+	_rebuild();
+	return true;
+}
+
+void FieldSimulation::clear() {
+	_map = FieldMap{};
+	_rebuild();
+}
+
+void FieldSimulation::set_layout_params(const LayoutParams &p_params) {
+	_layout_params = p_params;
+	_layout_params.cell_size = std::isfinite(p_params.cell_size) && p_params.cell_size > 0.0f ? p_params.cell_size : 0.5f;
+	_layout_params.chunk_size = std::isfinite(p_params.chunk_size) && p_params.chunk_size > 0.0f ? p_params.chunk_size : 16.0f;
+	_rebuild();
+}
+
+void FieldSimulation::set_lod(const LodParams &p_params) {
+	_lod.configure(p_params);
+	_lod_due = true;
+}
+
+void FieldSimulation::set_shape(const PlantShape &p_shape) {
+	_shape = p_shape;
+	_lod_due = true;
+}
+
+void FieldSimulation::_rebuild() {
+	build_layout(_map, _layout_params, _layout);
+	const size_t plants = _layout.plants.size();
+	_plant_lod.assign(plants, LOD_BILLBOARD);
+	_plant_wind.assign(plants, PlantWind{});
+	_chunk_active.assign(_layout.chunks.size(), 0);
+	_active_chunks.clear();
+	_changed_chunks.clear();
+	for (InstanceBuffer &bucket : _buckets) {
+		bucket.clear();
+	}
+	_lod_due = true;
+}
+
+ChunkBounds FieldSimulation::get_chunk_bounds(uint32_t p_chunk) const {
+	const Chunk &chunk = _layout.chunks[p_chunk];
+	const float reach = _shape.cull_radius * _shape.part_scale;
+	ChunkBounds bounds;
+	bounds.min = glm::vec3(chunk.min.x - reach, 0.0f, chunk.min.y - reach);
+	bounds.max = glm::vec3(chunk.max.x + reach, _shape.height * _shape.part_scale * 1.05f, chunk.max.y + reach);
+	return bounds;
+}
+
+float FieldSimulation::_chunk_distance_sq(uint32_t p_chunk) const {
+	const ChunkBounds bounds = get_chunk_bounds(p_chunk);
+	const glm::vec3 nearest = glm::clamp(_observer, bounds.min, bounds.max);
+	const glm::vec3 d = _observer - nearest;
+	return glm::dot(d, d);
+}
+
+float FieldSimulation::_plant_distance_sq(const Plant &p_plant) const {
+	// From the observer's eye to the plant's middle: on the ground this is the thesis' distance.
+	const glm::vec3 d = _observer - glm::vec3(p_plant.position.x, 0.5f * _shape.height * _shape.part_scale, p_plant.position.y);
+	return glm::dot(d, d);
+}
+
+uint8_t FieldSimulation::_static_chunk_lod(uint32_t p_chunk) const {
+	// The engine's visibility-range rule: the sprite is shown while distance ≤ end (= the billboard
+	// distance), measured from the camera to the centre of the instance's bounding box.
+	const float distance = glm::length(_observer - get_chunk_bounds(p_chunk).center());
+	return distance <= get_billboard_distance() ? LOD_SPRITE : LOD_BILLBOARD;
+}
+
+void FieldSimulation::_select_lods() {
+	const LodParams &params = _lod.get_params();
+	// A chunk becomes active once any of it could need a mesh; it goes static again a margin later.
+	const float enter = params.distances[2] + 2.0f * params.hysteresis;
+	const float leave = enter + 2.0f * params.hysteresis + 1.0f;
+	_changed_chunks.clear();
+	_active_chunks.clear();
+	for (uint32_t c = 0; c < _layout.chunks.size(); ++c) {
+		const float distance_sq = _chunk_distance_sq(c);
+		const bool was_active = _chunk_active[c] != 0;
+		const bool active = was_active ? distance_sq < leave * leave : distance_sq < enter * enter;
+		if (active != was_active) {
+			_chunk_active[c] = active ? 1 : 0;
+			_changed_chunks.push_back(c);
+		}
+		if (!active) {
+			continue;
+		}
+		_active_chunks.push_back(c);
+		const Chunk &chunk = _layout.chunks[c];
+		for (uint32_t k = 0; k < chunk.count; ++k) {
+			const uint32_t index = _layout.chunk_plants[chunk.first + k];
+			const float plant_sq = _plant_distance_sq(_layout.plants[index]);
+			if (!was_active) {
+				_plant_lod[index] = _lod.select(plant_sq);
+				_wind.init_plant(_plant_wind[index], _layout_params.seed, index, _time);
+			} else {
+				_plant_lod[index] = _lod.update(_plant_lod[index], plant_sq);
+			}
+		}
+	}
+}
+
+void FieldSimulation::update(float p_delta) {
+	const float delta = std::isfinite(p_delta) ? std::clamp(p_delta, 0.0f, 1.0f) : 0.0f;
+	_time += double(delta);
+	_gust_phase = std::fmod(_gust_phase + _wind.get_phase_rate() * delta, TAU);
+	_since_lod += delta;
+	if (_lod_due || _since_lod >= _lod.get_params().interval) {
+		_select_lods();
+		_since_lod = 0.0f;
+		_lod_due = false;
+	} else {
+		_changed_chunks.clear();
+	}
+
+	for (InstanceBuffer &bucket : _buckets) {
+		bucket.clear();
+	}
+	const float scale = _shape.part_scale;
+	const float radius = _shape.cull_radius * scale;
+	const float mid_height = 0.5f * _shape.height * scale;
+	const bool moving = _wind.get_params().power > 0.0f;
+	PartTransforms parts;
+	for (uint32_t c : _active_chunks) {
+		const Chunk &chunk = _layout.chunks[c];
+		for (uint32_t k = 0; k < chunk.count; ++k) {
+			const uint32_t index = _layout.chunk_plants[chunk.first + k];
+			const Plant &plant = _layout.plants[index];
+			const uint8_t lod = _plant_lod[index];
+			const bool visible = _frustum.intersects_sphere(glm::vec3(plant.position.x, mid_height, plant.position.y), radius);
+			if (lod >= LOD_SPRITE) {
+				if (visible) {
+					_write_impostor(_buckets[lod == LOD_SPRITE ? BUCKET_SPRITE : BUCKET_BILLBOARD].push(), plant);
+				}
+				continue;
+			}
+			PlantWind &wind = _plant_wind[index];
+			if (moving) {
+				_wind.advance_plant(wind, _layout_params.seed, index, _time, delta);
+			}
+			if (!visible) {
+				continue;
+			}
+			const float bend = moving ? _wind.bend(wind, _wind.downwind(plant.position), _gust_phase) : 0.0f;
+			_wind.part_transforms(plant, bend, scale, parts);
+			for (uint32_t part = 0; part < PART_COUNT; ++part) {
+				write_instance(_buckets[mesh_bucket(lod, part)].push(), parts.basis[part], parts.origin[part]);
+			}
+		}
+	}
+}
+
+void FieldSimulation::_write_impostor(float *r_out, const Plant &p_plant) const {
+	const float c = std::cos(p_plant.yaw) * _shape.part_scale;
+	const float s = std::sin(p_plant.yaw) * _shape.part_scale;
+	const glm::mat3 basis(glm::vec3(c, 0.0f, -s), glm::vec3(0.0f, _shape.part_scale, 0.0f), glm::vec3(s, 0.0f, c));
+	write_instance(r_out, basis, glm::vec3(p_plant.position.x, 0.0f, p_plant.position.y));
+}
+
+void FieldSimulation::write_chunk_instances(uint32_t p_chunk, float *r_out) const {
+	const Chunk &chunk = _layout.chunks[p_chunk];
+	for (uint32_t k = 0; k < chunk.count; ++k) {
+		_write_impostor(r_out + size_t(k) * FLOATS_PER_INSTANCE, _layout.plants[_layout.chunk_plants[chunk.first + k]]);
+	}
+}
+
+uint8_t FieldSimulation::get_plant_lod(uint32_t p_plant) const {
+	const uint32_t chunk = _layout.plants[p_plant].chunk;
+	return _chunk_active[chunk] ? _plant_lod[p_plant] : _static_chunk_lod(chunk);
+}
+
+std::array<int64_t, LOD_COUNT> FieldSimulation::get_lod_counts() const {
+	std::array<int64_t, LOD_COUNT> counts{};
+	for (uint32_t c = 0; c < _layout.chunks.size(); ++c) {
+		const Chunk &chunk = _layout.chunks[c];
+		if (!_chunk_active[c]) {
+			counts[_static_chunk_lod(c)] += chunk.count;
+			continue;
+		}
+		for (uint32_t k = 0; k < chunk.count; ++k) {
+			++counts[_plant_lod[_layout.chunk_plants[chunk.first + k]]];
+		}
+	}
+	return counts;
+}
+
+void FieldSimulation::get_plant_parts(uint32_t p_plant, PartTransforms &r_parts) const {
+	const Plant &plant = _layout.plants[p_plant];
+	float bend = 0.0f;
+	if (_chunk_active[plant.chunk] && _plant_lod[p_plant] < LOD_SPRITE && _wind.get_params().power > 0.0f) {
+		bend = _wind.bend(_plant_wind[p_plant], _wind.downwind(plant.position), _gust_phase);
+	}
+	_wind.part_transforms(plant, bend, _shape.part_scale, r_parts);
+}
+
+} // namespace sunflower

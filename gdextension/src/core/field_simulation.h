@@ -1,0 +1,131 @@
+#pragma once
+// Everything that happens to a field after its map is read: layout, per-plant wind, LOD buckets and
+// the MultiMesh instance buffers, per frame. Plain C++17 + GLM: no engine types.
+//
+// Representation rule (every plant is drawn in exactly one representation):
+// - the field is cut into square chunks. A chunk near the observer is *active*: each of its plants
+//   has its own LOD (with hysteresis) and is written, swaying, into the dynamic buckets
+//   (mesh level × part, sprite, billboard), frustum-culled;
+// - every other chunk is *static*: its plants are in the chunk's own sprite and billboard buffers,
+//   written once, and the engine's visibility ranges pick sprite or billboard by the distance from the
+//   camera to the chunk's bounding-box centre. An active chunk's static buffers are hidden.
+#include "field_layout.h"
+#include "field_map.h"
+#include "frustum.h"
+#include "instance_buffer.h"
+#include "lod_selector.h"
+#include "wind_model.h"
+
+#include <glm/vec3.hpp>
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace sunflower {
+
+// The dynamic buckets: mesh levels 1–3 × parts (bottom, middle, head), then sprite and billboard.
+constexpr uint32_t PART_COUNT = 3;
+constexpr uint32_t BUCKET_SPRITE = LOD_MESH_COUNT * PART_COUNT;
+constexpr uint32_t BUCKET_BILLBOARD = BUCKET_SPRITE + 1;
+constexpr uint32_t BUCKET_COUNT = BUCKET_BILLBOARD + 1;
+
+constexpr uint32_t mesh_bucket(uint32_t p_level, uint32_t p_part) {
+	return p_level * PART_COUNT + p_part;
+}
+
+struct PlantShape {
+	float part_scale = 2.0f / 3.0f; // metres per model unit; three unit parts make a 2 m plant
+	float cull_radius = 1.2f; // bounding-sphere radius around the plant's middle, in model units
+	float height = 3.4f; // model units from the root to the top of the head, for bounding boxes
+};
+
+struct ChunkBounds {
+	glm::vec3 min{ 0.0f };
+	glm::vec3 max{ 0.0f };
+	glm::vec3 center() const { return (min + max) * 0.5f; }
+};
+
+class FieldSimulation {
+public:
+	FieldSimulation();
+
+	// Reads a map. On success replaces the field and rebuilds the layout; on failure keeps the current
+	// field and fills r_error.
+	bool load_map(const std::string &p_text, const std::u32string &p_legend, const std::string &p_source,
+			const MapLimits &p_limits, MapError &r_error);
+	void clear();
+	const FieldMap &get_map() const { return _map; }
+
+	void set_layout_params(const LayoutParams &p_params); // rebuilds the layout
+	const LayoutParams &get_layout_params() const { return _layout_params; }
+	void set_wind(const WindParams &p_params) { _wind.configure(p_params); }
+	const WindModel &get_wind() const { return _wind; }
+	void set_lod(const LodParams &p_params);
+	const LodSelector &get_lod() const { return _lod; }
+	void set_shape(const PlantShape &p_shape);
+	const PlantShape &get_shape() const { return _shape; }
+
+	void set_observer(const glm::vec3 &p_position) { _observer = p_position; }
+	const glm::vec3 &get_observer() const { return _observer; }
+	Frustum &get_frustum() { return _frustum; }
+
+	// One frame: advances time by p_delta, re-selects LOD when the interval has passed (or when forced),
+	// moves the plants and fills the dynamic buckets.
+	void update(float p_delta);
+	// Makes the next update re-select LODs regardless of the interval.
+	void request_lod_update() { _lod_due = true; }
+
+	const FieldLayout &get_layout() const { return _layout; }
+	uint32_t get_plant_count() const { return static_cast<uint32_t>(_layout.plants.size()); }
+	const InstanceBuffer &get_bucket(uint32_t p_bucket) const { return _buckets[p_bucket]; }
+	double get_time() const { return _time; }
+
+	uint32_t get_chunk_count() const { return static_cast<uint32_t>(_layout.chunks.size()); }
+	ChunkBounds get_chunk_bounds(uint32_t p_chunk) const;
+	bool is_chunk_active(uint32_t p_chunk) const { return _chunk_active[p_chunk] != 0; }
+	// Chunks whose active flag changed in the last update (their static buffers must be shown/hidden).
+	const std::vector<uint32_t> &get_changed_chunks() const { return _changed_chunks; }
+	// The static impostor transforms of a chunk's plants: count × 12 floats into r_out.
+	void write_chunk_instances(uint32_t p_chunk, float *r_out) const;
+	// The distance at which a static chunk switches from sprite to billboard (engine visibility range).
+	float get_billboard_distance() const { return _lod.get_params().distances[3]; }
+
+	// The representation a plant is drawn in now: its own LOD in an active chunk, else the chunk's.
+	uint8_t get_plant_lod(uint32_t p_plant) const;
+	std::array<int64_t, LOD_COUNT> get_lod_counts() const;
+	// The three part transforms of a plant as they are drawn now (upright for impostors).
+	void get_plant_parts(uint32_t p_plant, PartTransforms &r_parts) const;
+
+private:
+	void _rebuild();
+	void _select_lods();
+	uint8_t _static_chunk_lod(uint32_t p_chunk) const;
+	float _chunk_distance_sq(uint32_t p_chunk) const;
+	float _plant_distance_sq(const Plant &p_plant) const;
+	void _write_impostor(float *r_out, const Plant &p_plant) const;
+
+	FieldMap _map;
+	LayoutParams _layout_params;
+	FieldLayout _layout;
+	WindModel _wind;
+	LodSelector _lod;
+	PlantShape _shape;
+	Frustum _frustum;
+	glm::vec3 _observer{ 0.0f };
+
+	std::vector<uint8_t> _plant_lod;
+	std::vector<PlantWind> _plant_wind;
+	std::vector<uint8_t> _chunk_active;
+	std::vector<uint32_t> _active_chunks;
+	std::vector<uint32_t> _changed_chunks;
+	std::array<InstanceBuffer, BUCKET_COUNT> _buckets;
+
+	double _time = 0.0;
+	float _gust_phase = 0.0f;
+	float _since_lod = 0.0f;
+	bool _lod_due = true;
+};
+
+} // namespace sunflower

@@ -1,0 +1,44 @@
+#pragma once
+// MultiMesh instance data: 12 floats per instance, the 3×4 matrix [basis | origin] row by row,
+// which is Godot's RenderingServer.MULTIMESH_TRANSFORM_3D layout.
+#include <glm/mat3x3.hpp>
+#include <glm/vec3.hpp>
+
+#include <algorithm>
+#include <cstdint>
+#include <vector>
+
+namespace sunflower {
+
+constexpr uint32_t FLOATS_PER_INSTANCE = 12;
+
+inline void write_instance(float *r_out, const glm::mat3 &p_basis, const glm::vec3 &p_origin) {
+	for (int row = 0; row < 3; ++row) {
+		r_out[row * 4 + 0] = p_basis[0][row];
+		r_out[row * 4 + 1] = p_basis[1][row];
+		r_out[row * 4 + 2] = p_basis[2][row];
+		r_out[row * 4 + 3] = p_origin[row];
+	}
+}
+
+// A growable buffer of instances; grows geometrically and never shrinks, so steady state
+// allocates nothing.
+class InstanceBuffer {
+public:
+	void clear() { _count = 0; }
+	float *push() {
+		if (_count >= get_capacity()) {
+			_data.resize(std::max<size_t>(64, size_t(get_capacity()) * 2) * FLOATS_PER_INSTANCE);
+		}
+		return _data.data() + static_cast<size_t>(_count++) * FLOATS_PER_INSTANCE;
+	}
+	uint32_t get_count() const { return _count; }
+	uint32_t get_capacity() const { return static_cast<uint32_t>(_data.size() / FLOATS_PER_INSTANCE); }
+	const float *get_data() const { return _data.data(); }
+
+private:
+	std::vector<float> _data;
+	uint32_t _count = 0;
+};
+
+} // namespace sunflower

@@ -1,0 +1,37 @@
+#include "lod_selector.h"
+
+#include <algorithm>
+
+namespace sunflower {
+
+void LodSelector::configure(const LodParams &p_params) {
+	_params = p_params;
+	for (size_t i = 0; i < 4; ++i) {
+		const float d = _params.distances[i];
+		const float finer = std::max(0.0f, d - _params.hysteresis);
+		_plain_sq[i] = d * d;
+		_coarser_sq[i] = (d + _params.hysteresis) * (d + _params.hysteresis);
+		_finer_sq[i] = finer * finer;
+	}
+}
+
+uint8_t LodSelector::select(float p_distance_sq) const {
+	uint8_t level = 0;
+	while (level < 4 && p_distance_sq >= _plain_sq[level]) {
+		++level;
+	}
+	return level;
+}
+
+uint8_t LodSelector::update(uint8_t p_current, float p_distance_sq) const {
+	uint8_t level = std::min<uint8_t>(p_current, LOD_BILLBOARD);
+	while (level < 4 && p_distance_sq >= _coarser_sq[level]) {
+		++level;
+	}
+	while (level > 0 && p_distance_sq < _finer_sq[level - 1]) {
+		--level;
+	}
+	return level;
+}
+
+} // namespace sunflower

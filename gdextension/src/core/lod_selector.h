@@ -1,0 +1,43 @@
+#pragma once
+// Five discrete levels of detail chosen by distance (thesis 3.2, Tab. 1), compared squared,
+// with a hysteresis margin on every threshold so plants near a threshold do not flicker.
+#include <array>
+#include <cstdint>
+
+namespace sunflower {
+
+enum Lod : uint8_t {
+	LOD_MESH_1 = 0,
+	LOD_MESH_2 = 1,
+	LOD_MESH_3 = 2,
+	LOD_SPRITE = 3,
+	LOD_BILLBOARD = 4,
+	LOD_COUNT = 5,
+	LOD_MESH_COUNT = 3,
+};
+
+struct LodParams {
+	// Switch distances in metres: mesh 1→2, 2→3, 3→sprite, sprite→billboard (thesis: 6/10/20/25).
+	std::array<float, 4> distances{ { 6.0f, 10.0f, 20.0f, 25.0f } };
+	float hysteresis = 0.5f; // metres: switch to less detail this much later, to more detail this much earlier
+	float interval = 0.25f; // seconds between LOD updates (thesis 3.3.2)
+};
+
+class LodSelector {
+public:
+	void configure(const LodParams &p_params);
+	const LodParams &get_params() const { return _params; }
+
+	// The level for a plant first seen at squared distance p_distance_sq (no history).
+	uint8_t select(float p_distance_sq) const;
+	// The level for a plant that was at p_current: hysteresis applies.
+	uint8_t update(uint8_t p_current, float p_distance_sq) const;
+
+private:
+	LodParams _params;
+	std::array<float, 4> _plain_sq{};
+	std::array<float, 4> _coarser_sq{}; // (d + margin)²: leave level i for i + 1 beyond this
+	std::array<float, 4> _finer_sq{}; // (d - margin)²: leave level i + 1 for i below this
+};
+
+} // namespace sunflower

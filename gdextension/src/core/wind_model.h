@@ -1,0 +1,79 @@
+#pragma once
+// Steady wind that makes the plants sway (thesis 5.4, equations 4–6), plus the thesis' idea that the
+// bend is handed on to the neighbours with a delay: a gust that travels along the wind direction.
+//
+// Per plant: a phase φ and a direction b ∈ {+1, −1}. φ advances at b·ω(p_w) (eq. 6); every
+// flip_interval seconds (staggered per plant) b reverses with probability flip_chance; φ never goes
+// negative (b is set back to +1) and wraps at 2π. The bend force is p = p_w·h·sin φ (eq. 5), mixed
+// with a travelling component sin(Ψ(t − s/c)) where s is the plant's downwind coordinate; the
+// bottom part tilts p/d2 and the middle part p/d1 (eq. 4); the head sits rigidly on the middle.
+#include "field_layout.h"
+
+#include <glm/mat3x3.hpp>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include <cstdint>
+
+namespace sunflower {
+
+constexpr float PI = 3.14159265358979323846f;
+constexpr float TAU = 2.0f * PI;
+
+struct WindParams {
+	float power = 1.0f; // p_w in [0, 100]; 1.0 ≈ 1 m/s
+	glm::vec2 direction{ 1.0f, 0.0f }; // x, z: where the wind blows to (need not be normalised)
+	float d1 = 1.5f; // stiffness of the middle part
+	float d2 = 3.0f; // stiffness of the bottom part
+	float h = PI / 12.0f; // maximum bend per unit of power
+	float max_bend = PI / 4.0f; // clamp on the summed tilt of bottom and middle, radians
+	float flip_interval = 2.0f; // seconds between redraws of b
+	float flip_chance = 0.5f; // probability that b reverses at a redraw
+	float gust_speed = 3.0f; // m/s at which the bend travels downwind; 0 disables the gust
+	float gust_share = 0.5f; // 0: each plant sways on its own; 1: only the travelling gust
+};
+
+struct PlantWind {
+	float phase = 0.0f; // φ ∈ [0, 2π)
+	int8_t direction = 1; // b
+	uint32_t next_flip = 0; // index k of the next redraw at t = offset + k·flip_interval
+};
+
+// The three part transforms of one plant: linear part and origin (the part's root), bottom to top.
+struct PartTransforms {
+	glm::mat3 basis[3];
+	glm::vec3 origin[3];
+};
+
+class WindModel {
+public:
+	void configure(const WindParams &p_params);
+	const WindParams &get_params() const { return _params; }
+
+	// ω: the rate of φ in rad/s for the configured power (eq. 6 without b).
+	float get_phase_rate() const { return _rate; }
+	// The unit vector the plants lean towards, and the axis they rotate about (thesis (w_x, w_z)).
+	glm::vec2 get_lean_direction() const { return _lean; }
+
+	void init_plant(PlantWind &r_wind, uint64_t p_seed, uint32_t p_plant, double p_time) const;
+	// Advances φ by p_delta seconds ending at p_time, redrawing b where a redraw time was passed.
+	void advance_plant(PlantWind &r_wind, uint64_t p_seed, uint32_t p_plant, double p_time, float p_delta) const;
+	// The clamped bend force p of a plant at downwind coordinate p_downwind, given the field's gust phase Ψ.
+	float bend(const PlantWind &p_wind, float p_downwind, float p_gust_phase) const;
+	// Downwind coordinate s of a point: its distance along the wind direction.
+	float downwind(const glm::vec2 &p_position) const { return p_position.x * _lean.x + p_position.y * _lean.y; }
+
+	// Part transforms for bend p (eq. 4). p_part_scale: metres per model unit (parts are 1 unit tall).
+	void part_transforms(const Plant &p_plant, float p_bend, float p_part_scale, PartTransforms &r_parts) const;
+
+	// A flip offset in [0, flip_interval) for a plant, so redraws are staggered across the field.
+	float flip_offset(uint64_t p_seed, uint32_t p_plant) const;
+
+private:
+	WindParams _params;
+	float _rate = 0.0f;
+	float _bend_limit = 0.0f; // limit on p so that p/d1 + p/d2 ≤ max_bend
+	glm::vec2 _lean{ 1.0f, 0.0f };
+};
+
+} // namespace sunflower

@@ -1,0 +1,46 @@
+// The library's entry point: loads the binding, registers SunflowerSimulation and its docs.
+#include "binding/class_binder.h"
+#include "binding/rendering_server.h"
+#include "sunflower_simulation.h"
+
+#include "doc_data.gen.h"
+
+namespace {
+
+bool registered = false;
+
+void initialize(void *, GDExtensionInitializationLevel p_level) {
+	if (p_level == GDEXTENSION_INITIALIZATION_SCENE) {
+		// The RenderingServer singleton is not published yet at this level: it is looked up on first use.
+		gdx::register_class<SunflowerSimulation>("SunflowerSimulation", "RefCounted");
+		registered = true;
+	} else if (p_level == GDEXTENSION_INITIALIZATION_EDITOR && registered) {
+		gdx::api.editor_help_load_xml_from_utf8_chars_and_len(sunflower_doc::XML, sizeof(sunflower_doc::XML) - 1);
+	}
+}
+
+void deinitialize(void *, GDExtensionInitializationLevel p_level) {
+	if (p_level == GDEXTENSION_INITIALIZATION_SCENE) {
+		gdx::unregister_classes();
+		gdx::RenderingServer::unload();
+		gdx::release_api();
+		registered = false;
+	}
+}
+
+} // namespace
+
+extern "C" {
+
+__attribute__((visibility("default"))) GDExtensionBool sunflower_library_init(GDExtensionInterfaceGetProcAddress p_get_proc_address,
+		GDExtensionClassLibraryPtr p_library, GDExtensionInitialization *r_initialization) {
+	if (!gdx::load_api(p_get_proc_address, p_library)) {
+		return false;
+	}
+	r_initialization->initialize = &initialize;
+	r_initialization->deinitialize = &deinitialize;
+	r_initialization->userdata = nullptr;
+	r_initialization->minimum_initialization_level = GDEXTENSION_INITIALIZATION_SCENE;
+	return true;
+}
+}

@@ -1,0 +1,65 @@
+#pragma once
+// SunflowerSimulation: the engine-facing face of the core FieldSimulation. Configured once by the
+// SunflowerField node, updated once per frame; pushes the instance buffers to the RenderingServer
+// itself, so no per-frame arrays travel through GDScript.
+#include "binding/godot_api.h"
+#include "core/field_simulation.h"
+
+#include <array>
+#include <vector>
+
+class SunflowerSimulation {
+public:
+	static void bind_methods();
+
+	gdx::String load_map(const gdx::PackedByteArray &p_text, const gdx::String &p_source, const gdx::String &p_legend, int64_t p_max_plants);
+	void clear();
+	int64_t get_map_columns() const;
+	int64_t get_map_rows() const;
+	gdx::PackedInt32Array get_map_objects() const;
+
+	void set_layout(double p_cell_size, int64_t p_seed, bool p_independent_jitter, double p_chunk_size);
+	void set_plant_shape(double p_part_scale, double p_cull_radius, double p_height);
+	void set_wind(double p_power, gdx::Vector2 p_direction);
+	void set_wind_dynamics(const gdx::PackedFloat32Array &p_values);
+	void set_lod(const gdx::PackedFloat32Array &p_distances, double p_hysteresis, double p_interval);
+	void set_observer(gdx::Vector3 p_position, const gdx::PackedFloat32Array &p_frustum);
+
+	void set_bucket_multimesh(int64_t p_bucket, gdx::Rid p_multimesh);
+	void set_chunk_multimeshes(int64_t p_chunk, gdx::Rid p_sprite, gdx::Rid p_billboard);
+	void release_multimeshes();
+	int64_t get_chunk_count() const;
+	gdx::AABB get_chunk_aabb(int64_t p_chunk) const;
+
+	void update(double p_delta);
+
+	int64_t get_plant_count() const;
+	gdx::PackedInt32Array get_lod_counts() const;
+	gdx::Vector3 get_plant_position(int64_t p_plant) const;
+	int64_t get_plant_lod(int64_t p_plant) const;
+	gdx::PackedFloat32Array get_plant_parts(int64_t p_plant) const;
+	int64_t get_bucket_instance_count(int64_t p_bucket) const;
+	int64_t get_last_update_usec() const;
+	double get_time() const;
+
+private:
+	bool _check_plant(int64_t p_plant, const char *p_function) const;
+	void _push_bucket(uint32_t p_bucket);
+	void _upload_chunk(uint32_t p_chunk);
+
+	struct BucketTarget {
+		gdx::Rid multimesh;
+		gdx::PackedFloat32Array staging;
+		uint32_t allocated = 0;
+		uint32_t last_count = 0;
+	};
+	struct ChunkTarget {
+		gdx::Rid sprite;
+		gdx::Rid billboard;
+	};
+
+	sunflower::FieldSimulation _sim;
+	std::array<BucketTarget, sunflower::BUCKET_COUNT> _buckets;
+	std::vector<ChunkTarget> _chunks;
+	int64_t _last_update_usec = 0;
+};
