@@ -59,17 +59,17 @@ char32_t decode_utf8(std::string_view p_text, size_t &r_pos) {
 std::string describe_char(char32_t p_char) {
 	char buffer[48];
 	if (p_char == '\t') {
-		return "a tab character";
+		return "tab character (use spaces)";
 	} else if (p_char == 0) {
-		return "a NUL byte";
+		return "NUL byte";
 	} else if (p_char == 0xFFFD) {
 		return "bytes that are not valid UTF-8";
 	} else if (p_char < 0x20 || p_char == 0x7F) {
-		std::snprintf(buffer, sizeof(buffer), "the control character U+%04X", static_cast<unsigned>(p_char));
+		std::snprintf(buffer, sizeof(buffer), "control character U+%04X", static_cast<unsigned>(p_char));
 	} else if (p_char < 0x80) {
 		std::snprintf(buffer, sizeof(buffer), "'%c'", static_cast<char>(p_char));
 	} else {
-		std::snprintf(buffer, sizeof(buffer), "the character U+%04X", static_cast<unsigned>(p_char));
+		std::snprintf(buffer, sizeof(buffer), "character U+%04X", static_cast<unsigned>(p_char));
 	}
 	return buffer;
 }

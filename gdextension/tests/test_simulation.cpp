@@ -1,0 +1,221 @@
+#include "core/field_simulation.h"
+
+#include <doctest/doctest.h>
+
+#include <glm/geometric.hpp>
+
+#include <numeric>
+
+using namespace sunflower;
+
+namespace {
+
+std::string rect_map(int p_columns, int p_rows) {
+	std::string text = std::to_string(p_columns) + " " + std::to_string(p_rows) + "\n";
+	for (int r = 0; r < p_rows; ++r) {
+		text += std::string(static_cast<size_t>(p_columns), '*') + "\n";
+	}
+	return text;
+}
+
+void load(FieldSimulation &r_sim, const std::string &p_text, float p_chunk = 8.0f) {
+	MapError error;
+	REQUIRE(r_sim.load_map(p_text, U"", "sim", MapLimits{}, error));
+	LayoutParams params;
+	params.chunk_size = p_chunk;
+	r_sim.set_layout_params(params);
+}
+
+int64_t total(const std::array<int64_t, LOD_COUNT> &p_counts) {
+	return std::accumulate(p_counts.begin(), p_counts.end(), int64_t(0));
+}
+
+// Plants drawn by the dynamic buckets plus the plants of static chunks: with no frustum, every
+// plant must be drawn exactly once.
+int64_t drawn(const FieldSimulation &p_sim) {
+	int64_t count = 0;
+	for (uint32_t level = 0; level < LOD_MESH_COUNT; ++level) {
+		const uint32_t bottom = p_sim.get_bucket(mesh_bucket(level, 0)).get_count();
+		CHECK(p_sim.get_bucket(mesh_bucket(level, 1)).get_count() == bottom);
+		CHECK(p_sim.get_bucket(mesh_bucket(level, 2)).get_count() == bottom);
+		count += bottom;
+	}
+	count += p_sim.get_bucket(BUCKET_SPRITE).get_count() + p_sim.get_bucket(BUCKET_BILLBOARD).get_count();
+	for (uint32_t c = 0; c < p_sim.get_chunk_count(); ++c) {
+		if (!p_sim.is_chunk_active(c)) {
+			count += p_sim.get_layout().chunks[c].count;
+		}
+	}
+	return count;
+}
+
+} // namespace
+
+TEST_CASE("every plant is drawn exactly once along a path, and LOD counts follow the observer") {
+	FieldSimulation sim;
+	load(sim, rect_map(200, 120)); // 100 × 60 m, 24 000 plants
+	for (float x = -30.0f; x <= 130.0f; x += 7.3f) {
+		sim.set_observer({ x, 1.7f, 30.0f });
+		sim.request_lod_update();
+		sim.update(0.016f);
+		CAPTURE(x);
+		CHECK(drawn(sim) == 24000);
+		const auto counts = sim.get_lod_counts();
+		CHECK(total(counts) == 24000);
+		// With no frustum, the mesh buckets hold exactly the plants counted at mesh levels.
+		for (uint32_t level = 0; level < LOD_MESH_COUNT; ++level) {
+			CHECK(sim.get_bucket(mesh_bucket(level, 0)).get_count() == counts[level]);
+		}
+	}
+	sim.set_observer({ 50.0f, 1.7f, 30.0f });
+	sim.request_lod_update();
+	sim.update(0.016f);
+	auto counts = sim.get_lod_counts();
+	// Plants within 6 m of the observer on a 4-per-m² field: about π·6²·4 ≈ 450.
+	CHECK(counts[LOD_MESH_1] > 350);
+	CHECK(counts[LOD_MESH_1] < 550);
+	CHECK(counts[LOD_BILLBOARD] > 15000);
+	sim.set_observer({ 1000.0f, 1.7f, 1000.0f });
+	sim.request_lod_update();
+	sim.update(0.016f);
+	counts = sim.get_lod_counts();
+	CHECK(counts[LOD_BILLBOARD] == 24000);
+	CHECK(sim.get_bucket(mesh_bucket(0, 0)).get_count() == 0);
+}
+
+TEST_CASE("a plant's own LOD matches its distance outside the hysteresis bands") {
+	FieldSimulation sim;
+	load(sim, rect_map(80, 80));
+	const glm::vec3 observer(20.0f, 1.0f, 20.0f);
+	sim.set_observer(observer);
+	sim.request_lod_update();
+	sim.update(0.016f);
+	LodSelector plain;
+	plain.configure(sim.get_lod().get_params());
+	const float margin = sim.get_lod().get_params().hysteresis;
+	for (uint32_t i = 0; i < sim.get_plant_count(); ++i) {
+		const Plant &plant = sim.get_layout().plants[i];
+		const glm::vec3 middle(plant.position.x, 0.5f * sim.get_shape().height * sim.get_shape().part_scale, plant.position.y);
+		const float distance = glm::length(observer - middle);
+		bool near_threshold = false;
+		for (float d : sim.get_lod().get_params().distances) {
+			near_threshold |= std::abs(distance - d) < margin;
+		}
+		if (!near_threshold && distance < 20.0f) {
+			CHECK(sim.get_plant_lod(i) == plain.select(distance * distance));
+		}
+	}
+}
+
+TEST_CASE("LOD is re-selected every interval, not every frame") {
+	FieldSimulation sim;
+	load(sim, rect_map(40, 30));
+	sim.set_observer({ 10.0f, 1.7f, 7.5f });
+	sim.update(0.016f);
+	const auto near_counts = sim.get_lod_counts();
+	CHECK(near_counts[LOD_MESH_1] > 0);
+	sim.set_observer({ 10.0f, 1.7f, 40.0f }); // step away
+	sim.update(0.1f);
+	CHECK(sim.get_lod_counts()[LOD_MESH_1] == near_counts[LOD_MESH_1]);
+	sim.update(0.2f); // 0.3 s since the last selection
+	CHECK(sim.get_lod_counts()[LOD_MESH_1] == 0);
+}
+
+TEST_CASE("the frustum culls what is written, not what is counted") {
+	FieldSimulation sim;
+	load(sim, rect_map(40, 40));
+	sim.set_observer({ 10.0f, 1.7f, 10.0f });
+	sim.update(0.016f);
+	const uint32_t all = sim.get_bucket(mesh_bucket(0, 0)).get_count();
+	const auto counts = sim.get_lod_counts();
+	// Keep only x > 10 (an outward plane with normal −x at x = 10).
+	const glm::vec4 plane(-1.0f, 0.0f, 0.0f, -10.0f);
+	sim.get_frustum().set_planes(&plane, 1);
+	sim.update(0.016f);
+	const uint32_t half = sim.get_bucket(mesh_bucket(0, 0)).get_count();
+	CHECK(half < all);
+	CHECK(half > all / 3);
+	CHECK(sim.get_lod_counts() == counts);
+}
+
+TEST_CASE("with wind the transforms change over time; without it the plants stay upright") {
+	FieldSimulation sim;
+	load(sim, rect_map(20, 20));
+	sim.set_observer({ 5.0f, 1.7f, 5.0f });
+	WindParams calm;
+	calm.power = 0.0f;
+	sim.set_wind(calm);
+	sim.update(0.016f);
+	PartTransforms before, after;
+	sim.get_plant_parts(0, before);
+	for (int i = 0; i < 30; ++i) {
+		sim.update(0.016f);
+	}
+	sim.get_plant_parts(0, after);
+	for (int part = 0; part < 3; ++part) {
+		CHECK(after.origin[part] == before.origin[part]);
+		const glm::vec3 up = glm::normalize(after.basis[part][1]);
+		CHECK(up.y == doctest::Approx(1.0f));
+	}
+	const float *data = sim.get_bucket(mesh_bucket(0, 2)).get_data();
+	const std::vector<float> calm_heads(data, data + 12);
+
+	WindParams windy;
+	windy.power = 3.0f;
+	sim.set_wind(windy);
+	sim.update(0.016f);
+	sim.get_plant_parts(0, before);
+	for (int i = 0; i < 10; ++i) {
+		sim.update(0.016f);
+	}
+	sim.get_plant_parts(0, after);
+	CHECK(glm::length(after.origin[2] - before.origin[2]) > 1e-4f);
+	const glm::vec3 up = glm::normalize(after.basis[1][1]);
+	CHECK(up.y < 0.99999f);
+	data = sim.get_bucket(mesh_bucket(0, 2)).get_data();
+	CHECK(std::vector<float>(data, data + 12) != calm_heads);
+}
+
+TEST_CASE("steady state allocates nothing: buffers keep their storage along a repeated path") {
+	FieldSimulation sim;
+	load(sim, rect_map(100, 100));
+	const auto walk = [&]() {
+		for (float x = 0.0f; x < 50.0f; x += 0.5f) {
+			sim.set_observer({ x, 1.7f, 25.0f });
+			sim.update(0.05f);
+		}
+	};
+	walk();
+	std::array<const float *, BUCKET_COUNT> data{};
+	for (uint32_t b = 0; b < BUCKET_COUNT; ++b) {
+		data[b] = sim.get_bucket(b).get_data();
+	}
+	walk();
+	for (uint32_t b = 0; b < BUCKET_COUNT; ++b) {
+		CHECK(sim.get_bucket(b).get_data() == data[b]);
+	}
+}
+
+TEST_CASE("a failed load keeps the previous field") {
+	FieldSimulation sim;
+	load(sim, rect_map(10, 10));
+	MapError error;
+	CHECK_FALSE(sim.load_map("10 10\n**x\n", U"", "bad.field", MapLimits{}, error));
+	CHECK(error.to_string() == "bad.field:2:3: unexpected 'x'; expected '*' (a sunflower), ' ' or '.' (nothing)");
+	CHECK(sim.get_plant_count() == 100);
+}
+
+TEST_CASE("static chunks choose sprite or billboard by the distance to their box centre") {
+	FieldSimulation sim;
+	load(sim, rect_map(400, 20), 8.0f); // a 200 m strip
+	sim.set_observer({ 0.0f, 1.7f, 5.0f });
+	sim.update(0.016f);
+	for (uint32_t c = 0; c < sim.get_chunk_count(); ++c) {
+		if (sim.is_chunk_active(c)) {
+			continue;
+		}
+		const float distance = glm::length(sim.get_observer() - sim.get_chunk_bounds(c).center());
+		const uint32_t plant = sim.get_layout().chunk_plants[sim.get_layout().chunks[c].first];
+		CHECK(sim.get_plant_lod(plant) == (distance <= 25.0f ? LOD_SPRITE : LOD_BILLBOARD));
+	}
+}

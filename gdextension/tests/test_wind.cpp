@@ -1,0 +1,174 @@
+#include "core/wind_model.h"
+
+#include <doctest/doctest.h>
+
+#include <glm/geometric.hpp>
+
+#include <cmath>
+
+using namespace sunflower;
+
+namespace {
+
+WindModel make_wind(float p_power, glm::vec2 p_direction, float p_gust_share = 0.0f) {
+	WindParams params;
+	params.power = p_power;
+	params.direction = p_direction;
+	params.gust_share = p_gust_share;
+	WindModel wind;
+	wind.configure(params);
+	return wind;
+}
+
+void check_vec(const glm::vec3 &p_actual, const glm::vec3 &p_expected) {
+	CHECK(p_actual.x == doctest::Approx(p_expected.x).epsilon(1e-5));
+	CHECK(p_actual.y == doctest::Approx(p_expected.y).epsilon(1e-5));
+	CHECK(p_actual.z == doctest::Approx(p_expected.z).epsilon(1e-5));
+}
+
+} // namespace
+
+TEST_CASE("eq. 6: the phase rate is p_w·π up to 1, (p_w/20 + 1)·π above") {
+	CHECK(make_wind(0.5f, { 1, 0 }).get_phase_rate() == doctest::Approx(0.5f * PI));
+	CHECK(make_wind(1.0f, { 1, 0 }).get_phase_rate() == doctest::Approx(PI));
+	CHECK(make_wind(10.0f, { 1, 0 }).get_phase_rate() == doctest::Approx(1.5f * PI));
+	CHECK(make_wind(0.0f, { 1, 0 }).get_phase_rate() == 0.0f);
+	CHECK(make_wind(NAN, { 1, 0 }).get_params().power == 0.0f); // non-finite power is calm
+	CHECK(make_wind(500.0f, { 1, 0 }).get_params().power == 100.0f);
+}
+
+TEST_CASE("eq. 5: the bend force is p_w·h·sin φ, clamped") {
+	const WindModel wind = make_wind(1.0f, { 1, 0 });
+	PlantWind state;
+	state.phase = PI / 2.0f;
+	CHECK(wind.bend(state, 0.0f, 0.0f) == doctest::Approx(PI / 12.0f));
+	state.phase = PI / 6.0f;
+	CHECK(wind.bend(state, 0.0f, 0.0f) == doctest::Approx(PI / 12.0f * 0.5f));
+	state.phase = 3.0f * PI / 2.0f;
+	CHECK(wind.bend(state, 0.0f, 0.0f) == doctest::Approx(-PI / 12.0f));
+
+	const WindModel storm = make_wind(100.0f, { 1, 0 });
+	state.phase = PI / 2.0f;
+	// p/d1 + p/d2 = p·(1/1.5 + 1/3) = p: the clamp on the summed tilt is the clamp on p.
+	CHECK(storm.bend(state, 0.0f, 0.0f) == doctest::Approx(storm.get_params().max_bend));
+}
+
+TEST_CASE("eq. 4: part ends move by m2 and m1 + m2 along the wind, vertical extents y2 and y1") {
+	const float p = PI / 12.0f;
+	const float m1 = std::sin(p / 1.5f), m2 = std::sin(p / 3.0f);
+	const float y1 = std::cos(p / 1.5f), y2 = std::cos(p / 3.0f);
+	Plant plant; // at the origin, α = 0, no yaw
+	PartTransforms parts;
+
+	SUBCASE("wind blowing towards +x") {
+		make_wind(1.0f, { 1, 0 }).part_transforms(plant, p, 1.0f, parts);
+		check_vec(parts.origin[0], { 0, 0, 0 });
+		check_vec(parts.origin[1], { m2, y2, 0 });
+		check_vec(parts.origin[2], { m1 + m2, y1 + y2, 0 });
+	}
+	SUBCASE("wind blowing towards +z: (w_x, w_z) = (1, 0) so Z1 = Z1' + w_x·(m1 + m2)") {
+		make_wind(1.0f, { 0, 3 }).part_transforms(plant, p, 1.0f, parts);
+		check_vec(parts.origin[1], { 0, y2, m2 });
+		check_vec(parts.origin[2], { 0, y1 + y2, m1 + m2 });
+	}
+	SUBCASE("a diagonal wind leans the plant along it") {
+		make_wind(1.0f, { 1, 1 }).part_transforms(plant, p, 1.0f, parts);
+		const float s = std::sqrt(0.5f);
+		check_vec(parts.origin[2], { (m1 + m2) * s, y1 + y2, (m1 + m2) * s });
+	}
+}
+
+TEST_CASE("joints chain exactly: each part's root is the previous part's tip, head rigid on the middle") {
+	Plant plant;
+	plant.position = { 3.0f, -2.0f };
+	plant.alpha = 0.4f;
+	plant.yaw = 0.3f;
+	PartTransforms parts;
+	const WindModel wind = make_wind(3.0f, { 0.3f, -1.0f });
+	wind.part_transforms(plant, 0.37f, 0.7f, parts);
+	for (int part = 0; part < 2; ++part) {
+		const glm::vec3 tip = parts.origin[part] + parts.basis[part] * glm::vec3(0, 1, 0);
+		check_vec(parts.origin[part + 1], tip);
+	}
+	// The middle part is stretched by s' = s + α/10 along its own y only.
+	CHECK(glm::length(parts.basis[1][1]) == doctest::Approx(0.7f * (1.0f + 0.04f)));
+	CHECK(glm::length(parts.basis[1][0]) == doctest::Approx(0.7f));
+	CHECK(glm::length(parts.basis[2][1]) == doctest::Approx(0.7f));
+	// Head and middle share one rotation.
+	const glm::vec3 head_up = glm::normalize(parts.basis[2][1]);
+	const glm::vec3 middle_up = glm::normalize(parts.basis[1][1]);
+	check_vec(head_up, middle_up);
+}
+
+TEST_CASE("no wind: the plant stands upright") {
+	Plant plant;
+	plant.position = { 1.0f, 1.0f };
+	PartTransforms parts;
+	make_wind(0.0f, { 1, 0 }).part_transforms(plant, 0.0f, 1.0f, parts);
+	check_vec(parts.origin[1], { 1, 1, 1 });
+	check_vec(parts.origin[2], { 1, 2, 1 });
+}
+
+TEST_CASE("φ advances at b·ω, wraps at 2π and never goes negative") {
+	WindParams params;
+	params.power = 1.0f;
+	params.flip_chance = 0.0f;
+	WindModel wind;
+	wind.configure(params);
+	PlantWind state;
+	state.phase = 1.0f;
+	state.direction = 1;
+	state.next_flip = 1000;
+	wind.advance_plant(state, 1, 0, 0.1, 0.1f);
+	CHECK(state.phase == doctest::Approx(1.0f + PI * 0.1f));
+	state.phase = TAU - 0.05f;
+	wind.advance_plant(state, 1, 0, 0.2, 0.1f);
+	CHECK(state.phase == doctest::Approx(PI * 0.1f - 0.05f));
+	state.direction = -1;
+	state.phase = 0.1f;
+	wind.advance_plant(state, 1, 0, 0.3, 0.1f); // would reach 0.1 − 0.314
+	CHECK(state.phase >= 0.0f);
+	CHECK(state.direction == 1);
+}
+
+TEST_CASE("b is redrawn every 2 s, staggered, reversing about half the time") {
+	const WindModel wind = make_wind(1.0f, { 1, 0 });
+	int reversed = 0;
+	const int plants = 4000;
+	float min_offset = 10.0f, max_offset = -1.0f;
+	for (uint32_t i = 0; i < static_cast<uint32_t>(plants); ++i) {
+		PlantWind state;
+		wind.init_plant(state, 7, i, 0.0);
+		const int8_t before = state.direction;
+		const float offset = wind.flip_offset(7, i);
+		min_offset = std::min(min_offset, offset);
+		max_offset = std::max(max_offset, offset);
+		wind.advance_plant(state, 7, i, double(offset) - 0.001, 0.0f); // just before its redraw
+		CHECK(state.direction == before);
+		wind.advance_plant(state, 7, i, double(offset) + 0.001, 0.0f); // just after
+		reversed += state.direction != before ? 1 : 0;
+		if (state.phase < 0.0f) {
+			FAIL("negative phase");
+		}
+	}
+	CHECK(min_offset < 0.1f);
+	CHECK(max_offset > 1.9f);
+	CHECK(max_offset < 2.0f);
+	CHECK(reversed > plants * 45 / 100);
+	CHECK(reversed < plants * 55 / 100);
+}
+
+TEST_CASE("the gust travels downwind: a plant s metres downwind bends as its upwind neighbour did s/c earlier") {
+	const WindModel wind = make_wind(1.0f, { 0, 1 }, 1.0f);
+	const float c = wind.get_params().gust_speed;
+	const float omega = wind.get_phase_rate();
+	PlantWind state; // the plant's own phase has no weight with gust_share = 1
+	const float s = 4.5f;
+	const float tau = s / c;
+	for (float psi : { 0.3f, 1.2f, 2.9f }) {
+		const float upwind_then = wind.bend(state, 0.0f, psi);
+		const float downwind_later = wind.bend(state, s, psi + omega * tau);
+		CHECK(downwind_later == doctest::Approx(upwind_then).epsilon(1e-4));
+	}
+	CHECK(wind.downwind({ 2.0f, 5.0f }) == doctest::Approx(5.0f));
+}
