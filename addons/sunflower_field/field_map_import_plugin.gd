@@ -1,0 +1,73 @@
+@tool
+extends EditorImportPlugin
+## Imports [code].field[/code] text maps as [SunflowerFieldMap] resources. A malformed map fails
+## to import with an error naming the file, line and column.
+
+
+func _get_importer_name() -> String:
+	return "sunflower_field.field_map"
+
+
+func _get_visible_name() -> String:
+	return "Sunflower Field Map"
+
+
+func _get_recognized_extensions() -> PackedStringArray:
+	return PackedStringArray(["field"])
+
+
+func _get_save_extension() -> String:
+	return "res"
+
+
+func _get_resource_type() -> String:
+	return "Resource"
+
+
+func _get_priority() -> float:
+	return 1.0
+
+
+func _get_import_order() -> int:
+	return 0
+
+
+func _get_preset_count() -> int:
+	return 1
+
+
+func _get_preset_name(_preset_index: int) -> String:
+	return "Default"
+
+
+func _get_import_options(_path: String, _preset_index: int) -> Array[Dictionary]:
+	return [
+		{
+			"name": "legend_symbols",
+			"default_value": "",
+			"hint_string": "Extra symbols the map may use (mapped to scenes by the node's legend)",
+		},
+	]
+
+
+func _get_option_visibility(_path: String, _option_name: StringName, _options: Dictionary) -> bool:
+	return true
+
+
+func _import(
+	source_file: String,
+	save_path: String,
+	options: Dictionary,
+	_platform_variants: Array[String],
+	_gen_files: Array[String]
+) -> Error:
+	var errors: Array[String] = []
+	var field_map: SunflowerFieldMap = SunflowerFieldMap.from_file(source_file, errors)
+	if field_map == null:
+		push_error(errors[0])
+		return ERR_FILE_CANT_READ
+	var message: String = field_map.check(str(options.get("legend_symbols", "")))
+	if not message.is_empty():
+		push_error("Sunflower Field: cannot import " + message)
+		return ERR_PARSE_ERROR
+	return ResourceSaver.save(field_map, "%s.%s" % [save_path, _get_save_extension()])

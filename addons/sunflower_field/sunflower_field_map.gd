@@ -1,0 +1,51 @@
+@tool
+@icon("icons/sunflower_field.svg")
+class_name SunflowerFieldMap
+extends Resource
+## A field map: the text of a [code].field[/code] file (see [code]fields/FORMAT.md[/code]).
+##
+## Made by the importer from [code].field[/code] files, so exported games include the map, or by
+## [method from_file] at run time. The text is kept as bytes and parsed by the native core, which
+## reports errors with file, line and column.
+
+## Where the map came from; names the file in error messages.
+@export var source_path: String = ""
+## The raw bytes of the map file.
+@export var text: PackedByteArray = PackedByteArray()
+## Columns declared by the header (filled when the map is checked).
+@export var columns: int = 0
+## Rows declared by the header (filled when the map is checked).
+@export var rows: int = 0
+## Sunflowers in the map (filled when the map is checked).
+@export var plant_count: int = 0
+
+
+## Reads a map from [param path] ([code]res://[/code], [code]user://[/code] or an absolute path)
+## without checking it. Returns [code]null[/code] when the file cannot be read; [param r_error]
+## (if given) receives the message.
+static func from_file(path: String, r_error: Array[String] = []) -> SunflowerFieldMap:
+	if not FileAccess.file_exists(path):
+		r_error.append("%s: the map file does not exist" % path)
+		return null
+	var bytes: PackedByteArray = FileAccess.get_file_as_bytes(path)
+	var open_error: Error = FileAccess.get_open_error()
+	if open_error != OK:
+		r_error.append("%s: cannot read the map (%s)" % [path, error_string(open_error)])
+		return null
+	var field_map: SunflowerFieldMap = SunflowerFieldMap.new()
+	field_map.source_path = path
+	field_map.text = bytes
+	return field_map
+
+
+## Parses the map with [param legend] symbols allowed. Returns an empty string when the map is
+## valid (and fills [member columns], [member rows], [member plant_count]), else
+## [code]"file:line:column: message"[/code].
+func check(legend: String = "", max_plants: int = 0) -> String:
+	var simulation: SunflowerSimulation = SunflowerSimulation.new()
+	var message: String = simulation.load_map(text, source_path, legend, max_plants)
+	if message.is_empty():
+		columns = simulation.get_map_columns()
+		rows = simulation.get_map_rows()
+		plant_count = simulation.get_plant_count()
+	return message

@@ -1,0 +1,35 @@
+extends TestCase
+## The addon loads: the native class, the node, the resources and the imported demo map.
+
+
+func test_native_class_is_registered() -> void:
+	check(ClassDB.class_exists("SunflowerSimulation"), "SunflowerSimulation is not registered")
+	check(ClassDB.is_parent_class("SunflowerSimulation", "RefCounted"), "SunflowerSimulation is not a RefCounted")
+	check_eq(SunflowerSimulation.BUCKET_COUNT, 11, "bucket constant")
+
+
+func test_imported_map_is_a_field_map_resource() -> void:
+	var field_map: SunflowerFieldMap = load("res://fields/demo.field") as SunflowerFieldMap
+	if not check(field_map != null, "res://fields/demo.field did not import as a SunflowerFieldMap"):
+		return
+	check_eq(field_map.columns, 40, "columns")
+	check_eq(field_map.rows, 30, "rows")
+	check_eq(field_map.plant_count, 1103, "plants")
+
+
+func test_default_part_meshes_are_unit_height_and_near_thesis_triangle_counts() -> void:
+	var field: SunflowerField = SunflowerField.new()
+	var expected: Array[int] = [4030, 2083, 1145]  # thesis Table 1
+	for lod: int in 3:
+		var triangles: int = 0
+		for part: int in 3:
+			var mesh: Mesh = field.get_part_mesh(lod, part)
+			if not check(mesh != null, "no default mesh for level %d part %d" % [lod, part]):
+				continue
+			var box: AABB = mesh.get_aabb()
+			check(box.position.y >= -0.01 and box.position.y <= 0.02, "part %d/%d does not start at its root (y %s)" % [lod, part, box.position.y])
+			check(box.end.y <= 1.05, "part %d/%d is taller than 1 unit (%s)" % [lod, part, box.end.y])
+			for surface: int in mesh.get_surface_count():
+				triangles += mesh.surface_get_arrays(surface)[Mesh.ARRAY_INDEX].size() / 3
+		check(absf(triangles - expected[lod]) < expected[lod] * 0.15, "level %d has %d triangles, thesis %d" % [lod + 1, triangles, expected[lod]])
+	field.free()

@@ -1,0 +1,45 @@
+extends SceneTree
+## Runs every res://cases/test_*.gd (or those named after --), prints each failure with its file
+## and line, and ends with the line "godot: N passed, N failed". Exit code 1 on any failure.
+
+
+func _initialize() -> void:
+	_run.call_deferred()
+
+
+func _run() -> void:
+	var wanted: PackedStringArray = OS.get_cmdline_user_args()
+	var passed: int = 0
+	var failed: int = 0
+	var files: PackedStringArray = DirAccess.get_files_at("res://cases")
+	files.sort()
+	for file: String in files:
+		if not file.begins_with("test_") or not file.ends_with(".gd"):
+			continue
+		if not wanted.is_empty() and not wanted.has(file.get_basename()):
+			continue
+		var script: GDScript = load("res://cases/" + file) as GDScript
+		if script == null or not script.can_instantiate():
+			print("FAIL %s: the script does not load" % file)
+			failed += 1
+			continue
+		for method: Dictionary in script.get_script_method_list():
+			var name: String = method["name"]
+			if not name.begins_with("test_"):
+				continue
+			var case: TestCase = script.new() as TestCase
+			case.tree = self
+			case.before_each()
+			await case.call(name)
+			case.after_each()
+			await process_frame
+			if case.failures.is_empty():
+				passed += 1
+				print("ok   %s.%s" % [file.get_basename(), name])
+			else:
+				failed += 1
+				print("FAIL %s.%s" % [file.get_basename(), name])
+				for failure: String in case.failures:
+					print("     " + failure)
+	print("godot: %d passed, %d failed" % [passed, failed])
+	quit(1 if failed > 0 or passed == 0 else 0)

@@ -1,0 +1,48 @@
+class_name TestCase
+extends RefCounted
+## Base of the integration tests: methods named test_* are run in order; checks record failures
+## with the file and line of the failing check.
+
+var tree: SceneTree
+var failures: PackedStringArray = []
+
+
+func before_each() -> void:
+	pass
+
+
+func after_each() -> void:
+	pass
+
+
+func check(condition: bool, message: String = "") -> bool:
+	if not condition:
+		failures.append("%s: %s" % [_caller(), message if message else "check failed"])
+	return condition
+
+
+func check_eq(actual: Variant, expected: Variant, message: String = "") -> bool:
+	var same: bool = typeof(actual) == typeof(expected) and actual == expected
+	if not same:
+		failures.append("%s: %s expected %s, got %s" % [_caller(), message + ":" if message else "", expected, actual])
+	return same
+
+
+func check_near(actual: float, expected: float, tolerance: float, message: String = "") -> bool:
+	var close: bool = absf(actual - expected) <= tolerance
+	if not close:
+		failures.append("%s: %s expected %s ± %s, got %s" % [_caller(), message + ":" if message else "", expected, tolerance, actual])
+	return close
+
+
+func frames(count: int = 1) -> void:
+	for i: int in count:
+		await tree.process_frame
+
+
+func _caller() -> String:
+	for frame: Dictionary in get_stack():
+		var source: String = frame["source"]
+		if not source.ends_with("test_case.gd"):
+			return "%s:%d" % [source, frame["line"]]
+	return "?"
