@@ -1,6 +1,39 @@
 extends SceneTree
 ## Runs every res://cases/test_*.gd (or those named after --), prints each failure with its file
 ## and line, and ends with the line "godot: N passed, N failed". Exit code 1 on any failure.
+## An engine or script error during a test fails it, unless the test allowed it (allow_error).
+
+
+## Collects every error the engine reports (script errors included), from any thread.
+class ErrorLog:
+	extends Logger
+	var _mutex: Mutex = Mutex.new()
+	var _errors: PackedStringArray = []
+
+	func _log_error(
+		function: String,
+		file: String,
+		line: int,
+		code: String,
+		rationale: String,
+		_editor_notify: bool,
+		error_type: int,
+		_script_backtraces: Array[ScriptBacktrace]
+	) -> void:
+		if error_type == ERROR_TYPE_WARNING:
+			return
+		_mutex.lock()
+		_errors.append("%s (%s:%d %s)" % [rationale if rationale else code, file, line, function])
+		_mutex.unlock()
+
+	func take() -> PackedStringArray:
+		_mutex.lock()
+		var errors: PackedStringArray = _errors
+		_errors = []
+		_mutex.unlock()
+		return errors
+
+var _log: ErrorLog = ErrorLog.new()
 
 
 func _initialize() -> void:
@@ -8,6 +41,7 @@ func _initialize() -> void:
 
 
 func _run() -> void:
+	OS.add_logger(_log)
 	var wanted: PackedStringArray = OS.get_cmdline_user_args()
 	var passed: int = 0
 	var failed: int = 0
@@ -29,10 +63,17 @@ func _run() -> void:
 				continue
 			var case: TestCase = script.new() as TestCase
 			case.tree = self
+			_log.take()
 			case.before_each()
 			await case.call(name)
 			case.after_each()
 			await process_frame
+			for error: String in _log.take():
+				var allowed: bool = false
+				for fragment: String in case.allowed_errors:
+					allowed = allowed or error.contains(fragment)
+				if not allowed:
+					case.failures.append("unexpected engine error: " + error)
 			if case.failures.is_empty():
 				passed += 1
 				print("ok   %s.%s" % [file.get_basename(), name])
@@ -42,4 +83,5 @@ func _run() -> void:
 				for failure: String in case.failures:
 					print("     " + failure)
 	print("godot: %d passed, %d failed" % [passed, failed])
+	OS.remove_logger(_log)
 	quit(1 if failed > 0 or passed == 0 else 0)

@@ -5,6 +5,8 @@ extends RefCounted
 
 var tree: SceneTree
 var failures: PackedStringArray = []
+## Substrings of engine errors this test provokes on purpose; any other error fails the test.
+var allowed_errors: PackedStringArray = []
 
 
 func before_each() -> void:
@@ -13,6 +15,11 @@ func before_each() -> void:
 
 func after_each() -> void:
 	pass
+
+
+## Lets engine errors containing [param fragment] happen during this test (bad input on purpose).
+func allow_error(fragment: String) -> void:
+	allowed_errors.append(fragment)
 
 
 func check(condition: bool, message: String = "") -> bool:

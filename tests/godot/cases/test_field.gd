@@ -1,0 +1,242 @@
+extends TestCase
+## SunflowerField in a scene: layout against the map, LOD against the observer, buffers in the
+## RenderingServer, wind, and the exactly-once invariant reconstructed from engine state.
+
+var field: SunflowerField
+var observer: Node3D
+
+
+func before_each() -> void:
+	observer = Node3D.new()
+	observer.name = "Observer"
+	tree.root.add_child(observer)
+	field = SunflowerField.new()
+	field.observer = NodePath("../Observer")
+	tree.root.add_child(field)
+	field.map = load("res://fields/demo.field") as SunflowerFieldMap
+	field.advance(0.0)
+
+
+func after_each() -> void:
+	field.free()
+	observer.free()
+
+
+func _map_cells() -> Dictionary:
+	# The demo map read independently of the addon: cells holding '*'.
+	var cells: Dictionary = {}
+	var lines: PackedStringArray = FileAccess.get_file_as_string("res://fields/demo.field").split("\n")
+	var row: int = -1
+	for line: String in lines:
+		if line.begins_with("#"):
+			continue
+		if row == -1:
+			row = 0  # the header
+			continue
+		for column: int in line.length():
+			if line[column] == "*":
+				cells[Vector2i(column, row)] = true
+		row += 1
+	return cells
+
+
+func test_plant_count_and_positions_match_the_map() -> void:
+	var cells: Dictionary = _map_cells()
+	check_eq(field.get_plant_count(), cells.size(), "plant count")
+	var seen: Dictionary = {}
+	for i: int in field.get_plant_count():
+		var position: Vector3 = field.get_plant_info(i)["position"]
+		var cell: Vector2i = Vector2i(floori(position.x / 0.5), floori(position.z / 0.5))
+		check(cells.has(cell), "plant %d at %s is not on a '*' cell (%s)" % [i, position, cell])
+		check(not seen.has(cell), "two plants on cell %s" % cell)
+		seen[cell] = true
+		var alpha: float = position.x / 0.5 - cell.x
+		check(alpha >= 0.0 and alpha < 0.5, "plant %d: α = %s outside [0, 0.5)" % [i, alpha])
+		check_near(position.z / 0.5 - cell.y, alpha, 1e-4, "plant %d: the same α on z" % i)
+
+
+func test_lod_counts_follow_the_observer() -> void:
+	observer.position = Vector3(10.0, 1.7, 7.5)  # the middle of the field
+	field.advance(0.3)
+	var near: PackedInt32Array = field.get_lod_counts()
+	check(near[0] > 100, "mesh 1 plants near the middle: %s" % near)
+	check_eq(_sum(near), field.get_plant_count(), "every plant counted once")
+	observer.position = Vector3(10.0, 1.7, 200.0)
+	field.advance(0.3)
+	var far: PackedInt32Array = field.get_lod_counts()
+	check_eq(far[4], field.get_plant_count(), "all billboards from 200 m: %s" % far)
+	observer.position = Vector3(10.0, 1.7, -12.0)  # 12–27 m from the rows
+	field.advance(0.3)
+	var edge: PackedInt32Array = field.get_lod_counts()
+	check(edge[0] == 0 and edge[1] == 0, "no near meshes from 12 m away: %s" % edge)
+	check(edge[2] > 0 and edge[3] + edge[4] > 0, "mesh 3 and impostors from the edge: %s" % edge)
+	for i: int in field.get_plant_count():
+		var info: Dictionary = field.get_plant_info(i)
+		var d: float = (info["position"] + Vector3(0, 1.067, 0)).distance_to(observer.position)
+		if d < 9.5 or (d > 10.5 and d < 19.5):
+			check_eq(info["lod"], 0 if d < 6.0 else 1 if d < 10.0 else 2, "plant %d at %.1f m" % [i, d])
+
+
+func test_buffers_reach_the_rendering_server() -> void:
+	observer.position = Vector3(10.0, 1.7, 7.5)
+	field.advance(0.3)
+	var simulation: SunflowerSimulation = field.get_simulation()
+	var heads: MultiMeshInstance3D = _node("Mesh1Head")
+	var rid: RID = heads.multimesh.get_rid()
+	var count: int = simulation.get_bucket_instance_count(2)
+	check(count > 100, "mesh-1 heads written: %d" % count)
+	check_eq(RenderingServer.multimesh_get_visible_instances(rid), count, "visible instances")
+	var buffer: PackedFloat32Array = RenderingServer.multimesh_get_buffer(rid)
+	check(buffer.size() >= count * 12, "buffer holds the instances")
+	# Each head instance is some mesh-1 plant's head transform, as get_plant_info reports it.
+	var heads_by_origin: Dictionary = {}
+	for i: int in field.get_plant_count():
+		var info: Dictionary = field.get_plant_info(i)
+		if info["lod"] == 0:
+			var head: Transform3D = info["parts"][2]
+			heads_by_origin[_key(head.origin)] = head
+	check_eq(heads_by_origin.size(), count, "mesh-1 plants vs instances")
+	for k: int in count:
+		var origin: Vector3 = Vector3(buffer[k * 12 + 3], buffer[k * 12 + 7], buffer[k * 12 + 11])
+		var expected: Variant = heads_by_origin.get(_key(origin))
+		if not check(expected != null, "instance %d at %s is no plant's head" % [k, origin]):
+			break
+		check_near(buffer[k * 12 + 1], (expected as Transform3D).basis.y.x, 1e-4, "basis y.x of instance %d" % k)
+
+
+func test_wind_moves_the_plants_and_calm_keeps_them_upright() -> void:
+	observer.position = Vector3(10.0, 1.7, 7.5)
+	field.wind_power = 0.0
+	field.advance(0.3)
+	var plant: int = _a_plant_at_lod(0)
+	var before: Array = field.get_plant_info(plant)["parts"]
+	for i: int in 20:
+		field.advance(0.05)
+	var after: Array = field.get_plant_info(plant)["parts"]
+	for part: int in 3:
+		check(after[part].is_equal_approx(before[part]), "calm: part %d moved" % part)
+		check_near((after[part] as Transform3D).basis.y.normalized().y, 1.0, 1e-5, "calm: part %d upright" % part)
+	field.wind_power = 4.0
+	field.wind_direction = Vector2(0.0, 1.0)
+	var tips: Array[Vector3] = []
+	for i: int in 12:
+		field.advance(0.05)
+		var head: Transform3D = field.get_plant_info(plant)["parts"][2]
+		tips.append(head.origin)
+	var moved: float = 0.0
+	for i: int in range(1, tips.size()):
+		moved += tips[i].distance_to(tips[i - 1])
+		check_near(tips[i].x, tips[0].x, 1e-3, "the wind blows along z: the head keeps its x")
+	check(moved > 0.01, "windy: the head moved %s m" % moved)
+
+
+func test_every_plant_is_drawn_exactly_once_along_a_camera_path() -> void:
+	# Reconstruct, from the RenderingServer's buffers and the visibility ranges, where each plant
+	# is drawn; a plain Node3D observer has no frustum, so every plant must appear exactly once.
+	var positions: Dictionary = {}
+	for i: int in field.get_plant_count():
+		positions[_key(field.get_plant_info(i)["position"])] = i
+	var path: Array[Vector3] = [
+		Vector3(-40, 1.7, -40), Vector3(-8, 1.7, 7), Vector3(0, 1.7, 0), Vector3(5, 1.7, 3), Vector3(10, 1.7, 7.5),
+		Vector3(14, 1.7, 12), Vector3(19.5, 1.7, 14.5), Vector3(26, 1.7, 20), Vector3(30, 30, 10), Vector3(10, 60, 7),
+	]
+	for stop: Vector3 in path:
+		observer.position = stop
+		field.advance(0.3)
+		var drawn: PackedInt32Array = PackedInt32Array()
+		drawn.resize(field.get_plant_count())
+		for node: MultiMeshInstance3D in _field_nodes():
+			var rid: RID = node.multimesh.get_rid()
+			var visible: int = RenderingServer.multimesh_get_visible_instances(rid)
+			var instances: int = visible if visible >= 0 else RenderingServer.multimesh_get_instance_count(rid)
+			if instances == 0 or not _in_visibility_range(node, stop):
+				continue
+			if node.name.contains("Middle") or node.name.contains("Head"):
+				continue  # one part per plant: the bottom part's origin is the plant's root
+			var buffer: PackedFloat32Array = RenderingServer.multimesh_get_buffer(rid)
+			for k: int in instances:
+				var root: Vector3 = Vector3(buffer[k * 12 + 3], buffer[k * 12 + 7], buffer[k * 12 + 11])
+				var index: int = positions.get(_key(root), -1)
+				if check(index >= 0, "%s instance %d at %s is no plant" % [node.name, k, root]):
+					drawn[index] += 1
+		var wrong: int = 0
+		for i: int in drawn.size():
+			if drawn[i] != 1:
+				wrong += 1
+				if wrong <= 3:
+					check_eq(drawn[i], 1, "from %s plant %d is drawn %d times" % [stop, i, drawn[i]])
+		check_eq(wrong, 0, "from %s plants not drawn exactly once" % stop)
+		check_eq(_sum(field.get_lod_counts()), field.get_plant_count(), "LOD counts from %s" % stop)
+
+
+func test_a_bad_map_keeps_the_field_and_reports_file_line_column() -> void:
+	allow_error("bad_map.field:3:2")
+	allow_error("no_such_map.field")
+	var messages: Array[String] = []
+	field.map_error.connect(func(message: String) -> void: messages.append(message))
+	var before: int = field.get_plant_count()
+	var path: String = "user://bad_map.field"
+	var file: FileAccess = FileAccess.open(path, FileAccess.WRITE)
+	file.store_string("3 2\n***\n*x*\n")
+	file.close()
+	var error: Error = field.load_map_file(path)
+	check_eq(error, ERR_PARSE_ERROR, "load_map_file result")
+	check_eq(messages.size(), 1, "map_error emitted once")
+	if messages.size() == 1:
+		check(messages[0].begins_with(path + ":3:2: unexpected 'x'"), "message: " + messages[0])
+	check_eq(field.get_plant_count(), before, "the old field stays")
+	check(" ".join(field._get_configuration_warnings()).contains("bad_map.field:3:2"), "a configuration warning names the error")
+	check_eq(field.load_map_file("user://no_such_map.field"), ERR_FILE_CANT_OPEN, "missing file")
+	check_eq(field.get_plant_count(), before, "the old field stays after a missing file")
+	var good: FileAccess = FileAccess.open(path, FileAccess.WRITE)
+	good.store_string("3 2\n***\n* *\n")
+	good.close()
+	check_eq(field.load_map_file(path), OK, "a good map loads")
+	check_eq(field.get_plant_count(), 5, "the new field")
+
+
+# --- helpers ---
+
+
+func _sum(values: PackedInt32Array) -> int:
+	var total: int = 0
+	for v: int in values:
+		total += v
+	return total
+
+
+func _key(v: Vector3) -> Vector2i:
+	return Vector2i(roundi(v.x * 1000.0), roundi(v.z * 1000.0))
+
+
+func _field_nodes() -> Array[MultiMeshInstance3D]:
+	var nodes: Array[MultiMeshInstance3D] = []
+	for child: Node in field.get_children(true):
+		if child is MultiMeshInstance3D:
+			nodes.append(child)
+	return nodes
+
+
+func _node(node_name: String) -> MultiMeshInstance3D:
+	for node: MultiMeshInstance3D in _field_nodes():
+		if node.name == node_name:
+			return node
+	check(false, "no node " + node_name)
+	return null
+
+
+## The engine's rule: shown while begin ≤ distance ≤ end, the distance measured from the camera
+## to the centre of the instance's world-space bounding box (0 disables a bound).
+func _in_visibility_range(node: GeometryInstance3D, camera: Vector3) -> bool:
+	var distance: float = camera.distance_to(node.global_transform * node.custom_aabb.get_center())
+	if node.visibility_range_end > 0.0 and distance > node.visibility_range_end:
+		return false
+	return not (node.visibility_range_begin > 0.0 and distance < node.visibility_range_begin)
+
+
+func _a_plant_at_lod(lod: int) -> int:
+	for i: int in field.get_plant_count():
+		if field.get_plant_info(i)["lod"] == lod:
+			return i
+	check(false, "no plant at LOD %d" % lod)
+	return 0
