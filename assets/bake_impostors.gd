@@ -42,12 +42,18 @@ func _bake(out_dir: String) -> void:
 	sun.light_energy = 1.1
 	viewport.add_child(sun)
 
-	# The plant, upright: parts chained end to start.
+	# The plant, upright: parts chained end to start. Drawn unshaded, so the texture holds plain
+	# albedo and the field's own lights shade the impostors once, like the meshes.
+	var albedo_only: StandardMaterial3D = StandardMaterial3D.new()
+	albedo_only.vertex_color_use_as_albedo = true
+	albedo_only.shading_mode = BaseMaterial3D.SHADING_MODE_UNSHADED
+	albedo_only.cull_mode = BaseMaterial3D.CULL_DISABLED
 	var y: float = 0.0
 	for part: String in PARTS:
 		var instance: MeshInstance3D = MeshInstance3D.new()
 		instance.mesh = load("res://addons/sunflower_field/meshes/sunflower_lod1_%s.res" % part)
 		instance.position.y = y
+		instance.material_override = albedo_only
 		viewport.add_child(instance)
 		y += 1.0
 

@@ -1,0 +1,98 @@
+extends TestCase
+## Renders the demo field from a fixed viewpoint with the real renderer (run under Xvfb), saves
+## the screenshot to tests/artifacts/, and checks that sunflower colours are where the field is.
+
+const SHOT: String = "render_demo_field.png"
+
+var scene: Node3D
+
+
+func before_each() -> void:
+	scene = Node3D.new()
+	tree.root.add_child(scene)
+	var environment: Environment = Environment.new()
+	environment.background_mode = Environment.BG_SKY
+	var sky: Sky = Sky.new()
+	sky.sky_material = ProceduralSkyMaterial.new()
+	environment.sky = sky
+	environment.ambient_light_source = Environment.AMBIENT_SOURCE_SKY
+	environment.tonemap_mode = Environment.TONE_MAPPER_FILMIC
+	var world: WorldEnvironment = WorldEnvironment.new()
+	world.environment = environment
+	scene.add_child(world)
+	var sun: DirectionalLight3D = DirectionalLight3D.new()
+	sun.rotation_degrees = Vector3(-40.0, 25.0, 0.0)  # from the south-east, behind the camera
+	sun.shadow_enabled = true
+	scene.add_child(sun)
+	var ground: MeshInstance3D = MeshInstance3D.new()
+	var plane: PlaneMesh = PlaneMesh.new()
+	plane.size = Vector2(200.0, 200.0)
+	var soil: StandardMaterial3D = StandardMaterial3D.new()
+	soil.albedo_color = Color(0.36, 0.27, 0.17)
+	plane.material = soil
+	ground.mesh = plane
+	ground.position = Vector3(10.0, 0.0, 7.5)
+	scene.add_child(ground)
+
+
+func after_each() -> void:
+	scene.free()
+
+
+func test_demo_field_renders_as_sunflowers() -> void:
+	var field: SunflowerField = SunflowerField.new()
+	scene.add_child(field)
+	field.map = load("res://fields/demo.field") as SunflowerFieldMap
+	field.wind_power = 0.0
+	var camera: Camera3D = Camera3D.new()
+	scene.add_child(camera)
+	# South of the field, looking north across it towards the flower heads (which face +z).
+	camera.look_at_from_position(Vector3(12.0, 2.4, 18.5), Vector3(9.0, 1.0, 4.0))
+	camera.make_current()
+	await frames(8)
+	var counts: PackedInt32Array = field.get_lod_counts()
+	check(counts[0] > 0 and counts[2] > 0 and counts[3] + counts[4] > 0, "several representations in view: %s" % counts)
+	var image: Image = tree.root.get_viewport().get_texture().get_image()
+	var path: String = _artifact_path(SHOT)
+	check_eq(image.save_png(path), OK, "saving " + path)
+	print("     screenshot: " + path)
+	var size: Vector2i = image.get_size()
+	var yellow: int = 0
+	var green: int = 0
+	var brown_disc: int = 0
+	var sky: int = 0
+	var samples: int = 0
+	for y: int in range(0, size.y, 2):
+		for x: int in range(0, size.x, 2):
+			var c: Color = image.get_pixel(x, y)
+			samples += 1
+			if _is_yellow(c):
+				yellow += 1
+			elif c.g > c.r * 1.1 and c.g > c.b * 1.3 and c.g > 0.12:
+				green += 1
+			elif c.r > c.b * 1.4 and c.r < 0.35 and c.g < 0.25:
+				brown_disc += 1
+			elif c.b > c.r and c.b > 0.5:
+				sky += 1
+	print("     colours: yellow %.1f%%, green %.1f%%, dark brown %.1f%%, sky %.1f%%" % [100.0 * yellow / samples, 100.0 * green / samples, 100.0 * brown_disc / samples, 100.0 * sky / samples])
+	check(yellow > samples / 100, "yellow petals cover at least 1 %% of the picture (%d of %d)" % [yellow, samples])
+	check(green > samples / 20, "green stems and leaves cover at least 5 %% (%d of %d)" % [green, samples])
+	check(sky > samples / 20, "the sky is visible above the field (%d of %d)" % [sky, samples])
+	# The field fills the lower half: petals there, none in the top fifth (sky).
+	var top_yellow: int = 0
+	for y: int in range(0, size.y / 5, 2):
+		for x: int in range(0, size.x, 2):
+			var c: Color = image.get_pixel(x, y)
+			top_yellow += 1 if _is_yellow(c) else 0
+	check(top_yellow < samples / 500, "no sunflowers in the sky (%d)" % top_yellow)
+
+
+## Petal yellow: bright red and green, little blue.
+func _is_yellow(c: Color) -> bool:
+	return c.r > 0.55 and c.g > 0.42 and c.b < 0.45 * minf(c.r, c.g)
+
+
+func _artifact_path(file: String) -> String:
+	var folder: String = ProjectSettings.globalize_path("res://").path_join("../artifacts").simplify_path()
+	DirAccess.make_dir_recursive_absolute(folder)
+	return folder.path_join(file)
