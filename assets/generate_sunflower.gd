@@ -18,9 +18,39 @@ const BACK_GREEN: Color = Color(0.28, 0.45, 0.13)
 ## Detail per level: stem sides and rings, leaf grid (along × across), head rings and sectors,
 ## petals per row, rows of petals, petal segments.
 const LEVELS: Array[Dictionary] = [
-	{"sides": 12, "rings": 8, "leaf_u": 16, "leaf_v": 8, "disc_rings": 6, "sectors": 32, "petals": 30, "petal_rows": 2, "petal_segments": 4},
-	{"sides": 8, "rings": 5, "leaf_u": 10, "leaf_v": 6, "disc_rings": 4, "sectors": 20, "petals": 22, "petal_rows": 2, "petal_segments": 3},
-	{"sides": 6, "rings": 3, "leaf_u": 8, "leaf_v": 4, "disc_rings": 3, "sectors": 14, "petals": 18, "petal_rows": 2, "petal_segments": 2},
+	{
+		"sides": 12,
+		"rings": 8,
+		"leaf_u": 16,
+		"leaf_v": 8,
+		"disc_rings": 6,
+		"sectors": 32,
+		"petals": 30,
+		"petal_rows": 2,
+		"petal_segments": 4
+	},
+	{
+		"sides": 8,
+		"rings": 5,
+		"leaf_u": 10,
+		"leaf_v": 6,
+		"disc_rings": 4,
+		"sectors": 20,
+		"petals": 22,
+		"petal_rows": 2,
+		"petal_segments": 3
+	},
+	{
+		"sides": 6,
+		"rings": 3,
+		"leaf_u": 8,
+		"leaf_v": 4,
+		"disc_rings": 3,
+		"sectors": 14,
+		"petals": 18,
+		"petal_rows": 2,
+		"petal_segments": 2
+	},
 ]
 
 
@@ -103,12 +133,19 @@ func _init() -> void:
 			if error != OK:
 				printerr("cannot save %s: %s" % [path, error_string(error)])
 				failed = true
-		print("level %d: %d triangles (bottom %d, middle %d, head %d)" % [level + 1, total, parts[0].triangle_count(), parts[1].triangle_count(), parts[2].triangle_count()])
+		print(
+			(
+				"level %d: %d triangles (bottom %d, middle %d, head %d)"
+				% [level + 1, total, parts[0].triangle_count(), parts[1].triangle_count(), parts[2].triangle_count()]
+			)
+		)
 	quit(1 if failed else 0)
 
 
 ## A tapered stem from y0 to y1 following a curve x/z = bend(y).
-func _stem(builder: MeshBuilder, detail: Dictionary, radius0: float, radius1: float, y1: float, curve: Callable) -> void:
+func _stem(
+	builder: MeshBuilder, detail: Dictionary, radius0: float, radius1: float, y1: float, curve: Callable
+) -> void:
 	var sides: int = detail["sides"]
 	var rings: int = detail["rings"]
 	builder.add_grid(
@@ -128,7 +165,9 @@ func _straight(y: float) -> Vector3:
 
 
 ## A broad, pointed, drooping sunflower leaf on a short petiole.
-func _leaf(builder: MeshBuilder, detail: Dictionary, height: float, angle: float, length: float, width: float, droop: float) -> void:
+func _leaf(
+	builder: MeshBuilder, detail: Dictionary, height: float, angle: float, length: float, width: float, droop: float
+) -> void:
 	var dir: Vector3 = Vector3(cos(angle), 0.0, sin(angle))
 	var side: Vector3 = Vector3(-dir.z, 0.0, dir.x)
 	var base: Vector3 = Vector3(0.0, height, 0.0) + dir * 0.025
@@ -202,7 +241,8 @@ func _head(detail: Dictionary) -> MeshBuilder:
 		disc_rings,
 		sectors,
 		func(u: float, v: float) -> Vector3: return at.call(disc_radius * u, v * TAU, 0.025 * (1.0 - u * u)),
-		func(u: float, _v: float) -> Color: return DISC_CENTRE.lerp(DISC_BROWN, u).darkened(0.15 * (1.0 - absf(sin(u * 9.0))))
+		func(u: float, _v: float) -> Color:
+			return DISC_CENTRE.lerp(DISC_BROWN, u).darkened(0.15 * (1.0 - absf(sin(u * 9.0))))
 	)
 	# Back of the head: a green shallow bowl behind the disc.
 	builder.add_grid(
@@ -226,7 +266,12 @@ func _head(detail: Dictionary) -> MeshBuilder:
 				1,
 				func(u: float, v: float) -> Vector3:
 					var half_width: float = 0.05 * sin(PI * (0.15 + 0.85 * u))
-					return root + radial * length * u + tangent * (v - 0.5) * 2.0 * half_width - facing * (0.04 * u * u + 0.01 * row),
+					return (
+						root
+						+ radial * length * u
+						+ tangent * (v - 0.5) * 2.0 * half_width
+						- facing * (0.04 * u * u + 0.01 * row)
+					),
 				func(u: float, _v: float) -> Color: return PETAL_YELLOW.lerp(PETAL_TIP, u * 0.6).darkened(0.08 * row)
 			)
 	return builder

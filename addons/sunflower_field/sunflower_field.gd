@@ -36,6 +36,9 @@ const IMPOSTOR_HEIGHT: float = 3.2
 ## How far the sprite's top edge leans forward, like the nodding head, in model units.
 const SPRITE_LEAN: float = 0.12
 const ADDON_DIR: String = "res://addons/sunflower_field/"
+const DEFAULT_FRONT_TEXTURE: Texture2D = preload("textures/sunflower_front.png")
+const DEFAULT_SIDE_TEXTURE: Texture2D = preload("textures/sunflower_side.png")
+const IMPOSTOR_SHADER: Shader = preload("shaders/impostor.gdshader")
 
 @export_group("Field")
 ## The field map. Import a [code].field[/code] file (the plugin turns it into a
@@ -132,17 +135,17 @@ const ADDON_DIR: String = "res://addons/sunflower_field/"
 
 @export_group("Plant")
 ## Texture of the sprite's front quad (the flower head seen from the front), with alpha.
-@export var sprite_front_texture: Texture2D = preload("textures/sunflower_front.png"):
+@export var sprite_front_texture: Texture2D = DEFAULT_FRONT_TEXTURE:
 	set(value):
 		sprite_front_texture = value
 		_queue_rebuild()
 ## Texture of the sprite's side quad, with alpha.
-@export var sprite_side_texture: Texture2D = preload("textures/sunflower_side.png"):
+@export var sprite_side_texture: Texture2D = DEFAULT_SIDE_TEXTURE:
 	set(value):
 		sprite_side_texture = value
 		_queue_rebuild()
 ## Texture of the billboard, with alpha.
-@export var billboard_texture: Texture2D = preload("textures/sunflower_front.png"):
+@export var billboard_texture: Texture2D = DEFAULT_FRONT_TEXTURE:
 	set(value):
 		billboard_texture = value
 		_queue_rebuild()
@@ -346,17 +349,22 @@ func _get_configuration_warnings() -> PackedStringArray:
 
 func _get_property_list() -> Array[Dictionary]:
 	var properties: Array[Dictionary] = []
-	properties.append({"name": "Part meshes", "type": TYPE_NIL, "usage": PROPERTY_USAGE_GROUP, "hint_string": "part_meshes/"})
+	properties.append(
+		{"name": "Part meshes", "type": TYPE_NIL, "usage": PROPERTY_USAGE_GROUP, "hint_string": "part_meshes/"}
+	)
 	for lod: int in MESH_LEVELS:
 		for part: int in 3:
-			properties.append(
-				{
-					"name": "part_meshes/mesh_%d/%s" % [lod + 1, PART_NAMES[part]],
-					"type": TYPE_OBJECT,
-					"hint": PROPERTY_HINT_RESOURCE_TYPE,
-					"hint_string": "Mesh",
-					"usage": PROPERTY_USAGE_DEFAULT,
-				}
+			(
+				properties
+				. append(
+					{
+						"name": "part_meshes/mesh_%d/%s" % [lod + 1, PART_NAMES[part]],
+						"type": TYPE_OBJECT,
+						"hint": PROPERTY_HINT_RESOURCE_TYPE,
+						"hint_string": "Mesh",
+						"usage": PROPERTY_USAGE_DEFAULT,
+					}
+				)
 			)
 	return properties
 
@@ -500,16 +508,17 @@ func _clear_field() -> void:
 
 
 func _build_materials() -> void:
-	var shader: Shader = preload("shaders/impostor.gdshader")
 	for key: String in ["front", "side", "billboard"]:
 		var material: ShaderMaterial = ShaderMaterial.new()
-		material.shader = shader
+		material.shader = IMPOSTOR_SHADER
 		_materials[key] = material
 	_update_materials()
 
 
 func _update_materials() -> void:
-	var textures: Dictionary = {"front": sprite_front_texture, "side": sprite_side_texture, "billboard": billboard_texture}
+	var textures: Dictionary = {
+		"front": sprite_front_texture, "side": sprite_side_texture, "billboard": billboard_texture
+	}
 	for key: String in _materials:
 		var material: ShaderMaterial = _materials[key]
 		if textures[key] == null:
@@ -544,7 +553,9 @@ func _build_dynamic_nodes() -> void:
 	var aabb: AABB = _field_aabb()
 	for lod: int in MESH_LEVELS:
 		for part: int in 3:
-			var node: MultiMeshInstance3D = _make_multimesh_node("Mesh%d%s" % [lod + 1, PART_NAMES[part].capitalize()], get_part_mesh(lod, part), aabb)
+			var node: MultiMeshInstance3D = _make_multimesh_node(
+				"Mesh%d%s" % [lod + 1, PART_NAMES[part].capitalize()], get_part_mesh(lod, part), aabb
+			)
 			_dynamic_nodes.append(node)
 	var sprite: MultiMeshInstance3D = _make_multimesh_node("Sprites", _sprite_mesh(), aabb)
 	var billboard: MultiMeshInstance3D = _make_multimesh_node("Billboards", _billboard_mesh(), aabb)
@@ -576,11 +587,18 @@ func _build_objects() -> void:
 		var symbol: String = String.chr(objects[i + 2])
 		var scene: PackedScene = legend.get(symbol) as PackedScene
 		if scene == null:
-			push_warning("SunflowerField.legend: '%s' has no PackedScene; cell (%d, %d) stays empty" % [symbol, objects[i], objects[i + 1]])
+			push_warning(
+				(
+					"SunflowerField.legend: '%s' has no PackedScene; cell (%d, %d) stays empty"
+					% [symbol, objects[i], objects[i + 1]]
+				)
+			)
 			continue
 		var instance: Node = scene.instantiate()
 		if instance is Node3D:
-			(instance as Node3D).position = Vector3((objects[i] + 0.5) * cell_size, 0.0, (objects[i + 1] + 0.5) * cell_size)
+			(instance as Node3D).position = Vector3(
+				(objects[i] + 0.5) * cell_size, 0.0, (objects[i + 1] + 0.5) * cell_size
+			)
 		add_child(instance, false, Node.INTERNAL_MODE_BACK)
 		_object_nodes.append(instance)
 
@@ -591,8 +609,18 @@ func _sprite_mesh() -> ArrayMesh:
 	var w: float = IMPOSTOR_WIDTH * 0.5
 	var h: float = IMPOSTOR_HEIGHT
 	var mesh: ArrayMesh = ArrayMesh.new()
-	_add_quad(mesh, [Vector3(-w, 0, 0), Vector3(w, 0, 0), Vector3(w, h, SPRITE_LEAN), Vector3(-w, h, SPRITE_LEAN)], Vector3(0, 0, 1), _materials["front"])
-	_add_quad(mesh, [Vector3(0, 0, w), Vector3(0, 0, -w), Vector3(SPRITE_LEAN, h, -w), Vector3(SPRITE_LEAN, h, w)], Vector3(1, 0, 0), _materials["side"])
+	_add_quad(
+		mesh,
+		[Vector3(-w, 0, 0), Vector3(w, 0, 0), Vector3(w, h, SPRITE_LEAN), Vector3(-w, h, SPRITE_LEAN)],
+		Vector3(0, 0, 1),
+		_materials["front"]
+	)
+	_add_quad(
+		mesh,
+		[Vector3(0, 0, w), Vector3(0, 0, -w), Vector3(SPRITE_LEAN, h, -w), Vector3(SPRITE_LEAN, h, w)],
+		Vector3(1, 0, 0),
+		_materials["side"]
+	)
 	return mesh
 
 
@@ -601,7 +629,12 @@ func _billboard_mesh() -> ArrayMesh:
 	var w: float = IMPOSTOR_WIDTH * 0.5
 	var h: float = IMPOSTOR_HEIGHT
 	var mesh: ArrayMesh = ArrayMesh.new()
-	_add_quad(mesh, [Vector3(-w, 0, 0), Vector3(w, 0, 0), Vector3(w, h, 0), Vector3(-w, h, 0)], Vector3(0, 0, 1), _materials["billboard"])
+	_add_quad(
+		mesh,
+		[Vector3(-w, 0, 0), Vector3(w, 0, 0), Vector3(w, h, 0), Vector3(-w, h, 0)],
+		Vector3(0, 0, 1),
+		_materials["billboard"]
+	)
 	return mesh
 
 

@@ -33,6 +33,7 @@ class ErrorLog:
 		_mutex.unlock()
 		return errors
 
+
 var _log: ErrorLog = ErrorLog.new()
 
 

@@ -38,7 +38,12 @@ func check_eq(actual: Variant, expected: Variant, message: String = "") -> bool:
 func check_near(actual: float, expected: float, tolerance: float, message: String = "") -> bool:
 	var close: bool = absf(actual - expected) <= tolerance
 	if not close:
-		failures.append("%s: %s expected %s ± %s, got %s" % [_caller(), message + ":" if message else "", expected, tolerance, actual])
+		failures.append(
+			(
+				"%s: %s expected %s ± %s, got %s"
+				% [_caller(), message + ":" if message else "", expected, tolerance, actual]
+			)
+		)
 	return close
 
 

@@ -27,9 +27,15 @@ func test_default_part_meshes_are_unit_height_and_near_thesis_triangle_counts() 
 			if not check(mesh != null, "no default mesh for level %d part %d" % [lod, part]):
 				continue
 			var box: AABB = mesh.get_aabb()
-			check(box.position.y >= -0.01 and box.position.y <= 0.02, "part %d/%d does not start at its root (y %s)" % [lod, part, box.position.y])
+			check(
+				box.position.y >= -0.01 and box.position.y <= 0.02,
+				"part %d/%d does not start at its root (y %s)" % [lod, part, box.position.y]
+			)
 			check(box.end.y <= 1.05, "part %d/%d is taller than 1 unit (%s)" % [lod, part, box.end.y])
 			for surface: int in mesh.get_surface_count():
 				triangles += mesh.surface_get_arrays(surface)[Mesh.ARRAY_INDEX].size() / 3
-		check(absf(triangles - expected[lod]) < expected[lod] * 0.15, "level %d has %d triangles, thesis %d" % [lod + 1, triangles, expected[lod]])
+		check(
+			absf(triangles - expected[lod]) < expected[lod] * 0.15,
+			"level %d has %d triangles, thesis %d" % [lod + 1, triangles, expected[lod]]
+		)
 	field.free()

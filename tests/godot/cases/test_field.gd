@@ -137,8 +137,16 @@ func test_every_plant_is_drawn_exactly_once_along_a_camera_path() -> void:
 	for i: int in field.get_plant_count():
 		positions[_key(field.get_plant_info(i)["position"])] = i
 	var path: Array[Vector3] = [
-		Vector3(-40, 1.7, -40), Vector3(-8, 1.7, 7), Vector3(0, 1.7, 0), Vector3(5, 1.7, 3), Vector3(10, 1.7, 7.5),
-		Vector3(14, 1.7, 12), Vector3(19.5, 1.7, 14.5), Vector3(26, 1.7, 20), Vector3(30, 30, 10), Vector3(10, 60, 7),
+		Vector3(-40, 1.7, -40),
+		Vector3(-8, 1.7, 7),
+		Vector3(0, 1.7, 0),
+		Vector3(5, 1.7, 3),
+		Vector3(10, 1.7, 7.5),
+		Vector3(14, 1.7, 12),
+		Vector3(19.5, 1.7, 14.5),
+		Vector3(26, 1.7, 20),
+		Vector3(30, 30, 10),
+		Vector3(10, 60, 7),
 	]
 	for stop: Vector3 in path:
 		observer.position = stop
@@ -185,7 +193,10 @@ func test_a_bad_map_keeps_the_field_and_reports_file_line_column() -> void:
 	if messages.size() == 1:
 		check(messages[0].begins_with(path + ":3:2: unexpected 'x'"), "message: " + messages[0])
 	check_eq(field.get_plant_count(), before, "the old field stays")
-	check(" ".join(field._get_configuration_warnings()).contains("bad_map.field:3:2"), "a configuration warning names the error")
+	check(
+		" ".join(field._get_configuration_warnings()).contains("bad_map.field:3:2"),
+		"a configuration warning names the error"
+	)
 	check_eq(field.load_map_file("user://no_such_map.field"), ERR_FILE_CANT_OPEN, "missing file")
 	check_eq(field.get_plant_count(), before, "the old field stays after a missing file")
 	var good: FileAccess = FileAccess.open(path, FileAccess.WRITE)

@@ -74,7 +74,12 @@ func test_demo_field_renders_as_sunflowers() -> void:
 				brown_disc += 1
 			elif c.b > c.r and c.b > 0.5:
 				sky += 1
-	print("     colours: yellow %.1f%%, green %.1f%%, dark brown %.1f%%, sky %.1f%%" % [100.0 * yellow / samples, 100.0 * green / samples, 100.0 * brown_disc / samples, 100.0 * sky / samples])
+	print(
+		(
+			"     colours: yellow %.1f%%, green %.1f%%, dark brown %.1f%%, sky %.1f%%"
+			% [100.0 * yellow / samples, 100.0 * green / samples, 100.0 * brown_disc / samples, 100.0 * sky / samples]
+		)
+	)
 	check(yellow > samples / 100, "yellow petals cover at least 1 %% of the picture (%d of %d)" % [yellow, samples])
 	check(green > samples / 20, "green stems and leaves cover at least 5 %% (%d of %d)" % [green, samples])
 	check(sky > samples / 20, "the sky is visible above the field (%d of %d)" % [sky, samples])

@@ -1,0 +1,57 @@
+#!/usr/bin/env bash
+# Runs every test: core unit tests (no engine), GDScript lint and format, the engine integration
+# and render tests under Xvfb with a real renderer, and a leak check. Ends with "N passed, N failed".
+set -uo pipefail
+repo=$(cd "$(dirname "$0")/.." && pwd)
+cd "$repo"
+"$repo/tools/build.sh" || { echo "build: 0 passed, 1 failed"; exit 1; }
+godot=$("$repo/tools/find_godot.sh")
+artifacts="$repo/tests/artifacts"
+mkdir -p "$artifacts"
+passed=0
+failed=0
+record() { # $1 = passed count, $2 = failed count, $3 = what
+  passed=$((passed + $1)); failed=$((failed + $2))
+  printf '== %s: %d passed, %d failed\n' "$3" "$1" "$2"
+}
+
+echo "== core unit tests (doctest)"
+out=$("$repo/build/tests/core_tests" 2>&1); status=$?
+echo "$out" | tail -n 4
+line=$(echo "$out" | grep -E 'test cases:' | tail -n 1)
+p=$(echo "$line" | sed -E 's/.*\| *([0-9]+) passed.*/\1/'); f=$(echo "$line" | sed -E 's/.*\| *([0-9]+) failed.*/\1/')
+[[ "$p" =~ ^[0-9]+$ && "$f" =~ ^[0-9]+$ ]] || { p=0; f=1; }
+((status != 0 && f == 0)) && f=1
+record "$p" "$f" "core unit tests"
+
+echo "== gdlint and gdformat"
+mapfile -t scripts < <(git ls-files '*.gd')
+if (cd "$repo" && "$repo/.cache/venv/bin/gdlint" "${scripts[@]}"); then record 1 0 "gdlint"; else record 0 1 "gdlint"; fi
+if "$repo/.cache/venv/bin/gdformat" --check --line-length 120 "${scripts[@]}"; then record 1 0 "gdformat"; else record 0 1 "gdformat"; fi
+
+echo "== engine tests (Godot under Xvfb, OpenGL renderer on llvmpipe)"
+log="$artifacts/godot_tests.log"
+timeout 900 xvfb-run -a -s "-screen 0 1280x720x24" "$godot" --verbose --audio-driver Dummy --rendering-driver opengl3 \
+  --path "$repo/tests/godot" --script res://run_tests.gd >"$log" 2>&1
+status=$?
+grep -E '^(ok|FAIL) |^     |^godot:' "$log"
+line=$(grep -E '^godot: [0-9]+ passed, [0-9]+ failed$' "$log" | tail -n 1)
+if [[ -z "$line" ]]; then
+  echo "the engine run ended without its summary line (exit $status); the log is $log"; tail -n 30 "$log"
+  record 0 1 "engine tests"
+else
+  p=$(echo "$line" | sed -E 's/godot: ([0-9]+) passed.*/\1/'); f=$(echo "$line" | sed -E 's/.* ([0-9]+) failed/\1/')
+  ((status != 0 && f == 0)) && f=1
+  record "$p" "$f" "engine tests"
+fi
+
+echo "== leaks at exit (--verbose output of the engine run)"
+if grep -E "leaked at exit|Leaked instance|were leaked|Orphan StringName|instances leaked" "$log"; then
+  record 0 1 "no leaks"
+else
+  record 1 0 "no leaks"
+fi
+
+echo "artifacts: $artifacts"
+echo "total: $passed passed, $failed failed"
+((failed == 0 && passed > 0))
