@@ -3,10 +3,10 @@ extends Node3D
 ## Recording mode (no person needed): --frames N [--screenshot PATH] renders N frames from the
 ## start viewpoint, saves a screenshot, prints the field's statistics and quits.
 
-@onready var _field: SunflowerField = $Field
-
 var _frames_left: int = -1
 var _screenshot: String = ""
+
+@onready var _field: SunflowerField = $Field
 
 
 func _ready() -> void:
@@ -41,8 +41,10 @@ func _process(_delta: float) -> void:
 	_frames_left = -1
 	await RenderingServer.frame_post_draw
 	var counts: PackedInt32Array = _field.get_lod_counts()
-	print("demo: %d plants; per level (mesh 1, mesh 2, mesh 3, sprite, billboard): %s" % [_field.get_plant_count(), counts])
-	print("demo: native update %d µs; %s" % [_field.get_simulation().get_last_update_usec(), RenderingServer.get_video_adapter_name()])
+	var plants: int = _field.get_plant_count()
+	print("demo: %d plants; per level (mesh 1, mesh 2, mesh 3, sprite, billboard): %s" % [plants, counts])
+	var usec: int = _field.get_simulation().get_last_update_usec()
+	print("demo: native update %d µs; %s" % [usec, RenderingServer.get_video_adapter_name()])
 	if not _screenshot.is_empty():
 		var image: Image = get_viewport().get_texture().get_image()
 		DirAccess.make_dir_recursive_absolute(_screenshot.get_base_dir())
