@@ -1,0 +1,77 @@
+// Core benchmark, no engine: per-frame update time (wind + LOD + buffer writes) along a scripted
+// walk over fields of several sizes. Prints medians and 99th percentiles, not pass/fail.
+#include "core/field_simulation.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+using namespace sunflower;
+
+namespace {
+
+std::string rect_map(int p_columns, int p_rows) {
+	std::string text = std::to_string(p_columns) + " " + std::to_string(p_rows) + "\n";
+	const std::string row(static_cast<size_t>(p_columns), '*');
+	for (int r = 0; r < p_rows; ++r) {
+		text += row;
+		text += '\n';
+	}
+	return text;
+}
+
+double percentile(std::vector<double> p_values, double p_q) {
+	std::sort(p_values.begin(), p_values.end());
+	return p_values[std::min(p_values.size() - 1, static_cast<size_t>(p_q * double(p_values.size())))];
+}
+
+void run(const char *p_name, const std::string &p_text, int p_frames) {
+	FieldSimulation sim;
+	MapError error;
+	const auto load_start = std::chrono::steady_clock::now();
+	if (!sim.load_map(p_text, U"", p_name, MapLimits{}, error)) {
+		std::printf("%s: %s\n", p_name, error.to_string().c_str());
+		return;
+	}
+	const double load_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - load_start).count();
+	const glm::vec2 size = sim.get_layout().size;
+	// A camera 1.7 m high walking a circle around the field's centre, looking along its path
+	// (a 90° frustum, as a Camera3D gives it: outward planes).
+	std::vector<double> times;
+	times.reserve(static_cast<size_t>(p_frames));
+	for (int frame = 0; frame < p_frames; ++frame) {
+		const float angle = float(frame) * 0.004f;
+		const float radius = std::min(size.x, size.y) * 0.3f;
+		const glm::vec3 eye(size.x * 0.5f + radius * std::cos(angle), 1.7f, size.y * 0.5f + radius * std::sin(angle));
+		const glm::vec3 forward(-std::sin(angle), 0.0f, std::cos(angle));
+		const glm::vec3 right(forward.z, 0.0f, -forward.x);
+		const glm::vec4 planes[4] = {
+			glm::vec4(-forward, glm::dot(-forward, eye)), // near plane: nothing behind the eye
+			glm::vec4(glm::normalize(right - forward), glm::dot(glm::normalize(right - forward), eye)),
+			glm::vec4(glm::normalize(-right - forward), glm::dot(glm::normalize(-right - forward), eye)),
+			glm::vec4(0.0f, 1.0f, 0.0f, 1000.0f),
+		};
+		sim.get_frustum().set_planes(planes, 4);
+		sim.set_observer(eye);
+		const auto start = std::chrono::steady_clock::now();
+		sim.update(1.0f / 60.0f);
+		times.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+	}
+	std::printf("| %-22s | %9u | %8.1f | %9.3f | %9.3f |\n", p_name, sim.get_plant_count(), load_ms, percentile(times, 0.5),
+			percentile(times, 0.99));
+}
+
+} // namespace
+
+int main() {
+	std::printf("| field                  |    plants | load ms | median ms |   p99 ms |\n");
+	std::printf("|------------------------|-----------|---------|-----------|----------|\n");
+	run("demo 40x30", rect_map(40, 30), 600);
+	run("1500 plants 50x30", rect_map(50, 30), 600);
+	run("100k 400x250", rect_map(400, 250), 600);
+	run("1M 1000x1000", rect_map(1000, 1000), 600);
+	return 0;
+}
