@@ -52,6 +52,20 @@ else
   record 1 0 "no leaks"
 fi
 
+echo "== drop-in: a new project with only addons/sunflower_field/ copied in, a scene without code"
+dropin=$(mktemp -d)
+cp -rL "$repo/addons/sunflower_field" "$dropin/addons_copy" && mkdir -p "$dropin/addons" && mv "$dropin/addons_copy" "$dropin/addons/sunflower_field"
+cp "$repo/fields/demo.field" "$repo/tests/dropin/project.godot" "$repo/tests/dropin/main.tscn" "$repo/tests/dropin/check_dropin.gd" "$dropin/"
+if "$repo/tools/import_project.sh" "$dropin" >"$artifacts/dropin.log" 2>&1 &&
+  timeout 300 xvfb-run -a -s "-screen 0 1280x720x24" "$godot" --audio-driver Dummy --rendering-driver opengl3 \
+    --path "$dropin" --script res://check_dropin.gd >>"$artifacts/dropin.log" 2>&1 &&
+  grep -q '^dropin: ok$' "$artifacts/dropin.log"; then
+  grep '^dropin:' "$artifacts/dropin.log"; record 1 0 "drop-in"
+else
+  tail -n 20 "$artifacts/dropin.log"; record 0 1 "drop-in"
+fi
+rm -rf "$dropin"
+
 echo "artifacts: $artifacts"
 echo "total: $passed passed, $failed failed"
 ((failed == 0 && passed > 0))

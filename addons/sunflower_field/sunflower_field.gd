@@ -595,6 +595,7 @@ func _build_objects() -> void:
 			)
 			continue
 		var instance: Node = scene.instantiate()
+		instance.name = "%s_%d_%d" % [instance.name, objects[i], objects[i + 1]]
 		if instance is Node3D:
 			(instance as Node3D).position = Vector3(
 				(objects[i] + 0.5) * cell_size, 0.0, (objects[i + 1] + 0.5) * cell_size

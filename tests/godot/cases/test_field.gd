@@ -251,3 +251,44 @@ func _a_plant_at_lod(lod: int) -> int:
 			return i
 	check(false, "no plant at LOD %d" % lod)
 	return 0
+
+
+func test_legend_symbols_place_scenes_and_unknown_symbols_fail() -> void:
+	var stone: Node3D = Node3D.new()
+	stone.name = "Stone"
+	var packed: PackedScene = PackedScene.new()
+	packed.pack(stone)
+	stone.free()
+	field.legend = {"S": packed}
+	var path: String = "user://legend.field"
+	var file: FileAccess = FileAccess.open(path, FileAccess.WRITE)
+	file.store_string("4 2\n*S**\n**S*\n")
+	file.close()
+	check_eq(field.load_map_file(path), OK, "a map with legend symbols loads")
+	check_eq(field.get_plant_count(), 6, "plants besides the stones")
+	var stones: Array[Vector3] = []
+	for child: Node in field.get_children(true):
+		if child.name.begins_with("Stone"):
+			stones.append((child as Node3D).position)
+	check_eq(stones.size(), 2, "two stones placed")
+	check(stones.has(Vector3(0.75, 0.0, 0.25)), "a stone at the centre of cell (1, 0): %s" % [stones])
+	field.legend = {}
+	allow_error("legend.field:2:2: unexpected 'S'")
+	check_eq(field.load_map_file(path), ERR_PARSE_ERROR, "without the legend 'S' is an error")
+
+
+func test_part_meshes_can_be_swapped_at_run_time() -> void:
+	observer.position = Vector3(10.0, 1.7, 7.5)
+	field.advance(0.3)
+	var box: BoxMesh = BoxMesh.new()
+	field.set_part_mesh(0, SunflowerField.Part.HEAD, box)
+	check(_node("Mesh1Head").multimesh.mesh == box, "the head multimesh draws the new mesh")
+	check(field.get_part_mesh(0, SunflowerField.Part.HEAD) == box, "get_part_mesh returns it")
+	field.set("part_meshes/mesh_1/head", null)
+	check(_node("Mesh1Head").multimesh.mesh != box, "null restores the default")
+	allow_error("out of range")
+	field.set_part_mesh(3, 0, box)
+	check(_node("Mesh1Head").multimesh.mesh != box, "an out-of-range slot changes nothing")
+	allow_error("is not a Mesh")
+	field.set("part_meshes/mesh_2/bottom", Texture2D.new())
+	check(field.get_part_mesh(1, 0) is ArrayMesh, "a non-mesh resource falls back to the default part")
