@@ -46,6 +46,7 @@ func _bake(out_dir: String) -> void:
 	# albedo and the field's own lights shade the impostors once, like the meshes.
 	var albedo_only: StandardMaterial3D = StandardMaterial3D.new()
 	albedo_only.vertex_color_use_as_albedo = true
+	albedo_only.vertex_color_is_srgb = true
 	albedo_only.shading_mode = BaseMaterial3D.SHADING_MODE_UNSHADED
 	albedo_only.cull_mode = BaseMaterial3D.CULL_DISABLED
 	var y: float = 0.0

@@ -117,6 +117,7 @@ func _init() -> void:
 	DirAccess.make_dir_recursive_absolute(out_dir)
 	var material: StandardMaterial3D = StandardMaterial3D.new()
 	material.vertex_color_use_as_albedo = true
+	material.vertex_color_is_srgb = true  # the colours above are picked in sRGB
 	material.cull_mode = BaseMaterial3D.CULL_DISABLED
 	material.roughness = 0.85
 	material.resource_name = "sunflower_parts"

@@ -12,8 +12,8 @@ fi
 shot="$repo/build/demo/demo.png"
 args=("$@")
 ((${#args[@]})) || args=(--frames 60 --screenshot "$shot")
-echo "demo: no display; running the recording mode under Xvfb (OpenGL renderer on llvmpipe)"
-timeout 600 xvfb-run -a -s "-screen 0 1280x720x24" "$godot" --audio-driver Dummy --rendering-driver opengl3 \
+echo "demo: no display; running the recording mode under Xvfb (Forward+ on Vulkan lavapipe)"
+timeout 600 xvfb-run -a -s "-screen 0 1280x720x24" "$godot" --audio-driver Dummy \
   --path "$repo/demo_project" -- "${args[@]}" 2>&1 | grep -E '^demo:|SCRIPT ERROR|^ERROR' | grep -v 'status < 0' || true
 [[ " ${args[*]} " == *" --screenshot "* ]] && echo "demo: pictures are in $(dirname "${args[-1]}")"
 exit 0

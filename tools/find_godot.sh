@@ -8,6 +8,8 @@ set -euo pipefail
 repo=$(cd "$(dirname "$0")/.." && pwd)
 cache="$repo/.cache/godot"
 wrapper="$cache/godot"
+# Bump when the unpacked set changes, so older caches are refreshed.
+marker="$cache/.complete-2"
 
 version_ok() { # $1 = command; true when it reports 4.5 or newer
   local v
@@ -24,7 +26,7 @@ fi
 if command -v godot >/dev/null 2>&1 && version_ok godot; then
   command -v godot; exit 0
 fi
-if [[ -x "$wrapper" ]] && version_ok "$wrapper"; then
+if [[ -x "$wrapper" && -f "$marker" ]] && version_ok "$wrapper"; then
   echo "$wrapper"; exit 0
 fi
 
@@ -41,9 +43,11 @@ apt_opts=(
   -o "Debug::NoLocking=1" -o "APT::Sandbox::User=root"
 )
 apt-get "${apt_opts[@]}" -qq update >&2
-# The library closure of the engine; fonts and data-only packages are not needed to run it.
+# The library closure of the engine and of Mesa's Vulkan drivers (lavapipe renders without a GPU;
+# Debian 12's own Mesa does not load into this newer C library); fonts and data-only packages are
+# not needed to run it.
 mapfile -t pkgs < <(apt-cache "${apt_opts[@]}" depends --recurse --no-recommends --no-suggests \
-  --no-conflicts --no-breaks --no-replaces --no-enhances godot 2>/dev/null |
+  --no-conflicts --no-breaks --no-replaces --no-enhances godot mesa-vulkan-drivers libvulkan1 2>/dev/null |
   grep -v '^ ' | grep -v '[<>]' | grep -Ev '^(fonts-|xfonts-|x11-common|sysvinit|lsb-base|cdebconf|debconf)' | sort -u)
 (cd "$cache/debs" && apt-get "${apt_opts[@]}" -qq download "${pkgs[@]}" >&2)
 for deb in "$cache"/debs/*.deb; do dpkg-deb -x "$deb" "$cache/root"; done
@@ -51,10 +55,16 @@ rm -rf "$cache/debs" "$cache/apt/cache"
 root="$cache/root"
 cat > "$wrapper" <<WRAP
 #!/bin/sh
-# Starts the unpacked Debian-unstable Godot through its own dynamic loader and libraries.
+# Starts the unpacked Debian-unstable Godot through its own dynamic loader and libraries, with the
+# Vulkan drivers unpacked beside it (unless the caller chose drivers).
 r="$root"
+if [ -z "\${VK_DRIVER_FILES:-}\${VK_ICD_FILENAMES:-}" ]; then
+  VK_DRIVER_FILES=\$(ls "\$r"/usr/share/vulkan/icd.d/*.json | tr '\\n' ':')
+  export VK_DRIVER_FILES
+fi
 exec "\$r/usr/lib64/ld-linux-x86-64.so.2" --library-path "\$r/usr/lib/x86_64-linux-gnu:\$r/lib/x86_64-linux-gnu:\$r/usr/lib/x86_64-linux-gnu/pulseaudio" "\$r/usr/bin/godot" "\$@"
 WRAP
 chmod +x "$wrapper"
 version_ok "$wrapper" || { echo "find_godot: the fetched engine does not start" >&2; exit 1; }
+touch "$marker"
 echo "$wrapper"

@@ -1,0 +1,14 @@
+#!/usr/bin/env bash
+# Regenerates the addon's default assets: the nine part meshes (assets/generate_sunflower.gd) and the
+# sprite/billboard textures rendered from the level-1 model (assets/bake_impostors.gd, under Xvfb).
+set -euo pipefail
+repo=$(cd "$(dirname "$0")/.." && pwd)
+godot=$("$repo/tools/find_godot.sh")
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+echo 'config_version=5' > "$work/project.godot"
+ln -s "$repo/addons" "$work/addons"
+timeout 300 "$godot" --headless --path "$work" --script "$repo/assets/generate_sunflower.gd" -- \
+  "$repo/addons/sunflower_field/meshes" 2>&1 | grep -E '^level|ERROR'
+timeout 300 xvfb-run -a -s "-screen 0 1280x720x24" "$godot" --audio-driver Dummy --path "$work" \
+  --script "$repo/assets/bake_impostors.gd" -- "$repo/addons/sunflower_field/textures" 2>&1 | grep -E '^(front|side)|ERROR'
