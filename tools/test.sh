@@ -30,12 +30,15 @@ mapfile -t scripts < <(git ls-files '*.gd')
 if (cd "$repo" && "$repo/.cache/venv/bin/gdlint" "${scripts[@]}"); then record 1 0 "gdlint"; else record 0 1 "gdlint"; fi
 if "$repo/.cache/venv/bin/gdformat" --check --line-length 120 "${scripts[@]}"; then record 1 0 "gdformat"; else record 0 1 "gdformat"; fi
 
-# $1 = label, $2 = rendering driver, $3 = log file, rest = test names (none: all)
+# $1 = label, $2 = project, $3 = rendering driver ("headless": no renderer), $4 = log, rest = tests (none: all)
 engine_suite() {
-  local label=$1 driver=$2 log=$3; shift 3
+  local label=$1 project=$2 driver=$3 log=$4; shift 4
   echo "== $label"
-  timeout 900 xvfb-run -a -s "-screen 0 1280x720x24" "$godot" --verbose --audio-driver Dummy --rendering-driver "$driver" \
-    --path "$repo/tests/godot" --script res://run_tests.gd -- "$@" >"$log" 2>&1
+  local launch=(xvfb-run -a -s "-screen 0 1280x720x24" "$godot" --rendering-driver "$driver")
+  [[ "$driver" == headless ]] && launch=("$godot" --headless)
+  timeout 900 "${launch[@]}" --verbose --audio-driver Dummy --resolution 640x360 \
+    --path "$project" --script "res://$( [[ -d "$project/runner" ]] && echo runner || echo tests/runner )/run_tests.gd" \
+    -- "$@" >"$log" 2>&1
   local status=$? line p f
   grep -E '^(ok|FAIL) |^     |^godot:' "$log"
   line=$(grep -E '^godot: [0-9]+ passed, [0-9]+ failed$' "$log" | tail -n 1)
@@ -49,13 +52,30 @@ engine_suite() {
   record "$p" "$f" "$label"
 }
 
-engine_suite "engine tests (Godot under Xvfb, Forward+ on Vulkan lavapipe)" vulkan "$artifacts/godot_tests.log"
+engine_suite "engine tests (Godot under Xvfb, Forward+ on Vulkan lavapipe)" "$repo/tests/godot" vulkan "$artifacts/godot_tests.log"
 cp "$artifacts/render_demo_field.png" "$artifacts/render_demo_field_vulkan.png" 2>/dev/null
-engine_suite "render test (Compatibility renderer, OpenGL on llvmpipe)" opengl3 "$artifacts/godot_render_gl.log" test_render
+engine_suite "render test (Compatibility renderer, OpenGL on llvmpipe)" "$repo/tests/godot" opengl3 "$artifacts/godot_render_gl.log" test_render
 mv "$artifacts/render_demo_field.png" "$artifacts/render_demo_field_opengl.png" 2>/dev/null
 
-echo "== leaks at exit (--verbose output of both engine runs)"
-if grep -E "leaked at exit|Leaked instance|were leaked|Orphan StringName|instances leaked" "$artifacts/godot_tests.log" "$artifacts/godot_render_gl.log"; then
+engine_suite "demo tests (headless)" "$repo/demo_project" headless "$artifacts/demo_tests.log"
+
+echo "== demo recording mode (Xvfb, Forward+): screenshot and stats"
+frames=12
+rm -f "$artifacts/demo_recording.png" "$artifacts/demo_stats.json"
+timeout 600 xvfb-run -a -s "-screen 0 1280x720x24" "$godot" --audio-driver Dummy --resolution 640x360 \
+  --path "$repo/demo_project" -- --frames "$frames" --screenshot "$artifacts/demo_recording.png" \
+  --stats "$artifacts/demo_stats.json" >"$artifacts/demo_recording.log" 2>&1
+grep '^demo:' "$artifacts/demo_recording.log"
+if timeout 120 "$godot" --headless --path "$repo/demo_project" --script res://tests/cases/check_recording.gd -- \
+  "$artifacts/demo_stats.json" "$artifacts/demo_recording.png" "$frames" 2>&1 | tee "$artifacts/demo_check.log" | grep '^recording:' &&
+  grep -q '^recording: ok$' "$artifacts/demo_check.log"; then
+  record 1 0 "demo recording"
+else
+  record 0 1 "demo recording"
+fi
+
+echo "== leaks at exit (--verbose output of the engine runs)"
+if grep -E "leaked at exit|Leaked instance|were leaked|Orphan StringName|instances leaked" "$artifacts/godot_tests.log" "$artifacts/godot_render_gl.log" "$artifacts/demo_tests.log"; then
   record 0 1 "no leaks"
 else
   record 1 0 "no leaks"

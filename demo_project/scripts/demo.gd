@@ -1,23 +1,114 @@
 extends Node3D
-## The demo scene. Keys: F2 / F3 add / subtract the wind increment, Esc releases the mouse, then quits.
-## Recording mode (no person needed): --frames N [--screenshot PATH] renders N frames from the
-## start viewpoint, saves a screenshot, prints the field's statistics and quits.
+## The Sunflower Field demo: fly over a field, change the wind, swap plant parts, pick a map.
+## It uses the addon only through its public API, as a game would.
+##
+## Command line (after --):
+##   --map PATH               any .field file (res://, user:// or absolute)
+##   --part LEVEL,PART,PATH   replace a part with a glTF mesh (level 1-3, part bottom/middle/head)
+##   --frames N               recording mode: fly the scripted path for N frames, then quit
+##   --path FILE              the recording path (lines "x y z tx ty tz"); default: a built-in flight
+##   --screenshot PATH        save the last frame (recording mode; 60 frames if --frames is not given)
+##   --screenshot-every K     also save every K-th frame, as PATH with the frame number
+##   --stats PATH             write frame times, LOD counts and the renderer as JSON
 
-var _frames_left: int = -1
+const MAP_NAMES: PackedStringArray = ["Demo field (40 x 30)", "Large field (400 x 300)"]
+const MAP_PATHS: PackedStringArray = ["res://fields/demo.field", "res://fields/large.field"]
+const INCREMENTS: PackedFloat32Array = [0.1, 10.0]
+const TRIANGLES_SPRITE: int = 4
+const TRIANGLES_BILLBOARD: int = 2
+
+var _map_path: String = MAP_PATHS[0]
+var _frames_total: int = -1
+var _frame: int = 0
+var _camera_path: CameraPath
 var _screenshot: String = ""
+var _screenshot_every: int = 0
+var _stats_path: String = ""
+var _frame_times: PackedFloat32Array = []
+var _update_times: PackedFloat32Array = []
+var _lod_sums: PackedFloat64Array = [0, 0, 0, 0, 0]
+var _triangles_per_plant: PackedInt32Array = [0, 0, 0]
+var _last_ticks: int = 0
+var _stats_timer: float = 0.0
+var _exit_code: int = 0
 
 @onready var _field: SunflowerField = $Field
+@onready var _camera: FlyCamera = $Camera
+@onready var _hud: DemoHud = $Hud
+@onready var _ground: MeshInstance3D = $Ground
 
 
 func _ready() -> void:
+	_field.field_built.connect(_on_field_built)
+	_field.map_error.connect(func(message: String) -> void: _hud.show_message(message))
+	_hud.map_chosen.connect(load_map)
+	var parts: PackedStringArray = []
+	var path_file: String = ""
 	var args: PackedStringArray = OS.get_cmdline_user_args()
-	for i: int in args.size():
-		if args[i] == "--frames" and i + 1 < args.size():
-			_frames_left = args[i + 1].to_int()
-		elif args[i] == "--screenshot" and i + 1 < args.size():
-			_screenshot = args[i + 1]
-	if _frames_left < 0 and not _screenshot.is_empty():
-		_frames_left = 30
+	var i: int = 0
+	while i < args.size():
+		var value: String = args[i + 1] if i + 1 < args.size() else ""
+		match args[i]:
+			"--map":
+				_map_path = value
+			"--part":
+				parts.append(value)
+			"--frames":
+				_frames_total = value.to_int()
+			"--path":
+				path_file = value
+			"--screenshot":
+				_screenshot = value
+			"--screenshot-every":
+				_screenshot_every = value.to_int()
+			"--stats":
+				_stats_path = value
+			_:
+				_hud.show_message("unknown argument '%s' (see demo.gd for the options)" % args[i])
+				i -= 1
+		i += 2
+	if _frames_total < 0 and not (_screenshot.is_empty() and _stats_path.is_empty()):
+		_frames_total = 60
+	load_map(_map_path)
+	for argument: String in parts:
+		apply_part_argument(argument)
+	if _frames_total >= 0:
+		_start_recording(path_file)
+
+
+## Loads a map; an imported res:// map is used as a resource, any other path is read directly.
+func load_map(path: String) -> void:
+	var imported: Resource = load(path) if path.begins_with("res://") and ResourceLoader.exists(path) else null
+	if imported is SunflowerFieldMap:
+		_field.map = imported
+		_field.advance(0.0)
+	elif _field.load_map_file(path) != OK:
+		return  # the field says why, through map_error
+	_map_path = path
+	_hud.set_maps(MAP_NAMES, MAP_PATHS, path)
+
+
+## Applies a "LEVEL,PART,PATH" part replacement; returns an empty string or the error shown.
+func apply_part_argument(argument: String) -> String:
+	var parsed: Dictionary = PartLoader.parse_argument(argument)
+	if parsed.has("error"):
+		_hud.show_message(parsed["error"])
+		return parsed["error"]
+	return load_part(parsed["lod"], parsed["part"], parsed["path"])
+
+
+## Replaces one part with the first mesh of a glTF file; returns an empty string or the error shown.
+func load_part(lod: int, part: int, path: String) -> String:
+	var loaded: Dictionary = PartLoader.load_mesh(path)
+	if loaded.has("error"):
+		_hud.show_message("cannot use the part: " + loaded["error"])
+		return loaded["error"]
+	_field.set_part_mesh(lod, part, loaded["mesh"])
+	_count_triangles()
+	_hud.show_message(
+		loaded.get("warning", "mesh %d %s replaced by %s" % [lod + 1, SunflowerField.PART_NAMES[part], path.get_file()])
+	)
+	return ""
 
 
 func _unhandled_input(event: InputEvent) -> void:
@@ -25,6 +116,23 @@ func _unhandled_input(event: InputEvent) -> void:
 		_field.increase_wind()
 	elif event.is_action_pressed("wind_less"):
 		_field.decrease_wind()
+	elif event.is_action_pressed("wind_direction_x"):
+		_field.wind_direction = _step_direction(_field.wind_direction, 0)
+	elif event.is_action_pressed("wind_direction_z"):
+		_field.wind_direction = _step_direction(_field.wind_direction, 1)
+	elif event.is_action_pressed("toggle_increment"):
+		_field.wind_increment = (
+			INCREMENTS[1] if is_equal_approx(_field.wind_increment, INCREMENTS[0]) else INCREMENTS[0]
+		)
+	elif event.is_action_pressed("toggle_wireframe"):
+		var wireframe: bool = get_viewport().debug_draw != Viewport.DEBUG_DRAW_WIREFRAME
+		get_viewport().debug_draw = Viewport.DEBUG_DRAW_WIREFRAME if wireframe else Viewport.DEBUG_DRAW_DISABLED
+	elif event.is_action_pressed("toggle_help"):
+		_hud.toggle_help()
+	elif event.is_action_pressed("next_map"):
+		load_map(MAP_PATHS[(MAP_PATHS.find(_map_path) + 1) % MAP_PATHS.size()])
+	elif event.is_action_pressed("load_part"):
+		_open_part_dialog()
 	elif event.is_action_pressed("quit"):
 		if Input.mouse_mode == Input.MOUSE_MODE_CAPTURED:
 			Input.mouse_mode = Input.MOUSE_MODE_VISIBLE
@@ -32,22 +140,216 @@ func _unhandled_input(event: InputEvent) -> void:
 			get_tree().quit()
 
 
-func _process(_delta: float) -> void:
-	if _frames_left < 0:
-		return
-	_frames_left -= 1
-	if _frames_left > 0:
-		return
-	_frames_left = -1
-	await RenderingServer.frame_post_draw
+func _process(delta: float) -> void:
+	_stats_timer -= delta
+	if _stats_timer <= 0.0:
+		_stats_timer = 0.25
+		_hud.set_stats(_stats_text())
+	if _frames_total >= 0:
+		_record_frame()
+
+
+## Steps one component of the wind direction by 0.5 through -1 … 1 (thesis keys F4 / F5).
+func _step_direction(direction: Vector2, axis: int) -> Vector2:
+	var stepped: Vector2 = direction.normalized()
+	stepped[axis] = wrapf(snappedf(stepped[axis], 0.5) + 0.5, -1.0, 1.5)
+	if stepped.is_zero_approx():
+		stepped[axis] = 0.5
+	return stepped
+
+
+func _on_field_built(_plants: int) -> void:
+	var size: Vector2 = Vector2(_field.get_simulation().get_map_columns(), _field.get_simulation().get_map_rows())
+	size *= _field.cell_size
+	var plane: PlaneMesh = _ground.mesh as PlaneMesh
+	plane.size = size + Vector2(400.0, 400.0)
+	_ground.position = Vector3(size.x * 0.5, 0.0, size.y * 0.5)
+	_camera.set_start(Vector3(0.6 * size.x, 2.4, size.y + 3.5), Vector3(0.45 * size.x, 1.0, size.y - 11.0))
+	_count_triangles()
+
+
+func _count_triangles() -> void:
+	for lod: int in 3:
+		var total: int = 0
+		for part: int in 3:
+			var mesh: Mesh = _field.get_part_mesh(lod, part)
+			for surface: int in mesh.get_surface_count() if mesh else 0:
+				var arrays: Array = mesh.surface_get_arrays(surface)
+				var indices: PackedInt32Array = arrays[Mesh.ARRAY_INDEX]
+				total += (
+					(indices.size() if indices.size() > 0 else (arrays[Mesh.ARRAY_VERTEX] as PackedVector3Array).size())
+					/ 3
+				)
+		_triangles_per_plant[lod] = total
+
+
+func _stats_text() -> String:
 	var counts: PackedInt32Array = _field.get_lod_counts()
-	var plants: int = _field.get_plant_count()
-	print("demo: %d plants; per level (mesh 1, mesh 2, mesh 3, sprite, billboard): %s" % [plants, counts])
-	var usec: int = _field.get_simulation().get_last_update_usec()
-	print("demo: native update %d µs; %s" % [usec, RenderingServer.get_video_adapter_name()])
+	var simulation: SunflowerSimulation = _field.get_simulation()
+	var triangles: int = counts[3] * TRIANGLES_SPRITE + counts[4] * TRIANGLES_BILLBOARD
+	for lod: int in 3:
+		# Near meshes: the instances actually written (frustum-culled), times the model's size.
+		triangles += simulation.get_bucket_instance_count(lod * 3) * _triangles_per_plant[lod]
+	var fps: float = Engine.get_frames_per_second()
+	return (
+		(
+			"%d FPS (%.1f ms)   native update %.2f ms\n"
+			+ "%d plants: mesh 1 %d, mesh 2 %d, mesh 3 %d, sprite %d, billboard %d\n"
+			+ "triangles drawn ~%.2f M\n"
+			+ "wind %.1f m/s towards (%.2f, %.2f), increment %.1f"
+		)
+		% [
+			fps,
+			1000.0 / maxf(fps, 1.0),
+			simulation.get_last_update_usec() / 1000.0,
+			_field.get_plant_count(),
+			counts[0],
+			counts[1],
+			counts[2],
+			counts[3],
+			counts[4],
+			triangles / 1.0e6,
+			_field.wind_power,
+			_field.wind_direction.x,
+			_field.wind_direction.y,
+			_field.wind_increment,
+		]
+	)
+
+
+func _open_part_dialog() -> void:
+	var dialog: FileDialog = FileDialog.new()
+	dialog.file_mode = FileDialog.FILE_MODE_OPEN_FILE
+	dialog.access = FileDialog.ACCESS_FILESYSTEM
+	dialog.filters = PackedStringArray(["*.gltf, *.glb ; glTF"])
+	dialog.title = "Replace a plant part with a glTF mesh"
+	dialog.add_option("Level", PackedStringArray(["Mesh 1", "Mesh 2", "Mesh 3"]), 0)
+	dialog.add_option("Part", PackedStringArray(["Bottom", "Middle", "Head"]), 2)
+	dialog.file_selected.connect(
+		func(path: String) -> void:
+			var options: Dictionary = dialog.get_selected_options()
+			load_part(options.get("Level", 0), options.get("Part", 2), path)
+	)
+	dialog.canceled.connect(dialog.queue_free)
+	dialog.file_selected.connect(func(_path: String) -> void: dialog.queue_free())
+	add_child(dialog)
+	dialog.popup_centered_ratio(0.6)
+
+
+# --- Recording mode ---------------------------------------------------------------------------
+
+
+func _start_recording(path_file: String) -> void:
+	var size: Vector2 = Vector2(_field.get_simulation().get_map_columns(), _field.get_simulation().get_map_rows())
+	size *= _field.cell_size
+	if path_file.is_empty():
+		_camera_path = CameraPath.built_in(size)
+	else:
+		var errors: Array[String] = []
+		_camera_path = CameraPath.from_file(path_file, errors)
+		if _camera_path == null:
+			_hud.show_message(errors[0])
+			_exit_code = 1
+			_camera_path = CameraPath.built_in(size)
+	_camera.manual = false
+	_last_ticks = Time.get_ticks_usec()
+
+
+func _record_frame() -> void:
+	var now: int = Time.get_ticks_usec()
+	if _frame > 0:
+		_frame_times.append((now - _last_ticks) / 1000.0)
+		_update_times.append(_field.get_simulation().get_last_update_usec() / 1000.0)
+		var counts: PackedInt32Array = _field.get_lod_counts()
+		for lod: int in 5:
+			_lod_sums[lod] += counts[lod]
+	_last_ticks = now
+	_camera.transform = _camera_path.sample(float(_frame) / maxf(_frames_total - 1, 1))
+	if _screenshot_every > 0 and _frame % _screenshot_every == 0 and not _screenshot.is_empty() and _frame > 0:
+		_save_screenshot("%s_%04d.png" % [_screenshot.get_basename(), _frame])
+	_frame += 1
+	if _frame >= _frames_total:
+		_frames_total = -1
+		_finish_recording.call_deferred()
+
+
+func _finish_recording() -> void:
+	await RenderingServer.frame_post_draw
 	if not _screenshot.is_empty():
-		var image: Image = get_viewport().get_texture().get_image()
-		DirAccess.make_dir_recursive_absolute(_screenshot.get_base_dir())
-		var error: Error = image.save_png(_screenshot)
-		print("demo: screenshot %s (%s)" % [_screenshot, error_string(error)])
-	get_tree().quit()
+		_save_screenshot(_screenshot)
+	var counts: PackedInt32Array = _field.get_lod_counts()
+	print(
+		(
+			"demo: %d plants; per level (mesh 1, mesh 2, mesh 3, sprite, billboard): %s"
+			% [_field.get_plant_count(), counts]
+		)
+	)
+	print(
+		(
+			"demo: frame time median %.2f ms, native update median %.3f ms"
+			% [_median(_frame_times), _median(_update_times)]
+		)
+	)
+	if not _stats_path.is_empty():
+		_write_stats()
+	get_tree().quit(_exit_code)
+
+
+func _save_screenshot(path: String) -> void:
+	var image: Image = get_viewport().get_texture().get_image()
+	DirAccess.make_dir_recursive_absolute(path.get_base_dir())
+	var error: Error = image.save_png(path)
+	print("demo: screenshot %s (%s)" % [path, error_string(error)])
+	if error != OK:
+		_exit_code = 1
+
+
+func _write_stats() -> void:
+	var frames: int = _frame_times.size()
+	var mean_counts: Array[float] = []
+	for lod: int in 5:
+		mean_counts.append(_lod_sums[lod] / maxf(frames, 1))
+	var stats: Dictionary = {
+		"map": _map_path,
+		"plants": _field.get_plant_count(),
+		"frames": frames,
+		"frame_ms": _summary(_frame_times),
+		"native_update_ms": _summary(_update_times),
+		"frame_times_ms": Array(_frame_times),
+		"lod_counts_final": Array(_field.get_lod_counts()),
+		"lod_counts_mean": mean_counts,
+		"engine": Engine.get_version_info()["string"],
+		"renderer": RenderingServer.get_current_rendering_method(),
+		"driver": RenderingServer.get_current_rendering_driver_name(),
+		"adapter": RenderingServer.get_video_adapter_name(),
+		"adapter_vendor": RenderingServer.get_video_adapter_vendor(),
+	}
+	DirAccess.make_dir_recursive_absolute(_stats_path.get_base_dir())
+	var file: FileAccess = FileAccess.open(_stats_path, FileAccess.WRITE)
+	if file == null:
+		_hud.show_message("cannot write %s (%s)" % [_stats_path, error_string(FileAccess.get_open_error())])
+		_exit_code = 1
+		return
+	file.store_string(JSON.stringify(stats, "  "))
+	file.close()
+	print("demo: stats %s" % _stats_path)
+
+
+func _summary(values: PackedFloat32Array) -> Dictionary:
+	if values.is_empty():
+		return {"median": 0.0, "p99": 0.0, "mean": 0.0, "max": 0.0}
+	var sorted: PackedFloat32Array = values.duplicate()
+	sorted.sort()
+	var total: float = 0.0
+	for v: float in sorted:
+		total += v
+	return {
+		"median": sorted[sorted.size() / 2],
+		"p99": sorted[mini(sorted.size() - 1, int(sorted.size() * 0.99))],
+		"mean": total / sorted.size(),
+		"max": sorted[sorted.size() - 1],
+	}
+
+
+func _median(values: PackedFloat32Array) -> float:
+	return _summary(values)["median"]

@@ -1,20 +1,28 @@
+class_name FlyCamera
 extends Camera3D
-## A simple fly camera: W/S forward/back, A/D strafe, mouse look while the mouse is captured
-## (click to capture, Esc releases), R back to the start.
+## The demo's fly camera: W/S forward/back, A/D strafe, E/Space up, Q/C down, Shift faster, mouse
+## look while the mouse is captured (click to capture), R back to the start. Every key is an action
+## in the InputMap, so it can be rebound.
 
 ## Metres per second.
 @export var speed: float = 4.0
+## Speed multiplier while "move_fast" is held.
+@export var fast_factor: float = 5.0
 ## Radians per pixel of mouse motion.
 @export var mouse_sensitivity: float = 0.003
+## When false the camera ignores the keyboard and mouse (the recording mode flies it).
+@export var manual: bool = true
 
-var _start: Transform3D
+var start_transform: Transform3D
 
 
 func _ready() -> void:
-	_start = transform
+	start_transform = transform
 
 
 func _unhandled_input(event: InputEvent) -> void:
+	if not manual:
+		return
 	if event is InputEventMouseButton and (event as InputEventMouseButton).pressed:
 		Input.mouse_mode = Input.MOUSE_MODE_CAPTURED
 	elif event is InputEventMouseMotion and Input.mouse_mode == Input.MOUSE_MODE_CAPTURED:
@@ -22,9 +30,20 @@ func _unhandled_input(event: InputEvent) -> void:
 		rotate_y(-motion.x * mouse_sensitivity)
 		rotate_object_local(Vector3.RIGHT, -motion.y * mouse_sensitivity)
 	elif event.is_action_pressed("reset_view"):
-		transform = _start
+		transform = start_transform
 
 
 func _process(delta: float) -> void:
+	if not manual:
+		return
 	var input: Vector2 = Input.get_vector("move_left", "move_right", "move_forward", "move_back")
-	translate(Vector3(input.x, 0.0, input.y) * speed * delta)
+	var lift: float = Input.get_axis("move_down", "move_up")
+	var factor: float = fast_factor if Input.is_action_pressed("move_fast") else 1.0
+	translate(Vector3(input.x, 0.0, input.y) * speed * factor * delta)
+	global_position.y += lift * speed * factor * delta
+
+
+## Places the camera at [param eye] looking at [param target] and makes that the start (R).
+func set_start(eye: Vector3, target: Vector3) -> void:
+	look_at_from_position(eye, target)
+	start_transform = transform

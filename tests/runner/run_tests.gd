@@ -1,6 +1,7 @@
 extends SceneTree
-## Runs every res://cases/test_*.gd (or those named after --), prints each failure with its file
-## and line, and ends with the line "godot: N passed, N failed". Exit code 1 on any failure.
+## Runs every test_*.gd in res://cases/ or res://tests/cases/ (or those named after --), prints
+## each failure with its file and line, and ends with the line "godot: N passed, N failed".
+## Exit code 1 on any failure.
 ## An engine or script error during a test fails it, unless the test allowed it (allow_error).
 
 
@@ -46,14 +47,15 @@ func _run() -> void:
 	var wanted: PackedStringArray = OS.get_cmdline_user_args()
 	var passed: int = 0
 	var failed: int = 0
-	var files: PackedStringArray = DirAccess.get_files_at("res://cases")
+	var folder: String = "res://cases" if DirAccess.dir_exists_absolute("res://cases") else "res://tests/cases"
+	var files: PackedStringArray = DirAccess.get_files_at(folder)
 	files.sort()
 	for file: String in files:
 		if not file.begins_with("test_") or not file.ends_with(".gd"):
 			continue
 		if not wanted.is_empty() and not wanted.has(file.get_basename()):
 			continue
-		var script: GDScript = load("res://cases/" + file) as GDScript
+		var script: GDScript = load(folder.path_join(file)) as GDScript
 		if script == null or not script.can_instantiate():
 			print("FAIL %s: the script does not load" % file)
 			failed += 1

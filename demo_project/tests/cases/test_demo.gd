@@ -1,0 +1,100 @@
+extends TestCase
+## The demo scene: it loads, its keys change the wind as the thesis specifies, and plant parts can
+## be replaced from glTF files (a good one and a bad one).
+
+var demo: Node3D
+var field: SunflowerField
+
+
+func before_each() -> void:
+	demo = (load("res://main.tscn") as PackedScene).instantiate() as Node3D
+	tree.root.add_child(demo)
+	field = demo.get_node("Field") as SunflowerField
+
+
+func after_each() -> void:
+	demo.free()
+
+
+func _press(action: String) -> void:
+	var key: InputEventKey = InputMap.action_get_events(action)[0].duplicate() as InputEventKey
+	key.pressed = true
+	Input.parse_input_event(key)
+	Input.flush_buffered_events()
+	await frames(1)
+	key = key.duplicate() as InputEventKey
+	key.pressed = false
+	Input.parse_input_event(key)
+	Input.flush_buffered_events()
+	await frames(1)
+
+
+func test_the_demo_scene_builds_the_demo_field() -> void:
+	await frames(3)
+	check_eq(field.get_plant_count(), 1103, "plants of fields/demo.field")
+	var counts: PackedInt32Array = field.get_lod_counts()
+	check(counts[0] + counts[1] + counts[2] > 0, "meshes near the start position: %s" % counts)
+
+
+func test_the_keys_change_the_wind_as_the_thesis_says() -> void:
+	await frames(2)
+	var power: float = field.wind_power
+	check_near(field.wind_increment, 0.1, 1e-6, "the increment starts at 0.1")
+	await _press("wind_more")  # F2
+	check_near(field.wind_power, power + 0.1, 1e-5, "F2 adds the increment")
+	await _press("wind_less")  # F3
+	await _press("wind_less")
+	check_near(field.wind_power, power - 0.1, 1e-5, "F3 subtracts it")
+	await _press("toggle_increment")  # F6
+	check_near(field.wind_increment, 10.0, 1e-6, "F6 switches the increment to 10")
+	await _press("wind_more")
+	check_near(field.wind_power, power + 9.9, 1e-4, "F2 now adds 10")
+	await _press("toggle_increment")
+	check_near(field.wind_increment, 0.1, 1e-6, "F6 switches back to 0.1")
+	var direction: Vector2 = field.wind_direction
+	await _press("wind_direction_x")  # F4
+	check(not field.wind_direction.is_equal_approx(direction), "F4 changes the direction")
+	check_near(field.wind_direction.y, direction.normalized().y, 1e-5, "F4 leaves z alone")
+	direction = field.wind_direction
+	await _press("wind_direction_z")  # F5
+	check_near(field.wind_direction.x, direction.x, 1e-5, "F5 leaves x alone")
+	check(not is_equal_approx(field.wind_direction.y, direction.y), "F5 changes z")
+	var events: Array[InputEvent] = InputMap.action_get_events("wind_more")
+	check(
+		events.size() > 0 and (events[0] as InputEventKey).physical_keycode == KEY_F2, "wind_more is F2 in the InputMap"
+	)
+
+
+func test_a_gltf_part_replaces_a_mesh_and_a_bad_file_is_refused() -> void:
+	await frames(1)
+	# A good part: a 1-unit box written as glTF.
+	var holder: Node3D = Node3D.new()
+	var box_instance: MeshInstance3D = MeshInstance3D.new()
+	var box: BoxMesh = BoxMesh.new()
+	box.size = Vector3(0.2, 1.0, 0.2)
+	box_instance.mesh = box
+	box_instance.position.y = 0.5
+	holder.add_child(box_instance)
+	box_instance.owner = holder
+	var document: GLTFDocument = GLTFDocument.new()
+	var state: GLTFState = GLTFState.new()
+	check_eq(document.append_from_scene(holder, state), OK, "exporting the test part")
+	var good: String = ProjectSettings.globalize_path("user://part_box.gltf")
+	check_eq(document.write_to_filesystem(state, good), OK, "writing the test part")
+	holder.free()
+	var before: Mesh = field.get_part_mesh(0, SunflowerField.Part.HEAD)
+	check_eq(demo.call("apply_part_argument", "1,head," + good), "", "a good glTF part is accepted")
+	var after: Mesh = field.get_part_mesh(0, SunflowerField.Part.HEAD)
+	check(after != before and after != null, "the head of mesh 1 was replaced")
+	# A bad part: bytes that are not glTF.
+	var bad: String = ProjectSettings.globalize_path("user://part_bad.glb")
+	var file: FileAccess = FileAccess.open(bad, FileAccess.WRITE)
+	file.store_string("this is not a glTF file")
+	file.close()
+	allow_error("modules/gltf/")  # the engine's own report of the unreadable file
+	var message: String = demo.call("apply_part_argument", "2,bottom," + bad)
+	check(message.contains(bad) and message.contains("not a readable glTF"), "bad file message: " + message)
+	check(field.get_part_mesh(1, SunflowerField.Part.BOTTOM) is ArrayMesh, "the part stays the default")
+	check(str(demo.call("apply_part_argument", "4,head," + good)).contains("LEVEL must be 1, 2 or 3"), "a bad level")
+	check(str(demo.call("apply_part_argument", "1,leaf," + good)).contains("PART must be"), "a bad part")
+	check(str(demo.call("apply_part_argument", "1,head,/no/such.glb")).contains("no such file"), "a missing file")
