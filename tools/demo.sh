@@ -9,11 +9,15 @@ godot=$("$repo/tools/find_godot.sh")
 if [[ -n "${DISPLAY:-}" && -z "${CI:-}" ]]; then
   exec "$godot" --path "$repo/demo_project" -- "$@"
 fi
-shot="$repo/build/demo/demo.png"
+out="$repo/build/demo"
 args=("$@")
-((${#args[@]})) || args=(--frames 60 --screenshot "$shot")
+# Without arguments: the built-in flight, a picture every 10 frames (low and high viewpoints), stats.
+((${#args[@]})) || args=(--frames 41 --screenshot "$out/demo.png" --screenshot-every 10 --stats "$out/stats.json")
 echo "demo: no display; running the recording mode under Xvfb (Forward+ on Vulkan lavapipe)"
-timeout 600 xvfb-run -a -s "-screen 0 1280x720x24" "$godot" --audio-driver Dummy \
+timeout 900 xvfb-run -a -s "-screen 0 1280x720x24" "$godot" --audio-driver Dummy --resolution 960x540 \
   --path "$repo/demo_project" -- "${args[@]}" 2>&1 | grep -E '^demo:|SCRIPT ERROR|^ERROR' | grep -v 'status < 0' || true
-[[ " ${args[*]} " == *" --screenshot "* ]] && echo "demo: pictures are in $(dirname "${args[-1]}")"
+for ((i = 0; i + 1 < ${#args[@]}; i++)); do
+  [[ "${args[i]}" == --screenshot ]] && echo "demo: pictures are in $(dirname "${args[i + 1]}")"
+  [[ "${args[i]}" == --stats ]] && echo "demo: statistics are in ${args[i + 1]}"
+done
 exit 0
