@@ -95,6 +95,42 @@ else
 fi
 rm -rf "$dropin"
 
+echo "== editor (headless): open and close a scene with a field; import a malformed map"
+if timeout 300 "$godot" --headless --editor --path "$repo/tests/godot" res://scenes/field_scene.tscn --quit-after 200 \
+  >"$artifacts/editor.log" 2>&1 && ! grep -E "SCRIPT ERROR|^ERROR" "$artifacts/editor.log"; then
+  record 1 0 "editor opens a field scene"
+else
+  tail -n 20 "$artifacts/editor.log"; record 0 1 "editor opens a field scene"
+fi
+badproject=$(mktemp -d)
+mkdir -p "$badproject/addons" "$badproject/.godot"
+cp -rL "$repo/addons/sunflower_field" "$badproject/addons/"
+cp "$repo/tests/dropin/project.godot" "$badproject/"
+printf '4 2\n****\n*?**\n' > "$badproject/bad.field"
+echo "res://addons/sunflower_field/sunflower_field.gdextension" > "$badproject/.godot/extension_list.cfg"
+timeout 300 "$godot" --headless --path "$badproject" --import >"$artifacts/import_bad.log" 2>&1
+status=$?
+if ((status == 0)) && grep -q "cannot import res://bad.field:3:2: unexpected '?'" "$artifacts/import_bad.log"; then
+  grep -o "cannot import res://bad.field:3:2: [^\"]*" "$artifacts/import_bad.log" | head -n 1
+  record 1 0 "import error names file, line and column"
+else
+  tail -n 20 "$artifacts/import_bad.log"; record 0 1 "import error names file, line and column"
+fi
+rm -rf "$badproject"
+
+fuzz_seconds=${FUZZ_SECONDS:-60}
+echo "== fuzzing the map parser and layout for ${fuzz_seconds} s (libFuzzer, ASan + UBSan)"
+corpus=$(mktemp -d)
+if "$repo/.cache/venv/bin/scons" -Q -j"$(nproc)" fuzz >"$artifacts/fuzz_build.log" 2>&1 &&
+  "$repo/build/fuzz/fuzz_field_map" -max_total_time="$fuzz_seconds" -max_len=4096 -print_final_stats=1 \
+    -artifact_prefix="$artifacts/fuzz-" "$corpus" "$repo/gdextension/fuzz/corpus" >"$artifacts/fuzz.log" 2>&1; then
+  grep -E "^Done|stat::number_of_executed_units" "$artifacts/fuzz.log" | head -n 2
+  record 1 0 "fuzzing"
+else
+  tail -n 30 "$artifacts/fuzz_build.log" "$artifacts/fuzz.log"; record 0 1 "fuzzing"
+fi
+rm -rf "$corpus"
+
 echo "artifacts: $artifacts"
 echo "total: $passed passed, $failed failed"
 ((failed == 0 && passed > 0))

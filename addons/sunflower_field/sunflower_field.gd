@@ -342,6 +342,8 @@ func _get_configuration_warnings() -> PackedStringArray:
 		warnings.append("The map cannot be used: " + _last_error)
 	if not observer.is_empty() and not (get_node_or_null(observer) is Node3D):
 		warnings.append("'observer' does not point to a Node3D; the active camera is used instead.")
+	if is_inside_tree() and not Engine.is_editor_hint() and _resolve_observer() == null:
+		warnings.append("No observer: set 'observer' or add a current Camera3D; the field keeps its last LOD.")
 	if not scale.is_equal_approx(Vector3.ONE):
 		warnings.append("Keep the field's scale at 1; size it with 'cell_size' and 'plant_height'.")
 	return warnings
@@ -498,8 +500,12 @@ func _rebuild() -> void:
 func _clear_field() -> void:
 	if _simulation:
 		_simulation.release_multimeshes()
-	for node: Node in _dynamic_nodes + _chunk_nodes + _object_nodes:
-		if is_instance_valid(node):
+	# Every internal child is ours; this also drops copies made by duplicate().
+	var public_children: Dictionary = {}
+	for node: Node in get_children(false):
+		public_children[node] = true
+	for node: Node in get_children(true):
+		if not public_children.has(node):
 			node.free()
 	_dynamic_nodes.clear()
 	_chunk_nodes.clear()

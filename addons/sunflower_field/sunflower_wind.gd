@@ -15,9 +15,11 @@ extends Resource
 @export_range(0.0, 100.0, 0.1, "suffix:m/s") var power: float = 1.0:
 	set(value):
 		if not is_finite(value):
-			push_warning("SunflowerWind.power: %s is not a number; using 0" % value)
+			push_warning("SunflowerWind.power: %s is not a finite number; using 0" % value)
 			value = 0.0
-		value = clampf(value, 0.0, 100.0)
+		elif value < 0.0 or value > 100.0:
+			push_warning("SunflowerWind.power: %s is outside 0–100; using %s" % [value, clampf(value, 0.0, 100.0)])
+			value = clampf(value, 0.0, 100.0)
 		if value != power:
 			power = value
 			emit_changed()

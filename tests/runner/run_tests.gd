@@ -1,5 +1,6 @@
 extends SceneTree
-## Runs every test_*.gd in res://cases/ or res://tests/cases/ (or those named after --), prints
+## Runs every test_*.gd in res://cases/ or res://tests/cases/ (or the files or file.method names
+## given after --), prints
 ## each failure with its file and line, and ends with the line "godot: N passed, N failed".
 ## Exit code 1 on any failure.
 ## An engine or script error during a test fails it, unless the test allowed it (allow_error).
@@ -10,6 +11,7 @@ class ErrorLog:
 	extends Logger
 	var _mutex: Mutex = Mutex.new()
 	var _errors: PackedStringArray = []
+	var _warnings: PackedStringArray = []
 
 	func _log_error(
 		function: String,
@@ -21,10 +23,12 @@ class ErrorLog:
 		error_type: int,
 		_script_backtraces: Array[ScriptBacktrace]
 	) -> void:
-		if error_type == ERROR_TYPE_WARNING:
-			return
 		_mutex.lock()
-		_errors.append("%s (%s:%d %s)" % [rationale if rationale else code, file, line, function])
+		var text: String = "%s (%s:%d %s)" % [rationale if rationale else code, file, line, function]
+		if error_type == ERROR_TYPE_WARNING:
+			_warnings.append(text)
+		else:
+			_errors.append(text)
 		_mutex.unlock()
 
 	func take() -> PackedStringArray:
@@ -33,6 +37,13 @@ class ErrorLog:
 		_errors = []
 		_mutex.unlock()
 		return errors
+
+	func take_warnings() -> PackedStringArray:
+		_mutex.lock()
+		var warnings: PackedStringArray = _warnings
+		_warnings = []
+		_mutex.unlock()
+		return warnings
 
 
 var _log: ErrorLog = ErrorLog.new()
@@ -53,7 +64,10 @@ func _run() -> void:
 	for file: String in files:
 		if not file.begins_with("test_") or not file.ends_with(".gd"):
 			continue
-		if not wanted.is_empty() and not wanted.has(file.get_basename()):
+		var file_wanted: bool = wanted.is_empty() or wanted.has(file.get_basename())
+		for entry: String in wanted:
+			file_wanted = file_wanted or entry.begins_with(file.get_basename() + ".")
+		if not file_wanted:
 			continue
 		var script: GDScript = load(folder.path_join(file)) as GDScript
 		if script == null or not script.can_instantiate():
@@ -64,9 +78,15 @@ func _run() -> void:
 			var name: String = method["name"]
 			if not name.begins_with("test_"):
 				continue
+			if not (
+				wanted.is_empty() or wanted.has(file.get_basename()) or wanted.has(file.get_basename() + "." + name)
+			):
+				continue
 			var case: TestCase = script.new() as TestCase
 			case.tree = self
+			case.log = _log
 			_log.take()
+			_log.take_warnings()
 			case.before_each()
 			await case.call(name)
 			case.after_each()

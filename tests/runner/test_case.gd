@@ -4,6 +4,8 @@ extends RefCounted
 ## with the file and line of the failing check.
 
 var tree: SceneTree
+## The runner's log of engine errors and warnings (see [method take_warnings]).
+var log: Object
 var failures: PackedStringArray = []
 ## Substrings of engine errors this test provokes on purpose; any other error fails the test.
 var allowed_errors: PackedStringArray = []
@@ -15,6 +17,19 @@ func before_each() -> void:
 
 func after_each() -> void:
 	pass
+
+
+## The warnings the engine logged since the last call (or since the test began).
+func take_warnings() -> PackedStringArray:
+	return log.call("take_warnings")
+
+
+## True when a warning logged since the last call contains [param fragment].
+func warned(fragment: String) -> bool:
+	for warning: String in take_warnings():
+		if warning.contains(fragment):
+			return true
+	return false
 
 
 ## Lets engine errors containing [param fragment] happen during this test (bad input on purpose).
