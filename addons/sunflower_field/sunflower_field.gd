@@ -176,6 +176,13 @@ const IMPOSTOR_SHADER: Shader = preload("shaders/impostor.gdshader")
 	set(value):
 		lod_interval = maxf(value, 0.0) if is_finite(value) else 0.25
 		_configure_lod()
+## Draw every plant as one representation, whatever its distance (for benchmarks and debugging).
+@export_enum("Automatic:-1", "Mesh 1:0", "Mesh 2:1", "Mesh 3:2", "Sprite:3", "Billboard:4") var force_lod: int = -1:
+	set(value):
+		force_lod = clampi(value, -1, LOD_COUNT - 1)
+		_configure_lod()
+## Skip writing plants outside the observer camera's view (the engine culls the far chunks itself).
+@export var frustum_culling: bool = true
 ## Billboards beyond this distance are not drawn (0: no limit).
 @export_range(0.0, 10000.0, 1.0, "or_greater", "suffix:m") var max_draw_distance: float = 0.0:
 	set(value):
@@ -429,7 +436,7 @@ func _on_wind_changed() -> void:
 
 func _configure_lod() -> void:
 	if _simulation:
-		_simulation.set_lod(lod_distances, lod_hysteresis, lod_interval)
+		_simulation.set_lod(lod_distances, lod_hysteresis, lod_interval, force_lod)
 
 
 func _check_distances(distances: PackedFloat32Array) -> String:
@@ -681,7 +688,7 @@ func _push_observer() -> void:
 	var to_local: Transform3D = global_transform.affine_inverse()
 	var frustum: PackedFloat32Array = PackedFloat32Array()
 	var camera: Camera3D = node as Camera3D
-	if camera and camera.is_inside_tree():
+	if frustum_culling and camera and camera.is_inside_tree():
 		for plane: Plane in camera.get_frustum():
 			var local_plane: Plane = to_local * plane
 			frustum.append_array([local_plane.normal.x, local_plane.normal.y, local_plane.normal.z, local_plane.d])

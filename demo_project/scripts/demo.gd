@@ -31,6 +31,7 @@ var _triangles_per_plant: PackedInt32Array = [0, 0, 0]
 var _last_ticks: int = 0
 var _stats_timer: float = 0.0
 var _exit_code: int = 0
+var _build_ms: float = 0.0
 
 @onready var _field: SunflowerField = $Field
 @onready var _camera: FlyCamera = $Camera
@@ -69,7 +70,10 @@ func _ready() -> void:
 		i += 2
 	if _frames_total < 0 and not (_screenshot.is_empty() and _stats_path.is_empty()):
 		_frames_total = 60
+	var build_start: int = Time.get_ticks_usec()
 	load_map(_map_path)
+	_build_ms = (Time.get_ticks_usec() - build_start) / 1000.0
+	print("demo: %s built in %.0f ms" % [_map_path, _build_ms])
 	for argument: String in parts:
 		apply_part_argument(argument)
 	if _frames_total >= 0:
@@ -312,6 +316,7 @@ func _write_stats() -> void:
 	var stats: Dictionary = {
 		"map": _map_path,
 		"plants": _field.get_plant_count(),
+		"build_ms": _build_ms,
 		"frames": frames,
 		"frame_ms": _summary(_frame_times),
 		"native_update_ms": _summary(_update_times),

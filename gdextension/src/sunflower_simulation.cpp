@@ -22,7 +22,7 @@ void SunflowerSimulation::bind_methods() {
 	gdx::bind_method(CLASS, "set_plant_shape", &SunflowerSimulation::set_plant_shape, { "part_scale", "cull_radius", "height" });
 	gdx::bind_method(CLASS, "set_wind", &SunflowerSimulation::set_wind, { "power", "direction" });
 	gdx::bind_method(CLASS, "set_wind_dynamics", &SunflowerSimulation::set_wind_dynamics, { "values" });
-	gdx::bind_method(CLASS, "set_lod", &SunflowerSimulation::set_lod, { "distances", "hysteresis", "interval" });
+	gdx::bind_method(CLASS, "set_lod", &SunflowerSimulation::set_lod, { "distances", "hysteresis", "interval", "force_level" });
 	gdx::bind_method(CLASS, "set_observer", &SunflowerSimulation::set_observer, { "position", "frustum" });
 	gdx::bind_method(CLASS, "set_bucket_multimesh", &SunflowerSimulation::set_bucket_multimesh, { "bucket", "multimesh" });
 	gdx::bind_method(CLASS, "set_chunk_multimeshes", &SunflowerSimulation::set_chunk_multimeshes, { "chunk", "sprite", "billboard" });
@@ -37,6 +37,7 @@ void SunflowerSimulation::bind_methods() {
 	gdx::bind_method(CLASS, "get_plant_parts", &SunflowerSimulation::get_plant_parts, { "plant" });
 	gdx::bind_method(CLASS, "get_bucket_instance_count", &SunflowerSimulation::get_bucket_instance_count, { "bucket" });
 	gdx::bind_method(CLASS, "get_last_update_usec", &SunflowerSimulation::get_last_update_usec);
+	gdx::bind_method(CLASS, "get_memory_bytes", &SunflowerSimulation::get_memory_bytes);
 	gdx::bind_method(CLASS, "get_time", &SunflowerSimulation::get_time);
 	gdx::bind_integer_constant(CLASS, "", "BUCKET_SPRITE", BUCKET_SPRITE);
 	gdx::bind_integer_constant(CLASS, "", "BUCKET_BILLBOARD", BUCKET_BILLBOARD);
@@ -124,7 +125,8 @@ void SunflowerSimulation::set_wind_dynamics(const gdx::PackedFloat32Array &p_val
 	_sim.set_wind(params);
 }
 
-void SunflowerSimulation::set_lod(const gdx::PackedFloat32Array &p_distances, double p_hysteresis, double p_interval) {
+void SunflowerSimulation::set_lod(const gdx::PackedFloat32Array &p_distances, double p_hysteresis, double p_interval,
+		int64_t p_force_level) {
 	LodParams params = _sim.get_lod().get_params();
 	if (p_distances.size() == 4) {
 		std::copy_n(p_distances.data(), 4, params.distances.begin());
@@ -133,6 +135,7 @@ void SunflowerSimulation::set_lod(const gdx::PackedFloat32Array &p_distances, do
 	}
 	params.hysteresis = std::isfinite(p_hysteresis) ? std::max(0.0f, float(p_hysteresis)) : params.hysteresis;
 	params.interval = std::isfinite(p_interval) ? std::max(0.0f, float(p_interval)) : params.interval;
+	params.force_level = p_force_level >= 0 && p_force_level < LOD_COUNT ? int(p_force_level) : -1;
 	_sim.set_lod(params);
 }
 
@@ -308,6 +311,10 @@ int64_t SunflowerSimulation::get_bucket_instance_count(int64_t p_bucket) const {
 
 int64_t SunflowerSimulation::get_last_update_usec() const {
 	return _last_update_usec;
+}
+
+int64_t SunflowerSimulation::get_memory_bytes() const {
+	return static_cast<int64_t>(_sim.get_memory_bytes());
 }
 
 double SunflowerSimulation::get_time() const {

@@ -22,7 +22,7 @@ public:
 	void set_plant_shape(double p_part_scale, double p_cull_radius, double p_height);
 	void set_wind(double p_power, gdx::Vector2 p_direction);
 	void set_wind_dynamics(const gdx::PackedFloat32Array &p_values);
-	void set_lod(const gdx::PackedFloat32Array &p_distances, double p_hysteresis, double p_interval);
+	void set_lod(const gdx::PackedFloat32Array &p_distances, double p_hysteresis, double p_interval, int64_t p_force_level);
 	void set_observer(gdx::Vector3 p_position, const gdx::PackedFloat32Array &p_frustum);
 
 	void set_bucket_multimesh(int64_t p_bucket, gdx::Rid p_multimesh);
@@ -40,6 +40,7 @@ public:
 	gdx::PackedFloat32Array get_plant_parts(int64_t p_plant) const;
 	int64_t get_bucket_instance_count(int64_t p_bucket) const;
 	int64_t get_last_update_usec() const;
+	int64_t get_memory_bytes() const;
 	double get_time() const;
 
 private:

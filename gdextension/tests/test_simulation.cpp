@@ -219,3 +219,35 @@ TEST_CASE("static chunks choose sprite or billboard by the distance to their box
 		CHECK(sim.get_plant_lod(plant) == (distance <= 25.0f ? LOD_SPRITE : LOD_BILLBOARD));
 	}
 }
+
+TEST_CASE("a forced representation draws every plant in it, and memory per plant stays small") {
+	FieldSimulation sim;
+	load(sim, rect_map(100, 60)); // 6 000 plants
+	LodParams params;
+	params.force_level = LOD_MESH_2;
+	sim.set_lod(params);
+	sim.set_observer({ 1000.0f, 1.7f, 1000.0f }); // far away: normally all billboards
+	sim.update(0.016f);
+	CHECK(sim.get_lod_counts()[LOD_MESH_2] == 6000);
+	CHECK(sim.get_bucket(mesh_bucket(1, 0)).get_count() == 6000);
+	CHECK(drawn(sim) == 6000);
+	params.force_level = LOD_BILLBOARD;
+	sim.set_lod(params);
+	sim.update(0.016f);
+	CHECK(sim.get_bucket(BUCKET_BILLBOARD).get_count() == 6000);
+	CHECK(sim.get_bucket(mesh_bucket(1, 0)).get_count() == 0);
+	CHECK(drawn(sim) == 6000);
+	params.force_level = -1;
+	sim.set_lod(params);
+	sim.update(0.016f);
+	CHECK(sim.get_lod_counts()[LOD_BILLBOARD] == 6000);
+	CHECK(drawn(sim) == 6000);
+
+	FieldSimulation big;
+	load(big, rect_map(1000, 200)); // 200 000 plants, far observer: only static chunks
+	big.set_observer({ -500.0f, 1.7f, -500.0f });
+	big.update(0.016f);
+	const double per_plant = double(big.get_memory_bytes()) / 200000.0;
+	CAPTURE(per_plant);
+	CHECK(per_plant <= 64.0);
+}

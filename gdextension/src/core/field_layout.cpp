@@ -11,6 +11,7 @@ void build_layout(const FieldMap &p_map, const LayoutParams &p_params, FieldLayo
 	r_layout.plants.clear();
 	r_layout.chunks.clear();
 	r_layout.chunk_plants.clear();
+	r_layout.grid_chunks.clear();
 	r_layout.plants.reserve(static_cast<size_t>(p_map.plant_count));
 	r_layout.size = glm::vec2(float(p_map.columns), float(p_map.rows)) * p_params.cell_size;
 
@@ -18,6 +19,9 @@ void build_layout(const FieldMap &p_map, const LayoutParams &p_params, FieldLayo
 	const int chunks_x = std::max(1, static_cast<int>(std::ceil(r_layout.size.x / chunk_size)));
 	const int chunks_z = std::max(1, static_cast<int>(std::ceil(r_layout.size.y / chunk_size)));
 	std::vector<uint32_t> grid_count(static_cast<size_t>(chunks_x) * static_cast<size_t>(chunks_z), 0);
+	r_layout.grid_x = chunks_x;
+	r_layout.grid_z = chunks_z;
+	r_layout.chunk_size = chunk_size;
 
 	uint64_t index = 0;
 	for (int row = 0; row < p_map.rows; ++row) {
@@ -43,7 +47,8 @@ void build_layout(const FieldMap &p_map, const LayoutParams &p_params, FieldLayo
 	}
 
 	// Compact the grid to the chunks that hold plants, then group plant indices by chunk.
-	std::vector<uint32_t> grid_to_chunk(grid_count.size(), 0);
+	std::vector<uint32_t> &grid_to_chunk = r_layout.grid_chunks;
+	grid_to_chunk.assign(grid_count.size(), FieldLayout::NO_CHUNK);
 	uint32_t offset = 0;
 	for (size_t g = 0; g < grid_count.size(); ++g) {
 		if (grid_count[g] == 0) {

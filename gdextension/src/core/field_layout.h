@@ -40,6 +40,13 @@ struct FieldLayout {
 	std::vector<Chunk> chunks; // only chunks that hold plants
 	std::vector<uint32_t> chunk_plants; // plant indices grouped by chunk
 	glm::vec2 size{ 0.0f }; // columns·cell, rows·cell
+	// The square grid the chunks come from: cell (x, z) holds chunk grid_chunks[z·grid_x + x], or
+	// NO_CHUNK where no plant stands. Lets per-frame work visit only the chunks near a point.
+	static constexpr uint32_t NO_CHUNK = 0xFFFFFFFFu;
+	int grid_x = 0;
+	int grid_z = 0;
+	float chunk_size = 16.0f;
+	std::vector<uint32_t> grid_chunks;
 };
 
 // Fills r_layout from p_map. Deterministic: the same map, params and seed give the same layout.

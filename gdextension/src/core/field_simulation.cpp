@@ -52,7 +52,10 @@ void FieldSimulation::_rebuild() {
 	_plant_lod.assign(plants, LOD_BILLBOARD);
 	_plant_wind.assign(plants, PlantWind{});
 	_chunk_active.assign(_layout.chunks.size(), 0);
+	_visit_mark.assign(_layout.chunks.size(), 0);
+	_lod_pass = 0;
 	_active_chunks.clear();
+	_previous_active.clear();
 	_changed_chunks.clear();
 	for (InstanceBuffer &bucket : _buckets) {
 		bucket.clear();
@@ -92,32 +95,68 @@ uint8_t FieldSimulation::_static_chunk_lod(uint32_t p_chunk) const {
 void FieldSimulation::_select_lods() {
 	const LodParams &params = _lod.get_params();
 	// A chunk becomes active once any of it could need a mesh; it goes static again a margin later.
+	// A forced representation makes every chunk active, so every plant is drawn in it.
+	const bool forced = params.force_level >= 0 && params.force_level < LOD_COUNT;
 	const float enter = params.distances[2] + 2.0f * params.hysteresis;
 	const float leave = enter + 2.0f * params.hysteresis + 1.0f;
 	_changed_chunks.clear();
+	_previous_active.swap(_active_chunks);
 	_active_chunks.clear();
-	for (uint32_t c = 0; c < _layout.chunks.size(); ++c) {
-		const float distance_sq = _chunk_distance_sq(c);
-		const bool was_active = _chunk_active[c] != 0;
-		const bool active = was_active ? distance_sq < leave * leave : distance_sq < enter * enter;
-		if (active != was_active) {
-			_chunk_active[c] = active ? 1 : 0;
-			_changed_chunks.push_back(c);
+	++_lod_pass;
+	if (forced) {
+		for (uint32_t c = 0; c < _layout.chunks.size(); ++c) {
+			_select_chunk_lods(c, true, enter, leave);
 		}
-		if (!active) {
-			continue;
-		}
-		_active_chunks.push_back(c);
-		const Chunk &chunk = _layout.chunks[c];
-		for (uint32_t k = 0; k < chunk.count; ++k) {
-			const uint32_t index = _layout.chunk_plants[chunk.first + k];
-			const float plant_sq = _plant_distance_sq(_layout.plants[index]);
-			if (!was_active) {
-				_plant_lod[index] = _lod.select(plant_sq);
-				_wind.init_plant(_plant_wind[index], _layout_params.seed, index, _time);
-			} else {
-				_plant_lod[index] = _lod.update(_plant_lod[index], plant_sq);
+		return;
+	}
+	// Only chunks that are active now, or whose grid cell lies within reach, can be active next:
+	// the work depends on what is near the observer, not on the size of the field.
+	for (uint32_t c : _previous_active) {
+		_select_chunk_lods(c, false, enter, leave);
+	}
+	const float reach = leave + _shape.cull_radius * _shape.part_scale;
+	const int x0 = std::max(0, static_cast<int>(std::floor((_observer.x - reach) / _layout.chunk_size)));
+	const int x1 = std::min(_layout.grid_x - 1, static_cast<int>(std::floor((_observer.x + reach) / _layout.chunk_size)));
+	const int z0 = std::max(0, static_cast<int>(std::floor((_observer.z - reach) / _layout.chunk_size)));
+	const int z1 = std::min(_layout.grid_z - 1, static_cast<int>(std::floor((_observer.z + reach) / _layout.chunk_size)));
+	for (int z = z0; z <= z1; ++z) {
+		for (int x = x0; x <= x1; ++x) {
+			const uint32_t c = _layout.grid_chunks[static_cast<size_t>(z) * size_t(_layout.grid_x) + size_t(x)];
+			if (c != FieldLayout::NO_CHUNK && _visit_mark[c] != _lod_pass) {
+				_select_chunk_lods(c, false, enter, leave);
 			}
+		}
+	}
+}
+
+void FieldSimulation::_select_chunk_lods(uint32_t p_chunk, bool p_forced, float p_enter, float p_leave) {
+	const LodParams &params = _lod.get_params();
+	_visit_mark[p_chunk] = _lod_pass;
+	const float distance_sq = p_forced ? 0.0f : _chunk_distance_sq(p_chunk);
+	const bool was_active = _chunk_active[p_chunk] != 0;
+	const bool active = p_forced || (was_active ? distance_sq < p_leave * p_leave : distance_sq < p_enter * p_enter);
+	if (active != was_active) {
+		_chunk_active[p_chunk] = active ? 1 : 0;
+		_changed_chunks.push_back(p_chunk);
+	}
+	if (!active) {
+		return;
+	}
+	_active_chunks.push_back(p_chunk);
+	const Chunk &chunk = _layout.chunks[p_chunk];
+	for (uint32_t k = 0; k < chunk.count; ++k) {
+		const uint32_t index = _layout.chunk_plants[chunk.first + k];
+		const float plant_sq = _plant_distance_sq(_layout.plants[index]);
+		if (p_forced) {
+			if (!was_active || _plant_lod[index] != params.force_level) {
+				_wind.init_plant(_plant_wind[index], _layout_params.seed, index, _time);
+			}
+			_plant_lod[index] = static_cast<uint8_t>(params.force_level);
+		} else if (!was_active) {
+			_plant_lod[index] = _lod.select(plant_sq);
+			_wind.init_plant(_plant_wind[index], _layout_params.seed, index, _time);
+		} else {
+			_plant_lod[index] = _lod.update(_plant_lod[index], plant_sq);
 		}
 	}
 }
@@ -204,6 +243,20 @@ std::array<int64_t, LOD_COUNT> FieldSimulation::get_lod_counts() const {
 		}
 	}
 	return counts;
+}
+
+size_t FieldSimulation::get_memory_bytes() const {
+	size_t bytes = _map.plants.capacity() + _map.objects.capacity() * sizeof(MapObject);
+	bytes += _layout.plants.capacity() * sizeof(Plant) + _layout.chunks.capacity() * sizeof(Chunk);
+	bytes += _layout.chunk_plants.capacity() * sizeof(uint32_t);
+	bytes += _plant_lod.capacity() + _plant_wind.capacity() * sizeof(PlantWind);
+	bytes += _chunk_active.capacity() + _visit_mark.capacity() * sizeof(uint32_t);
+	bytes += (_active_chunks.capacity() + _previous_active.capacity() + _changed_chunks.capacity()) * sizeof(uint32_t);
+	bytes += _layout.grid_chunks.capacity() * sizeof(uint32_t);
+	for (const InstanceBuffer &bucket : _buckets) {
+		bytes += size_t(bucket.get_capacity()) * FLOATS_PER_INSTANCE * sizeof(float);
+	}
+	return bytes;
 }
 
 void FieldSimulation::get_plant_parts(uint32_t p_plant, PartTransforms &r_parts) const {

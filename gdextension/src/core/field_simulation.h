@@ -95,12 +95,15 @@ public:
 	// The representation a plant is drawn in now: its own LOD in an active chunk, else the chunk's.
 	uint8_t get_plant_lod(uint32_t p_plant) const;
 	std::array<int64_t, LOD_COUNT> get_lod_counts() const;
+	// CPU memory held for the field, in bytes (map cells, layout, per-plant state, dynamic buffers).
+	size_t get_memory_bytes() const;
 	// The three part transforms of a plant as they are drawn now (upright for impostors).
 	void get_plant_parts(uint32_t p_plant, PartTransforms &r_parts) const;
 
 private:
 	void _rebuild();
 	void _select_lods();
+	void _select_chunk_lods(uint32_t p_chunk, bool p_forced, float p_enter, float p_leave);
 	uint8_t _static_chunk_lod(uint32_t p_chunk) const;
 	float _chunk_distance_sq(uint32_t p_chunk) const;
 	float _plant_distance_sq(const Plant &p_plant) const;
@@ -119,7 +122,10 @@ private:
 	std::vector<PlantWind> _plant_wind;
 	std::vector<uint8_t> _chunk_active;
 	std::vector<uint32_t> _active_chunks;
+	std::vector<uint32_t> _previous_active;
 	std::vector<uint32_t> _changed_chunks;
+	std::vector<uint32_t> _visit_mark; // per chunk: the LOD pass that last visited it
+	uint32_t _lod_pass = 0;
 	std::array<InstanceBuffer, BUCKET_COUNT> _buckets;
 
 	double _time = 0.0;

@@ -21,6 +21,7 @@ struct LodParams {
 	std::array<float, 4> distances{ { 6.0f, 10.0f, 20.0f, 25.0f } };
 	float hysteresis = 0.5f; // metres: switch to less detail this much later, to more detail this much earlier
 	float interval = 0.25f; // seconds between LOD updates (thesis 3.3.2)
+	int force_level = -1; // 0–4: draw every plant in this representation (benchmarks, debugging)
 };
 
 class LodSelector {
