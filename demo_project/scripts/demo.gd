@@ -10,6 +10,9 @@ extends Node3D
 ##   --screenshot PATH        save the last frame (recording mode; 60 frames if --frames is not given)
 ##   --screenshot-every K     also save every K-th frame, as PATH with the frame number
 ##   --stats PATH             write frame times, LOD counts and the renderer as JSON
+##   --force-lod N            draw every plant as one representation (0-2 meshes, 3 sprite, 4 billboard)
+##   --culling off            do not skip plants outside the camera's view
+##   --baseline native        draw the field the Godot-native way instead (benchmark baseline)
 
 const MAP_NAMES: PackedStringArray = ["Demo field (40 x 30)", "Large field (400 x 300)"]
 const MAP_PATHS: PackedStringArray = ["res://fields/demo.field", "res://fields/large.field"]
@@ -32,6 +35,7 @@ var _last_ticks: int = 0
 var _stats_timer: float = 0.0
 var _exit_code: int = 0
 var _build_ms: float = 0.0
+var _baseline: String = ""
 
 @onready var _field: SunflowerField = $Field
 @onready var _camera: FlyCamera = $Camera
@@ -64,6 +68,12 @@ func _ready() -> void:
 				_screenshot_every = value.to_int()
 			"--stats":
 				_stats_path = value
+			"--force-lod":
+				_field.force_lod = value.to_int()
+			"--culling":
+				_field.frustum_culling = value != "off"
+			"--baseline":
+				_baseline = value
 			_:
 				_hud.show_message("unknown argument '%s' (see demo.gd for the options)" % args[i])
 				i -= 1
@@ -72,6 +82,8 @@ func _ready() -> void:
 		_frames_total = 60
 	var build_start: int = Time.get_ticks_usec()
 	load_map(_map_path)
+	if _baseline == "native":
+		_build_native_baseline()
 	_build_ms = (Time.get_ticks_usec() - build_start) / 1000.0
 	print("demo: %s built in %.0f ms" % [_map_path, _build_ms])
 	for argument: String in parts:
@@ -240,6 +252,17 @@ func _open_part_dialog() -> void:
 	dialog.popup_centered_ratio(0.6)
 
 
+## Replaces the addon's field by the Godot-native baseline drawing the same map.
+func _build_native_baseline() -> void:
+	var baseline: NativeBaseline = NativeBaseline.new()
+	baseline.name = "NativeBaseline"
+	add_child(baseline)
+	var plants: int = baseline.build(_field.map, _field)
+	_field.visible = false
+	_field.process_mode = Node.PROCESS_MODE_DISABLED
+	_hud.show_message("baseline: %d plants as Godot-native chunked MultiMeshes with automatic mesh LOD" % plants)
+
+
 # --- Recording mode ---------------------------------------------------------------------------
 
 
@@ -263,7 +286,8 @@ func _record_frame() -> void:
 	var now: int = Time.get_ticks_usec()
 	if _frame > 0:
 		_frame_times.append((now - _last_ticks) / 1000.0)
-		_update_times.append(_field.get_simulation().get_last_update_usec() / 1000.0)
+		if _baseline.is_empty():
+			_update_times.append(_field.get_simulation().get_last_update_usec() / 1000.0)
 		var counts: PackedInt32Array = _field.get_lod_counts()
 		for lod: int in 5:
 			_lod_sums[lod] += counts[lod]
@@ -317,6 +341,10 @@ func _write_stats() -> void:
 		"map": _map_path,
 		"plants": _field.get_plant_count(),
 		"build_ms": _build_ms,
+		"force_lod": _field.force_lod,
+		"culling": _field.frustum_culling,
+		"baseline": _baseline,
+		"native_memory_bytes": _field.get_simulation().get_memory_bytes(),
 		"frames": frames,
 		"frame_ms": _summary(_frame_times),
 		"native_update_ms": _summary(_update_times),

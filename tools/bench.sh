@@ -1,0 +1,54 @@
+#!/usr/bin/env bash
+# Benchmarks (numbers, not pass/fail). Prints four tables:
+#   1. the C++ core alone: per-frame time and memory, 1M vs 4M plants;
+#   2. the engine: the demo's recording mode on the demo, large and million-plant fields;
+#   3. the thesis' experiment (Tables 3-5): a 1 500-plant field at distances 5 and 40 m, every plant
+#      as one representation, then LOD off / on / on + culling, ratios beside the thesis' ratios;
+#   4. baselines on one field and path: naive (every plant as the level-1 mesh) and Godot-native.
+# Results (JSON per run) go to build/bench/; BENCH_FRAMES and BENCH_RESOLUTION change the runs.
+set -euo pipefail
+repo=$(cd "$(dirname "$0")/.." && pwd)
+"$repo/tools/build.sh" >/dev/null
+godot=$("$repo/tools/find_godot.sh")
+out="$repo/build/bench"
+mkdir -p "$out/fields" "$out/runs"
+rm -f "$out"/runs/*.json
+frames=${BENCH_FRAMES:-12}
+resolution=${BENCH_RESOLUTION:-480x270}
+
+echo "Machine: $(nproc) cores, $(free -g | awk '/Mem:/ {print $2}') GiB, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs)"
+echo "Engine: $("$godot" --version | head -n 1); rendering: Forward+ on Vulkan lavapipe (software) under Xvfb, $resolution"
+echo
+echo "## 1. The core alone"
+"$repo/build/bench/core_bench"
+
+"$repo/tools/make_field.py" 50 30 "$out/fields/thesis1500.field" >/dev/null
+"$repo/tools/make_field.py" 1000 1000 "$out/fields/million.field" >/dev/null
+printf '12.5 1.7 20 12.5 1.0 7.5\n12.5 1.7 20 12.5 1.0 7.5\n' >"$out/fields/view5.path"
+printf '12.5 1.7 55 12.5 1.0 7.5\n12.5 1.7 55 12.5 1.0 7.5\n' >"$out/fields/view40.path"
+
+run() { # $1 = name, rest = demo arguments
+  local name=$1; shift
+  timeout 1800 xvfb-run -a -s "-screen 0 1280x720x24" "$godot" --audio-driver Dummy --resolution "$resolution" \
+    --path "$repo/demo_project" -- --frames "$frames" --stats "$out/runs/$name.json" "$@" >"$out/runs/$name.log" 2>&1 ||
+    echo "bench: run $name failed; see $out/runs/$name.log" >&2
+  printf '.' >&2
+}
+
+echo >&2
+echo "bench: engine runs (about $((frames * 20)) frames in all, software rendering: minutes)" >&2
+run engine_demo --map res://fields/demo.field
+run engine_large --map res://fields/large.field
+run engine_million --map "$out/fields/million.field"
+for view in 5 40; do
+  for lod in 0 1 2 3 4; do
+    run "thesis_${view}_force${lod}" --map "$out/fields/thesis1500.field" --path "$out/fields/view$view.path" --force-lod "$lod" --culling off
+  done
+  run "thesis_${view}_lod" --map "$out/fields/thesis1500.field" --path "$out/fields/view$view.path" --culling off
+  run "thesis_${view}_lodcull" --map "$out/fields/thesis1500.field" --path "$out/fields/view$view.path"
+done
+run baseline_ours --map res://fields/demo.field
+run baseline_naive --map res://fields/demo.field --force-lod 0 --culling off
+run baseline_native --map res://fields/demo.field --baseline native
+echo >&2
+python3 "$repo/tools/bench_tables.py" "$out/runs"

@@ -1,0 +1,69 @@
+#!/usr/bin/env python3
+"""Prints tables 2-4 of tools/bench.sh from the demo's JSON statistics in a folder."""
+import json
+import os
+import sys
+
+THESIS_TABLE4_1500 = [12, 16, 20, 56, 88]  # FPS, 1 500 plants: model 1, 2, 3, sprite, billboard
+THESIS_TABLE5 = {5: [8, 12, 30], 40: [8, 54, 54]}  # angular order only, + LOD, + LOD + culling
+NAMES = ["model 1", "model 2", "model 3", "sprite", "billboard"]
+
+
+def load(folder, name):
+    try:
+        with open(os.path.join(folder, name + ".json"), encoding="utf-8") as f:
+            return json.load(f)
+    except (OSError, ValueError):
+        return None
+
+
+def fps(stats):
+    return 1000.0 / stats["frame_ms"]["median"] if stats and stats["frame_ms"]["median"] > 0 else float("nan")
+
+
+def main(folder):
+    print("\n## 2. In the engine (the demo's recording mode along its built-in flight)\n")
+    print("| field | plants | build ms | FPS | frame ms median / p99 | native update ms median / p99 | CPU MB |")
+    print("|---|---|---|---|---|---|---|")
+    for name, label in (("engine_demo", "demo 40 x 30"), ("engine_large", "large 400 x 300"), ("engine_million", "million 1000 x 1000")):
+        s = load(folder, name)
+        if not s:
+            print(f"| {label} | run failed | | | | | |")
+            continue
+        print(f"| {label} | {s['plants']} | {s['build_ms']:.0f} | {fps(s):.2f} | {s['frame_ms']['median']:.1f} / {s['frame_ms']['p99']:.1f} | "
+              f"{s['native_update_ms']['median']:.3f} / {s['native_update_ms']['p99']:.3f} | {s['native_memory_bytes'] / 1e6:.1f} |")
+
+    print("\n## 3. The thesis' experiment: 1 500 plants (50 x 30), observer 5 m and 40 m before the field\n")
+    print("Every plant as one representation (thesis Table 4, 1 500 plants), FPS and ratio to model 1:\n")
+    print("| representation | FPS at 5 m | FPS at 40 m | ratio (5 m) | ratio (40 m) | thesis FPS | thesis ratio |")
+    print("|---|---|---|---|---|---|---|")
+    base = {view: fps(load(folder, f"thesis_{view}_force0")) for view in (5, 40)}
+    for lod, name in enumerate(NAMES):
+        row = {view: fps(load(folder, f"thesis_{view}_force{lod}")) for view in (5, 40)}
+        print(f"| {name} | {row[5]:.2f} | {row[40]:.2f} | {row[5] / base[5]:.2f} | {row[40] / base[40]:.2f} | "
+              f"{THESIS_TABLE4_1500[lod]} | {THESIS_TABLE4_1500[lod] / THESIS_TABLE4_1500[0]:.2f} |")
+    print("\nAll optimisations (thesis Table 5), FPS and ratio to LOD off:\n")
+    print("| observer | LOD off | LOD on | LOD + culling | ratios | thesis FPS | thesis ratios |")
+    print("|---|---|---|---|---|---|---|")
+    for view in (5, 40):
+        runs = [fps(load(folder, f"thesis_{view}_force0")), fps(load(folder, f"thesis_{view}_lod")), fps(load(folder, f"thesis_{view}_lodcull"))]
+        thesis = THESIS_TABLE5[view]
+        print(f"| {view} m | {runs[0]:.2f} | {runs[1]:.2f} | {runs[2]:.2f} | 1 : {runs[1] / runs[0]:.2f} : {runs[2] / runs[0]:.2f} | "
+              f"{thesis[0]} / {thesis[1]} / {thesis[2]} | 1 : {thesis[1] / thesis[0]:.2f} : {thesis[2] / thesis[0]:.2f} |")
+
+    print("\n## 4. Baselines: the demo field along the built-in flight\n")
+    print("| drawing | FPS | frame ms median / p99 | our frame time / theirs |")
+    print("|---|---|---|---|")
+    ours = load(folder, "baseline_ours")
+    for name, label in (("baseline_ours", "this addon (LOD, wind, culling)"), ("baseline_naive", "naive: every plant as the level-1 mesh, no LOD"),
+                        ("baseline_native", "Godot-native: chunked MultiMeshes, automatic mesh LOD, visibility cut-off")):
+        s = load(folder, name)
+        if not s or not ours:
+            print(f"| {label} | run failed | | |")
+            continue
+        print(f"| {label} | {fps(s):.2f} | {s['frame_ms']['median']:.1f} / {s['frame_ms']['p99']:.1f} | "
+              f"{ours['frame_ms']['median'] / s['frame_ms']['median']:.2f} |")
+
+
+if __name__ == "__main__":
+    main(sys.argv[1])
