@@ -183,6 +183,18 @@ const IMPOSTOR_SHADER: Shader = preload("shaders/impostor.gdshader")
 		_configure_lod()
 ## Skip writing plants outside the observer camera's view (the engine culls the far chunks itself).
 @export var frustum_culling: bool = true
+## Beyond this distance, draw only a share of the impostors, falling with the square of the
+## distance (down to [member thinning_min_density]); the kept ones widen to keep the coverage.
+## Done on the GPU, so it costs no CPU time. 0 turns thinning off.
+@export_range(0.0, 1000.0, 1.0, "or_greater", "suffix:m") var thinning_distance: float = 0.0:
+	set(value):
+		thinning_distance = maxf(value, 0.0) if is_finite(value) else 0.0
+		_update_materials()
+## The least share of impostors drawn far away, with thinning on.
+@export_range(0.01, 1.0, 0.01) var thinning_min_density: float = 0.25:
+	set(value):
+		thinning_min_density = clampf(value, 0.01, 1.0) if is_finite(value) else 0.25
+		_update_materials()
 ## Billboards beyond this distance are not drawn (0: no limit).
 @export_range(0.0, 10000.0, 1.0, "or_greater", "suffix:m") var max_draw_distance: float = 0.0:
 	set(value):
@@ -539,6 +551,8 @@ func _update_materials() -> void:
 		material.set_shader_parameter("albedo_texture", textures[key])
 		material.set_shader_parameter("alpha_scissor", alpha_scissor)
 		material.set_shader_parameter("face_observer", key == "billboard")
+		material.set_shader_parameter("thinning_start", thinning_distance)
+		material.set_shader_parameter("thinning_min_density", thinning_min_density)
 
 
 func _field_aabb() -> AABB:

@@ -101,3 +101,37 @@ func _artifact_path(file: String) -> String:
 	var folder: String = ProjectSettings.globalize_path("res://").path_join("../artifacts").simplify_path()
 	DirAccess.make_dir_recursive_absolute(folder)
 	return folder.path_join(file)
+
+
+func test_density_thinning_draws_fewer_far_impostors() -> void:
+	var field: SunflowerField = SunflowerField.new()
+	scene.add_child(field)
+	field.map = load("res://fields/large.field") as SunflowerFieldMap
+	field.wind_power = 0.0
+	var camera: Camera3D = Camera3D.new()
+	scene.add_child(camera)
+	camera.look_at_from_position(Vector3(100.0, 25.0, 190.0), Vector3(100.0, 0.0, 60.0))
+	camera.make_current()
+	await frames(6)
+	var full: float = _plant_pixels(tree.root.get_viewport().get_texture().get_image())
+	field.thinning_distance = 20.0
+	field.thinning_min_density = 0.1
+	await frames(6)
+	var thinned_image: Image = tree.root.get_viewport().get_texture().get_image()
+	thinned_image.save_png(_artifact_path("render_thinning.png"))
+	var thinned: float = _plant_pixels(thinned_image)
+	print("     plant pixels: %.1f%% without thinning, %.1f%% with" % [100.0 * full, 100.0 * thinned])
+	check(full > 0.05, "the far field covers the picture without thinning (%s)" % full)
+	check(thinned > full * 0.3, "thinning keeps the field's coverage roughly (%s vs %s)" % [thinned, full])
+	check(thinned < full * 0.98, "thinning draws fewer pixels of plants (%s vs %s)" % [thinned, full])
+
+
+func _plant_pixels(image: Image) -> float:
+	var plant: int = 0
+	var samples: int = 0
+	for y: int in range(0, image.get_height(), 2):
+		for x: int in range(0, image.get_width(), 2):
+			var c: Color = image.get_pixel(x, y)
+			samples += 1
+			plant += 1 if (_is_yellow(c) or (c.g > c.r * 1.1 and c.g > c.b * 1.3 and c.g > 0.12)) else 0
+	return float(plant) / samples
