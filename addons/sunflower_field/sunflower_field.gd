@@ -231,10 +231,6 @@ func _ready() -> void:
 	_queue_rebuild()
 
 
-func _exit_tree() -> void:
-	_queue_rebuild()  # rebuilt when re-entering
-
-
 func _notification(what: int) -> void:
 	if what == NOTIFICATION_PREDELETE:
 		_clear_field()
