@@ -87,8 +87,9 @@ void SunflowerSimulation::set_layout(double p_cell_size, int64_t p_seed, bool p_
 	params.seed = static_cast<uint64_t>(p_seed);
 	params.independent_jitter = p_independent_jitter;
 	params.chunk_size = static_cast<float>(p_chunk_size);
-	_sim.set_layout_params(params);
-	release_multimeshes();
+	if (_sim.set_layout_params(params)) {
+		release_multimeshes(); // the chunks changed
+	}
 }
 
 void SunflowerSimulation::set_plant_shape(double p_part_scale, double p_cull_radius, double p_height) {

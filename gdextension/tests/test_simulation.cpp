@@ -251,3 +251,28 @@ TEST_CASE("a forced representation draws every plant in it, and memory per plant
 	CAPTURE(per_plant);
 	CHECK(per_plant <= 64.0);
 }
+
+TEST_CASE("setting the same layout again keeps the field as it is; a different one rebuilds it") {
+	FieldSimulation sim;
+	load(sim, rect_map(80, 80));
+	sim.set_observer({ 20.0f, 1.7f, 20.0f });
+	sim.update(0.016f);
+	const uint32_t chunks = sim.get_chunk_count();
+	uint32_t active = 0;
+	for (uint32_t c = 0; c < chunks; ++c) {
+		active += sim.is_chunk_active(c) ? 1 : 0;
+	}
+	REQUIRE(active > 0);
+	CHECK_FALSE(sim.set_layout_params(sim.get_layout_params()));
+	uint32_t still_active = 0;
+	for (uint32_t c = 0; c < chunks; ++c) {
+		still_active += sim.is_chunk_active(c) ? 1 : 0;
+	}
+	CHECK(still_active == active); // no rebuild: chunk state survives
+	LayoutParams params = sim.get_layout_params();
+	params.seed += 1;
+	CHECK(sim.set_layout_params(params));
+	for (uint32_t c = 0; c < sim.get_chunk_count(); ++c) {
+		CHECK_FALSE(sim.is_chunk_active(c)); // rebuilt: nothing active until the next update
+	}
+}

@@ -19,6 +19,11 @@ struct LayoutParams {
 	float jitter = 0.5f; // α ∈ [0, jitter) in cells (thesis: 0.5)
 	float yaw_jitter = 0.35f; // radians either side of facing +z, for variety between plants
 	float chunk_size = 16.0f; // metres; the far representations are grouped in square chunks
+
+	bool operator==(const LayoutParams &p_other) const {
+		return cell_size == p_other.cell_size && seed == p_other.seed && independent_jitter == p_other.independent_jitter &&
+				jitter == p_other.jitter && yaw_jitter == p_other.yaw_jitter && chunk_size == p_other.chunk_size;
+	}
 };
 
 struct Plant {

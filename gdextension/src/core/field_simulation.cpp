@@ -29,11 +29,16 @@ void FieldSimulation::clear() {
 	_rebuild();
 }
 
-void FieldSimulation::set_layout_params(const LayoutParams &p_params) {
-	_layout_params = p_params;
-	_layout_params.cell_size = std::isfinite(p_params.cell_size) && p_params.cell_size > 0.0f ? p_params.cell_size : 0.5f;
-	_layout_params.chunk_size = std::isfinite(p_params.chunk_size) && p_params.chunk_size > 0.0f ? p_params.chunk_size : 16.0f;
+bool FieldSimulation::set_layout_params(const LayoutParams &p_params) {
+	LayoutParams params = p_params;
+	params.cell_size = std::isfinite(p_params.cell_size) && p_params.cell_size > 0.0f ? p_params.cell_size : 0.5f;
+	params.chunk_size = std::isfinite(p_params.chunk_size) && p_params.chunk_size > 0.0f ? p_params.chunk_size : 16.0f;
+	if (params == _layout_params) {
+		return false;
+	}
+	_layout_params = params;
 	_rebuild();
+	return true;
 }
 
 void FieldSimulation::set_lod(const LodParams &p_params) {

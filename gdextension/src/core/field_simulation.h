@@ -58,7 +58,9 @@ public:
 	void clear();
 	const FieldMap &get_map() const { return _map; }
 
-	void set_layout_params(const LayoutParams &p_params); // rebuilds the layout
+	// Rebuilds the layout when the (sanitised) parameters differ from the current ones; returns
+	// whether it did.
+	bool set_layout_params(const LayoutParams &p_params);
 	const LayoutParams &get_layout_params() const { return _layout_params; }
 	void set_wind(const WindParams &p_params) { _wind.configure(p_params); }
 	const WindModel &get_wind() const { return _wind; }
