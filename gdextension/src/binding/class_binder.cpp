@@ -13,6 +13,8 @@ struct Registry {
 	std::deque<String> strings;
 	std::vector<std::unique_ptr<MethodBind>> methods;
 	std::deque<ClassInfo> classes;
+	const StringName *empty_name = nullptr;
+	const String *empty_string = nullptr;
 };
 
 Registry *registry() {
@@ -21,12 +23,17 @@ Registry *registry() {
 }
 
 GDExtensionPropertyInfo property_info(GDExtensionVariantType p_type, const char *p_name) {
+	Registry *reg = registry();
+	if (!reg->empty_name) { // one empty class name and hint string serve every property
+		reg->empty_name = intern_name("");
+		reg->empty_string = intern_string("");
+	}
 	GDExtensionPropertyInfo info{};
 	info.type = p_type;
 	info.name = const_cast<StringName *>(intern_name(p_name))->ptr();
-	info.class_name = const_cast<StringName *>(intern_name(""))->ptr();
+	info.class_name = const_cast<StringName *>(reg->empty_name)->ptr();
 	info.hint = 0; // PROPERTY_HINT_NONE
-	info.hint_string = const_cast<String *>(intern_string(""))->ptr();
+	info.hint_string = const_cast<String *>(reg->empty_string)->ptr();
 	info.usage = 6; // PROPERTY_USAGE_DEFAULT
 	return info;
 }
@@ -146,6 +153,8 @@ void release_api() {
 	reg->methods.clear();
 	reg->names.clear();
 	reg->strings.clear();
+	reg->empty_name = nullptr;
+	reg->empty_string = nullptr;
 }
 
 } // namespace gdx

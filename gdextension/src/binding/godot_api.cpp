@@ -54,7 +54,6 @@ bool load_api(GDExtensionInterfaceGetProcAddress p_get_proc_address, GDExtension
 	bool ok = true;
 	ok &= load(api.get_godot_version2, "get_godot_version2");
 	ok &= load(api.print_error_with_message, "print_error_with_message");
-	ok &= load(api.print_warning_with_message, "print_warning_with_message");
 	ok &= load(api.string_name_new_with_utf8_chars, "string_name_new_with_utf8_chars");
 	ok &= load(api.string_new_with_utf8_chars_and_len2, "string_new_with_utf8_chars_and_len2");
 	ok &= load(api.string_to_utf8_chars, "string_to_utf8_chars");
@@ -97,10 +96,6 @@ bool load_api(GDExtensionInterfaceGetProcAddress p_get_proc_address, GDExtension
 
 void print_error(const std::string &p_message, const char *p_function, const char *p_file, int p_line) {
 	api.print_error_with_message("Sunflower", p_message.c_str(), p_function, p_file, p_line, true);
-}
-
-void print_warning(const std::string &p_message, const char *p_function, const char *p_file, int p_line) {
-	api.print_warning_with_message("Sunflower", p_message.c_str(), p_function, p_file, p_line, true);
 }
 
 std::string String::utf8() const {

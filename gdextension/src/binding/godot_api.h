@@ -15,7 +15,6 @@ struct Api {
 
 	GDExtensionInterfaceGetGodotVersion2 get_godot_version2 = nullptr;
 	GDExtensionInterfacePrintErrorWithMessage print_error_with_message = nullptr;
-	GDExtensionInterfacePrintWarningWithMessage print_warning_with_message = nullptr;
 	GDExtensionInterfaceStringNameNewWithUtf8Chars string_name_new_with_utf8_chars = nullptr;
 	GDExtensionInterfaceStringNewWithUtf8CharsAndLen2 string_new_with_utf8_chars_and_len2 = nullptr;
 	GDExtensionInterfaceStringToUtf8Chars string_to_utf8_chars = nullptr;
@@ -54,7 +53,6 @@ bool load_api(GDExtensionInterfaceGetProcAddress p_get_proc_address, GDExtension
 void release_api();
 
 void print_error(const std::string &p_message, const char *p_function, const char *p_file, int p_line);
-void print_warning(const std::string &p_message, const char *p_function, const char *p_file, int p_line);
 
 // --- Builtin types -----------------------------------------------------------------------------
 

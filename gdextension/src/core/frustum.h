@@ -14,7 +14,6 @@ public:
 	void clear() { _count = 0; }
 	// p_planes: (normal.x, normal.y, normal.z, d) each; at most six are used.
 	void set_planes(const glm::vec4 *p_planes, size_t p_count);
-	bool is_set() const { return _count > 0; }
 
 	bool intersects_sphere(const glm::vec3 &p_center, float p_radius) const {
 		for (size_t i = 0; i < _count; ++i) {
