@@ -40,15 +40,10 @@ func after_each() -> void:
 
 
 func test_demo_field_renders_as_sunflowers() -> void:
-	var field: SunflowerField = SunflowerField.new()
-	scene.add_child(field)
-	field.map = load("res://fields/demo.field") as SunflowerFieldMap
-	field.wind_power = 0.0
-	var camera: Camera3D = Camera3D.new()
-	scene.add_child(camera)
 	# South of the field, looking north across it towards the flower heads (which face +z).
-	camera.look_at_from_position(Vector3(12.0, 2.4, 18.5), Vector3(9.0, 1.0, 4.0))
-	camera.make_current()
+	var field: SunflowerField = _still_field(
+		"res://fields/demo.field", Vector3(12.0, 2.4, 18.5), Vector3(9.0, 1.0, 4.0)
+	)
 	await frames(8)
 	var counts: PackedInt32Array = field.get_lod_counts()
 	check(counts[0] > 0 and counts[2] > 0 and counts[3] + counts[4] > 0, "several representations in view: %s" % counts)
@@ -86,14 +81,9 @@ func _artifact_path(file: String) -> String:
 
 
 func test_density_thinning_draws_fewer_far_impostors() -> void:
-	var field: SunflowerField = SunflowerField.new()
-	scene.add_child(field)
-	field.map = load("res://fields/large.field") as SunflowerFieldMap
-	field.wind_power = 0.0
-	var camera: Camera3D = Camera3D.new()
-	scene.add_child(camera)
-	camera.look_at_from_position(Vector3(100.0, 25.0, 190.0), Vector3(100.0, 0.0, 60.0))
-	camera.make_current()
+	var field: SunflowerField = _still_field(
+		"res://fields/large.field", Vector3(100.0, 25.0, 190.0), Vector3(100.0, 0.0, 60.0)
+	)
 	await frames(6)
 	var full: float = _plant_pixels(tree.root.get_viewport().get_texture().get_image())
 	field.thinning_distance = 20.0
@@ -106,6 +96,20 @@ func test_density_thinning_draws_fewer_far_impostors() -> void:
 	check(full > 0.05, "the far field covers the picture without thinning (%s)" % full)
 	check(thinned > full * 0.3, "thinning keeps the field's coverage roughly (%s vs %s)" % [thinned, full])
 	check(thinned < full * 0.98, "thinning draws fewer pixels of plants (%s vs %s)" % [thinned, full])
+
+
+## A calm field from [param map_path] in the scene, seen by a current camera at [param eye]
+## looking at [param target].
+func _still_field(map_path: String, eye: Vector3, target: Vector3) -> SunflowerField:
+	var field: SunflowerField = SunflowerField.new()
+	scene.add_child(field)
+	field.map = load(map_path) as SunflowerFieldMap
+	field.wind_power = 0.0
+	var camera: Camera3D = Camera3D.new()
+	scene.add_child(camera)
+	camera.look_at_from_position(eye, target)
+	camera.make_current()
+	return field
 
 
 func _plant_pixels(image: Image) -> float:
