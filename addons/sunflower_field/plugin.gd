@@ -1,16 +1,23 @@
 @tool
 extends EditorPlugin
-## Registers the importer that turns [code].field[/code] maps into [SunflowerFieldMap] resources.
+## Registers the importer that turns [code].field[/code] maps into [SunflowerFieldMap] resources and
+## shows the progress of fields building in the background in the 3D editor's toolbar.
 ## The [SunflowerField] node itself is registered by its [code]class_name[/code].
 
 var _importer: EditorImportPlugin
+var _progress: Control
 
 
 func _enter_tree() -> void:
 	_importer = preload("field_map_import_plugin.gd").new()
 	add_import_plugin(_importer)
+	_progress = preload("build_progress_bar.gd").new()
+	add_control_to_container(CONTAINER_SPATIAL_EDITOR_MENU, _progress)
 
 
 func _exit_tree() -> void:
 	remove_import_plugin(_importer)
 	_importer = null
+	remove_control_from_container(CONTAINER_SPATIAL_EDITOR_MENU, _progress)
+	_progress.queue_free()
+	_progress = null

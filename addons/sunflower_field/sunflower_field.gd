@@ -19,6 +19,8 @@ extends Node3D
 signal field_built(plant_count: int)
 ## Emitted when a map cannot be used; [param message] names the file, line and column.
 signal map_error(message: String)
+## Emitted every frame while a field builds in the background; [param progress] runs from 0 to 1.
+signal build_progress(progress: float)
 
 ## The three parts of a plant, bottom to top.
 enum Part { BOTTOM, MIDDLE, HEAD }
@@ -39,6 +41,15 @@ const ADDON_DIR: String = "res://addons/sunflower_field/"
 const DEFAULT_FRONT_TEXTURE: Texture2D = preload("textures/sunflower_front.png")
 const DEFAULT_SIDE_TEXTURE: Texture2D = preload("textures/sunflower_side.png")
 const IMPOSTOR_SHADER: Shader = preload("shaders/impostor.gdshader")
+## Maps of at least this many bytes (about as many cells) build in the background when
+## [member background_build] is on; smaller ones take a few milliseconds and build at once.
+const BACKGROUND_BUILD_MIN_BYTES: int = 65536
+## Plants in active chunks (those near the observer) from which their per-frame work is split over
+## [member worker_threads]; below it, waking threads costs more than it saves (core benchmark).
+const PARALLEL_MIN_PLANTS: int = 16384
+
+## Fields building in the background now, for progress displays.
+static var _building: Array[SunflowerField] = []
 
 @export_group("Field")
 ## The field map. Import a [code].field[/code] file (the plugin turns it into a
@@ -138,17 +149,17 @@ const IMPOSTOR_SHADER: Shader = preload("shaders/impostor.gdshader")
 @export var sprite_front_texture: Texture2D = DEFAULT_FRONT_TEXTURE:
 	set(value):
 		sprite_front_texture = value
-		_queue_rebuild()
+		_update_materials()
 ## Texture of the sprite's side quad, with alpha.
 @export var sprite_side_texture: Texture2D = DEFAULT_SIDE_TEXTURE:
 	set(value):
 		sprite_side_texture = value
-		_queue_rebuild()
+		_update_materials()
 ## Texture of the billboard, with alpha.
 @export var billboard_texture: Texture2D = DEFAULT_FRONT_TEXTURE:
 	set(value):
 		billboard_texture = value
-		_queue_rebuild()
+		_update_materials()
 ## Alpha below which sprite and billboard pixels are discarded (thesis: 190/255).
 @export_range(0.0, 1.0, 0.001) var alpha_scissor: float = 190.0 / 255.0:
 	set(value):
@@ -165,7 +176,8 @@ const IMPOSTOR_SHADER: Shader = preload("shaders/impostor.gdshader")
 			push_warning("SunflowerField.lod_distances: %s; keeping %s" % [problem, lod_distances])
 			return
 		lod_distances = value
-		_queue_rebuild()
+		_configure_lod()
+		_apply_visibility_ranges()
 ## Hysteresis on every switch: less detail this much later, more detail this much earlier.
 @export_range(0.0, 5.0, 0.05, "suffix:m") var lod_hysteresis: float = 0.5:
 	set(value):
@@ -199,7 +211,28 @@ const IMPOSTOR_SHADER: Shader = preload("shaders/impostor.gdshader")
 @export_range(0.0, 10000.0, 1.0, "or_greater", "suffix:m") var max_draw_distance: float = 0.0:
 	set(value):
 		max_draw_distance = maxf(value, 0.0) if is_finite(value) else 0.0
-		_queue_rebuild()
+		_apply_visibility_ranges()
+
+@export_group("Performance")
+## Build large maps without stalling: the map is read and laid out on a worker thread, then the
+## field's nodes are made a few at a time, at most [member build_budget_ms] per frame. The previous
+## field stays drawn until the new one is complete ([signal build_progress] reports, the editor shows
+## a progress bar). Off: every build completes in the frame it starts, like
+## [method load_map_file] and [method advance] always do.
+@export var background_build: bool = true
+## Main-thread time a background build may take per frame. When frames are slower than twice this
+## anyway (software rendering), a step may take up to half the last frame's time, at most 100 ms.
+@export_range(1.0, 100.0, 0.5, "suffix:ms") var build_budget_ms: float = 8.0:
+	set(value):
+		build_budget_ms = clampf(value, 1.0, 100.0) if is_finite(value) else 8.0
+## Threads that move the plants near the observer, the main thread included: 0 uses the machine's
+## cores (at most 4), 1 keeps the work on the main thread. The work is split only when at least
+## [constant PARALLEL_MIN_PLANTS] plants are near; the result is the same either way.
+@export_range(0, 16) var worker_threads: int = 0:
+	set(value):
+		worker_threads = clampi(value, 0, 16)
+		if _built_plants >= 0:
+			_simulation.set_worker_threads(worker_threads, PARALLEL_MIN_PLANTS)
 
 @export_group("Observer")
 ## The node distances are measured from. Empty: the viewport's active camera (in the editor, the
@@ -219,10 +252,44 @@ var _dynamic_nodes: Array[MultiMeshInstance3D] = []
 var _chunk_nodes: Array[MultiMeshInstance3D] = []
 var _object_nodes: Array[Node] = []
 var _materials: Dictionary = {}
+var _impostor_meshes: Dictionary = {}
 var _last_error: String = ""
+## The field being built (drawn once complete), the worker's job, and the chunk nodes made so far.
+var _pending: SunflowerSimulation
+var _pending_job: BuildJob
+var _pending_task: int = -1
+var _pending_nodes: Array[MultiMeshInstance3D] = []
+var _build_stats: Dictionary = {}
+
+
+## A field's map read and laid out, on a worker thread or not. Holds its own copies of the inputs,
+## so the node may change (or go) meanwhile; the node waits for the task before dropping the job.
+class BuildJob:
+	extends RefCounted
+	var simulation: SunflowerSimulation = SunflowerSimulation.new()
+	var text: PackedByteArray
+	var source: String
+	var legend: String
+	var max_plants: int
+	var cell_size: float
+	var seed: int
+	var independent_jitter: bool
+	var chunk_size: float
+	var part_scale: float
+	var error: String = ""
+	var usec: int = 0
+
+	func run() -> void:
+		var start: int = Time.get_ticks_usec()
+		error = simulation.load_map(text, source, legend, max_plants)
+		if error.is_empty():
+			simulation.set_layout(cell_size, seed, independent_jitter, chunk_size)
+			simulation.set_plant_shape(part_scale, 1.9, 3.2)
+		usec = Time.get_ticks_usec() - start
 
 
 func _init() -> void:
+	_simulation = SunflowerSimulation.new()  # empty until the first build is put in its place
 	_part_meshes.resize(MESH_LEVELS * 3)
 	_get_wind()
 
@@ -233,12 +300,15 @@ func _ready() -> void:
 
 func _notification(what: int) -> void:
 	if what == NOTIFICATION_PREDELETE:
+		_cancel_build()
 		_clear_field()
 
 
 func _process(delta: float) -> void:
 	if _rebuild_queued:
-		_rebuild()
+		_rebuild(true)
+	if _pending:
+		_step_build(int(1000.0 * maxf(build_budget_ms, minf(delta * 500.0, 100.0))))
 	if _built_plants > 0:
 		_push_observer()
 		_simulation.update(delta)
@@ -246,8 +316,9 @@ func _process(delta: float) -> void:
 
 ## Reads a map from [param path] ([code]res://[/code], [code]user://[/code] or an absolute path)
 ## and builds the field. On error the current field stays, [signal map_error] is emitted and the
-## error is returned.
-func load_map_file(path: String) -> Error:
+## error is returned. The build completes before this returns, unless [param background] is true
+## (and [member background_build] on): then [signal field_built] tells when it is ready.
+func load_map_file(path: String, background: bool = false) -> Error:
 	var errors: Array[String] = []
 	var field_map: SunflowerFieldMap = SunflowerFieldMap.from_file(path, errors)
 	if field_map == null:
@@ -258,8 +329,48 @@ func load_map_file(path: String) -> Error:
 		_report_map_error(message)
 		return ERR_PARSE_ERROR
 	map = field_map
-	_rebuild()
+	_rebuild(background)
 	return OK
+
+
+## Whether a new field is due (a change waits for the next frame) or being built in the
+## background; the previous field is drawn meanwhile.
+func is_building() -> bool:
+	return _pending != null or (_rebuild_queued and is_inside_tree())
+
+
+## How far the coming field is, from 0 to 1 (1 when no build is due or running).
+func get_build_progress() -> float:
+	if _pending == null:
+		return 0.0 if is_building() else 1.0
+	if _pending_task >= 0:
+		return 0.0
+	return 0.1 + 0.9 * _pending_nodes.size() / maxf(2.0 * _pending.get_chunk_count(), 1.0)
+
+
+## Completes a running background build now, blocking until the field is ready.
+func finish_build() -> void:
+	if _rebuild_queued:
+		_rebuild()
+	if _pending:
+		_step_build(-1)
+
+
+## Figures of the last build: [code]total_ms[/code] (start to [signal field_built]),
+## [code]worker_ms[/code] (reading and laying out the map), [code]main_thread_ms[/code] (making
+## nodes and buffers), [code]longest_step_ms[/code] (the longest the build held up one frame),
+## [code]frames[/code] (frames it spanned) and [code]background[/code].
+func get_build_stats() -> Dictionary:
+	return _build_stats.duplicate()
+
+
+## The fields building in the background now (for progress displays such as the editor's).
+static func get_building_fields() -> Array[SunflowerField]:
+	var fields: Array[SunflowerField] = []
+	for field: SunflowerField in _building:
+		if is_instance_valid(field) and field.is_inside_tree():
+			fields.append(field)
+	return fields
 
 
 ## Number of plants in the field.
@@ -304,8 +415,7 @@ func get_plant_info(index: int) -> Dictionary:
 ## Runs one update now, [param delta] seconds long (for tools and tests; the node also updates
 ## itself every frame).
 func advance(delta: float) -> void:
-	if _rebuild_queued:
-		_rebuild()
+	finish_build()
 	if _built_plants > 0:
 		_push_observer()
 		_simulation.update(delta)
@@ -480,47 +590,149 @@ func _queue_rebuild() -> void:
 	_rebuild_queued = true
 
 
-func _rebuild() -> void:
+func _rebuild(background: bool = false) -> void:
 	_rebuild_queued = false
 	if not is_inside_tree():
 		_rebuild_queued = true
 		return
-	if _simulation == null:
-		_simulation = SunflowerSimulation.new()
+	_cancel_build()
 	if map == null:
 		_clear_field()
 		_simulation.clear()
 		return
-	var message: String = _simulation.load_map(map.text, map.source_path, _legend_symbols(), max_plants)
-	if not message.is_empty():
-		_report_map_error(message)  # the simulation keeps the previous field
+	var job: BuildJob = BuildJob.new()
+	job.text = map.text
+	job.source = map.source_path
+	job.legend = _legend_symbols()
+	job.max_plants = max_plants
+	job.cell_size = cell_size
+	job.seed = seed
+	job.independent_jitter = independent_jitter
+	job.chunk_size = chunk_size
+	job.part_scale = plant_height / MODEL_HEIGHT
+	_pending_job = job
+	_pending = job.simulation
+	background = background and background_build and map.text.size() >= BACKGROUND_BUILD_MIN_BYTES
+	_build_stats = {
+		"background": background, "frames": 0, "longest_step_ms": 0.0, "main_thread_ms": 0.0, "worker_ms": 0.0
+	}
+	_build_stats["start_usec"] = Time.get_ticks_usec()
+	if background:
+		_pending_task = WorkerThreadPool.add_task(job.run, false, "SunflowerField: " + job.source.get_file())
+		_building.append(self)
+		build_progress.emit(0.0)
+	else:
+		job.run()
+		_step_build(-1)
+
+
+## One step of a build: waits for the worker (unless [param budget_usec] ≥ 0 and it is still
+## running), then makes chunk nodes until the budget is spent; the last step puts the new field in
+## place of the old. A negative budget completes the build.
+func _step_build(budget_usec: int) -> void:
+	var start: int = Time.get_ticks_usec()
+	if _pending_task >= 0:
+		if budget_usec >= 0 and not WorkerThreadPool.is_task_completed(_pending_task):
+			_build_stats["frames"] += 1
+			return
+		WorkerThreadPool.wait_for_task_completion(_pending_task)
+		_pending_task = -1
+	if not _pending_job.error.is_empty():
+		var message: String = _pending_job.error
+		_cancel_build()
+		_report_map_error(message)  # the current field stays
 		return
+	_build_materials()
+	var switch_distance: float = lod_distances[3]
+	var chunk_count: int = _pending.get_chunk_count()
+	while _pending_nodes.size() < 2 * chunk_count:
+		var chunk: int = _pending_nodes.size() / 2
+		var aabb: AABB = _pending.get_chunk_aabb(chunk)
+		var sprite: MultiMeshInstance3D = _make_multimesh_node("ChunkSprites%d" % chunk, _impostor_mesh("sprite"), aabb)
+		var billboard: MultiMeshInstance3D = _make_multimesh_node(
+			"ChunkBillboards%d" % chunk, _impostor_mesh("billboard"), aabb
+		)
+		billboard.cast_shadow = GeometryInstance3D.SHADOW_CASTING_SETTING_OFF
+		sprite.visible = false  # shown when the whole field is ready
+		billboard.visible = false
+		_pending_nodes.append_array([sprite, billboard])
+		_set_chunk_ranges(sprite, billboard, switch_distance)
+		_pending.set_chunk_multimeshes(chunk, sprite.multimesh.get_rid(), billboard.multimesh.get_rid())
+		if budget_usec >= 0 and Time.get_ticks_usec() - start >= budget_usec:
+			break
+	var step_ms: float = (Time.get_ticks_usec() - start) / 1000.0
+	_build_stats["frames"] += 1
+	_build_stats["main_thread_ms"] += step_ms
+	_build_stats["longest_step_ms"] = maxf(_build_stats["longest_step_ms"], step_ms)
+	if _pending_nodes.size() < 2 * chunk_count:
+		build_progress.emit(get_build_progress())
+		return
+	_put_in_place()
+
+
+## Replaces the drawn field by the built one.
+func _put_in_place() -> void:
+	var start: int = Time.get_ticks_usec()
+	var chunk_nodes: Array[MultiMeshInstance3D] = _pending_nodes.duplicate()
+	var was_background: bool = _pending_task >= 0 or _building.has(self)
+	_pending_nodes.clear()
+	_clear_field(chunk_nodes)
+	_simulation = _pending
+	_build_stats["worker_ms"] = _pending_job.usec / 1000.0
+	_pending = null
+	_pending_job = null
+	_building.erase(self)
 	_last_error = ""
-	_clear_field()
-	_simulation.set_layout(cell_size, seed, independent_jitter, chunk_size)
-	_simulation.set_plant_shape(plant_height / MODEL_HEIGHT, 1.9, 3.2)
+	_chunk_nodes = chunk_nodes
+	for node: MultiMeshInstance3D in _chunk_nodes:
+		node.visible = true
 	_on_wind_changed()
 	_configure_lod()
-	_build_materials()
+	_simulation.set_worker_threads(worker_threads, PARALLEL_MIN_PLANTS)
 	_build_dynamic_nodes()
-	_build_chunk_nodes()
 	_build_objects()
 	_built_plants = _simulation.get_plant_count()
 	_push_observer()
 	_simulation.update(0.0)
+	var step_ms: float = (Time.get_ticks_usec() - start) / 1000.0
+	_build_stats["main_thread_ms"] += step_ms
+	_build_stats["longest_step_ms"] = maxf(_build_stats["longest_step_ms"], step_ms)
+	_build_stats["total_ms"] = (Time.get_ticks_usec() - _build_stats["start_usec"]) / 1000.0
+	_build_stats.erase("start_usec")
 	update_configuration_warnings()
+	if was_background:
+		build_progress.emit(1.0)
 	field_built.emit(_built_plants)
 
 
-func _clear_field() -> void:
+## Stops a running build (waiting for its worker) and frees what it made; the current field stays.
+func _cancel_build() -> void:
+	if _pending_task >= 0:
+		WorkerThreadPool.wait_for_task_completion(_pending_task)
+		_pending_task = -1
+	for node: MultiMeshInstance3D in _pending_nodes:
+		if is_instance_valid(node):
+			node.free()
+	_pending_nodes.clear()
+	if _pending:
+		_pending.release_multimeshes()
+	_pending = null
+	_pending_job = null
+	_building.erase(self)
+
+
+## Frees the drawn field's nodes (and any internal child other than [param keep]).
+func _clear_field(keep: Array[MultiMeshInstance3D] = []) -> void:
 	if _simulation:
 		_simulation.release_multimeshes()
 	# Every internal child is ours; this also drops copies made by duplicate().
-	var public_children: Dictionary = {}
+	var spared: Dictionary = {}
 	for node: Node in get_children(false):
-		public_children[node] = true
+		spared[node] = true
+	for node: Node in keep:
+		spared[node] = true
 	for node: Node in get_children(true):
-		if not public_children.has(node):
+		if not spared.has(node):
 			node.free()
 	_dynamic_nodes.clear()
 	_chunk_nodes.clear()
@@ -528,7 +740,10 @@ func _clear_field() -> void:
 	_built_plants = -1
 
 
+## Makes the impostor materials once; they are shared by the drawn field and one being built.
 func _build_materials() -> void:
+	if not _materials.is_empty():
+		return
 	for key: String in ["front", "side", "billboard"]:
 		var material: ShaderMaterial = ShaderMaterial.new()
 		material.shader = IMPOSTOR_SHADER
@@ -580,28 +795,24 @@ func _build_dynamic_nodes() -> void:
 				"Mesh%d%s" % [lod + 1, PART_NAMES[part].capitalize()], get_part_mesh(lod, part), aabb
 			)
 			_dynamic_nodes.append(node)
-	var sprite: MultiMeshInstance3D = _make_multimesh_node("Sprites", _sprite_mesh(), aabb)
-	var billboard: MultiMeshInstance3D = _make_multimesh_node("Billboards", _billboard_mesh(), aabb)
+	var sprite: MultiMeshInstance3D = _make_multimesh_node("Sprites", _impostor_mesh("sprite"), aabb)
+	var billboard: MultiMeshInstance3D = _make_multimesh_node("Billboards", _impostor_mesh("billboard"), aabb)
 	billboard.cast_shadow = GeometryInstance3D.SHADOW_CASTING_SETTING_OFF
 	_dynamic_nodes.append_array([sprite, billboard])
 	for bucket: int in _dynamic_nodes.size():
 		_simulation.set_bucket_multimesh(bucket, _dynamic_nodes[bucket].multimesh.get_rid())
 
 
-func _build_chunk_nodes() -> void:
-	var switch_distance: float = lod_distances[3]
-	var sprite_mesh: ArrayMesh = _sprite_mesh()
-	var billboard_mesh: ArrayMesh = _billboard_mesh()
-	for chunk: int in _simulation.get_chunk_count():
-		var aabb: AABB = _simulation.get_chunk_aabb(chunk)
-		var sprite: MultiMeshInstance3D = _make_multimesh_node("ChunkSprites%d" % chunk, sprite_mesh, aabb)
-		sprite.visibility_range_end = switch_distance
-		var billboard: MultiMeshInstance3D = _make_multimesh_node("ChunkBillboards%d" % chunk, billboard_mesh, aabb)
-		billboard.visibility_range_begin = switch_distance
-		billboard.visibility_range_end = max_draw_distance
-		billboard.cast_shadow = GeometryInstance3D.SHADOW_CASTING_SETTING_OFF
-		_chunk_nodes.append_array([sprite, billboard])
-		_simulation.set_chunk_multimeshes(chunk, sprite.multimesh.get_rid(), billboard.multimesh.get_rid())
+func _set_chunk_ranges(sprite: MultiMeshInstance3D, billboard: MultiMeshInstance3D, switch_distance: float) -> void:
+	sprite.visibility_range_end = switch_distance
+	billboard.visibility_range_begin = switch_distance
+	billboard.visibility_range_end = max_draw_distance
+
+
+func _apply_visibility_ranges() -> void:
+	for nodes: Array[MultiMeshInstance3D] in [_chunk_nodes, _pending_nodes]:
+		for i: int in range(0, nodes.size() - 1, 2):
+			_set_chunk_ranges(nodes[i], nodes[i + 1], lod_distances[3])
 
 
 func _build_objects() -> void:
@@ -625,6 +836,14 @@ func _build_objects() -> void:
 			)
 		add_child(instance, false, Node.INTERNAL_MODE_BACK)
 		_object_nodes.append(instance)
+
+
+## The sprite or billboard mesh, made once per field.
+func _impostor_mesh(kind: String) -> ArrayMesh:
+	if not _impostor_meshes.has(kind):
+		_build_materials()
+		_impostor_meshes[kind] = _sprite_mesh() if kind == "sprite" else _billboard_mesh()
+	return _impostor_meshes[kind]
 
 
 ## Two crossed quads (front texture facing +z, side texture facing +x); the top edge leans

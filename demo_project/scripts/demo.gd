@@ -82,10 +82,12 @@ func _ready() -> void:
 		_frames_total = 60
 	var build_start: int = Time.get_ticks_usec()
 	load_map(_map_path)
+	while _field.is_building():  # a large map builds in the background; the HUD shows its progress
+		await get_tree().process_frame
 	if _baseline == "native":
 		_build_native_baseline()
 	_build_ms = (Time.get_ticks_usec() - build_start) / 1000.0
-	print("demo: %s built in %.0f ms" % [_map_path, _build_ms])
+	print("demo: %s built in %.0f ms; %s" % [_map_path, _build_ms, _field.get_build_stats()])
 	for argument: String in parts:
 		apply_part_argument(argument)
 	if _frames_total >= 0:
@@ -93,12 +95,13 @@ func _ready() -> void:
 
 
 ## Loads a map; an imported res:// map is used as a resource, any other path is read directly.
+## A large map builds in the background while the current field stays (see [member
+## SunflowerField.background_build]).
 func load_map(path: String) -> void:
 	var imported: Resource = load(path) if path.begins_with("res://") and ResourceLoader.exists(path) else null
 	if imported is SunflowerFieldMap:
 		_field.map = imported
-		_field.advance(0.0)
-	elif _field.load_map_file(path) != OK:
+	elif _field.load_map_file(path, true) != OK:
 		return  # the field says why, through map_error
 	_map_path = path
 	_hud.set_maps(MAP_NAMES, MAP_PATHS, path)
@@ -341,6 +344,7 @@ func _write_stats() -> void:
 		"map": _map_path,
 		"plants": _field.get_plant_count(),
 		"build_ms": _build_ms,
+		"build": _field.get_build_stats(),
 		"force_lod": _field.force_lod,
 		"culling": _field.frustum_culling,
 		"baseline": _baseline,

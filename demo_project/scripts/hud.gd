@@ -44,6 +44,14 @@ func _ready() -> void:
 	_maps.offset_right = -8.0
 	_maps.item_selected.connect(func(index: int) -> void: map_chosen.emit(_map_paths[index]))
 	add_child(_maps)
+	# The addon's own progress display, shown while a large map builds in the background.
+	var progress: Control = preload("res://addons/sunflower_field/build_progress_bar.gd").new()
+	progress.anchor_left = 1.0
+	progress.anchor_right = 1.0
+	progress.offset_left = -260.0
+	progress.offset_top = 44.0
+	progress.offset_right = -8.0
+	add_child(progress)
 
 
 func _process(delta: float) -> void:

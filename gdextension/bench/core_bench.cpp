@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <thread>
 #include <vector>
 
 using namespace sunflower;
@@ -33,25 +34,30 @@ struct Result {
 	double p99 = 0.0;
 };
 
-// p_radius < 0: a circle of 0.3 × the field's size around its centre; else this circle around p_centre.
-Result run(const char *p_name, const std::string &p_text, int p_frames, glm::vec2 p_centre = glm::vec2(0.0f), float p_radius = -1.0f) {
-	FieldSimulation sim;
-	MapError error;
-	const auto load_start = std::chrono::steady_clock::now();
-	if (!sim.load_map(p_text, U"", p_name, MapLimits{}, error)) {
-		std::printf("%s: %s\n", p_name, error.to_string().c_str());
-		return Result{};
-	}
-	const double load_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - load_start).count();
-	const glm::vec2 size = sim.get_layout().size;
-	// A camera 1.7 m high walking a circle around the field's centre, looking along its path
-	// (a 90° frustum, as a Camera3D gives it: outward planes).
+struct Walk {
+	glm::vec2 centre{ 0.0f };
+	float radius = -1.0f; // < 0: a circle of 0.3 × the field's size around its centre
+	uint32_t threads = 1; // worker threads, the caller included
+	float mesh_reach = 20.0f; // the mesh 3 → sprite distance: how far the near work reaches
+	bool print = true;
+};
+
+struct Run {
+	Result result;
+	uint32_t active_plants = 0;
+};
+
+// A camera 1.7 m high walking a circle, looking along its path (a 90° frustum, as a Camera3D
+// gives it: outward planes); the per-frame update timed.
+Run walk(FieldSimulation &r_sim, int p_frames, const Walk &p_walk) {
+	const glm::vec2 size = r_sim.get_layout().size;
 	std::vector<double> times;
 	times.reserve(static_cast<size_t>(p_frames));
+	uint64_t active = 0;
 	for (int frame = 0; frame < p_frames; ++frame) {
 		const float angle = float(frame) * 0.004f;
-		const float radius = p_radius < 0.0f ? std::min(size.x, size.y) * 0.3f : p_radius;
-		const glm::vec2 centre = p_radius < 0.0f ? size * 0.5f : p_centre;
+		const float radius = p_walk.radius < 0.0f ? std::min(size.x, size.y) * 0.3f : p_walk.radius;
+		const glm::vec2 centre = p_walk.radius < 0.0f ? size * 0.5f : p_walk.centre;
 		const glm::vec3 eye(centre.x + radius * std::cos(angle), 1.7f, centre.y + radius * std::sin(angle));
 		const glm::vec3 forward(-std::sin(angle), 0.0f, std::cos(angle));
 		const glm::vec3 right(forward.z, 0.0f, -forward.x);
@@ -61,13 +67,33 @@ Result run(const char *p_name, const std::string &p_text, int p_frames, glm::vec
 			glm::vec4(glm::normalize(-right - forward), glm::dot(glm::normalize(-right - forward), eye)),
 			glm::vec4(0.0f, 1.0f, 0.0f, 1000.0f),
 		};
-		sim.get_frustum().set_planes(planes, 4);
-		sim.set_observer(eye);
+		r_sim.get_frustum().set_planes(planes, 4);
+		r_sim.set_observer(eye);
 		const auto start = std::chrono::steady_clock::now();
-		sim.update(1.0f / 60.0f);
+		r_sim.update(1.0f / 60.0f);
 		times.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+		active += r_sim.get_active_plant_count();
 	}
-	const Result result{ percentile(times, 0.5), percentile(times, 0.99) };
+	return Run{ Result{ percentile(times, 0.5), percentile(times, 0.99) }, static_cast<uint32_t>(active / uint64_t(p_frames)) };
+}
+
+Result run(const char *p_name, const std::string &p_text, int p_frames, const Walk &p_walk = Walk{}) {
+	FieldSimulation sim;
+	MapError error;
+	const auto load_start = std::chrono::steady_clock::now();
+	if (!sim.load_map(p_text, U"", p_name, MapLimits{}, error)) {
+		std::printf("%s: %s\n", p_name, error.to_string().c_str());
+		return Result{};
+	}
+	const double load_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - load_start).count();
+	sim.set_worker_threads(p_walk.threads);
+	LodParams lod;
+	lod.distances = { 6.0f, 10.0f, p_walk.mesh_reach, p_walk.mesh_reach + 5.0f };
+	sim.set_lod(lod);
+	const Result result = walk(sim, p_frames, p_walk).result;
+	if (!p_walk.print) {
+		return result;
+	}
 	const double mb = double(sim.get_memory_bytes()) / 1e6;
 	std::printf("| %-18s | %9u | %8.1f | %9.3f | %8.3f | %8.1f | %9.1f |\n", p_name, sim.get_plant_count(), load_ms,
 			result.median, result.p99, mb, double(sim.get_memory_bytes()) / sim.get_plant_count());
@@ -83,10 +109,40 @@ int main() {
 	run("demo 40x30", rect_map(40, 30), 600);
 	run("thesis 50x30", rect_map(50, 30), 600);
 	run("large 400x300", rect_map(400, 300), 600);
-	// 1M and 4M along the same absolute path (a 100 m circle around (250, 250) m).
-	const Result one = run("1M 1000x1000", rect_map(1000, 1000), 1200, glm::vec2(250.0f), 100.0f);
-	const Result four = run("4M 2000x2000", rect_map(2000, 2000), 1200, glm::vec2(250.0f), 100.0f);
+	// 1M and 4M along the same absolute path (a 100 m circle around (250, 250) m), with the node's
+	// default threads (0: the machine's cores, at most 4; split from 16384 near plants).
+	Walk path;
+	path.centre = glm::vec2(250.0f);
+	path.radius = 100.0f;
+	path.threads = 0;
+	const Result one = run("1M 1000x1000", rect_map(1000, 1000), 1200, path);
+	const Result four = run("4M 2000x2000", rect_map(2000, 2000), 1200, path);
 	std::printf("\n4M vs 1M per frame, same path, same run: median %.2fx, p99 %.2fx\n", four.median / one.median,
 			four.p99 / one.p99);
+
+	// Where a second thread pays: the same walk over the 1M field with the near work grown by
+	// pushing the mesh → sprite distance out, on one thread and on two (the split forced on).
+	std::printf("\nNear work on one thread and on two (1M field, %u hardware threads), 600 frames each:\n\n",
+			std::thread::hardware_concurrency());
+	std::printf("| mesh reach m | near plants | 1 thread median / p99 ms | 2 threads median / p99 ms | 2 vs 1 median |\n");
+	std::printf("|--------------|-------------|--------------------------|---------------------------|---------------|\n");
+	const std::string million = rect_map(1000, 1000);
+	for (float reach : { 8.0f, 12.0f, 20.0f, 30.0f, 45.0f, 60.0f }) {
+		Run runs[2];
+		for (uint32_t threads = 1; threads <= 2; ++threads) {
+			FieldSimulation sim;
+			MapError error;
+			sim.load_map(million, U"", "1M", MapLimits{}, error);
+			sim.set_worker_threads(threads);
+			sim.set_parallel_min_plants(0);
+			LodParams lod;
+			lod.distances = { std::min(6.0f, reach * 0.4f), std::min(10.0f, reach * 0.7f), reach, reach + 5.0f };
+			sim.set_lod(lod);
+			runs[threads - 1] = walk(sim, 600, path);
+		}
+		std::printf("| %12.0f | %11u | %11.3f / %-10.3f | %12.3f / %-10.3f | %12.2fx |\n", double(reach),
+				runs[0].active_plants, runs[0].result.median, runs[0].result.p99, runs[1].result.median, runs[1].result.p99,
+				runs[1].result.median / runs[0].result.median);
+	}
 	return 0;
 }

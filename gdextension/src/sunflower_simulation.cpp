@@ -24,6 +24,9 @@ void SunflowerSimulation::bind_methods() {
 	gdx::bind_method(CLASS, "set_wind_dynamics", &SunflowerSimulation::set_wind_dynamics, { "values" });
 	gdx::bind_method(CLASS, "set_lod", &SunflowerSimulation::set_lod, { "distances", "hysteresis", "interval", "force_level" });
 	gdx::bind_method(CLASS, "set_observer", &SunflowerSimulation::set_observer, { "position", "frustum" });
+	gdx::bind_method(CLASS, "set_worker_threads", &SunflowerSimulation::set_worker_threads, { "threads", "parallel_min_plants" });
+	gdx::bind_method(CLASS, "get_worker_threads", &SunflowerSimulation::get_worker_threads);
+	gdx::bind_method(CLASS, "get_last_task_count", &SunflowerSimulation::get_last_task_count);
 	gdx::bind_method(CLASS, "set_bucket_multimesh", &SunflowerSimulation::set_bucket_multimesh, { "bucket", "multimesh" });
 	gdx::bind_method(CLASS, "set_chunk_multimeshes", &SunflowerSimulation::set_chunk_multimeshes, { "chunk", "sprite", "billboard" });
 	gdx::bind_method(CLASS, "release_multimeshes", &SunflowerSimulation::release_multimeshes);
@@ -312,6 +315,25 @@ int64_t SunflowerSimulation::get_bucket_instance_count(int64_t p_bucket) const {
 
 int64_t SunflowerSimulation::get_last_update_usec() const {
 	return _last_update_usec;
+}
+
+void SunflowerSimulation::set_worker_threads(int64_t p_threads, int64_t p_parallel_min_plants) {
+	const int64_t limit = int64_t(FieldSimulation::MAX_AUTO_THREADS) * 4;
+	if (p_threads < 0 || p_threads > limit) {
+		gdx::print_error("worker threads " + std::to_string(p_threads) + " is out of range (0 to " + std::to_string(limit) + ")",
+				__func__, __FILE__, __LINE__);
+		return;
+	}
+	_sim.set_worker_threads(static_cast<uint32_t>(p_threads));
+	_sim.set_parallel_min_plants(static_cast<uint32_t>(std::clamp<int64_t>(p_parallel_min_plants, 0, INT32_MAX)));
+}
+
+int64_t SunflowerSimulation::get_worker_threads() const {
+	return _sim.get_worker_threads();
+}
+
+int64_t SunflowerSimulation::get_last_task_count() const {
+	return _sim.get_last_task_count();
 }
 
 int64_t SunflowerSimulation::get_memory_bytes() const {

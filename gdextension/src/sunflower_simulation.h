@@ -24,6 +24,9 @@ public:
 	void set_wind_dynamics(const gdx::PackedFloat32Array &p_values);
 	void set_lod(const gdx::PackedFloat32Array &p_distances, double p_hysteresis, double p_interval, int64_t p_force_level);
 	void set_observer(gdx::Vector3 p_position, const gdx::PackedFloat32Array &p_frustum);
+	void set_worker_threads(int64_t p_threads, int64_t p_parallel_min_plants);
+	int64_t get_worker_threads() const;
+	int64_t get_last_task_count() const;
 
 	void set_bucket_multimesh(int64_t p_bucket, gdx::Rid p_multimesh);
 	void set_chunk_multimeshes(int64_t p_chunk, gdx::Rid p_sprite, gdx::Rid p_billboard);

@@ -98,3 +98,25 @@ func test_a_gltf_part_replaces_a_mesh_and_a_bad_file_is_refused() -> void:
 	check(str(demo.call("apply_part_argument", "4,head," + good)).contains("LEVEL must be 1, 2 or 3"), "a bad level")
 	check(str(demo.call("apply_part_argument", "1,leaf," + good)).contains("PART must be"), "a bad part")
 	check(str(demo.call("apply_part_argument", "1,head,/no/such.glb")).contains("no such file"), "a missing file")
+
+
+func test_the_map_menu_builds_a_large_map_in_the_background_with_progress_shown() -> void:
+	await frames(2)
+	var progress: Control = null
+	for node: Node in demo.get_node("Hud").get_children():
+		if node.name == "SunflowerBuildProgress":
+			progress = node as Control
+	check(progress != null and not progress.visible, "the HUD has a hidden build progress display")
+	demo.call("load_map", "res://fields/large.field")
+	var shown: bool = false
+	for i: int in 600:
+		await frames(1)
+		shown = shown or (progress != null and progress.visible)
+		check(field.get_plant_count() in [1103, 113000], "one of the two fields is drawn at any time")
+		if not field.is_building():
+			break
+	check(shown, "the progress display showed while the large map built")
+	check_eq(field.get_plant_count(), 113000, "the large field replaced the demo field")
+	check(field.get_build_stats()["background"], "it built in the background")
+	await frames(1)
+	check(progress != null and not progress.visible, "the progress display hides again")

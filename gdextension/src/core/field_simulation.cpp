@@ -62,10 +62,23 @@ void FieldSimulation::_rebuild() {
 	_active_chunks.clear();
 	_previous_active.clear();
 	_changed_chunks.clear();
+	_active_plants = 0;
 	for (InstanceBuffer &bucket : _buckets) {
 		bucket.clear();
 	}
 	_lod_due = true;
+}
+
+void FieldSimulation::set_worker_threads(uint32_t p_threads) {
+	uint32_t threads = p_threads;
+	if (threads == 0) {
+		threads = std::clamp(std::thread::hardware_concurrency(), 1u, MAX_AUTO_THREADS);
+	}
+	if (threads == get_worker_threads()) {
+		return;
+	}
+	_pool.reset(threads > 1 ? new WorkerPool(threads) : nullptr);
+	_task_buckets.resize(threads * TASKS_PER_THREAD - 1);
 }
 
 ChunkBounds FieldSimulation::get_chunk_bounds(uint32_t p_chunk) const {
@@ -107,6 +120,7 @@ void FieldSimulation::_select_lods() {
 	_changed_chunks.clear();
 	_previous_active.swap(_active_chunks);
 	_active_chunks.clear();
+	_active_plants = 0;
 	++_lod_pass;
 	if (forced) {
 		for (uint32_t c = 0; c < _layout.chunks.size(); ++c) {
@@ -149,6 +163,7 @@ void FieldSimulation::_select_chunk_lods(uint32_t p_chunk, bool p_forced, float 
 	}
 	_active_chunks.push_back(p_chunk);
 	const Chunk &chunk = _layout.chunks[p_chunk];
+	_active_plants += chunk.count;
 	for (uint32_t k = 0; k < chunk.count; ++k) {
 		const uint32_t index = _layout.chunk_plants[chunk.first + k];
 		const float plant_sq = _plant_distance_sq(_layout.plants[index]);
@@ -179,7 +194,33 @@ void FieldSimulation::update(float p_delta) {
 		_changed_chunks.clear();
 	}
 
-	for (InstanceBuffer &bucket : _buckets) {
+	// The near work: split into contiguous runs of active chunks, one per thread, when there is
+	// enough of it. Each run writes its own buckets, appended in order, so the result is the same
+	// as on one thread.
+	uint32_t tasks = 1;
+	if (_pool && _active_plants >= _parallel_min_plants) {
+		tasks = static_cast<uint32_t>(std::min<size_t>(_pool->get_thread_count() * TASKS_PER_THREAD, _active_chunks.size()));
+	}
+	_last_tasks = std::max(tasks, 1u);
+	if (_last_tasks == 1) {
+		_move_chunks(0, _active_chunks.size(), delta, _buckets);
+		return;
+	}
+	const size_t chunks = _active_chunks.size();
+	auto move = [&](uint32_t p_task) {
+		_move_chunks(chunks * p_task / tasks, chunks * (p_task + 1) / tasks, delta,
+				p_task == 0 ? _buckets : _task_buckets[p_task - 1]);
+	};
+	_pool->run(tasks, move);
+	for (uint32_t task = 1; task < tasks; ++task) {
+		for (uint32_t b = 0; b < BUCKET_COUNT; ++b) {
+			_buckets[b].append(_task_buckets[task - 1][b]);
+		}
+	}
+}
+
+void FieldSimulation::_move_chunks(size_t p_first, size_t p_last, float p_delta, BucketSet &r_buckets) {
+	for (InstanceBuffer &bucket : r_buckets) {
 		bucket.clear();
 	}
 	const float scale = _shape.part_scale;
@@ -187,8 +228,8 @@ void FieldSimulation::update(float p_delta) {
 	const float mid_height = 0.5f * _shape.height * scale;
 	const bool moving = _wind.get_params().power > 0.0f;
 	PartTransforms parts;
-	for (uint32_t c : _active_chunks) {
-		const Chunk &chunk = _layout.chunks[c];
+	for (size_t a = p_first; a < p_last; ++a) {
+		const Chunk &chunk = _layout.chunks[_active_chunks[a]];
 		for (uint32_t k = 0; k < chunk.count; ++k) {
 			const uint32_t index = _layout.chunk_plants[chunk.first + k];
 			const Plant &plant = _layout.plants[index];
@@ -196,13 +237,13 @@ void FieldSimulation::update(float p_delta) {
 			const bool visible = _frustum.intersects_sphere(glm::vec3(plant.position.x, mid_height, plant.position.y), radius);
 			if (lod >= LOD_SPRITE) {
 				if (visible) {
-					_write_impostor(_buckets[lod == LOD_SPRITE ? BUCKET_SPRITE : BUCKET_BILLBOARD].push(), plant);
+					_write_impostor(r_buckets[lod == LOD_SPRITE ? BUCKET_SPRITE : BUCKET_BILLBOARD].push(), plant);
 				}
 				continue;
 			}
 			PlantWind &wind = _plant_wind[index];
 			if (moving) {
-				_wind.advance_plant(wind, _layout_params.seed, index, _time, delta);
+				_wind.advance_plant(wind, _layout_params.seed, index, _time, p_delta);
 			}
 			if (!visible) {
 				continue;
@@ -210,7 +251,7 @@ void FieldSimulation::update(float p_delta) {
 			const float bend = moving ? _wind.bend(wind, _wind.downwind(plant.position), _gust_phase) : 0.0f;
 			_wind.part_transforms(plant, bend, scale, parts);
 			for (uint32_t part = 0; part < PART_COUNT; ++part) {
-				write_instance(_buckets[mesh_bucket(lod, part)].push(), parts.basis[part], parts.origin[part]);
+				write_instance(r_buckets[mesh_bucket(lod, part)].push(), parts.basis[part], parts.origin[part]);
 			}
 		}
 	}
@@ -260,6 +301,11 @@ size_t FieldSimulation::get_memory_bytes() const {
 	bytes += _layout.grid_chunks.capacity() * sizeof(uint32_t);
 	for (const InstanceBuffer &bucket : _buckets) {
 		bytes += size_t(bucket.get_capacity()) * FLOATS_PER_INSTANCE * sizeof(float);
+	}
+	for (const BucketSet &set : _task_buckets) {
+		for (const InstanceBuffer &bucket : set) {
+			bytes += size_t(bucket.get_capacity()) * FLOATS_PER_INSTANCE * sizeof(float);
+		}
 	}
 	return bytes;
 }

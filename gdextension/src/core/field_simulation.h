@@ -15,11 +15,13 @@
 #include "instance_buffer.h"
 #include "lod_selector.h"
 #include "wind_model.h"
+#include "worker_pool.h"
 
 #include <glm/vec3.hpp>
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -34,6 +36,8 @@ constexpr uint32_t BUCKET_COUNT = BUCKET_BILLBOARD + 1;
 constexpr uint32_t mesh_bucket(uint32_t p_level, uint32_t p_part) {
 	return p_level * PART_COUNT + p_part;
 }
+
+using BucketSet = std::array<InstanceBuffer, BUCKET_COUNT>;
 
 struct PlantShape {
 	float part_scale = 2.0f / 3.0f; // metres per model unit; three unit parts make a 2 m plant
@@ -79,6 +83,22 @@ public:
 	// Makes the next update re-select LODs regardless of the interval.
 	void request_lod_update() { _lod_due = true; }
 
+	// Threads that move the near plants, the caller included: 0 picks the hardware's count (at most
+	// MAX_AUTO_THREADS), 1 moves them all on the caller. The threads live as long as the simulation.
+	static constexpr uint32_t MAX_AUTO_THREADS = 4;
+	// Runs of active chunks per thread: more runs than threads balance uneven runs and late wake-ups.
+	static constexpr uint32_t TASKS_PER_THREAD = 4;
+	void set_worker_threads(uint32_t p_threads);
+	uint32_t get_worker_threads() const { return _pool ? _pool->get_thread_count() : 1; }
+	// Below this many plants in active chunks the near work stays on one thread (waking the others
+	// costs more than it saves; see the core benchmark's thread table).
+	void set_parallel_min_plants(uint32_t p_plants) { _parallel_min_plants = p_plants; }
+	uint32_t get_parallel_min_plants() const { return _parallel_min_plants; }
+	// Plants in active chunks, and how many parallel tasks (runs of active chunks) the last update
+	// split them into: 1 when it ran on the caller alone.
+	uint32_t get_active_plant_count() const { return _active_plants; }
+	uint32_t get_last_task_count() const { return _last_tasks; }
+
 	const FieldLayout &get_layout() const { return _layout; }
 	uint32_t get_plant_count() const { return static_cast<uint32_t>(_layout.plants.size()); }
 	const InstanceBuffer &get_bucket(uint32_t p_bucket) const { return _buckets[p_bucket]; }
@@ -110,6 +130,8 @@ private:
 	float _chunk_distance_sq(uint32_t p_chunk) const;
 	float _plant_distance_sq(const Plant &p_plant) const;
 	void _write_impostor(float *r_out, const Plant &p_plant) const;
+	// Moves the plants of active chunks [p_first, p_last) and writes the visible ones into r_buckets.
+	void _move_chunks(size_t p_first, size_t p_last, float p_delta, BucketSet &r_buckets);
 
 	FieldMap _map;
 	LayoutParams _layout_params;
@@ -128,7 +150,12 @@ private:
 	std::vector<uint32_t> _changed_chunks;
 	std::vector<uint32_t> _visit_mark; // per chunk: the LOD pass that last visited it
 	uint32_t _lod_pass = 0;
-	std::array<InstanceBuffer, BUCKET_COUNT> _buckets;
+	BucketSet _buckets;
+	std::unique_ptr<WorkerPool> _pool;
+	std::vector<BucketSet> _task_buckets; // the buckets of parallel tasks after the first
+	uint32_t _parallel_min_plants = 16384;
+	uint32_t _active_plants = 0;
+	uint32_t _last_tasks = 1;
 
 	double _time = 0.0;
 	float _gust_phase = 0.0f;

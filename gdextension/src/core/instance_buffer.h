@@ -32,6 +32,16 @@ public:
 		}
 		return _data.data() + static_cast<size_t>(_count++) * FLOATS_PER_INSTANCE;
 	}
+	// Appends another buffer's instances (growing like push, so steady state allocates nothing).
+	void append(const InstanceBuffer &p_other) {
+		const uint32_t count = _count + p_other._count;
+		if (count > get_capacity()) {
+			_data.resize(std::max<size_t>(count, size_t(get_capacity()) * 2) * FLOATS_PER_INSTANCE);
+		}
+		std::copy_n(p_other._data.data(), size_t(p_other._count) * FLOATS_PER_INSTANCE,
+				_data.data() + size_t(_count) * FLOATS_PER_INSTANCE);
+		_count = count;
+	}
 	uint32_t get_count() const { return _count; }
 	uint32_t get_capacity() const { return static_cast<uint32_t>(_data.size() / FLOATS_PER_INSTANCE); }
 	const float *get_data() const { return _data.data(); }

@@ -184,7 +184,21 @@ func _lifecycle_round(killer_script: GDScript) -> void:
 	check_eq(subject.get_plant_count(), 0, "no map, no field")
 	subject.map = LARGE_MAP
 	await frames(1)
+	check(subject.is_building(), "a large map builds in the background")
+	await _until_built(subject)
 	check_eq(subject.get_plant_count(), 113000, "a map swap at run time")
+	# Drop a background build half way by changing the map, then free a field while it builds.
+	subject.map = DEMO_MAP.duplicate()
+	subject.map = LARGE_MAP.duplicate()
+	await frames(1)
+	check(subject.is_building(), "the second large map is building")
+	subject.map = DEMO_MAP
+	await frames(1)
+	check(not subject.is_building(), "a map change drops the running build")
+	check_eq(subject.get_plant_count(), 1103, "and the new map is built")
+	copy.map = LARGE_MAP
+	await frames(1)
+	check(copy.is_building(), "the field about to be freed is building")
 	# Free a field in the middle of a frame, from another node's _process.
 	var killer: Node = Node.new()
 	killer.set_script(killer_script)
@@ -195,6 +209,15 @@ func _lifecycle_round(killer_script: GDScript) -> void:
 	killer.free()
 	holder.free()
 	other.free()
+
+
+## Waits (at most 600 frames) until [param subject] has no build running.
+func _until_built(subject: SunflowerField) -> void:
+	for i: int in 600:
+		if not subject.is_building():
+			return
+		await frames(1)
+	check(false, "the background build did not complete in 600 frames")
 
 
 func test_reloading_the_scene_rebuilds_the_field() -> void:

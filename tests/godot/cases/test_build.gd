@@ -1,0 +1,188 @@
+extends TestCase
+## Background builds: a large map is read on a worker thread and its nodes are made over several
+## frames while the previous field stays drawn; progress is reported (also by the editor's progress
+## bar) and ends in one field_built; a bad large map leaves the field as it was.
+
+const DEMO_MAP: SunflowerFieldMap = preload("res://fields/demo.field")
+const ProgressBarScript: GDScript = preload("res://addons/sunflower_field/build_progress_bar.gd")
+
+var field: SunflowerField
+var progress: Array[float] = []
+var built: Array[int] = []
+var errors: Array[String] = []
+
+
+func before_each() -> void:
+	field = SunflowerField.new()
+	field.name = "BigField"
+	tree.root.add_child(field)
+	field.map = DEMO_MAP
+	field.advance(0.0)
+	field.build_progress.connect(func(value: float) -> void: progress.append(value))
+	field.field_built.connect(func(plants: int) -> void: built.append(plants))
+	field.map_error.connect(func(message: String) -> void: errors.append(message))
+	progress.clear()
+	built.clear()
+	errors.clear()
+
+
+func after_each() -> void:
+	if is_instance_valid(field):
+		field.free()
+
+
+## A square map of [param side] × [param side] sunflowers, [param bad_row] (if ≥ 0) holding a '?'.
+func _square_map(side: int, bad_row: int = -1) -> SunflowerFieldMap:
+	var lines: PackedStringArray = ["%d %d" % [side, side]]
+	for row: int in side:
+		lines.append("*".repeat(side - 1) + ("?" if row == bad_row else "*"))
+	var field_map: SunflowerFieldMap = SunflowerFieldMap.new()
+	field_map.source_path = "user://square_%d.field" % side
+	field_map.text = "\n".join(lines).to_utf8_buffer()
+	return field_map
+
+
+## The internal MultiMesh nodes of the field that are drawn now.
+func _visible_multimesh_nodes() -> int:
+	var count: int = 0
+	for node: Node in field.get_children(true):
+		if node is MultiMeshInstance3D and (node as MultiMeshInstance3D).visible:
+			count += 1
+	return count
+
+
+func _run_until_built(limit: int) -> int:
+	for i: int in limit:
+		if not field.is_building():
+			return i
+		await frames(1)
+	return limit
+
+
+func test_a_large_map_builds_over_frames_while_the_old_field_is_drawn() -> void:
+	var old_nodes: int = _visible_multimesh_nodes()
+	field.build_budget_ms = 1.0
+	field.map = _square_map(600)
+	await frames(2)
+	check(field.is_building(), "a 360 000-plant map builds in the background")
+	check(SunflowerField.get_building_fields().has(field), "the field is listed as building")
+	var frames_seen: int = 0
+	while field.is_building() and frames_seen < 2000:
+		check_eq(field.get_plant_count(), 1103, "the old field is the one counted during the build")
+		if not check_eq(_visible_multimesh_nodes(), old_nodes, "only the old field's nodes are drawn"):
+			break
+		await frames(1)
+		frames_seen += 1
+	check(not field.is_building(), "the build completed (within 2000 frames)")
+	check(frames_seen >= 3, "the build spread over several frames (%d)" % frames_seen)
+	check_eq(built, [360000] as Array[int], "one field_built, with the new plant count")
+	check_eq(field.get_plant_count(), 360000, "the new field is counted")
+	var expected_nodes: int = 11 + 2 * field.get_simulation().get_chunk_count()
+	check_eq(field.get_child_count(true) - field.get_child_count(false), expected_nodes, "only the new nodes remain")
+	check(progress.size() >= 3, "progress reported while building (%d times)" % progress.size())
+	var monotonic: bool = true
+	for i: int in range(1, progress.size()):
+		monotonic = monotonic and progress[i] >= progress[i - 1]
+	check(monotonic and progress[0] >= 0.0, "progress never goes back: %s" % str(progress.slice(0, 8)))
+	check_eq(progress[-1], 1.0, "progress ends at 1")
+	check(not SunflowerField.get_building_fields().has(field), "no longer listed as building")
+	var stats: Dictionary = field.get_build_stats()
+	check(stats["background"], "the stats say background")
+	check(stats["frames"] >= 3, "the stats count the frames: %s" % stats)
+	check(stats["longest_step_ms"] <= stats["main_thread_ms"], "no step is longer than the whole: %s" % stats)
+	check(stats["total_ms"] >= stats["main_thread_ms"], "the build lasted at least its main-thread work: %s" % stats)
+
+
+func test_a_bad_large_map_reports_its_place_after_the_worker_and_keeps_the_field() -> void:
+	allow_error("square_400.field:252:400: unexpected '?'")
+	field.map = _square_map(400, 250)
+	await frames(2)
+	await _run_until_built(200)
+	check_eq(progress, [0.0] as Array[float], "the bad map was read in the background, and went no further")
+	check_eq(errors.size(), 1, "one map_error")
+	check(errors.size() == 1 and errors[0].contains("square_400.field:252:400"), "file:line:column in %s" % str(errors))
+	check_eq(built.size(), 0, "no field_built")
+	check_eq(field.get_plant_count(), 1103, "the old field stays")
+	check(
+		" ".join(field._get_configuration_warnings()).contains("252:400"), "the configuration warning names the place"
+	)
+
+
+func test_blocking_paths_complete_the_build_at_once() -> void:
+	field.map = _square_map(300)
+	field.advance(0.0)
+	check(not field.is_building(), "advance() completes a queued build")
+	check_eq(field.get_plant_count(), 90000, "built by advance()")
+	field.background_build = false
+	field.map = _square_map(310)
+	await frames(2)
+	check(not field.is_building(), "background_build off: built in the frame it started")
+	check_eq(field.get_plant_count(), 96100, "the second map")
+	check_eq(field.get_build_stats()["background"], false, "stats say blocking")
+	field.background_build = true
+	field.build_budget_ms = 1.0
+	field.map = _square_map(700)
+	for i: int in 5:
+		if not progress.is_empty():
+			break
+		await frames(1)
+	check(progress.size() == 1 and field.is_building(), "background again, and still building: %s" % str(progress))
+	field.finish_build()
+	check(not field.is_building(), "finish_build() waits for it")
+	check_eq(field.get_plant_count(), 490000, "the third map")
+
+
+func test_the_progress_bar_shows_running_builds_only() -> void:
+	var bar: Control = ProgressBarScript.new()
+	tree.root.add_child(bar)
+	bar.call("refresh")
+	check(not bar.visible, "hidden while nothing builds")
+	field.build_budget_ms = 1.0
+	field.map = _square_map(500)
+	var seen: Array[float] = []
+	for i: int in 2000:
+		await frames(1)
+		if not field.is_building():
+			break
+		bar.call("refresh")
+		check(bar.visible, "shown while building")
+		seen.append(bar.call("get_percent"))
+		check_near(seen[-1], 100.0 * field.get_build_progress(), 0.001, "the bar shows the field's progress")
+		check(str(bar.call("get_text")).contains("BigField"), "names the field: %s" % bar.call("get_text"))
+	bar.call("refresh")
+	check(not bar.visible, "hidden once built")
+	check(seen.size() >= 1, "the bar was seen during the build")
+	bar.free()
+
+
+func test_parameter_changes_during_a_build_reach_the_new_field() -> void:
+	field.build_budget_ms = 1.0
+	field.map = _square_map(600)
+	await frames(2)
+	while field.is_building() and field.get_build_progress() <= 0.1:
+		await frames(1)
+	check(field.is_building(), "some chunk nodes are made, not all")
+	field.max_draw_distance = 123.0
+	field.lod_distances = PackedFloat32Array([5.0, 9.0, 18.0, 30.0])
+	field.wind_power = 4.0
+	await _run_until_built(2000)
+	var ends: Dictionary = {}
+	for node: Node in field.get_children(true):
+		var instance: MultiMeshInstance3D = node as MultiMeshInstance3D
+		if instance and instance.name.begins_with("ChunkBillboards"):
+			ends[Vector2(instance.visibility_range_begin, instance.visibility_range_end)] = true
+	check_eq(ends.keys(), [Vector2(30.0, 123.0)], "every chunk's billboard range follows the changes")
+	var sprite_ends: Dictionary = {}
+	for node: Node in field.get_children(true):
+		if node is MultiMeshInstance3D and node.name.begins_with("ChunkSprites"):
+			sprite_ends[(node as MultiMeshInstance3D).visibility_range_end] = true
+	check_eq(sprite_ends.keys(), [30.0], "every chunk's sprite range follows the changes")
+	check_eq(field.get_simulation().get_lod_counts().size(), 5, "the new simulation answers")
+	# Wind set during the build moves the new field's plants (drawn as meshes to see them sway).
+	field.force_lod = SunflowerField.Lod.MESH_1
+	field.advance(0.0)
+	var before: Transform3D = field.get_plant_info(0)["parts"][2]
+	for i: int in 10:
+		field.advance(0.1)
+	var after: Transform3D = field.get_plant_info(0)["parts"][2]
+	check(not after.is_equal_approx(before), "the wind set during the build sways the new field")
