@@ -46,7 +46,7 @@ const IMPOSTOR_SHADER: Shader = preload("shaders/impostor.gdshader")
 const BACKGROUND_BUILD_MIN_BYTES: int = 65536
 ## Plants in active chunks (those near the observer) from which their per-frame work is split over
 ## [member worker_threads]; below it, waking threads costs more than it saves (core benchmark).
-const PARALLEL_MIN_PLANTS: int = 16384
+const PARALLEL_MIN_PLANTS: int = 32768
 
 ## Fields building in the background now, for progress displays.
 static var _building: Array[SunflowerField] = []

@@ -164,7 +164,7 @@ func _process(delta: float) -> void:
 	if _stats_timer <= 0.0:
 		_stats_timer = 0.25
 		_hud.set_stats(_stats_text())
-	if _frames_total >= 0:
+	if _frames_total >= 0 and _camera_path != null:  # recording starts once the field is built
 		_record_frame()
 
 
@@ -305,9 +305,15 @@ func _record_frame() -> void:
 
 
 func _finish_recording() -> void:
-	await RenderingServer.frame_post_draw
-	if not _screenshot.is_empty():
-		_save_screenshot(_screenshot)
+	if DisplayServer.get_name() == "headless":
+		if not _screenshot.is_empty():
+			_hud.show_message("no screenshot without a display (run under xvfb-run)")
+			printerr("demo: no screenshot in headless mode; run under xvfb-run for pictures")
+			_exit_code = 1
+	else:
+		await RenderingServer.frame_post_draw  # headless mode draws nothing, so this would never come
+		if not _screenshot.is_empty():
+			_save_screenshot(_screenshot)
 	var counts: PackedInt32Array = _field.get_lod_counts()
 	print(
 		(
@@ -353,6 +359,7 @@ func _write_stats() -> void:
 		"frame_ms": _summary(_frame_times),
 		"native_update_ms": _summary(_update_times),
 		"frame_times_ms": Array(_frame_times),
+		"native_update_times_ms": Array(_update_times),
 		"lod_counts_final": Array(_field.get_lod_counts()),
 		"lod_counts_mean": mean_counts,
 		"engine": Engine.get_version_info()["string"],

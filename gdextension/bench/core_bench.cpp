@@ -110,7 +110,7 @@ int main() {
 	run("thesis 50x30", rect_map(50, 30), 600);
 	run("large 400x300", rect_map(400, 300), 600);
 	// 1M and 4M along the same absolute path (a 100 m circle around (250, 250) m), with the node's
-	// default threads (0: the machine's cores, at most 4; split from 16384 near plants).
+	// default threads (0: the machine's cores, at most 4; split from 32768 near plants).
 	Walk path;
 	path.centre = glm::vec2(250.0f);
 	path.radius = 100.0f;

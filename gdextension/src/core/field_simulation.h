@@ -153,7 +153,7 @@ private:
 	BucketSet _buckets;
 	std::unique_ptr<WorkerPool> _pool;
 	std::vector<BucketSet> _task_buckets; // the buckets of parallel tasks after the first
-	uint32_t _parallel_min_plants = 16384;
+	uint32_t _parallel_min_plants = 32768;
 	uint32_t _active_plants = 0;
 	uint32_t _last_tasks = 1;
 
