@@ -614,9 +614,13 @@ func _rebuild(background: bool = false) -> void:
 	_pending = job.simulation
 	background = background and background_build and map.text.size() >= BACKGROUND_BUILD_MIN_BYTES
 	_build_stats = {
-		"background": background, "frames": 0, "longest_step_ms": 0.0, "main_thread_ms": 0.0, "worker_ms": 0.0
+		"background": background,
+		"frames": 0,
+		"longest_step_ms": 0.0,
+		"main_thread_ms": 0.0,
+		"worker_ms": 0.0,
+		"start_usec": Time.get_ticks_usec(),
 	}
-	_build_stats["start_usec"] = Time.get_ticks_usec()
 	if background:
 		_pending_task = WorkerThreadPool.add_task(job.run, false, "SunflowerField: " + job.source.get_file())
 		_building.append(self)
@@ -642,7 +646,6 @@ func _step_build(budget_usec: int) -> void:
 		_cancel_build()
 		_report_map_error(message)  # the current field stays
 		return
-	_build_materials()
 	var switch_distance: float = lod_distances[3]
 	var chunk_count: int = _pending.get_chunk_count()
 	while _pending_nodes.size() < 2 * chunk_count:
@@ -674,7 +677,6 @@ func _step_build(budget_usec: int) -> void:
 func _put_in_place() -> void:
 	var start: int = Time.get_ticks_usec()
 	var chunk_nodes: Array[MultiMeshInstance3D] = _pending_nodes.duplicate()
-	var was_background: bool = _pending_task >= 0 or _building.has(self)
 	_pending_nodes.clear()
 	_clear_field(chunk_nodes)
 	_simulation = _pending
@@ -700,7 +702,7 @@ func _put_in_place() -> void:
 	_build_stats["total_ms"] = (Time.get_ticks_usec() - _build_stats["start_usec"]) / 1000.0
 	_build_stats.erase("start_usec")
 	update_configuration_warnings()
-	if was_background:
+	if _build_stats["background"]:
 		build_progress.emit(1.0)
 	field_built.emit(_built_plants)
 

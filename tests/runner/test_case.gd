@@ -67,6 +67,16 @@ func frames(count: int = 1) -> void:
 		await tree.process_frame
 
 
+## Waits frame by frame, at most [param limit] frames, until [param condition] returns true;
+## returns the frames waited ([param limit] when it never did).
+func frames_until(condition: Callable, limit: int) -> int:
+	for i: int in limit:
+		if condition.call():
+			return i
+		await tree.process_frame
+	return limit
+
+
 func _caller() -> String:
 	for frame: Dictionary in get_stack():
 		var source: String = frame["source"]

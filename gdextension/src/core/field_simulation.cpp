@@ -78,7 +78,7 @@ void FieldSimulation::set_worker_threads(uint32_t p_threads) {
 		return;
 	}
 	_pool.reset(threads > 1 ? new WorkerPool(threads) : nullptr);
-	_task_buckets.resize(threads * TASKS_PER_THREAD - 1);
+	_task_buckets.resize(threads > 1 ? threads * TASKS_PER_THREAD - 1 : 0);
 }
 
 ChunkBounds FieldSimulation::get_chunk_bounds(uint32_t p_chunk) const {

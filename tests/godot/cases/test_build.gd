@@ -51,14 +51,6 @@ func _visible_multimesh_nodes() -> int:
 	return count
 
 
-func _run_until_built(limit: int) -> int:
-	for i: int in limit:
-		if not field.is_building():
-			return i
-		await frames(1)
-	return limit
-
-
 func test_a_large_map_builds_over_frames_while_the_old_field_is_drawn() -> void:
 	var old_nodes: int = _visible_multimesh_nodes()
 	field.build_budget_ms = 1.0
@@ -97,7 +89,7 @@ func test_a_bad_large_map_reports_its_place_after_the_worker_and_keeps_the_field
 	allow_error("square_400.field:252:400: unexpected '?'")
 	field.map = _square_map(400, 250)
 	await frames(2)
-	await _run_until_built(200)
+	await frames_until(func() -> bool: return not field.is_building(), 200)
 	check_eq(progress, [0.0] as Array[float], "the bad map was read in the background, and went no further")
 	check_eq(errors.size(), 1, "one map_error")
 	check(errors.size() == 1 and errors[0].contains("square_400.field:252:400"), "file:line:column in %s" % str(errors))
@@ -165,7 +157,7 @@ func test_parameter_changes_during_a_build_reach_the_new_field() -> void:
 	field.max_draw_distance = 123.0
 	field.lod_distances = PackedFloat32Array([5.0, 9.0, 18.0, 30.0])
 	field.wind_power = 4.0
-	await _run_until_built(2000)
+	await frames_until(func() -> bool: return not field.is_building(), 2000)
 	var ends: Dictionary = {}
 	for node: Node in field.get_children(true):
 		var instance: MultiMeshInstance3D = node as MultiMeshInstance3D
