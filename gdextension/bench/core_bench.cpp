@@ -1,6 +1,6 @@
 // Core benchmark, no engine: per-frame update time (wind + LOD + buffer writes) along a scripted
 // walk over fields of several sizes. Prints medians and 99th percentiles, not pass/fail.
-#include "core/field_simulation.h"
+#include "field_simulation.h"
 
 #include <algorithm>
 #include <chrono>

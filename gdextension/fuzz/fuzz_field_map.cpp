@@ -1,6 +1,6 @@
 // libFuzzer target: the map parser, the layout and one simulation step, under ASan + UBSan.
 // Any crash, sanitizer report or broken invariant below is a finding.
-#include "core/field_simulation.h"
+#include "field_simulation.h"
 
 #include <cstdint>
 #include <cstdlib>

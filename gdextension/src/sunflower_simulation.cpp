@@ -2,6 +2,7 @@
 
 #include "binding/class_binder.h"
 #include "binding/convert.h"
+#include "binding/error_macros.h"
 #include "binding/rendering_server.h"
 
 #include <algorithm>
@@ -19,12 +20,13 @@ void SunflowerSimulation::bind_methods() {
 	gdx::bind_method(CLASS, "get_map_rows", &SunflowerSimulation::get_map_rows);
 	gdx::bind_method(CLASS, "get_map_objects", &SunflowerSimulation::get_map_objects);
 	gdx::bind_method(CLASS, "set_layout", &SunflowerSimulation::set_layout, { "cell_size", "seed", "independent_jitter", "chunk_size" });
-	gdx::bind_method(CLASS, "set_plant_shape", &SunflowerSimulation::set_plant_shape, { "part_scale", "cull_radius", "height" });
-	gdx::bind_method(CLASS, "set_wind", &SunflowerSimulation::set_wind, { "power", "direction" });
-	gdx::bind_method(CLASS, "set_wind_dynamics", &SunflowerSimulation::set_wind_dynamics, { "values" });
+	gdx::bind_method(CLASS, "set_plant_height", &SunflowerSimulation::set_plant_height, { "metres" });
+	gdx::bind_method(CLASS, "set_wind", &SunflowerSimulation::set_wind,
+			{ "power", "direction", "stiffness_middle", "stiffness_bottom", "bend_per_power", "max_bend", "flip_interval",
+					"flip_chance", "gust_speed", "gust_share" });
 	gdx::bind_method(CLASS, "set_lod", &SunflowerSimulation::set_lod, { "distances", "hysteresis", "interval", "force_level" });
 	gdx::bind_method(CLASS, "set_observer", &SunflowerSimulation::set_observer, { "position", "frustum" });
-	gdx::bind_method(CLASS, "set_worker_threads", &SunflowerSimulation::set_worker_threads, { "threads", "parallel_min_plants" });
+	gdx::bind_method(CLASS, "set_worker_threads", &SunflowerSimulation::set_worker_threads, { "threads" });
 	gdx::bind_method(CLASS, "get_worker_threads", &SunflowerSimulation::get_worker_threads);
 	gdx::bind_method(CLASS, "get_last_task_count", &SunflowerSimulation::get_last_task_count);
 	gdx::bind_method(CLASS, "set_bucket_multimesh", &SunflowerSimulation::set_bucket_multimesh, { "bucket", "multimesh" });
@@ -42,9 +44,25 @@ void SunflowerSimulation::bind_methods() {
 	gdx::bind_method(CLASS, "get_last_update_usec", &SunflowerSimulation::get_last_update_usec);
 	gdx::bind_method(CLASS, "get_memory_bytes", &SunflowerSimulation::get_memory_bytes);
 	gdx::bind_method(CLASS, "get_time", &SunflowerSimulation::get_time);
+
+	gdx::bind_method(CLASS, "sanitize_parameter", &SunflowerSimulation::sanitize_parameter, { "name", "value", "current" });
+	gdx::bind_method(CLASS, "explain_parameter", &SunflowerSimulation::explain_parameter, { "name", "value", "used" });
+	gdx::bind_method(CLASS, "get_parameter_default", &SunflowerSimulation::get_parameter_default, { "name" });
+	gdx::bind_method(CLASS, "get_parameter_names", &SunflowerSimulation::get_parameter_names);
+	gdx::bind_method(CLASS, "check_lod_distances", &SunflowerSimulation::check_lod_distances, { "distances" });
+	gdx::bind_method(CLASS, "sanitize_wind_direction", &SunflowerSimulation::sanitize_wind_direction, { "direction" });
+	gdx::bind_method(CLASS, "mesh_bucket", &SunflowerSimulation::mesh_bucket, { "level", "part" });
+	gdx::bind_method(CLASS, "get_plant_height_units", &SunflowerSimulation::get_plant_height_units);
+
+	gdx::bind_integer_constant(CLASS, "", "PART_COUNT", PART_COUNT);
+	gdx::bind_integer_constant(CLASS, "", "MESH_LEVEL_COUNT", LOD_MESH_COUNT);
+	gdx::bind_integer_constant(CLASS, "", "LOD_COUNT", LOD_COUNT);
 	gdx::bind_integer_constant(CLASS, "", "BUCKET_SPRITE", BUCKET_SPRITE);
 	gdx::bind_integer_constant(CLASS, "", "BUCKET_BILLBOARD", BUCKET_BILLBOARD);
 	gdx::bind_integer_constant(CLASS, "", "BUCKET_COUNT", BUCKET_COUNT);
+	gdx::bind_integer_constant(CLASS, "", "PARALLEL_MIN_PLANTS", FieldSimulation::PARALLEL_MIN_PLANTS);
+	gdx::bind_integer_constant(CLASS, "", "MAX_AUTO_THREADS", param::MAX_AUTO_THREADS);
+	gdx::bind_integer_constant(CLASS, "", "MAX_THREADS", param::MAX_THREADS);
 }
 
 gdx::String SunflowerSimulation::load_map(const gdx::PackedByteArray &p_text, const gdx::String &p_source,
@@ -54,7 +72,7 @@ gdx::String SunflowerSimulation::load_map(const gdx::PackedByteArray &p_text, co
 		limits.max_plants = p_max_plants;
 	}
 	MapError error;
-	if (!_sim.load_map(gdx::to_core(p_text), gdx::to_core_u32(p_legend), p_source.utf8(), limits, error)) {
+	if (!_sim.load_map(gdx::to_core(p_text), decode_utf8_text(p_legend.utf8()), p_source.utf8(), limits, error)) {
 		return gdx::String(error.to_string());
 	}
 	release_multimeshes(); // the old field's chunks no longer exist
@@ -95,51 +113,36 @@ void SunflowerSimulation::set_layout(double p_cell_size, int64_t p_seed, bool p_
 	}
 }
 
-void SunflowerSimulation::set_plant_shape(double p_part_scale, double p_cull_radius, double p_height) {
-	PlantShape shape;
-	shape.part_scale = std::isfinite(p_part_scale) && p_part_scale > 0.0 ? float(p_part_scale) : shape.part_scale;
-	shape.cull_radius = std::isfinite(p_cull_radius) && p_cull_radius > 0.0 ? float(p_cull_radius) : shape.cull_radius;
-	shape.height = std::isfinite(p_height) && p_height > 0.0 ? float(p_height) : shape.height;
-	_sim.set_shape(shape);
+void SunflowerSimulation::set_plant_height(double p_metres) {
+	_sim.set_plant_height(float(p_metres));
 }
 
-void SunflowerSimulation::set_wind(double p_power, gdx::Vector2 p_direction) {
-	WindParams params = _sim.get_wind().get_params();
-	params.power = static_cast<float>(p_power);
+void SunflowerSimulation::set_wind(double p_power, gdx::Vector2 p_direction, double p_stiffness_middle, double p_stiffness_bottom,
+		double p_bend_per_power, double p_max_bend, double p_flip_interval, double p_flip_chance, double p_gust_speed,
+		double p_gust_share) {
+	WindParams params;
+	params.power = float(p_power);
 	params.direction = gdx::to_core(p_direction);
-	_sim.set_wind(params);
-}
-
-void SunflowerSimulation::set_wind_dynamics(const gdx::PackedFloat32Array &p_values) {
-	const float *v = p_values.data();
-	if (p_values.size() != 8) {
-		gdx::print_error("set_wind_dynamics expects 8 values (d1, d2, h, max_bend, flip_interval, flip_chance, gust_speed, gust_share)",
-				__func__, __FILE__, __LINE__);
-		return;
-	}
-	WindParams params = _sim.get_wind().get_params();
-	params.d1 = v[0];
-	params.d2 = v[1];
-	params.h = v[2];
-	params.max_bend = v[3];
-	params.flip_interval = v[4];
-	params.flip_chance = v[5];
-	params.gust_speed = v[6];
-	params.gust_share = v[7];
-	_sim.set_wind(params);
+	params.d1 = float(p_stiffness_middle);
+	params.d2 = float(p_stiffness_bottom);
+	params.h = float(p_bend_per_power);
+	params.max_bend = float(p_max_bend);
+	params.flip_interval = float(p_flip_interval);
+	params.flip_chance = float(p_flip_chance);
+	params.gust_speed = float(p_gust_speed);
+	params.gust_share = float(p_gust_share);
+	_sim.set_wind(params); // the core applies the param:: rules
 }
 
 void SunflowerSimulation::set_lod(const gdx::PackedFloat32Array &p_distances, double p_hysteresis, double p_interval,
 		int64_t p_force_level) {
-	LodParams params = _sim.get_lod().get_params();
-	if (p_distances.size() == 4) {
-		std::copy_n(p_distances.data(), 4, params.distances.begin());
-	} else {
-		gdx::print_error("set_lod expects 4 distances", __func__, __FILE__, __LINE__);
-	}
-	params.hysteresis = std::isfinite(p_hysteresis) ? std::max(0.0f, float(p_hysteresis)) : params.hysteresis;
-	params.interval = std::isfinite(p_interval) ? std::max(0.0f, float(p_interval)) : params.interval;
-	params.force_level = p_force_level >= 0 && p_force_level < LOD_COUNT ? int(p_force_level) : -1;
+	const std::string problem = sunflower::check_lod_distances(p_distances.data(), size_t(p_distances.size()));
+	SF_FAIL_COND_MSG(!problem.empty(), "set_lod: " + problem);
+	LodParams params;
+	std::copy_n(p_distances.data(), 4, params.distances.begin());
+	params.hysteresis = float(p_hysteresis);
+	params.interval = float(p_interval);
+	params.force_level = int(std::clamp<int64_t>(p_force_level, INT32_MIN, INT32_MAX)); // the core clamps
 	_sim.set_lod(params);
 }
 
@@ -147,18 +150,16 @@ void SunflowerSimulation::set_observer(gdx::Vector3 p_position, const gdx::Packe
 	_sim.set_observer(gdx::to_core(p_position));
 	const int64_t count = p_frustum.size() / 4;
 	if (count > 0) {
-		_sim.get_frustum().set_planes(reinterpret_cast<const glm::vec4 *>(p_frustum.data()), static_cast<size_t>(count));
+		_sim.get_frustum().set_planes(gdx::to_core_planes(p_frustum), static_cast<size_t>(count));
 	} else {
 		_sim.get_frustum().clear();
 	}
 }
 
 void SunflowerSimulation::set_bucket_multimesh(int64_t p_bucket, gdx::Rid p_multimesh) {
+	SF_FAIL_COND_MSG(p_bucket < 0 || p_bucket >= BUCKET_COUNT,
+			"bucket " + std::to_string(p_bucket) + " is out of range (0 to " + std::to_string(BUCKET_COUNT - 1) + ")");
 	if (!gdx::RenderingServer::ensure_loaded()) {
-		return;
-	}
-	if (p_bucket < 0 || p_bucket >= BUCKET_COUNT) {
-		gdx::print_error("bucket " + std::to_string(p_bucket) + " is out of range", __func__, __FILE__, __LINE__);
 		return;
 	}
 	BucketTarget &target = _buckets[static_cast<size_t>(p_bucket)];
@@ -168,11 +169,7 @@ void SunflowerSimulation::set_bucket_multimesh(int64_t p_bucket, gdx::Rid p_mult
 }
 
 void SunflowerSimulation::set_chunk_multimeshes(int64_t p_chunk, gdx::Rid p_sprite, gdx::Rid p_billboard) {
-	if (!gdx::RenderingServer::ensure_loaded()) {
-		return;
-	}
-	if (p_chunk < 0 || p_chunk >= int64_t(_sim.get_chunk_count())) {
-		gdx::print_error("chunk " + std::to_string(p_chunk) + " is out of range", __func__, __FILE__, __LINE__);
+	if (!_is_chunk(p_chunk) || !gdx::RenderingServer::ensure_loaded()) {
 		return;
 	}
 	_chunks.resize(_sim.get_chunk_count());
@@ -194,8 +191,7 @@ int64_t SunflowerSimulation::get_chunk_count() const {
 }
 
 gdx::AABB SunflowerSimulation::get_chunk_aabb(int64_t p_chunk) const {
-	if (p_chunk < 0 || p_chunk >= int64_t(_sim.get_chunk_count())) {
-		gdx::print_error("chunk " + std::to_string(p_chunk) + " is out of range", __func__, __FILE__, __LINE__);
+	if (!_is_chunk(p_chunk)) {
 		return gdx::AABB{};
 	}
 	const ChunkBounds bounds = _sim.get_chunk_bounds(static_cast<uint32_t>(p_chunk));
@@ -208,11 +204,21 @@ void SunflowerSimulation::_upload_chunk(uint32_t p_chunk) {
 	gdx::PackedFloat32Array buffer;
 	buffer.resize(int64_t(count) * FLOATS_PER_INSTANCE);
 	_sim.write_chunk_instances(p_chunk, buffer.data());
-	const int64_t visible = _sim.is_chunk_active(p_chunk) ? 0 : -1;
 	for (gdx::Rid multimesh : { target.sprite, target.billboard }) {
 		if (multimesh.is_valid()) {
 			gdx::RenderingServer::multimesh_allocate_data(multimesh, count);
 			gdx::RenderingServer::multimesh_set_buffer(multimesh, buffer);
+		}
+	}
+	_show_static_chunk(p_chunk);
+}
+
+// A chunk's static pair is drawn (all instances) unless the chunk is active, when its plants are in
+// the dynamic buckets.
+void SunflowerSimulation::_show_static_chunk(uint32_t p_chunk) {
+	const int64_t visible = _sim.is_chunk_active(p_chunk) ? 0 : -1;
+	for (gdx::Rid multimesh : { _chunks[p_chunk].sprite, _chunks[p_chunk].billboard }) {
+		if (multimesh.is_valid()) {
 			gdx::RenderingServer::multimesh_set_visible_instances(multimesh, visible);
 		}
 	}
@@ -245,26 +251,25 @@ void SunflowerSimulation::update(double p_delta) {
 		_push_bucket(b);
 	}
 	for (uint32_t chunk : _sim.get_changed_chunks()) {
-		if (chunk < _chunks.size()) {
-			const int64_t visible = _sim.is_chunk_active(chunk) ? 0 : -1;
-			for (gdx::Rid multimesh : { _chunks[chunk].sprite, _chunks[chunk].billboard }) {
-				if (multimesh.is_valid()) {
-					gdx::RenderingServer::multimesh_set_visible_instances(multimesh, visible);
-				}
-			}
+		if (chunk < _chunks.size()) { // chunks of a field still being built have no multimeshes yet
+			_show_static_chunk(chunk);
 		}
 	}
 	_last_update_usec = std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::steady_clock::now() - start).count();
 }
 
-bool SunflowerSimulation::_check_plant(int64_t p_plant, const char *p_function) const {
-	if (p_plant >= 0 && p_plant < int64_t(_sim.get_plant_count())) {
-		return true;
-	}
-	gdx::print_error("plant index " + std::to_string(p_plant) + " is out of range (the field has " +
-					std::to_string(_sim.get_plant_count()) + " plants)",
-			p_function, __FILE__, __LINE__);
-	return false;
+bool SunflowerSimulation::_is_plant(int64_t p_plant) const {
+	SF_FAIL_COND_V_MSG(p_plant < 0 || p_plant >= int64_t(_sim.get_plant_count()), false,
+			"plant index " + std::to_string(p_plant) + " is out of range (the field has " +
+					std::to_string(_sim.get_plant_count()) + " plants)");
+	return true;
+}
+
+bool SunflowerSimulation::_is_chunk(int64_t p_chunk) const {
+	SF_FAIL_COND_V_MSG(p_chunk < 0 || p_chunk >= int64_t(_sim.get_chunk_count()), false,
+			"chunk " + std::to_string(p_chunk) + " is out of range (the field has " +
+					std::to_string(_sim.get_chunk_count()) + " chunks)");
+	return true;
 }
 
 int64_t SunflowerSimulation::get_plant_count() const {
@@ -283,20 +288,19 @@ gdx::PackedInt32Array SunflowerSimulation::get_lod_counts() const {
 }
 
 gdx::Vector3 SunflowerSimulation::get_plant_position(int64_t p_plant) const {
-	if (!_check_plant(p_plant, __func__)) {
+	if (!_is_plant(p_plant)) {
 		return gdx::Vector3{};
 	}
-	const glm::vec2 position = _sim.get_layout().plants[size_t(p_plant)].position;
-	return gdx::Vector3{ position.x, 0.0f, position.y };
+	return gdx::to_godot_ground(_sim.get_layout().plants[size_t(p_plant)].position);
 }
 
 int64_t SunflowerSimulation::get_plant_lod(int64_t p_plant) const {
-	return _check_plant(p_plant, __func__) ? _sim.get_plant_lod(uint32_t(p_plant)) : -1;
+	return _is_plant(p_plant) ? _sim.get_plant_lod(uint32_t(p_plant)) : -1;
 }
 
 gdx::PackedFloat32Array SunflowerSimulation::get_plant_parts(int64_t p_plant) const {
 	gdx::PackedFloat32Array out;
-	if (!_check_plant(p_plant, __func__)) {
+	if (!_is_plant(p_plant)) {
 		return out;
 	}
 	PartTransforms parts;
@@ -317,15 +321,10 @@ int64_t SunflowerSimulation::get_last_update_usec() const {
 	return _last_update_usec;
 }
 
-void SunflowerSimulation::set_worker_threads(int64_t p_threads, int64_t p_parallel_min_plants) {
-	const int64_t limit = int64_t(FieldSimulation::MAX_AUTO_THREADS) * 4;
-	if (p_threads < 0 || p_threads > limit) {
-		gdx::print_error("worker threads " + std::to_string(p_threads) + " is out of range (0 to " + std::to_string(limit) + ")",
-				__func__, __FILE__, __LINE__);
-		return;
-	}
+void SunflowerSimulation::set_worker_threads(int64_t p_threads) {
+	SF_FAIL_COND_MSG(p_threads < 0 || p_threads > param::MAX_THREADS,
+			"worker threads " + std::to_string(p_threads) + " is out of range (0 to " + std::to_string(param::MAX_THREADS) + ")");
 	_sim.set_worker_threads(static_cast<uint32_t>(p_threads));
-	_sim.set_parallel_min_plants(static_cast<uint32_t>(std::clamp<int64_t>(p_parallel_min_plants, 0, INT32_MAX)));
 }
 
 int64_t SunflowerSimulation::get_worker_threads() const {
@@ -342,4 +341,50 @@ int64_t SunflowerSimulation::get_memory_bytes() const {
 
 double SunflowerSimulation::get_time() const {
 	return _sim.get_time();
+}
+
+// --- The parameter table, for the node's setters -------------------------------------------------
+
+double SunflowerSimulation::sanitize_parameter(const gdx::String &p_name, double p_value, double p_current) {
+	const ParameterSpec *spec = find_parameter(p_name.utf8());
+	SF_FAIL_COND_V_MSG(spec == nullptr, p_value, "no parameter is called '" + p_name.utf8() + "'");
+	return sanitize(*spec, p_value, p_current);
+}
+
+gdx::String SunflowerSimulation::explain_parameter(const gdx::String &p_name, double p_value, double p_used) {
+	const ParameterSpec *spec = find_parameter(p_name.utf8());
+	SF_FAIL_COND_V_MSG(spec == nullptr, gdx::String(), "no parameter is called '" + p_name.utf8() + "'");
+	return gdx::String(explain_sanitized(*spec, p_value, p_used));
+}
+
+double SunflowerSimulation::get_parameter_default(const gdx::String &p_name) {
+	const ParameterSpec *spec = find_parameter(p_name.utf8());
+	SF_FAIL_COND_V_MSG(spec == nullptr, 0.0, "no parameter is called '" + p_name.utf8() + "'");
+	return spec->default_value;
+}
+
+gdx::String SunflowerSimulation::get_parameter_names() {
+	std::string names;
+	for (const ParameterSpec *spec : param::ALL) {
+		names += (names.empty() ? "" : ",") + std::string(spec->name);
+	}
+	return gdx::String(names);
+}
+
+gdx::String SunflowerSimulation::check_lod_distances(const gdx::PackedFloat32Array &p_distances) {
+	return gdx::String(sunflower::check_lod_distances(p_distances.data(), size_t(p_distances.size())));
+}
+
+gdx::Vector2 SunflowerSimulation::sanitize_wind_direction(gdx::Vector2 p_direction) {
+	return gdx::to_godot(sunflower::sanitize_wind_direction(gdx::to_core(p_direction)));
+}
+
+int64_t SunflowerSimulation::mesh_bucket(int64_t p_level, int64_t p_part) {
+	SF_FAIL_COND_V_MSG(p_level < 0 || p_level >= LOD_MESH_COUNT || p_part < 0 || p_part >= PART_COUNT, -1,
+			"mesh level " + std::to_string(p_level) + " / part " + std::to_string(p_part) + " is out of range (0–2 each)");
+	return sunflower::mesh_bucket(uint32_t(p_level), uint32_t(p_part));
+}
+
+double SunflowerSimulation::get_plant_height_units() {
+	return PlantShape::HEIGHT;
 }

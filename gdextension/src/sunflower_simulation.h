@@ -19,12 +19,13 @@ public:
 	gdx::PackedInt32Array get_map_objects() const;
 
 	void set_layout(double p_cell_size, int64_t p_seed, bool p_independent_jitter, double p_chunk_size);
-	void set_plant_shape(double p_part_scale, double p_cull_radius, double p_height);
-	void set_wind(double p_power, gdx::Vector2 p_direction);
-	void set_wind_dynamics(const gdx::PackedFloat32Array &p_values);
+	void set_plant_height(double p_metres);
+	void set_wind(double p_power, gdx::Vector2 p_direction, double p_stiffness_middle, double p_stiffness_bottom,
+			double p_bend_per_power, double p_max_bend, double p_flip_interval, double p_flip_chance, double p_gust_speed,
+			double p_gust_share);
 	void set_lod(const gdx::PackedFloat32Array &p_distances, double p_hysteresis, double p_interval, int64_t p_force_level);
 	void set_observer(gdx::Vector3 p_position, const gdx::PackedFloat32Array &p_frustum);
-	void set_worker_threads(int64_t p_threads, int64_t p_parallel_min_plants);
+	void set_worker_threads(int64_t p_threads);
 	int64_t get_worker_threads() const;
 	int64_t get_last_task_count() const;
 
@@ -46,10 +47,22 @@ public:
 	int64_t get_memory_bytes() const;
 	double get_time() const;
 
+	// The core's parameter table (parameters.h), for the node's setters: one validator per value.
+	static double sanitize_parameter(const gdx::String &p_name, double p_value, double p_current);
+	static gdx::String explain_parameter(const gdx::String &p_name, double p_value, double p_used);
+	static double get_parameter_default(const gdx::String &p_name);
+	static gdx::String get_parameter_names();
+	static gdx::String check_lod_distances(const gdx::PackedFloat32Array &p_distances);
+	static gdx::Vector2 sanitize_wind_direction(gdx::Vector2 p_direction);
+	static int64_t mesh_bucket(int64_t p_level, int64_t p_part);
+	static double get_plant_height_units();
+
 private:
-	bool _check_plant(int64_t p_plant, const char *p_function) const;
+	bool _is_plant(int64_t p_plant) const;
+	bool _is_chunk(int64_t p_chunk) const;
 	void _push_bucket(uint32_t p_bucket);
 	void _upload_chunk(uint32_t p_chunk);
+	void _show_static_chunk(uint32_t p_chunk);
 
 	struct BucketTarget {
 		gdx::Rid multimesh;

@@ -1,4 +1,4 @@
-#include "core/field_map.h"
+#include "field_map.h"
 
 #include <doctest/doctest.h>
 

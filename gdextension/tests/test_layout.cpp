@@ -1,4 +1,4 @@
-#include "core/field_layout.h"
+#include "field_layout.h"
 
 #include <doctest/doctest.h>
 

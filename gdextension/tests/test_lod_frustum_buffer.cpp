@@ -1,6 +1,6 @@
-#include "core/frustum.h"
-#include "core/instance_buffer.h"
-#include "core/lod_selector.h"
+#include "frustum.h"
+#include "instance_buffer.h"
+#include "lod_selector.h"
 
 #include <doctest/doctest.h>
 

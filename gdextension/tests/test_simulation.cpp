@@ -1,4 +1,4 @@
-#include "core/field_simulation.h"
+#include "field_simulation.h"
 
 #include <doctest/doctest.h>
 

@@ -1,4 +1,4 @@
-#include "core/wind_model.h"
+#include "wind_model.h"
 
 #include <doctest/doctest.h>
 

@@ -1,5 +1,5 @@
-#include "core/field_simulation.h"
-#include "core/worker_pool.h"
+#include "field_simulation.h"
+#include "worker_pool.h"
 
 #include <doctest/doctest.h>
 
@@ -113,7 +113,7 @@ TEST_CASE("small near work stays on one thread; the thread count can change and 
 	CHECK(sim.get_last_task_count() == 1);
 	sim.set_worker_threads(0);
 	CHECK(sim.get_worker_threads() >= 1);
-	CHECK(sim.get_worker_threads() <= FieldSimulation::MAX_AUTO_THREADS);
+	CHECK(sim.get_worker_threads() <= param::MAX_AUTO_THREADS);
 }
 
 TEST_CASE("parallel steady state allocates nothing") {

@@ -96,7 +96,7 @@ void variant_from(GDExtensionVariantType p_type, GDExtensionVariantPtr r_variant
 	api.get_variant_from_type_constructor(p_type)(r_variant, const_cast<GDExtensionTypePtr>(p_value));
 }
 
-void register_method(const char *p_class, const char *p_name, MethodBind *p_bind, bool p_const, bool p_has_return,
+void register_method(const char *p_class, const char *p_name, MethodBind *p_bind, bool p_const, bool p_static, bool p_has_return,
 		ArgumentInfo p_return, const std::vector<ArgumentInfo> &p_args, std::initializer_list<const char *> p_arg_names) {
 	registry()->methods.emplace_back(p_bind);
 	std::vector<GDExtensionPropertyInfo> arg_info;
@@ -114,7 +114,8 @@ void register_method(const char *p_class, const char *p_name, MethodBind *p_bind
 	info.method_userdata = p_bind;
 	info.call_func = &call_trampoline;
 	info.ptrcall_func = &ptrcall_trampoline;
-	info.method_flags = GDEXTENSION_METHOD_FLAGS_DEFAULT | (p_const ? GDEXTENSION_METHOD_FLAG_CONST : 0);
+	info.method_flags = GDEXTENSION_METHOD_FLAGS_DEFAULT | (p_const ? GDEXTENSION_METHOD_FLAG_CONST : 0) |
+			(p_static ? GDEXTENSION_METHOD_FLAG_STATIC : 0);
 	info.has_return_value = p_has_return;
 	info.return_value_info = p_has_return ? &return_info : nullptr;
 	info.return_value_metadata = p_return.metadata;

@@ -92,10 +92,20 @@ struct FunctionTraits<R (C::*)(A...)> {
 	using Return = R;
 	using Args = std::tuple<A...>;
 	static constexpr bool is_const = false;
+	static constexpr bool is_static = false;
 };
 template <class C, class R, class... A>
 struct FunctionTraits<R (C::*)(A...) const> : FunctionTraits<R (C::*)(A...)> {
 	static constexpr bool is_const = true;
+};
+// A static method: a plain function, called without an instance.
+template <class R, class... A>
+struct FunctionTraits<R (*)(A...)> {
+	using Class = void;
+	using Return = R;
+	using Args = std::tuple<A...>;
+	static constexpr bool is_const = false;
+	static constexpr bool is_static = true;
 };
 
 template <class F>
@@ -119,16 +129,25 @@ public:
 			r_error->expected = static_cast<int32_t>(N);
 			return;
 		}
-		call_variant(static_cast<C *>(p_instance), p_args, r_return, r_error, std::make_index_sequence<N>{});
+		call_variant(p_instance, p_args, r_return, r_error, std::make_index_sequence<N>{});
 	}
 
 	void ptrcall(void *p_instance, const GDExtensionConstTypePtr *p_args, GDExtensionTypePtr r_return) override {
-		call_ptr(static_cast<C *>(p_instance), p_args, r_return, std::make_index_sequence<N>{});
+		call_ptr(p_instance, p_args, r_return, std::make_index_sequence<N>{});
 	}
 
 private:
+	template <class... P>
+	R invoke(void *p_instance, P &&...p_args) {
+		if constexpr (FT::is_static) {
+			return _function(std::forward<P>(p_args)...);
+		} else {
+			return (static_cast<C *>(p_instance)->*_function)(std::forward<P>(p_args)...);
+		}
+	}
+
 	template <size_t... I>
-	void call_variant(C *p_self, const GDExtensionConstVariantPtr *p_args, GDExtensionVariantPtr r_return,
+	void call_variant(void *p_self, const GDExtensionConstVariantPtr *p_args, GDExtensionVariantPtr r_return,
 			GDExtensionCallError *r_error, std::index_sequence<I...>) {
 		std::tuple<typename ArgTraits<I>::StorageType...> storage;
 		int32_t failed = -1;
@@ -146,23 +165,23 @@ private:
 			return;
 		}
 		if constexpr (std::is_void_v<R>) {
-			(p_self->*_function)(ArgTraits<I>::get(std::get<I>(storage))...);
+			invoke(p_self, ArgTraits<I>::get(std::get<I>(storage))...);
 		} else {
 			using RT = TraitsOf<R>;
-			const typename RT::StorageType result = RT::put((p_self->*_function)(ArgTraits<I>::get(std::get<I>(storage))...));
+			const typename RT::StorageType result = RT::put(invoke(p_self, ArgTraits<I>::get(std::get<I>(storage))...));
 			variant_from(RT::type, r_return, &result);
 		}
 	}
 
 	template <size_t... I>
-	void call_ptr(C *p_self, const GDExtensionConstTypePtr *p_args, GDExtensionTypePtr r_return, std::index_sequence<I...>) {
+	void call_ptr(void *p_self, const GDExtensionConstTypePtr *p_args, GDExtensionTypePtr r_return, std::index_sequence<I...>) {
 		if constexpr (std::is_void_v<R>) {
-			(p_self->*_function)(ArgTraits<I>::get(*static_cast<const typename ArgTraits<I>::StorageType *>(p_args[I]))...);
+			invoke(p_self, ArgTraits<I>::get(*static_cast<const typename ArgTraits<I>::StorageType *>(p_args[I]))...);
 		} else {
 			using RT = TraitsOf<R>;
 			// The return slot is already constructed: assign into it.
 			*static_cast<typename RT::StorageType *>(r_return) =
-					RT::put((p_self->*_function)(ArgTraits<I>::get(*static_cast<const typename ArgTraits<I>::StorageType *>(p_args[I]))...));
+					RT::put(invoke(p_self, ArgTraits<I>::get(*static_cast<const typename ArgTraits<I>::StorageType *>(p_args[I]))...));
 		}
 	}
 
@@ -176,7 +195,7 @@ struct ArgumentInfo {
 	GDExtensionClassMethodArgumentMetadata metadata;
 };
 
-void register_method(const char *p_class, const char *p_name, MethodBind *p_bind, bool p_const,
+void register_method(const char *p_class, const char *p_name, MethodBind *p_bind, bool p_const, bool p_static,
 		bool p_has_return, ArgumentInfo p_return, const std::vector<ArgumentInfo> &p_args,
 		std::initializer_list<const char *> p_arg_names);
 
@@ -194,12 +213,13 @@ void bind_method(const char *p_class, const char *p_name, F p_function, std::ini
 	if constexpr (!std::is_void_v<R>) {
 		ret = ArgumentInfo{ TraitsOf<R>::type, TraitsOf<R>::metadata };
 	}
-	register_method(p_class, p_name, new MethodBindT<F>(p_function), FT::is_const, !std::is_void_v<R>, ret, args, p_arg_names);
+	register_method(p_class, p_name, new MethodBindT<F>(p_function), FT::is_const, FT::is_static, !std::is_void_v<R>, ret,
+			args, p_arg_names);
 }
 
 void bind_integer_constant(const char *p_class, const char *p_enum, const char *p_name, int64_t p_value);
 
-// Registers T (default-constructible, holding a public GDExtensionObjectPtr `owner`) as a subclass of
+// Registers T (default-constructible; the engine object that wraps it is not kept) as a subclass of
 // p_parent, then calls T::bind_methods().
 struct ClassInfo {
 	const StringName *name;

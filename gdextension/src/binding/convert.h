@@ -4,6 +4,7 @@
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 #include <string>
 
@@ -15,6 +16,13 @@ inline glm::vec2 to_core(const Vector2 &p_v) {
 inline glm::vec3 to_core(const Vector3 &p_v) {
 	return glm::vec3(p_v.x, p_v.y, p_v.z);
 }
+inline Vector2 to_godot(const glm::vec2 &p_v) {
+	return Vector2{ p_v.x, p_v.y };
+}
+// A point on the ground (x, z) in the field's space.
+inline Vector3 to_godot_ground(const glm::vec2 &p_v) {
+	return Vector3{ p_v.x, 0.0f, p_v.y };
+}
 inline Vector3 to_godot(const glm::vec3 &p_v) {
 	return Vector3{ p_v.x, p_v.y, p_v.z };
 }
@@ -25,21 +33,9 @@ inline std::string to_core(const PackedByteArray &p_bytes) {
 	const uint8_t *data = p_bytes.data();
 	return data ? std::string(reinterpret_cast<const char *>(data), static_cast<size_t>(p_bytes.size())) : std::string();
 }
-inline std::u32string to_core_u32(const String &p_text) {
-	// Legend symbols: decoded from UTF-8 one code point at a time.
-	const std::string utf8 = p_text.utf8();
-	std::u32string out;
-	for (size_t i = 0; i < utf8.size();) {
-		const unsigned char lead = static_cast<unsigned char>(utf8[i]);
-		const int extra = lead < 0x80 ? 0 : lead < 0xE0 ? 1 : lead < 0xF0 ? 2 : 3;
-		char32_t code = extra == 0 ? lead : lead & (0x3F >> extra);
-		for (int k = 1; k <= extra && i + size_t(k) < utf8.size(); ++k) {
-			code = (code << 6) | (static_cast<unsigned char>(utf8[i + size_t(k)]) & 0x3F);
-		}
-		out.push_back(code);
-		i += size_t(extra) + 1;
-	}
-	return out;
+// Frustum planes: (normal.x, normal.y, normal.z, d) four floats each, as the node packs them.
+inline const glm::vec4 *to_core_planes(const PackedFloat32Array &p_planes) {
+	return reinterpret_cast<const glm::vec4 *>(p_planes.data());
 }
 
 } // namespace gdx

@@ -129,7 +129,8 @@ public:
 			Builtin(Uninitialized{}) { api.string_name_new_with_utf8_chars(ptr(), p_utf8); }
 };
 
-// Builtin method hashes of the packed arrays (from the engine's API dump at build time).
+// Size and resize of the packed arrays, through the engine's builtin methods (looked up by the hashes
+// of the API dump at load time).
 int64_t packed_size(GDExtensionVariantType p_type, GDExtensionConstTypePtr p_array);
 void packed_resize(GDExtensionVariantType p_type, GDExtensionTypePtr p_array, int64_t p_size);
 

@@ -1,6 +1,7 @@
 #include "rendering_server.h"
 
 #include "api_hashes.gen.h"
+#include "error_macros.h"
 
 namespace gdx {
 
@@ -15,6 +16,7 @@ struct Methods {
 Methods methods;
 
 void call(GDExtensionMethodBindPtr p_method, std::initializer_list<GDExtensionConstTypePtr> p_args) {
+	SF_BUG_COND_MSG(methods.singleton == nullptr || p_method == nullptr, "a RenderingServer call before ensure_loaded() succeeded");
 	api.object_method_bind_ptrcall(p_method, methods.singleton, p_args.begin(), nullptr);
 }
 
@@ -29,9 +31,8 @@ bool RenderingServer::ensure_loaded() {
 	const auto bind = [&](const char *p_name, int64_t p_hash) {
 		StringName name(p_name);
 		GDExtensionMethodBindPtr method = api.classdb_get_method_bind(class_name.ptr(), name.ptr(), p_hash);
-		if (!method) {
-			print_error(std::string("RenderingServer.") + p_name + " with the expected signature is missing", __func__, __FILE__, __LINE__);
-		}
+		SF_FAIL_COND_V_MSG(method == nullptr, method,
+				std::string("this engine's RenderingServer.") + p_name + " differs from the one the library was built against");
 		return method;
 	};
 	methods.allocate_data = bind("multimesh_allocate_data", hashes::RS_MULTIMESH_ALLOCATE_DATA);

@@ -2,6 +2,7 @@
 // Plant layout (thesis 5.3): every '*' cell becomes one plant at
 // x = (column + α)·cell, z = (row + α)·cell with α ∈ [0, 0.5) drawn once per plant from the seed.
 #include "field_map.h"
+#include "parameters.h"
 
 #include <glm/common.hpp>
 #include <glm/vec2.hpp>
@@ -13,12 +14,13 @@
 namespace sunflower {
 
 struct LayoutParams {
-	float cell_size = 0.5f; // metres per map character (thesis: 0.5 m)
+	float cell_size = float(param::CELL_SIZE.default_value); // metres per map character (thesis: 0.5 m)
 	uint64_t seed = 1;
 	bool independent_jitter = false; // false: the same α on x and z, as in the thesis
 	float jitter = 0.5f; // α ∈ [0, jitter) in cells (thesis: 0.5)
 	float yaw_jitter = 0.35f; // radians either side of facing +z, for variety between plants
-	float chunk_size = 16.0f; // metres; the far representations are grouped in square chunks
+	// Metres; the far representations are grouped in square chunks.
+	float chunk_size = float(param::CHUNK_SIZE.default_value);
 
 	bool operator==(const LayoutParams &p_other) const {
 		return cell_size == p_other.cell_size && seed == p_other.seed && independent_jitter == p_other.independent_jitter &&

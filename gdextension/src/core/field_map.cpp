@@ -171,6 +171,14 @@ bool read_size(const Line &p_line, size_t &r_pos, const char *p_what, int p_max,
 
 } // namespace
 
+std::u32string decode_utf8_text(std::string_view p_text) {
+	std::u32string out;
+	for (size_t pos = 0; pos < p_text.size();) {
+		out.push_back(decode_utf8(p_text, pos));
+	}
+	return out;
+}
+
 bool parse_field_map(std::string_view p_text, std::u32string_view p_legend, const std::string &p_source,
 		const MapLimits &p_limits, FieldMap &r_map, MapError &r_error) {
 	r_error = MapError{ p_source, 0, 0, {} };

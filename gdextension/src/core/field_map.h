@@ -44,6 +44,9 @@ struct MapLimits {
 	int max_side = 1'000'000;
 };
 
+// Decodes UTF-8 text into code points (legend symbols); malformed bytes become U+FFFD, one each.
+std::u32string decode_utf8_text(std::string_view p_text);
+
 // Parses p_text (raw bytes of the file). p_legend lists the extra symbols allowed in rows.
 // On failure returns false and fills r_error; r_map is then left unspecified.
 bool parse_field_map(std::string_view p_text, std::u32string_view p_legend, const std::string &p_source,

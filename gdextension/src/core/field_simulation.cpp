@@ -31,8 +31,8 @@ void FieldSimulation::clear() {
 
 bool FieldSimulation::set_layout_params(const LayoutParams &p_params) {
 	LayoutParams params = p_params;
-	params.cell_size = std::isfinite(p_params.cell_size) && p_params.cell_size > 0.0f ? p_params.cell_size : 0.5f;
-	params.chunk_size = std::isfinite(p_params.chunk_size) && p_params.chunk_size > 0.0f ? p_params.chunk_size : 16.0f;
+	params.cell_size = sanitize(param::CELL_SIZE, p_params.cell_size, _layout_params.cell_size);
+	params.chunk_size = sanitize(param::CHUNK_SIZE, p_params.chunk_size, _layout_params.chunk_size);
 	if (params == _layout_params) {
 		return false;
 	}
@@ -49,6 +49,13 @@ void FieldSimulation::set_lod(const LodParams &p_params) {
 void FieldSimulation::set_shape(const PlantShape &p_shape) {
 	_shape = p_shape;
 	_lod_due = true;
+}
+
+void FieldSimulation::set_plant_height(float p_metres) {
+	PlantShape shape = _shape;
+	shape.part_scale = sanitize(param::PLANT_HEIGHT, p_metres, _shape.part_scale * PlantShape::PARTS_HEIGHT) /
+			PlantShape::PARTS_HEIGHT;
+	set_shape(shape);
 }
 
 void FieldSimulation::_rebuild() {
@@ -70,9 +77,9 @@ void FieldSimulation::_rebuild() {
 }
 
 void FieldSimulation::set_worker_threads(uint32_t p_threads) {
-	uint32_t threads = p_threads;
+	uint32_t threads = std::min(p_threads, param::MAX_THREADS);
 	if (threads == 0) {
-		threads = std::clamp(std::thread::hardware_concurrency(), 1u, MAX_AUTO_THREADS);
+		threads = std::clamp(std::thread::hardware_concurrency(), 1u, param::MAX_AUTO_THREADS);
 	}
 	if (threads == get_worker_threads()) {
 		return;

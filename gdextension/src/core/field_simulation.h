@@ -39,10 +39,23 @@ constexpr uint32_t mesh_bucket(uint32_t p_level, uint32_t p_part) {
 
 using BucketSet = std::array<InstanceBuffer, BUCKET_COUNT>;
 
+// The plant's size, for culling and bounds. Parts are modelled one unit tall from their root (the
+// default models and any part a user supplies), stacked bottom, middle, head.
 struct PlantShape {
-	float part_scale = 2.0f / 3.0f; // metres per model unit; three unit parts make a 2 m plant
-	float cull_radius = 1.2f; // bounding-sphere radius around the plant's middle, in model units
-	float height = 3.4f; // model units from the root to the top of the head, for bounding boxes
+	// Model units from the root to the top of anything drawn: the three stacked parts (3 units, the
+	// middle up to 1.05 with the α/10 height variety) and the nodding head's petals above them;
+	// the impostor quads frame exactly this height (addon: impostor_set.gd reads it back).
+	static constexpr float HEIGHT = 3.2f;
+	// Radius of the sphere about the plant's middle (HEIGHT / 2 up) that holds the whole plant
+	// leaning by the largest bend (45°) with its leaves (half-width ~0.8): what frustum culling
+	// and chunk bounds use. Smaller radii cut swaying heads at the screen edge.
+	static constexpr float CULL_RADIUS = 1.9f;
+	// Model units of the three stacked parts: a plant `plant_height` metres tall is drawn at
+	// plant_height / PARTS_HEIGHT metres per model unit.
+	static constexpr float PARTS_HEIGHT = 3.0f;
+	float part_scale = float(param::PLANT_HEIGHT.default_value) / PARTS_HEIGHT; // metres per model unit
+	float cull_radius = CULL_RADIUS; // model units
+	float height = HEIGHT; // model units
 };
 
 struct ChunkBounds {
@@ -71,6 +84,8 @@ public:
 	void set_lod(const LodParams &p_params);
 	const LodSelector &get_lod() const { return _lod; }
 	void set_shape(const PlantShape &p_shape);
+	// Sets the part scale for a plant p_metres tall (param::PLANT_HEIGHT rules).
+	void set_plant_height(float p_metres);
 	const PlantShape &get_shape() const { return _shape; }
 
 	void set_observer(const glm::vec3 &p_position) { _observer = p_position; }
@@ -84,14 +99,16 @@ public:
 	void request_lod_update() { _lod_due = true; }
 
 	// Threads that move the near plants, the caller included: 0 picks the hardware's count (at most
-	// MAX_AUTO_THREADS), 1 moves them all on the caller. The threads live as long as the simulation.
-	static constexpr uint32_t MAX_AUTO_THREADS = 4;
+	// param::MAX_AUTO_THREADS), 1 moves them all on the caller, at most param::MAX_THREADS. The
+	// threads live as long as the simulation.
 	// Runs of active chunks per thread: more runs than threads balance uneven runs and late wake-ups.
 	static constexpr uint32_t TASKS_PER_THREAD = 4;
 	void set_worker_threads(uint32_t p_threads);
 	uint32_t get_worker_threads() const { return _pool ? _pool->get_thread_count() : 1; }
-	// Below this many plants in active chunks the near work stays on one thread (waking the others
-	// costs more than it saves; see the core benchmark's thread table).
+	// Below this many plants in active chunks the near work stays on one thread: waking the others
+	// costs more than it saves below ~25 000 on two cores (the core benchmark's thread table).
+	static constexpr uint32_t PARALLEL_MIN_PLANTS = 32768;
+	// Benchmarks move the threshold to measure where a second thread pays.
 	void set_parallel_min_plants(uint32_t p_plants) { _parallel_min_plants = p_plants; }
 	uint32_t get_parallel_min_plants() const { return _parallel_min_plants; }
 	// Plants in active chunks, and how many parallel tasks (runs of active chunks) the last update
@@ -153,7 +170,7 @@ private:
 	BucketSet _buckets;
 	std::unique_ptr<WorkerPool> _pool;
 	std::vector<BucketSet> _task_buckets; // the buckets of parallel tasks after the first
-	uint32_t _parallel_min_plants = 32768;
+	uint32_t _parallel_min_plants = PARALLEL_MIN_PLANTS;
 	uint32_t _active_plants = 0;
 	uint32_t _last_tasks = 1;
 

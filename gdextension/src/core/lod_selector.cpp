@@ -5,7 +5,14 @@
 namespace sunflower {
 
 void LodSelector::configure(const LodParams &p_params) {
+	const LodParams previous = _params;
 	_params = p_params;
+	if (!check_lod_distances(p_params.distances.data(), p_params.distances.size()).empty()) {
+		_params.distances = previous.distances;
+	}
+	_params.hysteresis = sanitize(param::LOD_HYSTERESIS, p_params.hysteresis, previous.hysteresis);
+	_params.interval = sanitize(param::LOD_INTERVAL, p_params.interval, previous.interval);
+	_params.force_level = int(sanitize(param::FORCE_LOD, double(p_params.force_level), double(previous.force_level)));
 	for (size_t i = 0; i < 4; ++i) {
 		const float d = _params.distances[i];
 		const float finer = std::max(0.0f, d - _params.hysteresis);

@@ -1,6 +1,8 @@
 #pragma once
 // Five discrete levels of detail chosen by distance (thesis 3.2, Tab. 1), compared squared,
 // with a hysteresis margin on every threshold so plants near a threshold do not flicker.
+#include "parameters.h"
+
 #include <array>
 #include <cstdint>
 
@@ -19,13 +21,17 @@ enum Lod : uint8_t {
 struct LodParams {
 	// Switch distances in metres: mesh 1→2, 2→3, 3→sprite, sprite→billboard (thesis: 6/10/20/25).
 	std::array<float, 4> distances{ { 6.0f, 10.0f, 20.0f, 25.0f } };
-	float hysteresis = 0.5f; // metres: switch to less detail this much later, to more detail this much earlier
-	float interval = 0.25f; // seconds between LOD updates (thesis 3.3.2)
-	int force_level = -1; // 0–4: draw every plant in this representation (benchmarks, debugging)
+	// Metres: switch to less detail this much later, to more detail this much earlier.
+	float hysteresis = float(param::LOD_HYSTERESIS.default_value);
+	float interval = float(param::LOD_INTERVAL.default_value); // seconds between LOD updates (thesis 3.3.2)
+	// 0–4: draw every plant in this representation (benchmarks, debugging); -1: by distance.
+	int force_level = int(param::FORCE_LOD.default_value);
 };
 
 class LodSelector {
 public:
+	// Takes the parameters the param:: rules accept; distances that fail check_lod_distances() keep
+	// the current ones.
 	void configure(const LodParams &p_params);
 	const LodParams &get_params() const { return _params; }
 

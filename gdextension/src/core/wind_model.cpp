@@ -11,10 +11,6 @@ namespace sunflower {
 
 namespace {
 
-float finite_or(float p_value, float p_fallback) {
-	return std::isfinite(p_value) ? p_value : p_fallback;
-}
-
 // Rotation about a horizontal unit axis (a.x, 0, a.z) by p_angle (Rodrigues' formula).
 glm::mat3 rotation_about_horizontal(const glm::vec2 &p_axis, float p_angle) {
 	const float c = std::cos(p_angle);
@@ -39,21 +35,20 @@ glm::mat3 yaw_scale(float p_yaw, float p_scale_xz, float p_scale_y) {
 
 void WindModel::configure(const WindParams &p_params) {
 	_params = p_params;
-	_params.power = std::clamp(finite_or(_params.power, 0.0f), 0.0f, 100.0f);
-	_params.d1 = std::max(finite_or(_params.d1, 1.5f), 1e-3f);
-	_params.d2 = std::max(finite_or(_params.d2, 3.0f), 1e-3f);
-	_params.h = finite_or(_params.h, PI / 12.0f);
-	_params.max_bend = std::clamp(finite_or(_params.max_bend, PI / 4.0f), 0.0f, PI);
-	_params.flip_interval = std::max(finite_or(_params.flip_interval, 2.0f), 1e-3f);
-	_params.flip_chance = std::clamp(finite_or(_params.flip_chance, 0.5f), 0.0f, 1.0f);
-	_params.gust_speed = std::max(finite_or(_params.gust_speed, 0.0f), 0.0f);
-	_params.gust_share = std::clamp(finite_or(_params.gust_share, 0.5f), 0.0f, 1.0f);
+	_params.power = sanitize(param::WIND_POWER, p_params.power, _params.power);
+	_params.direction = sanitize_wind_direction(p_params.direction);
+	_params.d1 = sanitize(param::WIND_STIFFNESS_MIDDLE, p_params.d1, _params.d1);
+	_params.d2 = sanitize(param::WIND_STIFFNESS_BOTTOM, p_params.d2, _params.d2);
+	_params.h = sanitize(param::WIND_BEND_PER_POWER, p_params.h, _params.h);
+	_params.max_bend = sanitize(param::WIND_MAX_BEND, p_params.max_bend, _params.max_bend);
+	_params.flip_interval = sanitize(param::WIND_FLIP_INTERVAL, p_params.flip_interval, _params.flip_interval);
+	_params.flip_chance = sanitize(param::WIND_FLIP_CHANCE, p_params.flip_chance, _params.flip_chance);
+	_params.gust_speed = sanitize(param::WIND_GUST_SPEED, p_params.gust_speed, _params.gust_speed);
+	_params.gust_share = sanitize(param::WIND_GUST_SHARE, p_params.gust_share, _params.gust_share);
 
 	const float p_w = _params.power;
 	_rate = (p_w <= 1.0f ? p_w : p_w / 20.0f + 1.0f) * PI; // eq. 6
-	const glm::vec2 dir(finite_or(_params.direction.x, 0.0f), finite_or(_params.direction.y, 0.0f));
-	const float length = glm::length(dir);
-	_lean = length > 1e-6f ? dir / length : glm::vec2(1.0f, 0.0f);
+	_lean = glm::normalize(_params.direction);
 	_bend_limit = _params.max_bend / (1.0f / _params.d1 + 1.0f / _params.d2);
 }
 

@@ -8,6 +8,7 @@
 // with a travelling component sin(Ψ(t − s/c)) where s is the plant's downwind coordinate; the
 // bottom part tilts p/d2 and the middle part p/d1 (eq. 4); the head sits rigidly on the middle.
 #include "field_layout.h"
+#include "parameters.h"
 
 #include <glm/mat3x3.hpp>
 #include <glm/vec2.hpp>
@@ -17,20 +18,18 @@
 
 namespace sunflower {
 
-constexpr float PI = 3.14159265358979323846f;
-constexpr float TAU = 2.0f * PI;
-
+// Defaults and limits: param::WIND_* (parameters.h).
 struct WindParams {
-	float power = 1.0f; // p_w in [0, 100]; 1.0 ≈ 1 m/s
+	float power = float(param::WIND_POWER.default_value); // p_w in [0, 100]; 1.0 ≈ 1 m/s
 	glm::vec2 direction{ 1.0f, 0.0f }; // x, z: where the wind blows to (need not be normalised)
-	float d1 = 1.5f; // stiffness of the middle part
-	float d2 = 3.0f; // stiffness of the bottom part
-	float h = PI / 12.0f; // maximum bend per unit of power
-	float max_bend = PI / 4.0f; // clamp on the summed tilt of bottom and middle, radians
-	float flip_interval = 2.0f; // seconds between redraws of b
-	float flip_chance = 0.5f; // probability that b reverses at a redraw
-	float gust_speed = 3.0f; // m/s at which the bend travels downwind; 0 disables the gust
-	float gust_share = 0.5f; // 0: each plant sways on its own; 1: only the travelling gust
+	float d1 = float(param::WIND_STIFFNESS_MIDDLE.default_value); // stiffness of the middle part
+	float d2 = float(param::WIND_STIFFNESS_BOTTOM.default_value); // stiffness of the bottom part
+	float h = float(param::WIND_BEND_PER_POWER.default_value); // maximum bend per unit of power
+	float max_bend = float(param::WIND_MAX_BEND.default_value); // clamp on the summed tilt of bottom and middle, radians
+	float flip_interval = float(param::WIND_FLIP_INTERVAL.default_value); // seconds between redraws of b
+	float flip_chance = float(param::WIND_FLIP_CHANCE.default_value); // probability that b reverses at a redraw
+	float gust_speed = float(param::WIND_GUST_SPEED.default_value); // m/s the bend travels downwind; 0: no gust
+	float gust_share = float(param::WIND_GUST_SHARE.default_value); // 0: each plant on its own; 1: only the gust
 };
 
 struct PlantWind {

@@ -1,0 +1,98 @@
+#pragma once
+// Every value a user sets on a field or its wind, defined once: its default, its range and what
+// happens to a value outside it. The core applies these rules itself; the engine side reads the
+// same table (by name) to validate inspector values and word their warnings, so no limit or
+// default is typed twice. Names are the user-facing properties ("SunflowerWind.power").
+#include <glm/vec2.hpp>
+
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <string_view>
+
+namespace sunflower {
+
+constexpr float PI = 3.14159265358979323846f;
+constexpr float TAU = 2.0f * PI;
+
+struct ParameterSpec {
+	enum Rule : uint8_t {
+		CLAMP, // out of range: the nearest bound; not finite: `fallback`
+		KEEP, // out of range or not finite: the current value stays
+	};
+	const char *name;
+	double default_value;
+	double min;
+	double max;
+	Rule rule;
+	double fallback; // CLAMP: what a non-finite value becomes
+};
+
+namespace param {
+
+constexpr double NO_MAX = std::numeric_limits<float>::max();
+constexpr double NO_MIN = -NO_MAX;
+
+// Wind (thesis 5.4): power p_w, the stiffnesses d1 / d2, h, and this addon's clamp, flips and gust.
+// A NaN power becomes calm (0), not the default: a broken input should not start a wind.
+inline constexpr ParameterSpec WIND_POWER{ "SunflowerWind.power", 1.0, 0.0, 100.0, ParameterSpec::CLAMP, 0.0 };
+inline constexpr ParameterSpec WIND_INCREMENT{ "SunflowerWind.increment", 0.1, 0.0, 100.0, ParameterSpec::CLAMP, 0.1 };
+inline constexpr ParameterSpec WIND_STIFFNESS_MIDDLE{ "SunflowerWind.stiffness_middle", 1.5, 0.1, NO_MAX, ParameterSpec::CLAMP, 1.5 };
+inline constexpr ParameterSpec WIND_STIFFNESS_BOTTOM{ "SunflowerWind.stiffness_bottom", 3.0, 0.1, NO_MAX, ParameterSpec::CLAMP, 3.0 };
+inline constexpr ParameterSpec WIND_BEND_PER_POWER{ "SunflowerWind.bend_per_power", PI / 12.0, NO_MIN, NO_MAX, ParameterSpec::CLAMP, PI / 12.0 };
+inline constexpr ParameterSpec WIND_MAX_BEND{ "SunflowerWind.max_bend", PI / 4.0, 0.0, PI, ParameterSpec::CLAMP, PI / 4.0 };
+inline constexpr ParameterSpec WIND_FLIP_INTERVAL{ "SunflowerWind.flip_interval", 2.0, 0.05, NO_MAX, ParameterSpec::CLAMP, 2.0 };
+inline constexpr ParameterSpec WIND_FLIP_CHANCE{ "SunflowerWind.flip_chance", 0.5, 0.0, 1.0, ParameterSpec::CLAMP, 0.5 };
+inline constexpr ParameterSpec WIND_GUST_SPEED{ "SunflowerWind.gust_speed", 3.0, 0.0, NO_MAX, ParameterSpec::CLAMP, 3.0 };
+inline constexpr ParameterSpec WIND_GUST_SHARE{ "SunflowerWind.gust_share", 0.5, 0.0, 1.0, ParameterSpec::CLAMP, 0.5 };
+
+// Layout: a bad size is refused and the field keeps the one it has (a rebuild would be wasted).
+inline constexpr ParameterSpec CELL_SIZE{ "SunflowerField.cell_size", 0.5, 0.001, NO_MAX, ParameterSpec::KEEP, 0.0 };
+inline constexpr ParameterSpec PLANT_HEIGHT{ "SunflowerField.plant_height", 2.0, 0.001, NO_MAX, ParameterSpec::KEEP, 0.0 };
+inline constexpr ParameterSpec CHUNK_SIZE{ "SunflowerField.chunk_size", 16.0, 0.5, 4096.0, ParameterSpec::KEEP, 0.0 };
+// 0 means the parser's own limit (MapLimits::max_plants).
+inline constexpr ParameterSpec MAX_PLANTS{ "SunflowerField.max_plants", 4'000'000, 0.0, 100'000'000, ParameterSpec::CLAMP, 4'000'000 };
+
+// Levels of detail (thesis 3.2–3.3: 0.25 s between updates; the hysteresis is this addon's).
+inline constexpr ParameterSpec LOD_HYSTERESIS{ "SunflowerField.lod_hysteresis", 0.5, 0.0, NO_MAX, ParameterSpec::CLAMP, 0.5 };
+inline constexpr ParameterSpec LOD_INTERVAL{ "SunflowerField.lod_interval", 0.25, 0.0, NO_MAX, ParameterSpec::CLAMP, 0.25 };
+inline constexpr ParameterSpec FORCE_LOD{ "SunflowerField.force_lod", -1.0, -1.0, 4.0, ParameterSpec::CLAMP, -1.0 };
+
+// Drawing (applied by the engine side: shader parameters and visibility ranges).
+inline constexpr ParameterSpec ALPHA_SCISSOR{ "SunflowerField.alpha_scissor", 190.0 / 255.0, 0.0, 1.0, ParameterSpec::CLAMP, 190.0 / 255.0 };
+inline constexpr ParameterSpec THINNING_DISTANCE{ "SunflowerField.thinning_distance", 0.0, 0.0, NO_MAX, ParameterSpec::CLAMP, 0.0 };
+inline constexpr ParameterSpec THINNING_MIN_DENSITY{ "SunflowerField.thinning_min_density", 0.25, 0.01, 1.0, ParameterSpec::CLAMP, 0.25 };
+inline constexpr ParameterSpec MAX_DRAW_DISTANCE{ "SunflowerField.max_draw_distance", 0.0, 0.0, NO_MAX, ParameterSpec::CLAMP, 0.0 };
+
+// Performance. 0 threads: the machine's cores, at most MAX_AUTO_THREADS.
+inline constexpr ParameterSpec BUILD_BUDGET_MS{ "SunflowerField.build_budget_ms", 8.0, 1.0, 100.0, ParameterSpec::CLAMP, 8.0 };
+constexpr uint32_t MAX_AUTO_THREADS = 4;
+constexpr uint32_t MAX_THREADS = 16;
+inline constexpr ParameterSpec WORKER_THREADS{ "SunflowerField.worker_threads", 0.0, 0.0, MAX_THREADS, ParameterSpec::CLAMP, 0.0 };
+
+inline constexpr std::array<const ParameterSpec *, 23> ALL{ { &WIND_POWER, &WIND_INCREMENT, &WIND_STIFFNESS_MIDDLE,
+		&WIND_STIFFNESS_BOTTOM, &WIND_BEND_PER_POWER, &WIND_MAX_BEND, &WIND_FLIP_INTERVAL, &WIND_FLIP_CHANCE,
+		&WIND_GUST_SPEED, &WIND_GUST_SHARE, &CELL_SIZE, &PLANT_HEIGHT, &CHUNK_SIZE, &MAX_PLANTS, &LOD_HYSTERESIS,
+		&LOD_INTERVAL, &FORCE_LOD, &ALPHA_SCISSOR, &THINNING_DISTANCE, &THINNING_MIN_DENSITY, &MAX_DRAW_DISTANCE,
+		&BUILD_BUDGET_MS, &WORKER_THREADS } };
+
+} // namespace param
+
+// The spec called p_name, or null.
+const ParameterSpec *find_parameter(std::string_view p_name);
+// The value the core uses when asked for p_value while p_current is set.
+double sanitize(const ParameterSpec &p_spec, double p_value, double p_current);
+inline float sanitize(const ParameterSpec &p_spec, float p_value, float p_current) {
+	return static_cast<float>(sanitize(p_spec, double(p_value), double(p_current)));
+}
+// Why p_value became p_used, for a warning: "nan is not a finite number; using 0". Empty when
+// p_value was taken as it is.
+std::string explain_sanitized(const ParameterSpec &p_spec, double p_value, double p_used);
+
+// The wind direction (x, z): a zero or non-finite vector means +x.
+glm::vec2 sanitize_wind_direction(const glm::vec2 &p_direction);
+// What is wrong with LOD switch distances (four, positive, increasing), or empty when nothing is.
+std::string check_lod_distances(const float *p_distances, size_t p_count);
+
+} // namespace sunflower
