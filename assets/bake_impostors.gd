@@ -1,15 +1,14 @@
 extends SceneTree
 ## Renders the sprite and billboard textures from the level-1 model: front (facing the head) and
 ## side views, orthographic, on a transparent background, framed exactly like SunflowerField's
-## impostor quads (IMPOSTOR_WIDTH × IMPOSTOR_HEIGHT model units).
+## impostor quads (the addon's impostor_set.gd: its WIDTH_UNITS × height_units() model units).
 ##
 ## Needs a real renderer (not --headless): xvfb-run godot --path <project with the addon> \
 ##     --script assets/bake_impostors.gd -- <output folder>
 
-const WIDTH_UNITS: float = 1.6
-const HEIGHT_UNITS: float = 3.2
+const ImpostorSet: GDScript = preload("res://addons/sunflower_field/impostor_set.gd")
+const PartMeshes: GDScript = preload("res://addons/sunflower_field/part_meshes.gd")
 const PIXELS_PER_UNIT: float = 150.0
-const PARTS: Array[String] = ["bottom", "middle", "head"]
 
 
 func _init() -> void:
@@ -22,8 +21,10 @@ func _init() -> void:
 
 
 func _bake(out_dir: String) -> void:
+	var width_units: float = ImpostorSet.WIDTH_UNITS
+	var height_units: float = ImpostorSet.height_units()
 	var viewport: SubViewport = SubViewport.new()
-	viewport.size = Vector2i(roundi(WIDTH_UNITS * PIXELS_PER_UNIT), roundi(HEIGHT_UNITS * PIXELS_PER_UNIT))
+	viewport.size = Vector2i(roundi(width_units * PIXELS_PER_UNIT), roundi(height_units * PIXELS_PER_UNIT))
 	viewport.transparent_bg = true
 	viewport.msaa_3d = Viewport.MSAA_4X
 	viewport.own_world_3d = true
@@ -50,9 +51,10 @@ func _bake(out_dir: String) -> void:
 	albedo_only.shading_mode = BaseMaterial3D.SHADING_MODE_UNSHADED
 	albedo_only.cull_mode = BaseMaterial3D.CULL_DISABLED
 	var y: float = 0.0
-	for part: String in PARTS:
+	var parts: PartMeshes = PartMeshes.new()
+	for part: int in parts.get_parts_per_level():
 		var instance: MeshInstance3D = MeshInstance3D.new()
-		instance.mesh = load("res://addons/sunflower_field/meshes/sunflower_lod1_%s.res" % part)
+		instance.mesh = parts.get_mesh(0, part)
 		instance.position.y = y
 		instance.material_override = albedo_only
 		viewport.add_child(instance)
@@ -60,13 +62,13 @@ func _bake(out_dir: String) -> void:
 
 	var camera: Camera3D = Camera3D.new()
 	camera.projection = Camera3D.PROJECTION_ORTHOGONAL
-	camera.size = HEIGHT_UNITS
+	camera.size = height_units
 	camera.keep_aspect = Camera3D.KEEP_HEIGHT
 	viewport.add_child(camera)
 
 	var views: Dictionary = {
-		"front": [Vector3(0.0, HEIGHT_UNITS * 0.5, 10.0), Vector3(0.0, HEIGHT_UNITS * 0.5, 0.0)],
-		"side": [Vector3(10.0, HEIGHT_UNITS * 0.5, 0.0), Vector3(0.0, HEIGHT_UNITS * 0.5, 0.0)],
+		"front": [Vector3(0.0, height_units * 0.5, 10.0), Vector3(0.0, height_units * 0.5, 0.0)],
+		"side": [Vector3(10.0, height_units * 0.5, 0.0), Vector3(0.0, height_units * 0.5, 0.0)],
 	}
 	for view: String in views:
 		var from: Vector3 = views[view][0]

@@ -22,31 +22,22 @@ signal map_error(message: String)
 ## Emitted every frame while a field builds in the background; [param progress] runs from 0 to 1.
 signal build_progress(progress: float)
 
-## The three parts of a plant, bottom to top.
+## The three parts of a plant, bottom to top (the native core's part indices).
 enum Part { BOTTOM, MIDDLE, HEAD }
-## The five representations, most detailed first.
+## The five representations, most detailed first (the native core's levels).
 enum Lod { MESH_1, MESH_2, MESH_3, SPRITE, BILLBOARD }
 
-const MESH_LEVELS: int = 3
-const LOD_COUNT: int = 5
-const PART_NAMES: PackedStringArray = ["bottom", "middle", "head"]
-## Model units from a plant's root to the top of its head (three parts of one unit each).
-const MODEL_HEIGHT: float = 3.0
-## The impostor quads' size in model units; the baked textures frame exactly this.
-const IMPOSTOR_WIDTH: float = 1.6
-const IMPOSTOR_HEIGHT: float = 3.2
-## How far the sprite's top edge leans forward, like the nodding head, in model units.
-const SPRITE_LEAN: float = 0.12
-const ADDON_DIR: String = "res://addons/sunflower_field/"
+const Native: GDScript = preload("native.gd")
+const FieldBuild: GDScript = preload("field_build.gd")
+const FieldNodes: GDScript = preload("field_nodes.gd")
+const FieldObserver: GDScript = preload("field_observer.gd")
+const ImpostorSet: GDScript = preload("impostor_set.gd")
+const PartMeshes: GDScript = preload("part_meshes.gd")
 const DEFAULT_FRONT_TEXTURE: Texture2D = preload("textures/sunflower_front.png")
 const DEFAULT_SIDE_TEXTURE: Texture2D = preload("textures/sunflower_side.png")
-const IMPOSTOR_SHADER: Shader = preload("shaders/impostor.gdshader")
 ## Maps of at least this many bytes (about as many cells) build in the background when
 ## [member background_build] is on; smaller ones take a few milliseconds and build at once.
 const BACKGROUND_BUILD_MIN_BYTES: int = 65536
-## Plants in active chunks (those near the observer) from which their per-frame work is split over
-## [member worker_threads]; below it, waking threads costs more than it saves (core benchmark).
-const PARALLEL_MIN_PLANTS: int = 32768
 
 ## Fields building in the background now, for progress displays.
 static var _building: Array[SunflowerField] = []
@@ -64,9 +55,7 @@ static var _building: Array[SunflowerField] = []
 ## The size of one map character on the ground (thesis: 0.5 m, four plants per square metre).
 @export_range(0.05, 10.0, 0.01, "or_greater", "suffix:m") var cell_size: float = 0.5:
 	set(value):
-		if not is_finite(value) or value <= 0.0:
-			push_warning("SunflowerField.cell_size: %s is not a positive size; keeping %s" % [value, cell_size])
-			return
+		value = Native.accept("SunflowerField.cell_size", value, cell_size)
 		if value != cell_size:
 			cell_size = value
 			_queue_rebuild()
@@ -86,9 +75,7 @@ static var _building: Array[SunflowerField] = []
 ## Height of a plant from root to head.
 @export_range(0.1, 20.0, 0.01, "or_greater", "suffix:m") var plant_height: float = 2.0:
 	set(value):
-		if not is_finite(value) or value <= 0.0:
-			push_warning("SunflowerField.plant_height: %s is not a positive height; keeping %s" % [value, plant_height])
-			return
+		value = Native.accept("SunflowerField.plant_height", value, plant_height)
 		if value != plant_height:
 			plant_height = value
 			_queue_rebuild()
@@ -96,18 +83,21 @@ static var _building: Array[SunflowerField] = []
 ## for the thesis' "big stone". Keys are single characters.
 @export var legend: Dictionary = {}:
 	set(value):
-		legend = value
-		_queue_rebuild()
+		if value != legend:
+			legend = value
+			_queue_rebuild()
 ## Refuse maps with more sunflowers than this (0: the core's limit of 16 million).
 @export_range(0, 100000000, 1) var max_plants: int = 4000000:
 	set(value):
+		value = Native.accept_int("SunflowerField.max_plants", value, max_plants)
 		if value != max_plants:
-			max_plants = maxi(value, 0)
+			max_plants = value
 			_queue_rebuild()
 ## Side of the square chunks the far representations are grouped in.
-@export_range(2.0, 256.0, 1.0, "suffix:m") var chunk_size: float = 16.0:
+@export_range(2.0, 256.0, 1.0, "or_greater", "suffix:m") var chunk_size: float = 16.0:
 	set(value):
-		if is_finite(value) and value > 0.0 and value != chunk_size:
+		value = Native.accept("SunflowerField.chunk_size", value, chunk_size)
+		if value != chunk_size:
 			chunk_size = value
 			_queue_rebuild()
 
@@ -115,33 +105,33 @@ static var _building: Array[SunflowerField] = []
 ## Wind power p_w: 0 is calm, 1.0 ≈ 1 m/s, at most 100. Stored in [member wind].
 @export_range(0.0, 100.0, 0.1, "suffix:m/s") var wind_power: float:
 	get:
-		return _get_wind().power
+		return wind.power
 	set(value):
-		_get_wind().power = value
+		wind.power = value
 ## Where the wind blows to, on the ground (x, z). Stored in [member wind].
 @export var wind_direction: Vector2:
 	get:
-		return _get_wind().direction
+		return wind.direction
 	set(value):
-		_get_wind().direction = value
+		wind.direction = value
 ## What one step of [method increase_wind] / [method decrease_wind] changes the power by.
 ## Stored in [member wind].
 @export_range(0.0, 100.0, 0.1, "suffix:m/s") var wind_increment: float:
 	get:
-		return _get_wind().increment
+		return wind.increment
 	set(value):
-		_get_wind().increment = value
+		wind.increment = value
 ## The wind resource; share one between fields to give them the same weather.
-@export var wind: SunflowerWind:
-	get:
-		return _get_wind()
+@export var wind: SunflowerWind = SunflowerWind.new():
 	set(value):
-		if value == _wind:
+		if value == null:
+			value = SunflowerWind.new()
+		if value == wind:
 			return
-		if _wind and _wind.changed.is_connected(_on_wind_changed):
-			_wind.changed.disconnect(_on_wind_changed)
-		_wind = value if value else SunflowerWind.new()
-		_wind.changed.connect(_on_wind_changed)
+		if wind and wind.changed.is_connected(_on_wind_changed):
+			wind.changed.disconnect(_on_wind_changed)
+		wind = value
+		wind.changed.connect(_on_wind_changed)
 		_on_wind_changed()
 
 @export_group("Plant")
@@ -149,50 +139,57 @@ static var _building: Array[SunflowerField] = []
 @export var sprite_front_texture: Texture2D = DEFAULT_FRONT_TEXTURE:
 	set(value):
 		sprite_front_texture = value
-		_update_materials()
+		_impostors.set_texture("front", value)
 ## Texture of the sprite's side quad, with alpha.
 @export var sprite_side_texture: Texture2D = DEFAULT_SIDE_TEXTURE:
 	set(value):
 		sprite_side_texture = value
-		_update_materials()
+		_impostors.set_texture("side", value)
 ## Texture of the billboard, with alpha.
 @export var billboard_texture: Texture2D = DEFAULT_FRONT_TEXTURE:
 	set(value):
 		billboard_texture = value
-		_update_materials()
+		_impostors.set_texture("billboard", value)
 ## Alpha below which sprite and billboard pixels are discarded (thesis: 190/255).
 @export_range(0.0, 1.0, 0.001) var alpha_scissor: float = 190.0 / 255.0:
 	set(value):
-		alpha_scissor = clampf(value, 0.0, 1.0) if is_finite(value) else 190.0 / 255.0
-		_update_materials()
+		alpha_scissor = Native.accept("SunflowerField.alpha_scissor", value, alpha_scissor)
+		_impostors.set_shared(&"alpha_scissor", alpha_scissor)
 
 @export_group("Level of detail")
 ## Switch distances: mesh 1 → 2, mesh 2 → 3, mesh 3 → sprite, sprite → billboard (thesis:
 ## 6, 10, 20, 25 m). Must increase.
 @export var lod_distances: PackedFloat32Array = PackedFloat32Array([6.0, 10.0, 20.0, 25.0]):
 	set(value):
-		var problem: String = _check_distances(value)
+		var problem: String = Native.check_lod_distances(value)
 		if not problem.is_empty():
 			push_warning("SunflowerField.lod_distances: %s; keeping %s" % [problem, lod_distances])
 			return
-		lod_distances = value
-		_configure_lod()
-		_apply_visibility_ranges()
+		if value != lod_distances:
+			lod_distances = value
+			_configure_lod()
+			_apply_ranges()
 ## Hysteresis on every switch: less detail this much later, more detail this much earlier.
-@export_range(0.0, 5.0, 0.05, "suffix:m") var lod_hysteresis: float = 0.5:
+@export_range(0.0, 5.0, 0.05, "or_greater", "suffix:m") var lod_hysteresis: float = 0.5:
 	set(value):
-		lod_hysteresis = maxf(value, 0.0) if is_finite(value) else 0.5
-		_configure_lod()
+		value = Native.accept("SunflowerField.lod_hysteresis", value, lod_hysteresis)
+		if value != lod_hysteresis:
+			lod_hysteresis = value
+			_configure_lod()
 ## Seconds between LOD updates (thesis: 0.25 s). Plants move every frame regardless.
-@export_range(0.0, 2.0, 0.01, "suffix:s") var lod_interval: float = 0.25:
+@export_range(0.0, 2.0, 0.01, "or_greater", "suffix:s") var lod_interval: float = 0.25:
 	set(value):
-		lod_interval = maxf(value, 0.0) if is_finite(value) else 0.25
-		_configure_lod()
+		value = Native.accept("SunflowerField.lod_interval", value, lod_interval)
+		if value != lod_interval:
+			lod_interval = value
+			_configure_lod()
 ## Draw every plant as one representation, whatever its distance (for benchmarks and debugging).
 @export_enum("Automatic:-1", "Mesh 1:0", "Mesh 2:1", "Mesh 3:2", "Sprite:3", "Billboard:4") var force_lod: int = -1:
 	set(value):
-		force_lod = clampi(value, -1, LOD_COUNT - 1)
-		_configure_lod()
+		value = Native.accept_int("SunflowerField.force_lod", value, force_lod)
+		if value != force_lod:
+			force_lod = value
+			_configure_lod()
 ## Skip writing plants outside the observer camera's view (the engine culls the far chunks itself).
 @export var frustum_culling: bool = true
 ## Beyond this distance, draw only a share of the impostors, falling with the square of the
@@ -200,18 +197,20 @@ static var _building: Array[SunflowerField] = []
 ## Done on the GPU, so it costs no CPU time. 0 turns thinning off.
 @export_range(0.0, 1000.0, 1.0, "or_greater", "suffix:m") var thinning_distance: float = 0.0:
 	set(value):
-		thinning_distance = maxf(value, 0.0) if is_finite(value) else 0.0
-		_update_materials()
+		thinning_distance = Native.accept("SunflowerField.thinning_distance", value, thinning_distance)
+		_impostors.set_shared(&"thinning_start", thinning_distance)
 ## The least share of impostors drawn far away, with thinning on.
 @export_range(0.01, 1.0, 0.01) var thinning_min_density: float = 0.25:
 	set(value):
-		thinning_min_density = clampf(value, 0.01, 1.0) if is_finite(value) else 0.25
-		_update_materials()
+		thinning_min_density = Native.accept("SunflowerField.thinning_min_density", value, thinning_min_density)
+		_impostors.set_shared(&"thinning_min_density", thinning_min_density)
 ## Billboards beyond this distance are not drawn (0: no limit).
 @export_range(0.0, 10000.0, 1.0, "or_greater", "suffix:m") var max_draw_distance: float = 0.0:
 	set(value):
-		max_draw_distance = maxf(value, 0.0) if is_finite(value) else 0.0
-		_apply_visibility_ranges()
+		value = Native.accept("SunflowerField.max_draw_distance", value, max_draw_distance)
+		if value != max_draw_distance:
+			max_draw_distance = value
+			_apply_ranges()
 
 @export_group("Performance")
 ## Build large maps without stalling: the map is read and laid out on a worker thread, then the
@@ -224,15 +223,17 @@ static var _building: Array[SunflowerField] = []
 ## anyway (software rendering), a step may take up to half the last frame's time, at most 100 ms.
 @export_range(1.0, 100.0, 0.5, "suffix:ms") var build_budget_ms: float = 8.0:
 	set(value):
-		build_budget_ms = clampf(value, 1.0, 100.0) if is_finite(value) else 8.0
+		build_budget_ms = Native.accept("SunflowerField.build_budget_ms", value, build_budget_ms)
 ## Threads that move the plants near the observer, the main thread included: 0 uses the machine's
-## cores (at most 4), 1 keeps the work on the main thread. The work is split only when at least
-## [constant PARALLEL_MIN_PLANTS] plants are near; the result is the same either way.
+## cores (at most 4), 1 keeps the work on the main thread. The work is split only when enough plants
+## are near ([code]SunflowerSimulation.PARALLEL_MIN_PLANTS[/code]); the result is the same either way.
 @export_range(0, 16) var worker_threads: int = 0:
 	set(value):
-		worker_threads = clampi(value, 0, 16)
-		if _built_plants >= 0:
-			_simulation.set_worker_threads(worker_threads, PARALLEL_MIN_PLANTS)
+		value = Native.accept_int("SunflowerField.worker_threads", value, worker_threads)
+		if value != worker_threads:
+			worker_threads = value
+			if _drawn:
+				_drawn.simulation.set_worker_threads(worker_threads)
 
 @export_group("Observer")
 ## The node distances are measured from. Empty: the viewport's active camera (in the editor, the
@@ -242,56 +243,26 @@ static var _building: Array[SunflowerField] = []
 		observer = value
 		update_configuration_warnings()
 
-var _wind: SunflowerWind
-var _simulation: SunflowerSimulation
-## Part meshes by [code]level * 3 + part[/code]; null entries use the default models.
-var _part_meshes: Array[Mesh] = []
-var _built_plants: int = -1
-var _rebuild_queued: bool = false
-var _dynamic_nodes: Array[MultiMeshInstance3D] = []
-var _chunk_nodes: Array[MultiMeshInstance3D] = []
-var _object_nodes: Array[Node] = []
-var _materials: Dictionary = {}
-var _impostor_meshes: Dictionary = {}
-var _last_error: String = ""
-## The field being built (drawn once complete), the worker's job, and the chunk nodes made so far.
-var _pending: SunflowerSimulation
-var _pending_job: BuildJob
-var _pending_task: int = -1
-var _pending_nodes: Array[MultiMeshInstance3D] = []
+## The shared look of the far levels.
+var _impostors: ImpostorSet = ImpostorSet.new()
+## The meshes the near levels draw.
+var _parts: PartMeshes = PartMeshes.new()
+## The field drawn now (its simulation and nodes), and the build of the next one.
+var _drawn: FieldNodes
+var _build: FieldBuild
 var _build_stats: Dictionary = {}
-
-
-## A field's map read and laid out, on a worker thread or not. Holds its own copies of the inputs,
-## so the node may change (or go) meanwhile; the node waits for the task before dropping the job.
-class BuildJob:
-	extends RefCounted
-	var simulation: SunflowerSimulation = SunflowerSimulation.new()
-	var text: PackedByteArray
-	var source: String
-	var legend: String
-	var max_plants: int
-	var cell_size: float
-	var seed: int
-	var independent_jitter: bool
-	var chunk_size: float
-	var part_scale: float
-	var error: String = ""
-	var usec: int = 0
-
-	func run() -> void:
-		var start: int = Time.get_ticks_usec()
-		error = simulation.load_map(text, source, legend, max_plants)
-		if error.is_empty():
-			simulation.set_layout(cell_size, seed, independent_jitter, chunk_size)
-			simulation.set_plant_shape(part_scale, 1.9, 3.2)
-		usec = Time.get_ticks_usec() - start
+var _rebuild_queued: bool = false
+var _last_error: String = ""
 
 
 func _init() -> void:
-	_simulation = SunflowerSimulation.new()  # empty until the first build is put in its place
-	_part_meshes.resize(MESH_LEVELS * 3)
-	_get_wind()
+	wind.changed.connect(_on_wind_changed)
+	_impostors.set_texture("front", sprite_front_texture)
+	_impostors.set_texture("side", sprite_side_texture)
+	_impostors.set_texture("billboard", billboard_texture)
+	_impostors.set_shared(&"alpha_scissor", alpha_scissor)
+	_impostors.set_shared(&"thinning_start", thinning_distance)
+	_impostors.set_shared(&"thinning_min_density", thinning_min_density)
 
 
 func _ready() -> void:
@@ -301,17 +272,17 @@ func _ready() -> void:
 func _notification(what: int) -> void:
 	if what == NOTIFICATION_PREDELETE:
 		_cancel_build()
-		_clear_field()
+		_show(null)
 
 
 func _process(delta: float) -> void:
 	if _rebuild_queued:
 		_rebuild(true)
-	if _pending:
+	if _build:
 		_step_build(int(1000.0 * maxf(build_budget_ms, minf(delta * 500.0, 100.0))))
-	if _built_plants > 0:
+	if get_plant_count() > 0:
 		_push_observer()
-		_simulation.update(delta)
+		_drawn.simulation.update(delta)
 
 
 ## Reads a map from [param path] ([code]res://[/code], [code]user://[/code] or an absolute path)
@@ -324,7 +295,7 @@ func load_map_file(path: String, background: bool = false) -> Error:
 	if field_map == null:
 		_report_map_error(errors[0])
 		return ERR_FILE_CANT_OPEN
-	var message: String = field_map.check(_legend_symbols(), max_plants)
+	var message: String = field_map.check(FieldNodes.legend_symbols(legend), max_plants)
 	if not message.is_empty():
 		_report_map_error(message)
 		return ERR_PARSE_ERROR
@@ -336,23 +307,21 @@ func load_map_file(path: String, background: bool = false) -> Error:
 ## Whether a new field is due (a change waits for the next frame) or being built in the
 ## background; the previous field is drawn meanwhile.
 func is_building() -> bool:
-	return _pending != null or (_rebuild_queued and is_inside_tree())
+	return _build != null or (_rebuild_queued and is_inside_tree())
 
 
 ## How far the coming field is, from 0 to 1 (1 when no build is due or running).
 func get_build_progress() -> float:
-	if _pending == null:
+	if _build == null:
 		return 0.0 if is_building() else 1.0
-	if _pending_task >= 0:
-		return 0.0
-	return 0.1 + 0.9 * _pending_nodes.size() / maxf(2.0 * _pending.get_chunk_count(), 1.0)
+	return _build.get_progress()
 
 
 ## Completes a running background build now, blocking until the field is ready.
 func finish_build() -> void:
 	if _rebuild_queued:
 		_rebuild()
-	if _pending:
+	if _build:
 		_step_build(-1)
 
 
@@ -375,15 +344,17 @@ static func get_building_fields() -> Array[SunflowerField]:
 
 ## Number of plants in the field.
 func get_plant_count() -> int:
-	return maxi(_built_plants, 0)
+	return _drawn.simulation.get_plant_count() if _drawn else 0
 
 
 ## Plants per representation (mesh 1, mesh 2, mesh 3, sprite, billboard). Every plant is counted
 ## once, whether or not it is in view.
 func get_lod_counts() -> PackedInt32Array:
-	if _built_plants <= 0:
-		return PackedInt32Array([0, 0, 0, 0, 0])
-	return _simulation.get_lod_counts()
+	if get_plant_count() == 0:
+		var zeros: PackedInt32Array = PackedInt32Array()
+		zeros.resize(Lod.size())
+		return zeros
+	return _drawn.simulation.get_lod_counts()
 
 
 ## A plant's state in the field's space: [code]position[/code] (Vector3, its root),
@@ -393,22 +364,10 @@ func get_plant_info(index: int) -> Dictionary:
 	if index < 0 or index >= get_plant_count():
 		push_error("SunflowerField.get_plant_info: index %d is out of range (%d plants)" % [index, get_plant_count()])
 		return {}
-	var flat: PackedFloat32Array = _simulation.get_plant_parts(index)
-	var parts: Array[Transform3D] = []
-	for part: int in 3:
-		var o: int = part * 12
-		parts.append(
-			Transform3D(
-				Vector3(flat[o], flat[o + 4], flat[o + 8]),
-				Vector3(flat[o + 1], flat[o + 5], flat[o + 9]),
-				Vector3(flat[o + 2], flat[o + 6], flat[o + 10]),
-				Vector3(flat[o + 3], flat[o + 7], flat[o + 11])
-			)
-		)
 	return {
-		"position": _simulation.get_plant_position(index),
-		"lod": _simulation.get_plant_lod(index),
-		"parts": parts,
+		"position": _drawn.simulation.get_plant_position(index),
+		"lod": _drawn.simulation.get_plant_lod(index),
+		"parts": Native.unpack_transforms(_drawn.simulation.get_plant_parts(index)),
 	}
 
 
@@ -416,32 +375,24 @@ func get_plant_info(index: int) -> Dictionary:
 ## itself every frame).
 func advance(delta: float) -> void:
 	finish_build()
-	if _built_plants > 0:
+	if get_plant_count() > 0:
 		_push_observer()
-		_simulation.update(delta)
+		_drawn.simulation.update(delta)
 
 
 ## Replaces one part mesh, like the thesis' [code]setSunflower[/code]: [param lod] 0–2 (mesh level),
 ## [param part] 0–2 (see [enum Part]). [code]null[/code] restores the default model. Parts are
 ## modelled with their root at the origin and height 1 along +y.
 func set_part_mesh(lod: int, part: int, mesh: Mesh) -> void:
-	if lod < 0 or lod >= MESH_LEVELS or part < 0 or part >= 3:
-		push_error("SunflowerField.set_part_mesh: lod %d / part %d is out of range (0–2 each)" % [lod, part])
-		return
-	_part_meshes[lod * 3 + part] = mesh
-	if lod * 3 + part < _dynamic_nodes.size():
-		_dynamic_nodes[lod * 3 + part].multimesh.mesh = get_part_mesh(lod, part)
+	if _parts.check(lod, part, "set_part_mesh"):
+		_parts.choose(lod, part, mesh)
+		if _drawn:
+			_drawn.set_part_mesh(lod, part, _parts.get_mesh(lod, part))
 
 
 ## The mesh drawn for a part (the default model where none was set).
 func get_part_mesh(lod: int, part: int) -> Mesh:
-	if lod < 0 or lod >= MESH_LEVELS or part < 0 or part >= 3:
-		push_error("SunflowerField.get_part_mesh: lod %d / part %d is out of range (0–2 each)" % [lod, part])
-		return null
-	var mesh: Mesh = _part_meshes[lod * 3 + part]
-	if mesh:
-		return mesh
-	return load("%smeshes/sunflower_lod%d_%s.res" % [ADDON_DIR, lod + 1, PART_NAMES[part]]) as Mesh
+	return _parts.get_mesh(lod, part) if _parts.check(lod, part, "get_part_mesh") else null
 
 
 ## Adds [member wind_increment] to the wind power.
@@ -454,13 +405,16 @@ func decrease_wind() -> void:
 	wind_power = wind_power - wind_increment
 
 
-## The native simulation behind the field (for tools and tests).
-func get_simulation() -> SunflowerSimulation:
-	return _simulation
+## The native simulation behind the field drawn now ([code]SunflowerSimulation[/code], for tools and
+## tests), or null before the first field is built.
+func get_simulation() -> RefCounted:
+	return _drawn.simulation if _drawn else null
 
 
 func _get_configuration_warnings() -> PackedStringArray:
 	var warnings: PackedStringArray = []
+	if not Native.is_available():
+		warnings.append(Native.missing_message())
 	if map == null:
 		warnings.append("No map: import a .field file and assign it to 'map', or call load_map_file().")
 	elif _last_error != "":
@@ -474,109 +428,129 @@ func _get_configuration_warnings() -> PackedStringArray:
 	return warnings
 
 
+# --- Part meshes as inspector properties ---------------------------------------------------------
+
+
 func _get_property_list() -> Array[Dictionary]:
-	var properties: Array[Dictionary] = []
-	properties.append(
-		{"name": "Part meshes", "type": TYPE_NIL, "usage": PROPERTY_USAGE_GROUP, "hint_string": "part_meshes/"}
-	)
-	for lod: int in MESH_LEVELS:
-		for part: int in 3:
-			(
-				properties
-				. append(
-					{
-						"name": "part_meshes/mesh_%d/%s" % [lod + 1, PART_NAMES[part]],
-						"type": TYPE_OBJECT,
-						"hint": PROPERTY_HINT_RESOURCE_TYPE,
-						"hint_string": "Mesh",
-						"usage": PROPERTY_USAGE_DEFAULT,
-					}
-				)
-			)
-	return properties
+	return _parts.list_properties()
 
 
 func _get(property: StringName) -> Variant:
-	var slot: int = _part_slot(property)
-	if slot >= 0:
-		return _part_meshes[slot]
-	return null
+	var slot: int = _parts.slot_of(property)
+	return _parts.get_chosen(slot) if slot >= 0 else null
 
 
 func _set(property: StringName, value: Variant) -> bool:
-	var slot: int = _part_slot(property)
+	var slot: int = _parts.slot_of(property)
 	if slot < 0:
 		return false
 	if value != null and not (value is Mesh):
 		push_warning("SunflowerField.%s: %s is not a Mesh; using the default part" % [property, value])
 		value = null
-	set_part_mesh(slot / 3, slot % 3, value as Mesh)
+	var per_level: int = _parts.get_parts_per_level()
+	set_part_mesh(slot / per_level, slot % per_level, value as Mesh)
 	return true
 
 
 func _property_can_revert(property: StringName) -> bool:
-	return _part_slot(property) >= 0
+	return _parts.slot_of(property) >= 0
 
 
 func _property_get_revert(_property: StringName) -> Variant:
 	return null  # the default model
 
 
-# --- Building ---------------------------------------------------------------------------------
+# --- Building -------------------------------------------------------------------------------------
 
 
-func _part_slot(property: StringName) -> int:
-	var text: String = property
-	if not text.begins_with("part_meshes/mesh_"):
-		return -1
-	var pieces: PackedStringArray = text.trim_prefix("part_meshes/mesh_").split("/")
-	if pieces.size() != 2 or not pieces[0].is_valid_int():
-		return -1
-	var lod: int = pieces[0].to_int() - 1
-	var part: int = PART_NAMES.find(pieces[1])
-	if lod < 0 or lod >= MESH_LEVELS or part < 0:
-		return -1
-	return lod * 3 + part
+func _queue_rebuild() -> void:
+	_rebuild_queued = true
 
 
-func _get_wind() -> SunflowerWind:
-	if _wind == null:
-		_wind = SunflowerWind.new()
-		_wind.changed.connect(_on_wind_changed)
-	return _wind
+## Starts a build of the field from [member map] (in the background when asked and the map is
+## large), or clears the field when there is no map.
+func _rebuild(background: bool = false) -> void:
+	_rebuild_queued = false
+	if not is_inside_tree():
+		_rebuild_queued = true
+		return
+	_cancel_build()
+	var simulation: RefCounted = Native.create_simulation() if map else null
+	if simulation == null:
+		_show(null)
+		return
+	var job: FieldBuild.Job = FieldBuild.Job.for_field(self, simulation)
+	background = background and background_build and map.text.size() >= BACKGROUND_BUILD_MIN_BYTES
+	_build = FieldBuild.new(self, _impostors, job, background)
+	if background:
+		_building.append(self)
+		build_progress.emit(0.0)
+	else:
+		_step_build(-1)
 
 
-func _on_wind_changed() -> void:
-	if _simulation:
-		_simulation.set_wind(_wind.power, _wind.direction)
-		_simulation.set_wind_dynamics(_wind.get_dynamics())
+## One step of the running build within [param budget_usec] (negative: to the end); the last step
+## puts the new field in place of the old.
+func _step_build(budget_usec: int) -> void:
+	if not _build.step(budget_usec, lod_distances[3], max_draw_distance):
+		if _build.get_progress() > 0.0:  # not while the worker reads the map
+			build_progress.emit(_build.get_progress())
+		return
+	var message: String = _build.get_error()
+	if not message.is_empty():
+		_cancel_build()
+		_report_map_error(message)  # the current field stays
+		return
+	var start: int = Time.get_ticks_usec()
+	var build: FieldBuild = _build
+	_build = null
+	_building.erase(self)
+	_show(build.nodes)
+	build.add_main_thread_time(start)
+	_build_stats = build.get_stats()
+	_last_error = ""
+	update_configuration_warnings()
+	if build.background:
+		build_progress.emit(1.0)
+	field_built.emit(get_plant_count())
 
 
-func _configure_lod() -> void:
-	if _simulation:
-		_simulation.set_lod(lod_distances, lod_hysteresis, lod_interval, force_lod)
+## Draws [param nodes] (a completed build's) in place of the field drawn now; null draws nothing.
+func _show(nodes: FieldNodes) -> void:
+	if _drawn:
+		_drawn.free_nodes()
+	_drawn = nodes
+	_free_foreign_children()
+	if _drawn == null:
+		return
+	_drawn.finish(_parts.get_all(), legend, cell_size, plant_height * 0.5)
+	_on_wind_changed()
+	_configure_lod()
+	_drawn.simulation.set_worker_threads(worker_threads)
+	_push_observer()
+	_drawn.simulation.update(0.0)
 
 
-func _check_distances(distances: PackedFloat32Array) -> String:
-	if distances.size() != 4:
-		return "needs 4 distances, got %d" % distances.size()
-	for i: int in 4:
-		if not is_finite(distances[i]) or distances[i] <= 0.0:
-			return "distance %d (%s) is not a positive number" % [i + 1, distances[i]]
-		if i > 0 and distances[i] <= distances[i - 1]:
-			return "distances must increase (%s after %s)" % [distances[i], distances[i - 1]]
-	return ""
+## Frees internal children that belong to no field of this node: copies that duplicate() made of
+## another field's nodes.
+func _free_foreign_children() -> void:
+	var spared: Dictionary = {}
+	for node: Node in get_children(false):
+		spared[node] = true  # the user's own children
+	for nodes: FieldNodes in [_drawn, _build.nodes if _build else null]:
+		if nodes:
+			nodes.collect(spared)
+	for node: Node in get_children(true):
+		if not spared.has(node):
+			node.free()
 
 
-func _legend_symbols() -> String:
-	var symbols: String = ""
-	for key: Variant in legend:
-		var symbol: String = str(key)
-		if symbol.length() != 1 or symbol in ["*", " ", "."]:
-			push_warning("SunflowerField.legend: key '%s' must be one character other than '*', ' ' and '.'" % symbol)
-			continue
-		symbols += symbol
-	return symbols
+## Stops a running build (waiting for its worker) and frees what it made; the current field stays.
+func _cancel_build() -> void:
+	if _build:
+		_build.cancel()
+		_build = null
+	_building.erase(self)
 
 
 func _report_map_error(message: String) -> void:
@@ -586,341 +560,28 @@ func _report_map_error(message: String) -> void:
 	update_configuration_warnings()
 
 
-func _queue_rebuild() -> void:
-	_rebuild_queued = true
+# --- Configuration and the observer ----------------------------------------------------------------
 
 
-func _rebuild(background: bool = false) -> void:
-	_rebuild_queued = false
-	if not is_inside_tree():
-		_rebuild_queued = true
-		return
-	_cancel_build()
-	if map == null:
-		_clear_field()
-		_simulation.clear()
-		return
-	var job: BuildJob = BuildJob.new()
-	job.text = map.text
-	job.source = map.source_path
-	job.legend = _legend_symbols()
-	job.max_plants = max_plants
-	job.cell_size = cell_size
-	job.seed = seed
-	job.independent_jitter = independent_jitter
-	job.chunk_size = chunk_size
-	job.part_scale = plant_height / MODEL_HEIGHT
-	_pending_job = job
-	_pending = job.simulation
-	background = background and background_build and map.text.size() >= BACKGROUND_BUILD_MIN_BYTES
-	_build_stats = {
-		"background": background,
-		"frames": 0,
-		"longest_step_ms": 0.0,
-		"main_thread_ms": 0.0,
-		"worker_ms": 0.0,
-		"start_usec": Time.get_ticks_usec(),
-	}
-	if background:
-		_pending_task = WorkerThreadPool.add_task(job.run, false, "SunflowerField: " + job.source.get_file())
-		_building.append(self)
-		build_progress.emit(0.0)
-	else:
-		job.run()
-		_step_build(-1)
+func _apply_ranges() -> void:
+	for nodes: FieldNodes in [_drawn, _build.nodes if _build else null]:
+		if nodes:
+			nodes.apply_ranges(lod_distances[3], max_draw_distance)
 
 
-## One step of a build: waits for the worker (unless [param budget_usec] ≥ 0 and it is still
-## running), then makes chunk nodes until the budget is spent; the last step puts the new field in
-## place of the old. A negative budget completes the build.
-func _step_build(budget_usec: int) -> void:
-	var start: int = Time.get_ticks_usec()
-	if _pending_task >= 0:
-		if budget_usec >= 0 and not WorkerThreadPool.is_task_completed(_pending_task):
-			_build_stats["frames"] += 1
-			return
-		WorkerThreadPool.wait_for_task_completion(_pending_task)
-		_pending_task = -1
-	if not _pending_job.error.is_empty():
-		var message: String = _pending_job.error
-		_cancel_build()
-		_report_map_error(message)  # the current field stays
-		return
-	var switch_distance: float = lod_distances[3]
-	var chunk_count: int = _pending.get_chunk_count()
-	while _pending_nodes.size() < 2 * chunk_count:
-		var chunk: int = _pending_nodes.size() / 2
-		var aabb: AABB = _pending.get_chunk_aabb(chunk)
-		var sprite: MultiMeshInstance3D = _make_multimesh_node("ChunkSprites%d" % chunk, _impostor_mesh("sprite"), aabb)
-		var billboard: MultiMeshInstance3D = _make_multimesh_node(
-			"ChunkBillboards%d" % chunk, _impostor_mesh("billboard"), aabb
-		)
-		billboard.cast_shadow = GeometryInstance3D.SHADOW_CASTING_SETTING_OFF
-		sprite.visible = false  # shown when the whole field is ready
-		billboard.visible = false
-		_pending_nodes.append_array([sprite, billboard])
-		_set_chunk_ranges(sprite, billboard, switch_distance)
-		_pending.set_chunk_multimeshes(chunk, sprite.multimesh.get_rid(), billboard.multimesh.get_rid())
-		if budget_usec >= 0 and Time.get_ticks_usec() - start >= budget_usec:
-			break
-	var step_ms: float = (Time.get_ticks_usec() - start) / 1000.0
-	_build_stats["frames"] += 1
-	_build_stats["main_thread_ms"] += step_ms
-	_build_stats["longest_step_ms"] = maxf(_build_stats["longest_step_ms"], step_ms)
-	if _pending_nodes.size() < 2 * chunk_count:
-		build_progress.emit(get_build_progress())
-		return
-	_put_in_place()
+func _on_wind_changed() -> void:
+	if _drawn:
+		wind.apply_to(_drawn.simulation)
 
 
-## Replaces the drawn field by the built one.
-func _put_in_place() -> void:
-	var start: int = Time.get_ticks_usec()
-	var chunk_nodes: Array[MultiMeshInstance3D] = _pending_nodes.duplicate()
-	_pending_nodes.clear()
-	_clear_field(chunk_nodes)
-	_simulation = _pending
-	_build_stats["worker_ms"] = _pending_job.usec / 1000.0
-	_pending = null
-	_pending_job = null
-	_building.erase(self)
-	_last_error = ""
-	_chunk_nodes = chunk_nodes
-	for node: MultiMeshInstance3D in _chunk_nodes:
-		node.visible = true
-	_on_wind_changed()
-	_configure_lod()
-	_simulation.set_worker_threads(worker_threads, PARALLEL_MIN_PLANTS)
-	_build_dynamic_nodes()
-	_build_objects()
-	_built_plants = _simulation.get_plant_count()
-	_push_observer()
-	_simulation.update(0.0)
-	var step_ms: float = (Time.get_ticks_usec() - start) / 1000.0
-	_build_stats["main_thread_ms"] += step_ms
-	_build_stats["longest_step_ms"] = maxf(_build_stats["longest_step_ms"], step_ms)
-	_build_stats["total_ms"] = (Time.get_ticks_usec() - _build_stats["start_usec"]) / 1000.0
-	_build_stats.erase("start_usec")
-	update_configuration_warnings()
-	if _build_stats["background"]:
-		build_progress.emit(1.0)
-	field_built.emit(_built_plants)
-
-
-## Stops a running build (waiting for its worker) and frees what it made; the current field stays.
-func _cancel_build() -> void:
-	if _pending_task >= 0:
-		WorkerThreadPool.wait_for_task_completion(_pending_task)
-		_pending_task = -1
-	for node: MultiMeshInstance3D in _pending_nodes:
-		if is_instance_valid(node):
-			node.free()
-	_pending_nodes.clear()
-	if _pending:
-		_pending.release_multimeshes()
-	_pending = null
-	_pending_job = null
-	_building.erase(self)
-
-
-## Frees the drawn field's nodes (and any internal child other than [param keep]).
-func _clear_field(keep: Array[MultiMeshInstance3D] = []) -> void:
-	if _simulation:
-		_simulation.release_multimeshes()
-	# Every internal child is ours; this also drops copies made by duplicate().
-	var spared: Dictionary = {}
-	for node: Node in get_children(false):
-		spared[node] = true
-	for node: Node in keep:
-		spared[node] = true
-	for node: Node in get_children(true):
-		if not spared.has(node):
-			node.free()
-	_dynamic_nodes.clear()
-	_chunk_nodes.clear()
-	_object_nodes.clear()
-	_built_plants = -1
-
-
-## Makes the impostor materials once; they are shared by the drawn field and one being built.
-func _build_materials() -> void:
-	if not _materials.is_empty():
-		return
-	for key: String in ["front", "side", "billboard"]:
-		var material: ShaderMaterial = ShaderMaterial.new()
-		material.shader = IMPOSTOR_SHADER
-		_materials[key] = material
-	_update_materials()
-
-
-func _update_materials() -> void:
-	var textures: Dictionary = {
-		"front": sprite_front_texture, "side": sprite_side_texture, "billboard": billboard_texture
-	}
-	for key: String in _materials:
-		var material: ShaderMaterial = _materials[key]
-		if textures[key] == null:
-			push_warning("SunflowerField: no %s texture; that impostor is drawn untextured" % key)
-		material.set_shader_parameter("albedo_texture", textures[key])
-		material.set_shader_parameter("alpha_scissor", alpha_scissor)
-		material.set_shader_parameter("face_observer", key == "billboard")
-		material.set_shader_parameter("thinning_start", thinning_distance)
-		material.set_shader_parameter("thinning_min_density", thinning_min_density)
-
-
-func _field_aabb() -> AABB:
-	var box: AABB = AABB()
-	for chunk: int in _simulation.get_chunk_count():
-		var chunk_box: AABB = _simulation.get_chunk_aabb(chunk)
-		box = chunk_box if chunk == 0 else box.merge(chunk_box)
-	return box.grow(plant_height * 0.5)
-
-
-func _make_multimesh_node(node_name: String, mesh: Mesh, aabb: AABB) -> MultiMeshInstance3D:
-	var multimesh: MultiMesh = MultiMesh.new()
-	multimesh.transform_format = MultiMesh.TRANSFORM_3D
-	multimesh.mesh = mesh
-	multimesh.custom_aabb = aabb
-	var node: MultiMeshInstance3D = MultiMeshInstance3D.new()
-	node.name = node_name
-	node.multimesh = multimesh
-	node.custom_aabb = aabb
-	add_child(node, false, Node.INTERNAL_MODE_BACK)
-	return node
-
-
-func _build_dynamic_nodes() -> void:
-	var aabb: AABB = _field_aabb()
-	for lod: int in MESH_LEVELS:
-		for part: int in 3:
-			var node: MultiMeshInstance3D = _make_multimesh_node(
-				"Mesh%d%s" % [lod + 1, PART_NAMES[part].capitalize()], get_part_mesh(lod, part), aabb
-			)
-			_dynamic_nodes.append(node)
-	var sprite: MultiMeshInstance3D = _make_multimesh_node("Sprites", _impostor_mesh("sprite"), aabb)
-	var billboard: MultiMeshInstance3D = _make_multimesh_node("Billboards", _impostor_mesh("billboard"), aabb)
-	billboard.cast_shadow = GeometryInstance3D.SHADOW_CASTING_SETTING_OFF
-	_dynamic_nodes.append_array([sprite, billboard])
-	for bucket: int in _dynamic_nodes.size():
-		_simulation.set_bucket_multimesh(bucket, _dynamic_nodes[bucket].multimesh.get_rid())
-
-
-func _set_chunk_ranges(sprite: MultiMeshInstance3D, billboard: MultiMeshInstance3D, switch_distance: float) -> void:
-	sprite.visibility_range_end = switch_distance
-	billboard.visibility_range_begin = switch_distance
-	billboard.visibility_range_end = max_draw_distance
-
-
-func _apply_visibility_ranges() -> void:
-	for nodes: Array[MultiMeshInstance3D] in [_chunk_nodes, _pending_nodes]:
-		for i: int in range(0, nodes.size() - 1, 2):
-			_set_chunk_ranges(nodes[i], nodes[i + 1], lod_distances[3])
-
-
-func _build_objects() -> void:
-	var objects: PackedInt32Array = _simulation.get_map_objects()
-	for i: int in range(0, objects.size(), 3):
-		var symbol: String = String.chr(objects[i + 2])
-		var scene: PackedScene = legend.get(symbol) as PackedScene
-		if scene == null:
-			push_warning(
-				(
-					"SunflowerField.legend: '%s' has no PackedScene; cell (%d, %d) stays empty"
-					% [symbol, objects[i], objects[i + 1]]
-				)
-			)
-			continue
-		var instance: Node = scene.instantiate()
-		instance.name = "%s_%d_%d" % [instance.name, objects[i], objects[i + 1]]
-		if instance is Node3D:
-			(instance as Node3D).position = Vector3(
-				(objects[i] + 0.5) * cell_size, 0.0, (objects[i + 1] + 0.5) * cell_size
-			)
-		add_child(instance, false, Node.INTERNAL_MODE_BACK)
-		_object_nodes.append(instance)
-
-
-## The sprite or billboard mesh, made once per field.
-func _impostor_mesh(kind: String) -> ArrayMesh:
-	if not _impostor_meshes.has(kind):
-		_build_materials()
-		_impostor_meshes[kind] = _sprite_mesh() if kind == "sprite" else _billboard_mesh()
-	return _impostor_meshes[kind]
-
-
-## Two crossed quads (front texture facing +z, side texture facing +x); the top edge leans
-## forward like the nodding head (thesis 3.2.3).
-func _sprite_mesh() -> ArrayMesh:
-	var w: float = IMPOSTOR_WIDTH * 0.5
-	var h: float = IMPOSTOR_HEIGHT
-	var mesh: ArrayMesh = ArrayMesh.new()
-	_add_quad(
-		mesh,
-		[Vector3(-w, 0, 0), Vector3(w, 0, 0), Vector3(w, h, SPRITE_LEAN), Vector3(-w, h, SPRITE_LEAN)],
-		Vector3(0, 0, 1),
-		_materials["front"]
-	)
-	_add_quad(
-		mesh,
-		[Vector3(0, 0, w), Vector3(0, 0, -w), Vector3(SPRITE_LEAN, h, -w), Vector3(SPRITE_LEAN, h, w)],
-		Vector3(1, 0, 0),
-		_materials["side"]
-	)
-	return mesh
-
-
-## One quad; the shader turns it about y to face the observer.
-func _billboard_mesh() -> ArrayMesh:
-	var w: float = IMPOSTOR_WIDTH * 0.5
-	var h: float = IMPOSTOR_HEIGHT
-	var mesh: ArrayMesh = ArrayMesh.new()
-	_add_quad(
-		mesh,
-		[Vector3(-w, 0, 0), Vector3(w, 0, 0), Vector3(w, h, 0), Vector3(-w, h, 0)],
-		Vector3(0, 0, 1),
-		_materials["billboard"]
-	)
-	return mesh
-
-
-func _add_quad(mesh: ArrayMesh, corners: Array, normal: Vector3, material: Material) -> void:
-	var arrays: Array = []
-	arrays.resize(Mesh.ARRAY_MAX)
-	arrays[Mesh.ARRAY_VERTEX] = PackedVector3Array(corners)
-	arrays[Mesh.ARRAY_NORMAL] = PackedVector3Array([normal, normal, normal, normal])
-	arrays[Mesh.ARRAY_TEX_UV] = PackedVector2Array([Vector2(0, 1), Vector2(1, 1), Vector2(1, 0), Vector2(0, 0)])
-	arrays[Mesh.ARRAY_INDEX] = PackedInt32Array([0, 2, 1, 0, 3, 2])
-	mesh.add_surface_from_arrays(Mesh.PRIMITIVE_TRIANGLES, arrays)
-	mesh.surface_set_material(mesh.get_surface_count() - 1, material)
-
-
-# --- Per frame --------------------------------------------------------------------------------
+func _configure_lod() -> void:
+	if _drawn:
+		_drawn.simulation.set_lod(lod_distances, lod_hysteresis, lod_interval, force_lod)
 
 
 func _resolve_observer() -> Node3D:
-	if not observer.is_empty():
-		var node: Node3D = get_node_or_null(observer) as Node3D
-		if node:
-			return node
-	if Engine.is_editor_hint():
-		var editor: Object = Engine.get_singleton("EditorInterface")
-		if editor:
-			var viewport: Viewport = editor.call("get_editor_viewport_3d", 0)
-			if viewport and viewport.get_camera_3d():
-				return viewport.get_camera_3d()
-	var own_viewport: Viewport = get_viewport()
-	return own_viewport.get_camera_3d() if own_viewport else null
+	return FieldObserver.resolve(self, observer)
 
 
 func _push_observer() -> void:
-	var node: Node3D = _resolve_observer()
-	if node == null:
-		return
-	var to_local: Transform3D = global_transform.affine_inverse()
-	var frustum: PackedFloat32Array = PackedFloat32Array()
-	var camera: Camera3D = node as Camera3D
-	if frustum_culling and camera and camera.is_inside_tree():
-		for plane: Plane in camera.get_frustum():
-			var local_plane: Plane = to_local * plane
-			frustum.append_array([local_plane.normal.x, local_plane.normal.y, local_plane.normal.z, local_plane.d])
-	_simulation.set_observer(to_local * node.global_position, frustum)
+	FieldObserver.push(self, observer, frustum_culling, _drawn.simulation)

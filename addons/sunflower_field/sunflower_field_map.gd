@@ -8,6 +8,8 @@ extends Resource
 ## [method from_file] at run time. The text is kept as bytes and parsed by the native core, which
 ## reports errors with file, line and column.
 
+const Native: GDScript = preload("native.gd")
+
 ## Where the map came from; names the file in error messages.
 @export var source_path: String = ""
 ## The raw bytes of the map file.
@@ -42,7 +44,9 @@ static func from_file(path: String, r_error: Array[String] = []) -> SunflowerFie
 ## valid (and fills [member columns], [member rows], [member plant_count]), else
 ## [code]"file:line:column: message"[/code].
 func check(legend: String = "", max_plants: int = 0) -> String:
-	var simulation: SunflowerSimulation = SunflowerSimulation.new()
+	var simulation: RefCounted = Native.create_simulation()
+	if simulation == null:
+		return Native.missing_message()
 	var message: String = simulation.load_map(text, source_path, legend, max_plants)
 	if message.is_empty():
 		columns = simulation.get_map_columns()

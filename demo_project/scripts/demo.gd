@@ -125,7 +125,10 @@ func load_part(lod: int, part: int, path: String) -> String:
 	_field.set_part_mesh(lod, part, loaded["mesh"])
 	_count_triangles()
 	_hud.show_message(
-		loaded.get("warning", "mesh %d %s replaced by %s" % [lod + 1, SunflowerField.PART_NAMES[part], path.get_file()])
+		loaded.get(
+			"warning",
+			"mesh %d %s replaced by %s" % [lod + 1, SunflowerField.FieldNodes.PART_NAMES[part], path.get_file()]
+		)
 	)
 	return ""
 
@@ -188,9 +191,9 @@ func _on_field_built(_plants: int) -> void:
 
 
 func _count_triangles() -> void:
-	for lod: int in 3:
+	for lod: int in SunflowerSimulation.MESH_LEVEL_COUNT:
 		var total: int = 0
-		for part: int in 3:
+		for part: int in SunflowerSimulation.PART_COUNT:
 			var mesh: Mesh = _field.get_part_mesh(lod, part)
 			for surface: int in mesh.get_surface_count() if mesh else 0:
 				var arrays: Array = mesh.surface_get_arrays(surface)
@@ -204,11 +207,13 @@ func _count_triangles() -> void:
 
 func _stats_text() -> String:
 	var counts: PackedInt32Array = _field.get_lod_counts()
-	var simulation: SunflowerSimulation = _field.get_simulation()
+	var simulation: SunflowerSimulation = _field.get_simulation() as SunflowerSimulation
 	var triangles: int = counts[3] * TRIANGLES_SPRITE + counts[4] * TRIANGLES_BILLBOARD
-	for lod: int in 3:
+	for lod: int in SunflowerSimulation.MESH_LEVEL_COUNT:
 		# Near meshes: the instances actually written (frustum-culled), times the model's size.
-		triangles += simulation.get_bucket_instance_count(lod * 3) * _triangles_per_plant[lod]
+		triangles += (
+			simulation.get_bucket_instance_count(SunflowerSimulation.mesh_bucket(lod, 0)) * _triangles_per_plant[lod]
+		)
 	var fps: float = Engine.get_frames_per_second()
 	return (
 		(

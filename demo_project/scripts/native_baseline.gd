@@ -20,7 +20,8 @@ func build(field_map: SunflowerFieldMap, field: SunflowerField) -> int:
 		return 0
 	simulation.set_layout(field.cell_size, field.seed, field.independent_jitter, CHUNK_SIZE)
 	var mesh: ArrayMesh = _whole_plant_mesh(field)
-	var scale_factor: float = field.plant_height / SunflowerField.MODEL_HEIGHT
+	# Parts are one model unit each, stacked three high.
+	var scale_factor: float = field.plant_height / SunflowerSimulation.PART_COUNT
 	var chunks: Dictionary = {}
 	for i: int in simulation.get_plant_count():
 		var position: Vector3 = simulation.get_plant_position(i)

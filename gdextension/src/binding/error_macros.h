@@ -26,18 +26,5 @@ inline const char *const BUG_PREFIX = "this is a bug in the Sunflower Field exte
 		}                                                                       \
 	} while (false)
 
-#define SF_BUG_COND_MSG(m_cond, m_msg)                                                                   \
-	do {                                                                                                 \
-		if (m_cond) {                                                                                    \
-			::gdx::print_error(std::string(::gdx::BUG_PREFIX) + (m_msg), __func__, __FILE__, __LINE__); \
-			return;                                                                                      \
-		}                                                                                                \
-	} while (false)
-
-#define SF_BUG_COND_V_MSG(m_cond, m_retval, m_msg)                                                       \
-	do {                                                                                                 \
-		if (m_cond) {                                                                                    \
-			::gdx::print_error(std::string(::gdx::BUG_PREFIX) + (m_msg), __func__, __FILE__, __LINE__); \
-			return m_retval;                                                                             \
-		}                                                                                                \
-	} while (false)
+#define SF_BUG_COND_MSG(m_cond, m_msg) SF_FAIL_COND_MSG(m_cond, std::string(::gdx::BUG_PREFIX) + (m_msg))
+#define SF_BUG_COND_V_MSG(m_cond, m_retval, m_msg) SF_FAIL_COND_V_MSG(m_cond, m_retval, std::string(::gdx::BUG_PREFIX) + (m_msg))

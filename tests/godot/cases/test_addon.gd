@@ -8,6 +8,35 @@ func test_native_class_is_registered() -> void:
 	check_eq(SunflowerSimulation.BUCKET_COUNT, 11, "bucket constant")
 
 
+func test_the_node_names_the_cores_indices() -> void:
+	check_eq(SunflowerField.Part.size(), SunflowerSimulation.PART_COUNT, "parts")
+	check_eq(SunflowerField.Lod.size(), SunflowerSimulation.LOD_COUNT, "levels")
+	check_eq(
+		SunflowerField.Lod.SPRITE, SunflowerSimulation.MESH_LEVEL_COUNT, "the first impostor level follows the meshes"
+	)
+	check_eq(SunflowerField.FieldNodes.PART_NAMES.size(), SunflowerSimulation.PART_COUNT, "part names")
+	check_eq(SunflowerSimulation.mesh_bucket(2, SunflowerField.Part.HEAD), 8, "the last mesh bucket")
+	check_eq(SunflowerSimulation.BUCKET_SPRITE, 9, "sprites follow the mesh buckets")
+
+
+## Every value the inspector shows a default for is defined once, in the core's table: the
+## defaults of the node and of the wind resource equal the core's.
+func test_inspector_defaults_equal_the_cores() -> void:
+	var field: SunflowerField = SunflowerField.new()
+	var owners: Dictionary = {"SunflowerField": field, "SunflowerWind": SunflowerWind.new()}
+	var names: PackedStringArray = SunflowerField.Native.parameter_names()
+	check(names.size() >= 20, "the core lists its parameters (%d)" % names.size())
+	for qualified: String in names:
+		var pieces: PackedStringArray = qualified.split(".")
+		var object: Object = owners.get(pieces[0])
+		if not check(object != null and pieces[1] in object, "%s is no inspector property" % qualified):
+			continue
+		var shown: Variant = object.get_script().get_property_default_value(pieces[1])
+		var core: float = SunflowerField.Native.default_of(qualified)
+		check(is_equal_approx(float(shown), core), "%s: the inspector shows %s, the core %s" % [qualified, shown, core])
+	field.free()
+
+
 func test_imported_map_is_a_field_map_resource() -> void:
 	var field_map: SunflowerFieldMap = load("res://fields/demo.field") as SunflowerFieldMap
 	if not check(field_map != null, "res://fields/demo.field did not import as a SunflowerFieldMap"):

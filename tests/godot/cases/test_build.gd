@@ -153,7 +153,10 @@ func test_parameter_changes_during_a_build_reach_the_new_field() -> void:
 	await frames(2)
 	while field.is_building() and field.get_build_progress() <= 0.1:
 		await frames(1)
-	check(field.is_building(), "some chunk nodes are made, not all")
+	check(
+		field.is_building(),
+		"some chunk nodes are made, not all: %s %s" % [field.get_build_progress(), field.get_build_stats()]
+	)
 	field.max_draw_distance = 123.0
 	field.lod_distances = PackedFloat32Array([5.0, 9.0, 18.0, 30.0])
 	field.wind_power = 4.0

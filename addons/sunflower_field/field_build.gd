@@ -1,0 +1,129 @@
+@tool
+extends RefCounted
+## One build of a field: its map read and laid out into a new native simulation (on a worker
+## thread, or at once), then the field's nodes made within a per-frame budget. Owns the pending
+## pair (that simulation and its [code]FieldNodes[/code]) until the field takes it, so finishing a
+## build swaps two pairs; cancelling frees what it made. Keeps the build's figures.
+
+const Native: GDScript = preload("native.gd")
+const FieldNodes: GDScript = preload("field_nodes.gd")
+const ImpostorSet: GDScript = preload("impostor_set.gd")
+
+
+## What the worker reads and lays out. Holds its own copies of the inputs, so the node may change
+## (or go) meanwhile; the build waits for the worker before dropping the job.
+class Job:
+	extends RefCounted
+	var simulation: RefCounted
+	var text: PackedByteArray
+	var source: String
+	var legend: String
+	var max_plants: int
+	var cell_size: float
+	var seed: int
+	var independent_jitter: bool
+	var chunk_size: float
+	var plant_height: float
+	var error: String = ""
+	var usec: int = 0
+
+	## A job for [param field]'s map and layout properties, filling [param native_simulation].
+	static func for_field(field: Node3D, native_simulation: RefCounted) -> Job:
+		var job: Job = Job.new()
+		job.simulation = native_simulation
+		job.text = field.map.text
+		job.source = field.map.source_path
+		job.legend = FieldNodes.legend_symbols(field.legend)
+		job.max_plants = field.max_plants
+		job.cell_size = field.cell_size
+		job.seed = field.seed
+		job.independent_jitter = field.independent_jitter
+		job.chunk_size = field.chunk_size
+		job.plant_height = field.plant_height
+		return job
+
+	func run() -> void:
+		var start: int = Time.get_ticks_usec()
+		error = simulation.load_map(text, source, legend, max_plants)
+		if error.is_empty():
+			simulation.set_layout(cell_size, seed, independent_jitter, chunk_size)
+			simulation.set_plant_height(plant_height)
+		usec = Time.get_ticks_usec() - start
+
+
+## The pending pair: the job's simulation and the nodes made for it so far.
+var nodes: FieldNodes
+var job: Job
+var background: bool
+var _task: int = -1
+var _start_usec: int = Time.get_ticks_usec()
+var _frames: int = 0
+var _main_thread_ms: float = 0.0
+var _longest_step_ms: float = 0.0
+
+
+## Starts reading [param build_job] on a worker thread when [param in_background], else at once.
+func _init(field: Node3D, impostors: ImpostorSet, build_job: Job, in_background: bool) -> void:
+	job = build_job
+	background = in_background
+	nodes = FieldNodes.new(field, job.simulation, impostors)
+	if background:
+		_task = WorkerThreadPool.add_task(job.run, false, "SunflowerField: " + job.source.get_file())
+	else:
+		job.run()
+
+
+## One step: waits for the worker (unless [param budget_usec] ≥ 0 and it is still running), then
+## makes chunk nodes until the budget is spent (negative: until done). True when the pending field
+## is complete or the map failed ([method get_error]).
+func step(budget_usec: int, switch_distance: float, max_draw_distance: float) -> bool:
+	var start: int = Time.get_ticks_usec()
+	if _task >= 0:
+		if budget_usec >= 0 and not WorkerThreadPool.is_task_completed(_task):
+			_frames += 1
+			return false
+		WorkerThreadPool.wait_for_task_completion(_task)
+		_task = -1
+	if not job.error.is_empty():
+		return true
+	var done: bool = nodes.make_chunks(budget_usec, switch_distance, max_draw_distance)
+	_frames += 1
+	add_main_thread_time(start)
+	return done
+
+
+## The map's error ("file:line:column: …"), or empty.
+func get_error() -> String:
+	return job.error
+
+
+## How far the build is, 0 to 1: the worker's part is the first tenth.
+func get_progress() -> float:
+	return 0.0 if _task >= 0 else 0.1 + 0.9 * nodes.get_chunk_progress()
+
+
+## Counts main-thread time spent on this build since [param start_usec].
+func add_main_thread_time(start_usec: int) -> void:
+	var step_ms: float = (Time.get_ticks_usec() - start_usec) / 1000.0
+	_main_thread_ms += step_ms
+	_longest_step_ms = maxf(_longest_step_ms, step_ms)
+
+
+## The build's figures (see [method SunflowerField.get_build_stats]).
+func get_stats() -> Dictionary:
+	return {
+		"background": background,
+		"frames": _frames,
+		"longest_step_ms": _longest_step_ms,
+		"main_thread_ms": _main_thread_ms,
+		"worker_ms": job.usec / 1000.0,
+		"total_ms": (Time.get_ticks_usec() - _start_usec) / 1000.0,
+	}
+
+
+## Stops the build, waiting for its worker, and frees what it made.
+func cancel() -> void:
+	if _task >= 0:
+		WorkerThreadPool.wait_for_task_completion(_task)
+		_task = -1
+	nodes.free_nodes()

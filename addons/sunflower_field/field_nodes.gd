@@ -1,0 +1,168 @@
+@tool
+extends RefCounted
+## The internal nodes that draw one field (one native simulation): per chunk a static sprite and
+## billboard MultiMeshInstance3D whose visibility ranges swap them, the dynamic bucket nodes of the
+## near plants, and the scenes the legend places. The only script that makes MultiMeshes or sets
+## visibility ranges. Chunk nodes can be made a few at a time, hidden, and shown at once.
+
+const Native: GDScript = preload("native.gd")
+const ImpostorSet: GDScript = preload("impostor_set.gd")
+## The parts of a plant, bottom to top, as node and property names use them.
+const PART_NAMES: PackedStringArray = ["bottom", "middle", "head"]
+
+var simulation: RefCounted
+var _owner: Node3D
+var _impostors: ImpostorSet
+var _chunk_nodes: Array[MultiMeshInstance3D] = []
+var _dynamic_nodes: Array[MultiMeshInstance3D] = []
+var _object_nodes: Array[Node] = []
+
+
+func _init(owner: Node3D, field_simulation: RefCounted, impostors: ImpostorSet) -> void:
+	_owner = owner
+	simulation = field_simulation
+	_impostors = impostors
+
+
+## Makes hidden chunk nodes until all exist or [param budget_usec] is spent (negative: no limit);
+## true when every chunk has its pair.
+func make_chunks(budget_usec: int, switch_distance: float, max_draw_distance: float) -> bool:
+	var start: int = Time.get_ticks_usec()
+	var chunk_count: int = simulation.get_chunk_count()
+	while _chunk_nodes.size() < 2 * chunk_count:
+		var chunk: int = _chunk_nodes.size() / 2
+		var aabb: AABB = simulation.get_chunk_aabb(chunk)
+		var sprite: MultiMeshInstance3D = _make_node("ChunkSprites%d" % chunk, _impostors.sprite_mesh(), aabb)
+		var billboard: MultiMeshInstance3D = _make_node("ChunkBillboards%d" % chunk, _impostors.billboard_mesh(), aabb)
+		billboard.cast_shadow = GeometryInstance3D.SHADOW_CASTING_SETTING_OFF
+		sprite.visible = false  # shown when the whole field is ready
+		billboard.visible = false
+		_chunk_nodes.append_array([sprite, billboard])
+		_set_chunk_ranges(sprite, billboard, switch_distance, max_draw_distance)
+		simulation.set_chunk_multimeshes(chunk, sprite.multimesh.get_rid(), billboard.multimesh.get_rid())
+		if budget_usec >= 0 and Time.get_ticks_usec() - start >= budget_usec:
+			break
+	return _chunk_nodes.size() >= 2 * chunk_count
+
+
+## The share of chunk nodes made, 0 to 1.
+func get_chunk_progress() -> float:
+	return _chunk_nodes.size() / maxf(2.0 * simulation.get_chunk_count(), 1.0)
+
+
+## Completes the field: the near plants' bucket nodes and the legend's scenes, then shows it all.
+## [param part_meshes] holds each mesh level's parts ([code]level × 3 + part[/code]); the near
+## plants' bounds reach [param sway_margin] metres past the chunks' (a swaying plant's lean).
+func finish(part_meshes: Array[Mesh], legend: Dictionary, cell_size: float, sway_margin: float) -> void:
+	var aabb: AABB = _field_aabb().grow(sway_margin)
+	for level: int in Native.constant(&"MESH_LEVEL_COUNT"):
+		for part: int in PART_NAMES.size():
+			var node_name: String = "Mesh%d%s" % [level + 1, PART_NAMES[part].capitalize()]
+			var node: MultiMeshInstance3D = _make_node(node_name, part_meshes[level * PART_NAMES.size() + part], aabb)
+			simulation.set_bucket_multimesh(Native.mesh_bucket(level, part), node.multimesh.get_rid())
+			_dynamic_nodes.append(node)
+	var sprite: MultiMeshInstance3D = _make_node("Sprites", _impostors.sprite_mesh(), aabb)
+	var billboard: MultiMeshInstance3D = _make_node("Billboards", _impostors.billboard_mesh(), aabb)
+	billboard.cast_shadow = GeometryInstance3D.SHADOW_CASTING_SETTING_OFF
+	simulation.set_bucket_multimesh(Native.constant(&"BUCKET_SPRITE"), sprite.multimesh.get_rid())
+	simulation.set_bucket_multimesh(Native.constant(&"BUCKET_BILLBOARD"), billboard.multimesh.get_rid())
+	_dynamic_nodes.append_array([sprite, billboard])
+	_place_objects(legend, cell_size)
+	for node: MultiMeshInstance3D in _chunk_nodes:
+		node.visible = true
+
+
+## Sets the switch distance between each chunk's sprite and billboard, and where billboards end
+## (0: never).
+func apply_ranges(switch_distance: float, max_draw_distance: float) -> void:
+	for i: int in range(0, _chunk_nodes.size() - 1, 2):
+		_set_chunk_ranges(_chunk_nodes[i], _chunk_nodes[i + 1], switch_distance, max_draw_distance)
+
+
+## Draws [param mesh] for the near plants' [param level] / [param part] (once the field is complete).
+func set_part_mesh(level: int, part: int, mesh: Mesh) -> void:
+	var slot: int = level * PART_NAMES.size() + part
+	if slot < _dynamic_nodes.size():
+		_dynamic_nodes[slot].multimesh.mesh = mesh
+
+
+## Adds every node of this field to [param nodes] (as keys), to tell them from foreign children.
+func collect(nodes: Dictionary) -> void:
+	for list: Array in [_chunk_nodes, _dynamic_nodes, _object_nodes]:
+		for node: Node in list:
+			nodes[node] = true
+
+
+## Frees every node (the simulation forgets its MultiMeshes first).
+func free_nodes() -> void:
+	simulation.release_multimeshes()
+	for nodes: Array in [_chunk_nodes, _dynamic_nodes, _object_nodes]:
+		for node: Node in nodes:
+			if is_instance_valid(node):
+				node.free()
+		nodes.clear()
+
+
+## The legend's symbols as one string (each key one character other than '*', ' ' and '.'),
+## warning about any other key.
+static func legend_symbols(legend: Dictionary) -> String:
+	var symbols: String = ""
+	for key: Variant in legend:
+		var symbol: String = str(key)
+		if symbol.length() != 1 or symbol in ["*", " ", "."]:
+			push_warning("SunflowerField.legend: key '%s' must be one character other than '*', ' ' and '.'" % symbol)
+			continue
+		symbols += symbol
+	return symbols
+
+
+func _make_node(node_name: String, mesh: Mesh, aabb: AABB) -> MultiMeshInstance3D:
+	var multimesh: MultiMesh = MultiMesh.new()
+	multimesh.transform_format = MultiMesh.TRANSFORM_3D
+	multimesh.mesh = mesh
+	multimesh.custom_aabb = aabb
+	var node: MultiMeshInstance3D = MultiMeshInstance3D.new()
+	node.name = node_name
+	node.multimesh = multimesh
+	node.custom_aabb = aabb
+	_owner.add_child(node, false, Node.INTERNAL_MODE_BACK)
+	return node
+
+
+static func _set_chunk_ranges(
+	sprite: MultiMeshInstance3D, billboard: MultiMeshInstance3D, switch_distance: float, max_draw_distance: float
+) -> void:
+	sprite.visibility_range_end = switch_distance
+	billboard.visibility_range_begin = switch_distance
+	billboard.visibility_range_end = max_draw_distance
+
+
+func _field_aabb() -> AABB:
+	var box: AABB = AABB()
+	for chunk: int in simulation.get_chunk_count():
+		var chunk_box: AABB = simulation.get_chunk_aabb(chunk)
+		box = chunk_box if chunk == 0 else box.merge(chunk_box)
+	return box
+
+
+func _place_objects(legend: Dictionary, cell_size: float) -> void:
+	var objects: PackedInt32Array = simulation.get_map_objects()
+	for i: int in range(0, objects.size(), 3):
+		var symbol: String = String.chr(objects[i + 2])
+		var scene: PackedScene = legend.get(symbol) as PackedScene
+		if scene == null:
+			push_warning(
+				(
+					"SunflowerField.legend: '%s' has no PackedScene; cell (%d, %d) stays empty"
+					% [symbol, objects[i], objects[i + 1]]
+				)
+			)
+			continue
+		var instance: Node = scene.instantiate()
+		instance.name = "%s_%d_%d" % [instance.name, objects[i], objects[i + 1]]
+		if instance is Node3D:
+			(instance as Node3D).position = Vector3(
+				(objects[i] + 0.5) * cell_size, 0.0, (objects[i + 1] + 0.5) * cell_size
+			)
+		_owner.add_child(instance, false, Node.INTERNAL_MODE_BACK)
+		_object_nodes.append(instance)

@@ -1,0 +1,114 @@
+@tool
+extends RefCounted
+## The bridge to the native library: whether it loaded, new simulations, the facts it owns (bucket
+## layout, counts, the plant's height in model units) and the core's rules for every value a user
+## sets. The only script that names the native class, so every other script parses even where no
+## library fits the platform; there, exactly one error says so and how to build one.
+
+const CLASS: StringName = &"SunflowerSimulation"
+## The command that builds the libraries, for the missing-library error.
+const BUILD_HINT: String = (
+	"build it with 'scons platform=<linux|windows|macos> arch=<x86_64|arm64>' or 'tools/build.sh --all' "
+	+ "from the addon's repository, or install a release zip that has it"
+)
+
+static var _reported: bool = false
+
+
+## Whether the native library is loaded (a build for this platform exists and loaded).
+static func is_available() -> bool:
+	return ClassDB.class_exists(CLASS)
+
+
+## A new native simulation, or null (with the one missing-library error) when there is no library.
+static func create_simulation() -> RefCounted:
+	if not is_available():
+		report_missing()
+		return null
+	return ClassDB.instantiate(CLASS) as RefCounted
+
+
+## Prints, once per run, that no native library fits this platform and how to make one.
+static func report_missing() -> void:
+	if _reported:
+		return
+	_reported = true
+	push_error("Sunflower Field: " + missing_message())
+
+
+## The missing-library message, also the node's configuration warning.
+static func missing_message() -> String:
+	return (
+		"no native library for %s %s in addons/sunflower_field/bin/, so fields draw nothing; %s."
+		% [OS.get_name(), Engine.get_architecture_name(), BUILD_HINT]
+	)
+
+
+## An integer constant of the native class ([code]BUCKET_COUNT[/code], [code]PART_COUNT[/code]…);
+## 0 without the library (when nothing is drawn anyway).
+static func constant(name: StringName) -> int:
+	return ClassDB.class_get_integer_constant(CLASS, name) if is_available() else 0
+
+
+## The bucket of a mesh level's part in the native buckets ([code]level × parts + part[/code] there).
+static func mesh_bucket(level: int, part: int) -> int:
+	return ClassDB.class_call_static(CLASS, &"mesh_bucket", level, part) if is_available() else -1
+
+
+## The height the impostor quads frame, in model units (the native plant shape's).
+static func plant_height_units() -> float:
+	return ClassDB.class_call_static(CLASS, &"get_plant_height_units") if is_available() else 3.2
+
+
+## The value the core accepts for [param property] (e.g. [code]"SunflowerWind.power"[/code]) when
+## [param value] is asked for while [param current] is set; warns, naming the property, when that
+## differs from [param value]. The core's table is the only place the limits are written.
+static func accept(property: String, value: float, current: float) -> float:
+	if not is_available():
+		return value
+	var used: float = ClassDB.class_call_static(CLASS, &"sanitize_parameter", property, value, current)
+	if used != value:  # also for NaN, which equals nothing
+		var why: String = ClassDB.class_call_static(CLASS, &"explain_parameter", property, value, used)
+		push_warning("%s: %s" % [property, why])
+	return used
+
+
+## [method accept] for integer properties.
+static func accept_int(property: String, value: int, current: int) -> int:
+	return int(accept(property, value, current))
+
+
+## The core's default for [param property] (tests compare the inspector's defaults with it).
+static func default_of(property: String) -> float:
+	return ClassDB.class_call_static(CLASS, &"get_parameter_default", property)
+
+
+## Every property the core's table knows, as [code]"Class.property"[/code].
+static func parameter_names() -> PackedStringArray:
+	return String(ClassDB.class_call_static(CLASS, &"get_parameter_names")).split(",")
+
+
+## What is wrong with these LOD switch distances, or an empty string.
+static func check_lod_distances(distances: PackedFloat32Array) -> String:
+	return ClassDB.class_call_static(CLASS, &"check_lod_distances", distances) if is_available() else ""
+
+
+## The wind direction the core uses for [param direction] (a zero vector means +x).
+static func sanitize_wind_direction(direction: Vector2) -> Vector2:
+	return ClassDB.class_call_static(CLASS, &"sanitize_wind_direction", direction) if is_available() else direction
+
+
+## Transforms from the native instance layout: 12 floats each, the 3 × 4 matrix [basis | origin]
+## row by row (the RenderingServer's MultiMesh layout).
+static func unpack_transforms(flat: PackedFloat32Array) -> Array[Transform3D]:
+	var transforms: Array[Transform3D] = []
+	for o: int in range(0, flat.size() - 11, 12):
+		transforms.append(
+			Transform3D(
+				Vector3(flat[o], flat[o + 4], flat[o + 8]),
+				Vector3(flat[o + 1], flat[o + 5], flat[o + 9]),
+				Vector3(flat[o + 2], flat[o + 6], flat[o + 10]),
+				Vector3(flat[o + 3], flat[o + 7], flat[o + 11])
+			)
+		)
+	return transforms
