@@ -251,6 +251,7 @@ var _parts: PartMeshes = PartMeshes.new()
 var _drawn: FieldNodes
 var _build: FieldBuild
 var _build_stats: Dictionary = {}
+var _empty_simulation: RefCounted
 var _rebuild_queued: bool = false
 var _last_error: String = ""
 
@@ -406,9 +407,13 @@ func decrease_wind() -> void:
 
 
 ## The native simulation behind the field drawn now ([code]SunflowerSimulation[/code], for tools and
-## tests), or null before the first field is built.
+## tests); an empty one before the first field is built, null without the native library.
 func get_simulation() -> RefCounted:
-	return _drawn.simulation if _drawn else null
+	if _drawn:
+		return _drawn.simulation
+	if _empty_simulation == null:
+		_empty_simulation = Native.create_simulation()
+	return _empty_simulation
 
 
 func _get_configuration_warnings() -> PackedStringArray:
