@@ -5,8 +5,10 @@ set -euo pipefail
 repo=$(cd "$(dirname "$0")/.." && pwd)
 
 # Debian packages: compilers, GLM, doctest, clang for the fuzzer, Xvfb + Mesa for rendering.
-debs=(g++ clang libclang-rt-14-dev libglm-dev doctest-dev python3 python3-venv python3-pip
-  xvfb xauth libgl1-mesa-dri mesa-vulkan-drivers libvulkan1 ca-certificates)
+# LLVM's readers check the built libraries; Wine and QEMU run the core's tests built for Windows
+# and for Linux arm64; zip packs the release.
+debs=(g++ clang llvm libclang-rt-14-dev libglm-dev doctest-dev python3 python3-venv python3-pip
+  xvfb xauth libgl1-mesa-dri mesa-vulkan-drivers libvulkan1 ca-certificates wine64 qemu-user-static zip unzip)
 missing=()
 for p in "${debs[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "ok installed" || missing+=("$p")
@@ -18,12 +20,13 @@ if ((${#missing[@]})); then
   DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 fi
 
-# Python tools (SCons, gdtoolkit) in a private virtual environment.
+# Python tools in a private virtual environment: SCons, gdtoolkit, and Zig's C/C++ compiler (which
+# cross-compiles the libraries for every desktop platform).
 venv="$repo/.cache/venv"
-if [[ ! -x "$venv/bin/scons" || ! -x "$venv/bin/gdlint" ]]; then
-  echo "setup: creating $venv with scons and gdtoolkit"
+if [[ ! -x "$venv/bin/scons" || ! -x "$venv/bin/gdlint" ]] || ! "$venv/bin/python" -m ziglang version >/dev/null 2>&1; then
+  echo "setup: creating $venv with scons, gdtoolkit and ziglang"
   python3 -m venv "$venv"
-  "$venv/bin/pip" install -q --disable-pip-version-check "scons>=4.5" "gdtoolkit>=4.3,<5"
+  "$venv/bin/pip" install -q --disable-pip-version-check "scons>=4.5" "gdtoolkit>=4.3,<5" "ziglang>=0.13"
 fi
 
 # The engine.

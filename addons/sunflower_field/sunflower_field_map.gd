@@ -23,10 +23,15 @@ const Native: GDScript = preload("native.gd")
 
 
 ## Reads a map from [param path] ([code]res://[/code], [code]user://[/code] or an absolute path)
-## without checking it. Returns [code]null[/code] when the file cannot be read; [param r_error]
-## (if given) receives the message.
+## without checking it. A [code]res://[/code] map whose source text is not there (an exported game
+## ships only the imported resource) is loaded as imported. Returns [code]null[/code] when the map
+## cannot be read; [param r_error] (if given) receives the message.
 static func from_file(path: String, r_error: Array[String] = []) -> SunflowerFieldMap:
 	if not FileAccess.file_exists(path):
+		if path.begins_with("res://") and ResourceLoader.exists(path):
+			var imported: SunflowerFieldMap = load(path) as SunflowerFieldMap
+			if imported:
+				return imported
 		r_error.append("%s: the map file does not exist" % path)
 		return null
 	var bytes: PackedByteArray = FileAccess.get_file_as_bytes(path)

@@ -30,9 +30,17 @@ void deinitialize(void *, GDExtensionInitializationLevel p_level) {
 
 } // namespace
 
+// The entry point is the library's only exported symbol (Windows: dllexport; elsewhere hidden
+// visibility by default plus the linker's export list, gdextension/exports.map on Linux).
+#ifdef _WIN32
+#define SUNFLOWER_EXPORT __declspec(dllexport)
+#else
+#define SUNFLOWER_EXPORT __attribute__((visibility("default")))
+#endif
+
 extern "C" {
 
-__attribute__((visibility("default"))) GDExtensionBool sunflower_library_init(GDExtensionInterfaceGetProcAddress p_get_proc_address,
+SUNFLOWER_EXPORT GDExtensionBool sunflower_library_init(GDExtensionInterfaceGetProcAddress p_get_proc_address,
 		GDExtensionClassLibraryPtr p_library, GDExtensionInitialization *r_initialization) {
 	if (!gdx::load_api(p_get_proc_address, p_library)) {
 		return false;
