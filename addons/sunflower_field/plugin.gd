@@ -4,11 +4,15 @@ extends EditorPlugin
 ## shows the progress of fields building in the background in the 3D editor's toolbar.
 ## The [SunflowerField] node itself is registered by its [code]class_name[/code].
 
+const Native: GDScript = preload("native.gd")
+
 var _importer: EditorImportPlugin
 var _progress: Control
 
 
 func _enter_tree() -> void:
+	if not Native.is_available():
+		Native.report_missing()
 	_importer = preload("field_map_import_plugin.gd").new()
 	add_import_plugin(_importer)
 	_progress = preload("build_progress_bar.gd").new()

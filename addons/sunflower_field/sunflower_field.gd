@@ -267,6 +267,8 @@ func _init() -> void:
 
 
 func _ready() -> void:
+	if not Native.is_available():
+		Native.report_missing()  # once per run, however many fields
 	_queue_rebuild()
 
 
