@@ -276,3 +276,89 @@ TEST_CASE("setting the same layout again keeps the field as it is; a different o
 		CHECK_FALSE(sim.is_chunk_active(c)); // rebuilt: nothing active until the next update
 	}
 }
+
+namespace {
+
+// The horizontal lean of a plant's head now: where its top is, relative to its root (x, z).
+glm::vec2 head_offset(const FieldSimulation &p_sim, uint32_t p_plant) {
+	PartTransforms parts;
+	p_sim.get_plant_parts(p_plant, parts);
+	const glm::vec3 top = parts.origin[2] + parts.basis[2][1];
+	return glm::vec2(top.x - parts.origin[0].x, top.z - parts.origin[0].z);
+}
+
+} // namespace
+
+TEST_CASE("pushers: plants within the radius bend away from the body and spring back once it leaves") {
+	FieldSimulation sim;
+	load(sim, rect_map(20, 20)); // 10 × 10 m, a plant every 0.5 m
+	WindParams calm;
+	calm.power = 0.0f;
+	sim.set_wind(calm);
+	sim.set_observer({ 5.0f, 1.7f, 5.0f });
+	sim.set_push_params(1.0f, 1.0f);
+	sim.update(0.016f);
+	CHECK(sim.get_pushed_count() == 0);
+
+	const Pusher body{ { 5.0f, 1.0f, 5.0f }, 1.0f };
+	sim.set_pushers(&body, 1);
+	for (int i = 0; i < 60; ++i) {
+		sim.update(1.0f / 60.0f);
+	}
+	std::vector<uint32_t> near, far;
+	sim.find_plants_near({ 5.0f, 5.0f }, 0.9f, near);
+	REQUIRE(near.size() > 5);
+	CHECK(sim.get_pushed_count() >= near.size());
+	for (uint32_t plant : near) {
+		const glm::vec2 away = sim.get_layout().plants[plant].position - glm::vec2(5.0f, 5.0f);
+		const glm::vec2 lean = head_offset(sim, plant);
+		if (glm::length(away) > 0.05f) {
+			CHECK(glm::dot(lean, away) > 0.0f); // away from the body
+			CHECK(glm::length(lean) > 0.05f);
+		}
+	}
+	sim.find_plants_near({ 5.0f, 5.0f }, 3.0f, far);
+	for (uint32_t plant : far) {
+		if (glm::distance(sim.get_layout().plants[plant].position, glm::vec2(5.0f, 5.0f)) > 1.0f) {
+			CHECK(glm::length(head_offset(sim, plant)) < 1e-5f); // outside the radius, calm air: upright
+		}
+	}
+
+	sim.set_pushers(nullptr, 0); // the body leaves
+	for (int i = 0; i < 30; ++i) {
+		sim.update(1.0f / 60.0f);
+	}
+	CHECK(sim.get_pushed_count() > 0); // still springing back after half the recovery time
+	for (int i = 0; i < 45; ++i) {
+		sim.update(1.0f / 60.0f);
+	}
+	CHECK(sim.get_pushed_count() == 0); // settled within the recovery time (and a margin): no state left
+	for (uint32_t plant : near) {
+		CHECK(glm::length(head_offset(sim, plant)) < 1e-3f);
+	}
+}
+
+TEST_CASE("pushers: a body above the plants pushes nothing; a push never bends a plant past max_bend") {
+	FieldSimulation sim;
+	load(sim, rect_map(20, 20));
+	sim.set_observer({ 5.0f, 1.7f, 5.0f });
+	const Pusher high{ { 5.0f, 8.0f, 5.0f }, 1.0f };
+	sim.set_pushers(&high, 1);
+	sim.update(0.016f);
+	CHECK(sim.get_pushed_count() == 0);
+	WindParams storm;
+	storm.power = 100.0f;
+	sim.set_wind(storm);
+	sim.set_push_params(10.0f, 1.0f);
+	const Pusher low{ { 5.0f, 0.5f, 5.0f }, 2.0f };
+	sim.set_pushers(&low, 1);
+	for (int i = 0; i < 120; ++i) {
+		sim.update(1.0f / 60.0f);
+	}
+	for (uint32_t plant = 0; plant < sim.get_plant_count(); ++plant) {
+		PartTransforms parts;
+		sim.get_plant_parts(plant, parts);
+		const float tilt = std::acos(glm::normalize(parts.basis[1][1]).y) + 0.0f;
+		CHECK(tilt <= sim.get_wind().get_params().max_bend * 1.001f);
+	}
+}

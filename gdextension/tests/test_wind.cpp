@@ -4,7 +4,9 @@
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 using namespace sunflower;
 
@@ -12,6 +14,7 @@ namespace {
 
 WindModel make_wind(float p_power, glm::vec2 p_direction, float p_gust_share = 0.0f) {
 	WindParams params;
+	params.model = WIND_THESIS; // the thesis' equations, exactly
 	params.power = p_power;
 	params.direction = p_direction;
 	params.gust_share = p_gust_share;
@@ -111,6 +114,7 @@ TEST_CASE("no wind: the plant stands upright") {
 
 TEST_CASE("φ advances at b·ω, wraps at 2π and never goes negative") {
 	WindParams params;
+	params.model = WIND_THESIS; // the thesis' equations, exactly
 	params.power = 1.0f;
 	params.flip_chance = 0.0f;
 	WindModel wind;
@@ -171,4 +175,140 @@ TEST_CASE("the gust travels downwind: a plant s metres downwind bends as its upw
 		CHECK(downwind_later == doctest::Approx(upwind_then).epsilon(1e-4));
 	}
 	CHECK(wind.downwind({ 2.0f, 5.0f }) == doctest::Approx(5.0f));
+}
+
+namespace {
+
+WindModel natural_wind(float p_power, glm::vec2 p_direction = { 1, 0 }) {
+	WindParams params; // the default model is the natural one
+	params.power = p_power;
+	params.direction = p_direction;
+	WindModel wind;
+	wind.configure(params);
+	return wind;
+}
+
+} // namespace
+
+TEST_CASE("natural wind: plants lean downwind, never upwind, from power 1 upward") {
+	REQUIRE(WindParams{}.model == WIND_NATURAL);
+	for (float power : { 1.0f, 2.0f, 5.0f, 10.0f, 30.0f, 100.0f }) {
+		WindModel wind = natural_wind(power, { 0.6f, 0.8f });
+		int upwind = 0;
+		int samples = 0;
+		float mean = 0.0f;
+		std::vector<PlantWind> plants(40);
+		for (uint32_t i = 0; i < plants.size(); ++i) {
+			wind.init_plant(plants[i], 7, i, 0.0);
+		}
+		for (int frame = 1; frame <= 60 * 20; ++frame) {
+			wind.advance(1.0f / 60.0f);
+			for (uint32_t i = 0; i < plants.size(); ++i) {
+				wind.advance_plant(plants[i], 7, i, frame / 60.0, 1.0f / 60.0f);
+				const float along = glm::dot(wind.bend_vector(plants[i], glm::vec2(float(i) * 1.7f, float(i % 5) * 3.1f)),
+						wind.get_lean_direction());
+				upwind += along < 0.0f ? 1 : 0;
+				mean += along;
+				++samples;
+			}
+		}
+		INFO("power ", power, ": mean lean ", mean / float(samples));
+		CHECK(float(upwind) / float(samples) < 0.05f);
+		CHECK(mean / float(samples) > 0.0f);
+		CHECK(mean / float(samples) < wind.get_bend_limit()); // saturates below the limit: never pinned
+	}
+}
+
+TEST_CASE("natural wind: the mean lean grows with power and saturates smoothly") {
+	float previous = 0.0f;
+	for (float power : { 0.5f, 1.0f, 3.0f, 10.0f, 100.0f }) {
+		WindModel wind = natural_wind(power);
+		PlantWind still; // sin φ = 0: the mean alone (no gust drawn at the origin cell? it adds ≥ 0)
+		still.phase = 0.0f;
+		const float lean = glm::length(wind.bend_vector(still, { 0.0f, 0.0f }));
+		CHECK(lean > previous);
+		CHECK(lean < wind.get_bend_limit());
+		previous = lean;
+	}
+}
+
+TEST_CASE("natural wind: no frame-to-frame jump beyond what the smooth motion allows, through b flips and power and direction changes") {
+	// The bound, from the model's rates at the largest power used (10): the sway 0.35·A·sin φ with φ
+	// at up to 1.15·ω; gusts 0.5·share·A·g with g's slope at most 1.5 per cell (smoothstep) on both
+	// axes, scrolling at c = p m/s over 8 m cells; A's change with the eased power (dA/dp ≤ h); the
+	// lean direction turning at most π·k per frame (k = 1 − e^(−dt/0.5)). tanh's slope is at most 1.
+	const float dt = 1.0f / 60.0f;
+	const float k = 1.0f - std::exp(-dt / 0.5f);
+	WindModel strong = natural_wind(10.0f);
+	const float a_max = strong.get_bend_limit() * (1.0f - std::exp(-10.0f * PI / 12.0f / strong.get_bend_limit()));
+	const float omega_max = strong.get_phase_rate() * 1.15f;
+	const float sway = 0.35f * a_max * omega_max * dt;
+	const float gust = 0.5f * 0.5f * a_max * 1.5f * std::sqrt(2.0f) * (10.0f / 8.0f) * dt;
+	const float power_step = (0.55f + 0.35f + 0.25f) * (PI / 12.0f) * (10.0f - 1.0f) * k;
+	const float turn = strong.get_bend_limit() * PI * k;
+	const float bound = sway + gust + power_step + turn;
+
+	auto largest_jump = [&](int p_model) {
+		WindParams params;
+		params.model = p_model;
+		params.power = 1.0f;
+		params.flip_interval = 0.3f; // many flips
+		WindModel wind;
+		wind.configure(params);
+		std::vector<PlantWind> plants(30);
+		for (uint32_t i = 0; i < plants.size(); ++i) {
+			wind.init_plant(plants[i], 3, i, 0.0);
+		}
+		std::vector<glm::vec2> before(plants.size());
+		float largest = 0.0f;
+		for (int frame = 1; frame <= 60 * 15; ++frame) {
+			if (frame == 60 * 5) {
+				params.power = 10.0f;
+				wind.configure(params);
+			}
+			if (frame == 60 * 10) {
+				params.direction = { -1.0f, 0.0f };
+				wind.configure(params);
+			}
+			wind.advance(dt);
+			for (uint32_t i = 0; i < plants.size(); ++i) {
+				wind.advance_plant(plants[i], 3, i, frame * double(dt), dt);
+				const glm::vec2 now = wind.bend_vector(plants[i], glm::vec2(float(i) * 2.3f, 1.0f));
+				if (frame > 1) {
+					largest = std::max(largest, glm::length(now - before[i]));
+				}
+				before[i] = now;
+			}
+		}
+		return largest;
+	};
+	const float natural = largest_jump(WIND_NATURAL);
+	INFO("largest per-frame change: natural ", natural, ", bound ", bound);
+	CHECK(natural <= bound);
+	CHECK(largest_jump(WIND_THESIS) > bound); // the thesis' flips, power and direction steps jump
+}
+
+TEST_CASE("natural wind: gusts arrive downwind later in proportion to the distance") {
+	WindModel wind = natural_wind(4.0f); // gusts travel at 4 m/s
+	const float dt = 1.0f / 60.0f;
+	std::vector<float> here, there;
+	for (int frame = 0; frame < 60 * 30; ++frame) {
+		wind.advance(dt);
+		here.push_back(wind.gust_strength({ 0.0f, 2.0f }));
+		there.push_back(wind.gust_strength({ 12.0f, 2.0f })); // 12 m downwind
+	}
+	CHECK(*std::max_element(here.begin(), here.end()) - *std::min_element(here.begin(), here.end()) > 0.2f);
+	int best_lag = -1;
+	float best_error = 1e30f;
+	for (int lag = 0; lag <= 60 * 6; ++lag) {
+		float error = 0.0f;
+		for (size_t t = size_t(lag); t < here.size(); ++t) {
+			error += std::abs(there[t] - here[t - size_t(lag)]);
+		}
+		if (error < best_error) {
+			best_error = error;
+			best_lag = lag;
+		}
+	}
+	CHECK(best_lag == doctest::Approx(3.0 * 60.0).epsilon(0.02)); // 12 m at 4 m/s: 3 s
 }

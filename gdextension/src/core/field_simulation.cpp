@@ -63,6 +63,7 @@ void FieldSimulation::_rebuild() {
 	const size_t plants = _layout.plants.size();
 	_plant_lod.assign(plants, LOD_BILLBOARD);
 	_plant_wind.assign(plants, PlantWind{});
+	_pushed.clear(); // the slots pointed at the old field's plants
 	_chunk_active.assign(_layout.chunks.size(), 0);
 	_visit_mark.assign(_layout.chunks.size(), 0);
 	_lod_pass = 0;
@@ -191,7 +192,8 @@ void FieldSimulation::_select_chunk_lods(uint32_t p_chunk, bool p_forced, float 
 void FieldSimulation::update(float p_delta) {
 	const float delta = std::isfinite(p_delta) ? std::clamp(p_delta, 0.0f, 1.0f) : 0.0f;
 	_time += double(delta);
-	_gust_phase = std::fmod(_gust_phase + _wind.get_phase_rate() * delta, TAU);
+	_wind.advance(delta);
+	_update_pushes(delta);
 	_since_lod += delta;
 	if (_lod_due || _since_lod >= _lod.get_params().interval) {
 		_select_lods();
@@ -233,7 +235,7 @@ void FieldSimulation::_move_chunks(size_t p_first, size_t p_last, float p_delta,
 	const float scale = _shape.part_scale;
 	const float radius = _shape.cull_radius * scale;
 	const float mid_height = 0.5f * _shape.height * scale;
-	const bool moving = _wind.get_params().power > 0.0f;
+	const bool moving = _wind.get_effective_power() > 0.0f;
 	PartTransforms parts;
 	for (size_t a = p_first; a < p_last; ++a) {
 		const Chunk &chunk = _layout.chunks[_active_chunks[a]];
@@ -255,12 +257,117 @@ void FieldSimulation::_move_chunks(size_t p_first, size_t p_last, float p_delta,
 			if (!visible) {
 				continue;
 			}
-			const float bend = moving ? _wind.bend(wind, _wind.downwind(plant.position), _gust_phase) : 0.0f;
-			_wind.part_transforms(plant, bend, scale, parts);
+			_wind.part_transforms(plant, _plant_bend(index, plant, moving), scale, parts);
 			for (uint32_t part = 0; part < PART_COUNT; ++part) {
 				write_instance(r_buckets[mesh_bucket(lod, part)].push(), parts.basis[part], parts.origin[part]);
 			}
 		}
+	}
+}
+
+glm::vec2 FieldSimulation::_plant_bend(uint32_t p_plant, const Plant &p_plant_data, bool p_moving) const {
+	const PlantWind &wind = _plant_wind[p_plant];
+	glm::vec2 bend = p_moving ? _wind.bend_vector(wind, p_plant_data.position) : glm::vec2(0.0f);
+	if (wind.push_slot == 0) {
+		return bend;
+	}
+	bend += _pushed[wind.push_slot - 1u].offset;
+	const float size = glm::length(bend);
+	const float limit = _wind.get_bend_limit();
+	return size > limit ? bend * (limit / size) : bend; // a pushed plant still bends at most max_bend
+}
+
+void FieldSimulation::set_pushers(const Pusher *p_pushers, size_t p_count) {
+	_pushers.assign(p_pushers, p_pushers + p_count);
+}
+
+void FieldSimulation::set_push_params(float p_strength, float p_recovery_seconds) {
+	_push_strength = sanitize(param::PUSH_STRENGTH, p_strength, _push_strength);
+	_push_recovery = sanitize(param::PUSH_RECOVERY, p_recovery_seconds, _push_recovery);
+}
+
+void FieldSimulation::find_plants_near(const glm::vec2 &p_center, float p_radius, std::vector<uint32_t> &r_plants) const {
+	if (_layout.grid_chunks.empty() || !(p_radius >= 0.0f)) {
+		return;
+	}
+	const float size = _layout.chunk_size;
+	const int x0 = std::max(0, static_cast<int>(std::floor((p_center.x - p_radius) / size)));
+	const int x1 = std::min(_layout.grid_x - 1, static_cast<int>(std::floor((p_center.x + p_radius) / size)));
+	const int z0 = std::max(0, static_cast<int>(std::floor((p_center.y - p_radius) / size)));
+	const int z1 = std::min(_layout.grid_z - 1, static_cast<int>(std::floor((p_center.y + p_radius) / size)));
+	const float radius_sq = p_radius * p_radius;
+	for (int z = z0; z <= z1; ++z) {
+		for (int x = x0; x <= x1; ++x) {
+			const uint32_t c = _layout.grid_chunks[static_cast<size_t>(z) * size_t(_layout.grid_x) + size_t(x)];
+			if (c == FieldLayout::NO_CHUNK) {
+				continue;
+			}
+			const Chunk &chunk = _layout.chunks[c];
+			for (uint32_t k = 0; k < chunk.count; ++k) {
+				const uint32_t index = _layout.chunk_plants[chunk.first + k];
+				const glm::vec2 d = _layout.plants[index].position - p_center;
+				if (glm::dot(d, d) < radius_sq) {
+					r_plants.push_back(index);
+				}
+			}
+		}
+	}
+}
+
+void FieldSimulation::_update_pushes(float p_delta) {
+	if (_pushers.empty() && _pushed.empty()) {
+		return;
+	}
+	for (PushState &state : _pushed) {
+		state.target = glm::vec2(0.0f);
+	}
+	const float top = _shape.height * _shape.part_scale;
+	for (const Pusher &pusher : _pushers) {
+		if (!(pusher.radius > 0.0f) || pusher.position.y - pusher.radius > top || pusher.position.y + pusher.radius < 0.0f) {
+			continue; // flying over the plants, or under the ground
+		}
+		const glm::vec2 center(pusher.position.x, pusher.position.z);
+		_near.clear();
+		find_plants_near(center, pusher.radius, _near);
+		for (uint32_t index : _near) {
+			PlantWind &wind = _plant_wind[index];
+			if (wind.push_slot == 0) {
+				if (_pushed.size() >= 0xFFFFu) {
+					continue; // more than 65 535 plants pushed at once: the rest stay as they are
+				}
+				_pushed.push_back(PushState{ index, glm::vec2(0.0f), glm::vec2(0.0f), glm::vec2(0.0f) });
+				wind.push_slot = static_cast<uint16_t>(_pushed.size());
+			}
+			const glm::vec2 away = _layout.plants[index].position - center;
+			const float distance = glm::length(away);
+			const glm::vec2 direction = distance > 1e-4f ? away / distance : glm::vec2(1.0f, 0.0f);
+			_pushed[wind.push_slot - 1u].target += direction * (_push_strength * (1.0f - distance / pusher.radius));
+		}
+	}
+	// Critically damped springs towards the targets, solved exactly (stable for any frame time):
+	// with e = offset − target, e(t) = (e₀ + (v₀ + ω·e₀)·t)·e^(−ω·t). ω makes a released plant settle
+	// to 0.1 % of its push ((1 + 9.2)·e^(−9.2)) in the recovery time, when its state is dropped.
+	const float omega = 9.2f / _push_recovery;
+	const float decay = std::exp(-omega * p_delta);
+	for (size_t i = 0; i < _pushed.size();) {
+		PushState &state = _pushed[i];
+		const glm::vec2 e0 = state.offset - state.target;
+		const glm::vec2 v0 = state.velocity;
+		const glm::vec2 c = v0 + omega * e0;
+		state.offset = state.target + (e0 + c * p_delta) * decay;
+		state.velocity = (v0 - omega * c * p_delta) * decay;
+		const bool settled = state.target == glm::vec2(0.0f) && glm::dot(state.offset, state.offset) < 4e-6f &&
+				glm::dot(state.velocity, state.velocity) < 4e-4f;
+		if (!settled) {
+			++i;
+			continue;
+		}
+		_plant_wind[state.plant].push_slot = 0;
+		if (i + 1 < _pushed.size()) {
+			state = _pushed.back();
+			_plant_wind[state.plant].push_slot = static_cast<uint16_t>(i + 1);
+		}
+		_pushed.pop_back();
 	}
 }
 
@@ -306,6 +413,7 @@ size_t FieldSimulation::get_memory_bytes() const {
 	bytes += _chunk_active.capacity() + _visit_mark.capacity() * sizeof(uint32_t);
 	bytes += (_active_chunks.capacity() + _previous_active.capacity() + _changed_chunks.capacity()) * sizeof(uint32_t);
 	bytes += _layout.grid_chunks.capacity() * sizeof(uint32_t);
+	bytes += _pushed.capacity() * sizeof(PushState) + (_pushers.capacity() + _near.capacity()) * sizeof(uint32_t);
 	for (const InstanceBuffer &bucket : _buckets) {
 		bytes += size_t(bucket.get_capacity()) * FLOATS_PER_INSTANCE * sizeof(float);
 	}
@@ -319,9 +427,9 @@ size_t FieldSimulation::get_memory_bytes() const {
 
 void FieldSimulation::get_plant_parts(uint32_t p_plant, PartTransforms &r_parts) const {
 	const Plant &plant = _layout.plants[p_plant];
-	float bend = 0.0f;
-	if (_chunk_active[plant.chunk] && _plant_lod[p_plant] < LOD_SPRITE && _wind.get_params().power > 0.0f) {
-		bend = _wind.bend(_plant_wind[p_plant], _wind.downwind(plant.position), _gust_phase);
+	glm::vec2 bend(0.0f);
+	if (_chunk_active[plant.chunk] && _plant_lod[p_plant] < LOD_SPRITE) {
+		bend = _plant_bend(p_plant, plant, _wind.get_effective_power() > 0.0f);
 	}
 	_wind.part_transforms(plant, bend, _shape.part_scale, r_parts);
 }

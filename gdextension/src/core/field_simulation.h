@@ -58,6 +58,12 @@ struct PlantShape {
 	float height = HEIGHT; // model units
 };
 
+// A body that plants part around: a point in the field's space and the radius it reaches.
+struct Pusher {
+	glm::vec3 position{ 0.0f };
+	float radius = float(param::PUSHER_RADIUS.default_value);
+};
+
 struct ChunkBounds {
 	glm::vec3 min{ 0.0f };
 	glm::vec3 max{ 0.0f };
@@ -97,6 +103,18 @@ public:
 	void update(float p_delta);
 	// Makes the next update re-select LODs regardless of the interval.
 	void request_lod_update() { _lod_due = true; }
+
+	// Bodies the plants part around, from the next update on. A plant within a pusher's radius bends
+	// away from its centre (whole plant from the ground, the bottom part most, like a stalk) by up to
+	// p_strength (a bend, as the wind's), added to the wind's; once free it springs back, critically
+	// damped, settling within p_recovery_seconds. Only plants being pushed or springing back hold any
+	// state, so a field without pushers costs what it did.
+	void set_pushers(const Pusher *p_pushers, size_t p_count);
+	void set_push_params(float p_strength, float p_recovery_seconds);
+	// Plants pushed now or springing back.
+	uint32_t get_pushed_count() const { return static_cast<uint32_t>(_pushed.size()); }
+	// The plants whose roots lie within p_radius of p_center (x, z), appended to r_plants.
+	void find_plants_near(const glm::vec2 &p_center, float p_radius, std::vector<uint32_t> &r_plants) const;
 
 	// Threads that move the near plants, the caller included: 0 picks the hardware's count (at most
 	// param::MAX_AUTO_THREADS), 1 moves them all on the caller, at most param::MAX_THREADS. The
@@ -140,6 +158,14 @@ public:
 	void get_plant_parts(uint32_t p_plant, PartTransforms &r_parts) const;
 
 private:
+	struct PushState {
+		uint32_t plant = 0;
+		glm::vec2 offset{ 0.0f }; // the push's bend now
+		glm::vec2 velocity{ 0.0f };
+		glm::vec2 target{ 0.0f }; // where the pushers want it this frame
+	};
+	void _update_pushes(float p_delta);
+	glm::vec2 _plant_bend(uint32_t p_plant, const Plant &p_plant_data, bool p_moving) const;
 	void _rebuild();
 	void _select_lods();
 	void _select_chunk_lods(uint32_t p_chunk, bool p_forced, float p_enter, float p_leave);
@@ -174,8 +200,13 @@ private:
 	uint32_t _active_plants = 0;
 	uint32_t _last_tasks = 1;
 
+	std::vector<Pusher> _pushers;
+	std::vector<PushState> _pushed; // PlantWind::push_slot - 1 indexes this
+	std::vector<uint32_t> _near; // scratch for pushes
+	float _push_strength = float(param::PUSH_STRENGTH.default_value);
+	float _push_recovery = float(param::PUSH_RECOVERY.default_value);
+
 	double _time = 0.0;
-	float _gust_phase = 0.0f;
 	float _since_lod = 0.0f;
 	bool _lod_due = true;
 };

@@ -36,6 +36,8 @@ constexpr double NO_MIN = -NO_MAX;
 
 // Wind (thesis 5.4): power p_w, the stiffnesses d1 / d2, h, and this addon's clamp, flips and gust.
 // A NaN power becomes calm (0), not the default: a broken input should not start a wind.
+// 0: the thesis' equations, exactly (reproduction); 1: natural wind for games (wind_model.h).
+inline constexpr ParameterSpec WIND_MODEL{ "SunflowerWind.model", 1.0, 0.0, 1.0, ParameterSpec::CLAMP, 1.0 };
 inline constexpr ParameterSpec WIND_POWER{ "SunflowerWind.power", 1.0, 0.0, 100.0, ParameterSpec::CLAMP, 0.0 };
 inline constexpr ParameterSpec WIND_INCREMENT{ "SunflowerWind.increment", 0.1, 0.0, 100.0, ParameterSpec::CLAMP, 0.1 };
 inline constexpr ParameterSpec WIND_STIFFNESS_MIDDLE{ "SunflowerWind.stiffness_middle", 1.5, 0.1, NO_MAX, ParameterSpec::CLAMP, 1.5 };
@@ -71,11 +73,17 @@ constexpr uint32_t MAX_AUTO_THREADS = 4;
 constexpr uint32_t MAX_THREADS = 16;
 inline constexpr ParameterSpec WORKER_THREADS{ "SunflowerField.worker_threads", 0.0, 0.0, MAX_THREADS, ParameterSpec::CLAMP, 0.0 };
 
-inline constexpr std::array<const ParameterSpec *, 23> ALL{ { &WIND_POWER, &WIND_INCREMENT, &WIND_STIFFNESS_MIDDLE,
+// Plants that part around bodies: the largest push (as a bend, radians of tilt at the bottom part
+// times its stiffness: the same unit as the wind's), and the seconds a plant takes to spring back.
+inline constexpr ParameterSpec PUSH_STRENGTH{ "SunflowerField.push_strength", 1.2, 0.0, 10.0, ParameterSpec::CLAMP, 1.2 };
+inline constexpr ParameterSpec PUSH_RECOVERY{ "SunflowerField.push_recovery_time", 1.5, 0.05, 60.0, ParameterSpec::CLAMP, 1.5 };
+inline constexpr ParameterSpec PUSHER_RADIUS{ "SunflowerField.pusher_radius", 0.6, 0.01, 20.0, ParameterSpec::CLAMP, 0.6 };
+
+inline constexpr std::array<const ParameterSpec *, 27> ALL{ { &WIND_MODEL, &WIND_POWER, &WIND_INCREMENT, &WIND_STIFFNESS_MIDDLE,
 		&WIND_STIFFNESS_BOTTOM, &WIND_BEND_PER_POWER, &WIND_MAX_BEND, &WIND_FLIP_INTERVAL, &WIND_FLIP_CHANCE,
 		&WIND_GUST_SPEED, &WIND_GUST_SHARE, &CELL_SIZE, &PLANT_HEIGHT, &CHUNK_SIZE, &MAX_PLANTS, &LOD_HYSTERESIS,
 		&LOD_INTERVAL, &FORCE_LOD, &ALPHA_SCISSOR, &THINNING_DISTANCE, &THINNING_MIN_DENSITY, &MAX_DRAW_DISTANCE,
-		&BUILD_BUDGET_MS, &WORKER_THREADS } };
+		&BUILD_BUDGET_MS, &WORKER_THREADS, &PUSH_STRENGTH, &PUSH_RECOVERY, &PUSHER_RADIUS } };
 
 } // namespace param
 

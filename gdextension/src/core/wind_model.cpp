@@ -33,8 +33,15 @@ glm::mat3 yaw_scale(float p_yaw, float p_scale_xz, float p_scale_y) {
 
 } // namespace
 
+// Natural wind: how fast power and direction changes ease in, and how long a redrawn b takes to
+// turn the sway round.
+constexpr float EASE_SECONDS = 0.5f;
+// Natural wind: the size of a gust cell on the ground, metres.
+constexpr float GUST_CELL = 8.0f;
+
 void WindModel::configure(const WindParams &p_params) {
 	_params = p_params;
+	_params.model = int(sanitize(param::WIND_MODEL, double(p_params.model), double(_params.model)));
 	_params.power = sanitize(param::WIND_POWER, p_params.power, _params.power);
 	_params.direction = sanitize_wind_direction(p_params.direction);
 	_params.d1 = sanitize(param::WIND_STIFFNESS_MIDDLE, p_params.d1, _params.d1);
@@ -45,11 +52,69 @@ void WindModel::configure(const WindParams &p_params) {
 	_params.flip_chance = sanitize(param::WIND_FLIP_CHANCE, p_params.flip_chance, _params.flip_chance);
 	_params.gust_speed = sanitize(param::WIND_GUST_SPEED, p_params.gust_speed, _params.gust_speed);
 	_params.gust_share = sanitize(param::WIND_GUST_SHARE, p_params.gust_share, _params.gust_share);
-
-	const float p_w = _params.power;
-	_rate = (p_w <= 1.0f ? p_w : p_w / 20.0f + 1.0f) * PI; // eq. 6
-	_lean = glm::normalize(_params.direction);
 	_bend_limit = _params.max_bend / (1.0f / _params.d1 + 1.0f / _params.d2);
+	if (_params.model == WIND_THESIS || !_advanced) {
+		// The thesis' wind changes at once; natural wind starts where it is configured before it moves.
+		_power = _params.power;
+		_lean = glm::normalize(_params.direction);
+	}
+	_derive();
+}
+
+void WindModel::_derive() {
+	const float p_w = _power;
+	_rate = (p_w <= 1.0f ? p_w : p_w / 20.0f + 1.0f) * PI; // eq. 6
+	_amplitude = _bend_limit > 0.0f ? _bend_limit * (1.0f - std::exp(-p_w * _params.h / _bend_limit)) : 0.0f;
+}
+
+void WindModel::advance(float p_delta) {
+	_advanced = true;
+	if (_params.model == WIND_THESIS) {
+		_gust_phase = std::fmod(_gust_phase + _rate * p_delta, TAU);
+		return;
+	}
+	const float k = 1.0f - std::exp(-p_delta / EASE_SECONDS);
+	_power += (_params.power - _power) * k;
+	const float now = std::atan2(_lean.y, _lean.x);
+	const glm::vec2 target = glm::normalize(_params.direction);
+	float turn = std::atan2(target.y, target.x) - now;
+	turn = std::remainder(turn, TAU); // the shorter way round
+	_lean = glm::vec2(std::cos(now + turn * k), std::sin(now + turn * k));
+	_derive();
+	_gust_scroll += double(_power) * double(p_delta); // gusts travel with the wind: p_w ≈ m/s
+}
+
+float WindModel::gust_strength(const glm::vec2 &p_position) const {
+	if (_params.model == WIND_THESIS) {
+		return 0.0f;
+	}
+	// Smooth value noise over (downwind, crosswind) cells, scrolled downwind.
+	const float u = float((double(downwind(p_position)) - _gust_scroll) / double(GUST_CELL));
+	const float v = (p_position.y * _lean.x - p_position.x * _lean.y) / GUST_CELL;
+	const float fu = std::floor(u);
+	const float fv = std::floor(v);
+	const auto corner = [&](float p_u, float p_v) {
+		const uint64_t key = (uint64_t(uint32_t(int32_t(p_u))) << 32) | uint32_t(int32_t(p_v));
+		return unit_float(hash_plant(0x5eed, key, STREAM_GUST));
+	};
+	const auto smooth = [](float p_t) { return p_t * p_t * (3.0f - 2.0f * p_t); };
+	const float tu = smooth(u - fu);
+	const float tv = smooth(v - fv);
+	const float top = corner(fu, fv) + (corner(fu + 1.0f, fv) - corner(fu, fv)) * tu;
+	const float bottom = corner(fu, fv + 1.0f) + (corner(fu + 1.0f, fv + 1.0f) - corner(fu, fv + 1.0f)) * tu;
+	return top + (bottom - top) * tv;
+}
+
+glm::vec2 WindModel::bend_vector(const PlantWind &p_wind, const glm::vec2 &p_position) const {
+	if (_params.model == WIND_THESIS) {
+		return bend(p_wind, downwind(p_position), _gust_phase) * _lean;
+	}
+	if (_bend_limit <= 0.0f) {
+		return glm::vec2(0.0f);
+	}
+	const float gust = _params.gust_share * 0.5f * _amplitude * gust_strength(p_position);
+	const float lean = 0.55f * _amplitude + 0.35f * _amplitude * std::sin(p_wind.phase) + gust;
+	return _bend_limit * std::tanh(lean / _bend_limit) * _lean;
 }
 
 float WindModel::flip_offset(uint64_t p_seed, uint32_t p_plant) const {
@@ -59,6 +124,7 @@ float WindModel::flip_offset(uint64_t p_seed, uint32_t p_plant) const {
 void WindModel::init_plant(PlantWind &r_wind, uint64_t p_seed, uint32_t p_plant, double p_time) const {
 	r_wind.phase = unit_float(hash_plant(p_seed, p_plant, STREAM_PHASE)) * TAU;
 	r_wind.direction = (hash_plant(p_seed, p_plant, STREAM_DIRECTION) & 1u) ? int8_t(1) : int8_t(-1);
+	r_wind.eased = int8_t(127 * r_wind.direction);
 	const double since = p_time - double(flip_offset(p_seed, p_plant));
 	r_wind.next_flip = since < 0.0 ? 0u : static_cast<uint32_t>(std::floor(since / _params.flip_interval)) + 1u;
 }
@@ -71,6 +137,10 @@ void WindModel::advance_plant(PlantWind &r_wind, uint64_t p_seed, uint32_t p_pla
 		}
 		++r_wind.next_flip;
 	}
+	if (_params.model == WIND_NATURAL) {
+		_advance_natural(r_wind, p_seed, p_plant, p_delta);
+		return;
+	}
 	float phase = r_wind.phase + float(r_wind.direction) * _rate * p_delta;
 	if (phase < 0.0f) {
 		phase = -phase; // φ never goes negative: turn back with b = +1
@@ -78,6 +148,19 @@ void WindModel::advance_plant(PlantWind &r_wind, uint64_t p_seed, uint32_t p_pla
 	}
 	phase = std::fmod(phase, TAU);
 	r_wind.phase = phase;
+}
+
+void WindModel::_advance_natural(PlantWind &r_wind, uint64_t p_seed, uint32_t p_plant, float p_delta) const {
+	// b turns the sway round over EASE_SECONDS instead of at once.
+	const int step = std::max(1, int(127.0f * p_delta / EASE_SECONDS + 0.5f));
+	const int target = 127 * r_wind.direction;
+	const int eased = r_wind.eased < target ? std::min(target, r_wind.eased + step) : std::max(target, r_wind.eased - step);
+	r_wind.eased = int8_t(eased);
+	// Each plant sways at its own pace, 0.85–1.15 times ω.
+	const float pace = 0.85f + 0.3f * unit_float(hash_plant(p_seed, p_plant, STREAM_PACE));
+	float phase = r_wind.phase + float(eased) / 127.0f * _rate * pace * p_delta;
+	phase = std::fmod(phase, TAU);
+	r_wind.phase = phase < 0.0f ? phase + TAU : phase;
 }
 
 float WindModel::bend(const PlantWind &p_wind, float p_downwind, float p_gust_phase) const {
@@ -92,10 +175,15 @@ float WindModel::bend(const PlantWind &p_wind, float p_downwind, float p_gust_ph
 }
 
 void WindModel::part_transforms(const Plant &p_plant, float p_bend, float p_part_scale, PartTransforms &r_parts) const {
-	// The plant rotates about the horizontal axis perpendicular to the lean: (w_x, w_z) = (lean.z, −lean.x).
-	const glm::vec2 axis(_lean.y, -_lean.x);
-	const glm::mat3 bottom_tilt = rotation_about_horizontal(axis, p_bend / _params.d2);
-	const glm::mat3 upper_tilt = rotation_about_horizontal(axis, p_bend / _params.d1);
+	part_transforms(p_plant, p_bend * _lean, p_part_scale, r_parts);
+}
+
+void WindModel::part_transforms(const Plant &p_plant, const glm::vec2 &p_bend, float p_part_scale, PartTransforms &r_parts) const {
+	// The plant rotates about the horizontal axis across its lean: (w_x, w_z) = (lean.z, −lean.x).
+	const float size = glm::length(p_bend);
+	const glm::vec2 axis = size > 1e-9f ? glm::vec2(p_bend.y, -p_bend.x) / size : glm::vec2(0.0f, -1.0f);
+	const glm::mat3 bottom_tilt = rotation_about_horizontal(axis, size / _params.d2);
+	const glm::mat3 upper_tilt = rotation_about_horizontal(axis, size / _params.d1);
 	const float middle_height = 1.0f + p_plant.alpha / 10.0f; // s' = s + α/10
 
 	const glm::mat3 shape = yaw_scale(p_plant.yaw, p_part_scale, p_part_scale);

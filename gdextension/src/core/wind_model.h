@@ -1,12 +1,24 @@
 #pragma once
-// Steady wind that makes the plants sway (thesis 5.4, equations 4–6), plus the thesis' idea that the
-// bend is handed on to the neighbours with a delay: a gust that travels along the wind direction.
+// Wind that makes the plants sway, in two models.
 //
-// Per plant: a phase φ and a direction b ∈ {+1, −1}. φ advances at b·ω(p_w) (eq. 6); every
-// flip_interval seconds (staggered per plant) b reverses with probability flip_chance; φ never goes
-// negative (b is set back to +1) and wraps at 2π. The bend force is p = p_w·h·sin φ (eq. 5), mixed
-// with a travelling component sin(Ψ(t − s/c)) where s is the plant's downwind coordinate; the
-// bottom part tilts p/d2 and the middle part p/d1 (eq. 4); the head sits rigidly on the middle.
+// THESIS (thesis 5.4, equations 4–6, exact, for reproduction): per plant a phase φ and a direction
+// b ∈ {+1, −1}. φ advances at b·ω(p_w) (eq. 6); every flip_interval seconds (staggered per plant) b
+// reverses with probability flip_chance; φ never goes negative (b is set back to +1) and wraps at
+// 2π. The bend force is p = p_w·h·sin φ (eq. 5), mixed with a travelling component sin(Ψ(t − s/c))
+// where s is the plant's downwind coordinate, clamped so the summed tilt stays within max_bend.
+// It swings symmetrically about upright: plants lean upwind half the time.
+//
+// NATURAL (the default, for games): the plant leans downwind by a mean that grows with the power,
+// sways about it, and gusts roll over the field. With A = L·(1 − e^(−p·h/L)) (L the bend that tilts
+// the plant by max_bend): lean = 0.55·A + 0.35·A·sin φ + gust_share·0.5·A·g(s − c·t, q), smoothly
+// saturated as L·tanh(lean/L), so it never pins at the limit. g is a smooth noise of gust strength
+// in [0, 1] over the field (8 m cells), scrolling downwind at the wind's speed c = p_w m/s; φ runs
+// at ω(p_w) times a per-plant factor, and a redrawn b turns it round over half a second instead of
+// at once. Power and direction changes ease in over half a second. The lean never goes upwind.
+//
+// Both: the bottom part tilts p/d2 and the middle part p/d1 (eq. 4), about the horizontal axis
+// across the lean; the head sits rigidly on the middle. A bend is a vector on the ground (x, z):
+// its length the bend force, its direction the lean, so pushes from bodies add to the wind's.
 #include "field_layout.h"
 #include "parameters.h"
 
@@ -19,7 +31,13 @@
 namespace sunflower {
 
 // Defaults and limits: param::WIND_* (parameters.h).
+enum WindKind : int {
+	WIND_THESIS = 0,
+	WIND_NATURAL = 1,
+};
+
 struct WindParams {
+	int model = int(param::WIND_MODEL.default_value); // WindKind
 	float power = float(param::WIND_POWER.default_value); // p_w in [0, 100]; 1.0 ≈ 1 m/s
 	glm::vec2 direction{ 1.0f, 0.0f }; // x, z: where the wind blows to (need not be normalised)
 	float d1 = float(param::WIND_STIFFNESS_MIDDLE.default_value); // stiffness of the middle part
@@ -35,8 +53,11 @@ struct WindParams {
 struct PlantWind {
 	float phase = 0.0f; // φ ∈ [0, 2π)
 	int8_t direction = 1; // b
+	int8_t eased = 127; // natural model: b eased towards ±1, as 127ths
+	uint16_t push_slot = 0; // FieldSimulation: 1 + the plant's slot among pushed plants, 0 if none
 	uint32_t next_flip = 0; // index k of the next redraw at t = offset + k·flip_interval
 };
+static_assert(sizeof(PlantWind) == 12, "per-plant wind state stays 12 bytes");
 
 // The three part transforms of one plant: linear part and origin (the part's root), bottom to top.
 struct PartTransforms {
@@ -49,10 +70,22 @@ public:
 	void configure(const WindParams &p_params);
 	const WindParams &get_params() const { return _params; }
 
+	// The field-wide motion of one frame: the thesis' gust phase Ψ advances; natural wind eases power
+	// and direction towards the configured ones and scrolls its gusts.
+	void advance(float p_delta);
+
 	// ω: the rate of φ in rad/s for the configured power (eq. 6 without b).
 	float get_phase_rate() const { return _rate; }
 	// The unit vector the plants lean towards, and the axis they rotate about (thesis (w_x, w_z)).
 	glm::vec2 get_lean_direction() const { return _lean; }
+	// The power the plants feel now (natural: eased towards the configured power).
+	float get_effective_power() const { return _power; }
+	// The bend force that tilts a plant by max_bend (bottom p/d2 plus middle p/d1).
+	float get_bend_limit() const { return _bend_limit; }
+	// Natural wind: the gust strength in [0, 1] at a point now (0 for the thesis model).
+	float gust_strength(const glm::vec2 &p_position) const;
+	// The bend of a plant now, as a vector on the ground (x, z), in either model.
+	glm::vec2 bend_vector(const PlantWind &p_wind, const glm::vec2 &p_position) const;
 
 	void init_plant(PlantWind &r_wind, uint64_t p_seed, uint32_t p_plant, double p_time) const;
 	// Advances φ by p_delta seconds ending at p_time, redrawing b where a redraw time was passed.
@@ -62,17 +95,28 @@ public:
 	// Downwind coordinate s of a point: its distance along the wind direction.
 	float downwind(const glm::vec2 &p_position) const { return p_position.x * _lean.x + p_position.y * _lean.y; }
 
-	// Part transforms for bend p (eq. 4). p_part_scale: metres per model unit (parts are 1 unit tall).
+	// Part transforms for bend p along the lean direction (eq. 4). p_part_scale: metres per model unit
+	// (parts are 1 unit tall).
 	void part_transforms(const Plant &p_plant, float p_bend, float p_part_scale, PartTransforms &r_parts) const;
+	// Part transforms for a bend vector on the ground (x, z): tilted by its length, towards it.
+	void part_transforms(const Plant &p_plant, const glm::vec2 &p_bend, float p_part_scale, PartTransforms &r_parts) const;
 
 	// A flip offset in [0, flip_interval) for a plant, so redraws are staggered across the field.
 	float flip_offset(uint64_t p_seed, uint32_t p_plant) const;
 
 private:
+	void _derive();
+	void _advance_natural(PlantWind &r_wind, uint64_t p_seed, uint32_t p_plant, float p_delta) const;
+
 	WindParams _params;
-	float _rate = 0.0f;
+	float _rate = 0.0f; // ω at the power felt now
 	float _bend_limit = 0.0f; // limit on p so that p/d1 + p/d2 ≤ max_bend
-	glm::vec2 _lean{ 1.0f, 0.0f };
+	glm::vec2 _lean{ 1.0f, 0.0f }; // the lean direction now (natural: eased)
+	float _power = 0.0f; // the power felt now (natural: eased)
+	float _amplitude = 0.0f; // natural: A for the power felt now
+	float _gust_phase = 0.0f; // thesis: Ψ
+	double _gust_scroll = 0.0; // natural: metres the gust pattern has moved downwind
+	bool _advanced = false; // natural wind eases changes only once it moves
 };
 
 } // namespace sunflower
