@@ -29,6 +29,7 @@ enum Lod { MESH_1, MESH_2, MESH_3, SPRITE, BILLBOARD }
 
 const Native: GDScript = preload("native.gd")
 const FieldBuild: GDScript = preload("field_build.gd")
+const FieldInteraction: GDScript = preload("field_interaction.gd")
 const FieldNodes: GDScript = preload("field_nodes.gd")
 const FieldObserver: GDScript = preload("field_observer.gd")
 const ImpostorSet: GDScript = preload("impostor_set.gd")
@@ -212,6 +213,40 @@ static var _building: Array[SunflowerField] = []
 			max_draw_distance = value
 			_apply_ranges()
 
+@export_group("Interaction")
+## Nodes in this group part the plants around them, like a body walking through the field: near
+## plants within the pusher's radius bend away from it and spring back once it has gone. A pusher's
+## [code]push_radius[/code] meta sets its own radius. Empty: no pushers.
+@export var pusher_group: StringName = &"sunflower_pushers"
+## A pusher's radius when it sets none.
+@export_range(0.01, 20.0, 0.01, "or_greater", "suffix:m") var pusher_radius: float = 0.6:
+	set(value):
+		pusher_radius = Native.accept("SunflowerField.pusher_radius", value, pusher_radius)
+## How far a pusher bends the plants at its centre (a bend, like the wind's: 0.8 tilts a plant about
+## 45°); it falls to 0 at the pusher's radius.
+@export_range(0.0, 10.0, 0.01) var push_strength: float = 1.2:
+	set(value):
+		value = Native.accept("SunflowerField.push_strength", value, push_strength)
+		if value != push_strength:
+			push_strength = value
+			_configure_push()
+## Seconds a plant takes to spring back upright once the pusher has gone.
+@export_range(0.05, 60.0, 0.05, "suffix:s") var push_recovery_time: float = 1.5:
+	set(value):
+		value = Native.accept("SunflowerField.push_recovery_time", value, push_recovery_time)
+		if value != push_recovery_time:
+			push_recovery_time = value
+			_configure_push()
+## Stalks within this distance of a pusher or the observer get capsule colliders (running game
+## only), so characters bump into them and ray casts hit them ([method get_plant_for_body]). 0: none.
+@export_range(0.0, 100.0, 0.1, "or_greater", "suffix:m") var collision_reach: float = 0.0:
+	set(value):
+		collision_reach = Native.accept("SunflowerField.collision_reach", value, collision_reach)
+## The physics layers the stalk colliders are in.
+@export_flags_3d_physics var collision_layer: int = 1
+## The physics layers the stalk colliders scan.
+@export_flags_3d_physics var collision_mask: int = 1
+
 @export_group("Performance")
 ## Build large maps without stalling: the map is read and laid out on a worker thread, then the
 ## field's nodes are made a few at a time, at most [member build_budget_ms] per frame. The previous
@@ -245,6 +280,8 @@ static var _building: Array[SunflowerField] = []
 
 ## The shared look of the far levels.
 var _impostors: ImpostorSet = ImpostorSet.new()
+## Pushers and stalk colliders.
+var _interaction: FieldInteraction = FieldInteraction.new(self)
 ## The meshes the near levels draw.
 var _parts: PartMeshes = PartMeshes.new()
 ## The field drawn now (its simulation and nodes), and the build of the next one.
@@ -276,6 +313,9 @@ func _notification(what: int) -> void:
 	if what == NOTIFICATION_PREDELETE:
 		_cancel_build()
 		_show(null)
+		_interaction.free_colliders()
+	elif what == NOTIFICATION_EXIT_TREE:
+		_interaction.free_colliders()  # they stand in this world's physics space
 
 
 func _process(delta: float) -> void:
@@ -283,9 +323,7 @@ func _process(delta: float) -> void:
 		_rebuild(true)
 	if _build:
 		_step_build(int(1000.0 * maxf(build_budget_ms, minf(delta * 500.0, 100.0))))
-	if get_plant_count() > 0:
-		_push_observer()
-		_drawn.simulation.update(delta)
+	_update_field(delta)
 
 
 ## Reads a map from [param path] ([code]res://[/code], [code]user://[/code] or an absolute path)
@@ -378,9 +416,7 @@ func get_plant_info(index: int) -> Dictionary:
 ## itself every frame).
 func advance(delta: float) -> void:
 	finish_build()
-	if get_plant_count() > 0:
-		_push_observer()
-		_drawn.simulation.update(delta)
+	_update_field(delta)
 
 
 ## Replaces one part mesh, like the thesis' [code]setSunflower[/code]: [param lod] 0–2 (mesh level),
@@ -396,6 +432,37 @@ func set_part_mesh(lod: int, part: int, mesh: Mesh) -> void:
 ## The mesh drawn for a part (the default model where none was set).
 func get_part_mesh(lod: int, part: int) -> Mesh:
 	return _parts.get_mesh(lod, part) if _parts.check(lod, part, "get_part_mesh") else null
+
+
+## Plants pushed by bodies now or still springing back.
+func get_pushed_count() -> int:
+	return _drawn.simulation.get_pushed_count() if _drawn else 0
+
+
+## The plant whose root is nearest to [param point] (field space, on the ground) within
+## [param max_distance] metres, or -1.
+func get_plant_at(point: Vector3, max_distance: float = 0.5) -> int:
+	var nearest: int = -1
+	var best: float = INF
+	for plant: int in _drawn.simulation.get_plants_near(point, max_distance) if _drawn else PackedInt32Array():
+		var distance: float = _drawn.simulation.get_plant_position(plant).distance_squared_to(
+			Vector3(point.x, 0, point.z)
+		)
+		if distance < best:
+			best = distance
+			nearest = plant
+	return nearest
+
+
+## The plant whose stalk collider is [param body] (a ray cast's or a collision's [code]rid[/code],
+## see [member collision_reach]), or -1.
+func get_plant_for_body(body: RID) -> int:
+	return _interaction.get_plant_of_body(body)
+
+
+## How many stalk colliders stand now (see [member collision_reach]).
+func get_collider_count() -> int:
+	return _interaction.get_collider_count()
 
 
 ## Adds [member wind_increment] to the wind power.
@@ -533,6 +600,7 @@ func _show(nodes: FieldNodes) -> void:
 	_drawn.finish(_parts.get_all(), legend, cell_size, plant_height * 0.5)
 	_on_wind_changed()
 	_configure_lod()
+	_configure_push()
 	_drawn.simulation.set_worker_threads(worker_threads)
 	_push_observer()
 	_drawn.simulation.update(0.0)
@@ -579,6 +647,26 @@ func _apply_ranges() -> void:
 func _on_wind_changed() -> void:
 	if _drawn:
 		wind.apply_to(_drawn.simulation)
+
+
+func _configure_push() -> void:
+	if _drawn:
+		_drawn.simulation.set_push_params(push_strength, push_recovery_time)
+
+
+## One frame of the field drawn: observer and pushers to the core, its update, the stalk colliders.
+func _update_field(delta: float) -> void:
+	if get_plant_count() == 0:
+		return
+	var simulation: RefCounted = _drawn.simulation
+	_push_observer()
+	simulation.set_pushers(_interaction.gather_pushers(pusher_group, pusher_radius))
+	simulation.update(delta)
+	if not Engine.is_editor_hint():
+		# A stalk: the bottom and middle parts, two of the plant's three part heights.
+		var stalk: Vector2 = Vector2(0.025 * plant_height, plant_height * 2.0 / 3.0)
+		var reach: float = collision_reach
+		_interaction.update_colliders(simulation, _resolve_observer(), reach, stalk, collision_layer, collision_mask)
 
 
 func _configure_lod() -> void:

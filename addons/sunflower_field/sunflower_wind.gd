@@ -5,14 +5,29 @@ extends Resource
 ## Steady wind that makes sunflowers sway: the thesis' "data format for the phenomena that
 ## animate the plants". Share one resource between fields to give them the same weather.
 ##
-## The sway follows the thesis (J. Plas, 2008, equations 4–6): each plant has a phase φ that
-## advances at [code]b·π·p_w[/code] (or [code]b·π·(p_w/20 + 1)[/code] above 1), where [code]b[/code]
-## is ±1 and is redrawn every [member flip_interval] seconds; the bend [code]p = p_w·h·sin φ[/code]
-## tilts the bottom part by [code]p/d2[/code] and the middle by [code]p/d1[/code]; the head rides
-## on the middle. A share of the sway travels downwind as a gust.
+## Two models ([member model]). [b]Natural[/b] (the default, for games): plants lean downwind by a
+## mean that grows with [member power] and saturates smoothly (never pinned at [member max_bend]),
+## sway about it, and gusts of varying strength roll across the field at the wind's speed; changes
+## of power and direction ease in over half a second. [b]Thesis[/b] reproduces J. Plas (2008),
+## equations 4–6, exactly: each plant has a phase φ that advances at [code]b·π·p_w[/code] (or
+## [code]b·π·(p_w/20 + 1)[/code] above 1), where [code]b[/code] is ±1 and is redrawn every
+## [member flip_interval] seconds; the bend [code]p = p_w·h·sin φ[/code] swings about upright. In
+## both the bottom part tilts by [code]p/d2[/code] and the middle by [code]p/d1[/code]; the head
+## rides on the middle.
+
+## The wind models.
+enum Model { THESIS, NATURAL }
 
 const Native: GDScript = preload("native.gd")
 
+## [b]Natural[/b]: a downwind lean, sway and rolling gusts, for games. [b]Thesis[/b]: the thesis'
+## equations exactly, swinging about upright (for reproducing it).
+@export var model: Model = Model.NATURAL:
+	set(value):
+		value = Native.accept_int("SunflowerWind.model", value, model) as Model
+		if value != model:
+			model = value
+			emit_changed()
 ## Wind power p_w: 0 is calm, 1.0 ≈ 1 m/s, at most 100.
 @export_range(0.0, 100.0, 0.1, "suffix:m/s") var power: float = 1.0:
 	set(value):
@@ -80,14 +95,15 @@ const Native: GDScript = preload("native.gd")
 		if value != flip_chance:
 			flip_chance = value
 			emit_changed()
-## Speed at which a bend is handed on downwind to the neighbours; 0 turns the gust off.
+## Thesis model: speed at which a bend is handed on downwind to the neighbours; 0 turns the gust
+## off. (Natural gusts travel at the wind's own speed.)
 @export_range(0.0, 50.0, 0.1, "or_greater", "suffix:m/s") var gust_speed: float = 3.0:
 	set(value):
 		value = Native.accept("SunflowerWind.gust_speed", value, gust_speed)
 		if value != gust_speed:
 			gust_speed = value
 			emit_changed()
-## How much of the sway is the travelling gust (0: every plant on its own, 1: only the gust).
+## How much of the motion is the travelling gust (0: every plant on its own, 1: only the gust).
 @export_range(0.0, 1.0, 0.01) var gust_share: float = 0.5:
 	set(value):
 		value = Native.accept("SunflowerWind.gust_share", value, gust_share)
@@ -99,6 +115,7 @@ const Native: GDScript = preload("native.gd")
 ## Hands the wind to a native simulation in one call (the core applies its own rules again).
 func apply_to(simulation: RefCounted) -> void:
 	simulation.set_wind(
+		model,
 		power,
 		direction,
 		stiffness_middle,

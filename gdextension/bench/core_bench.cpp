@@ -40,6 +40,8 @@ struct Walk {
 	uint32_t threads = 1; // worker threads, the caller included
 	float mesh_reach = 20.0f; // the mesh 3 → sprite distance: how far the near work reaches
 	bool print = true;
+	int wind_model = WIND_NATURAL;
+	int pushers = 0; // bodies walking with the camera, 0.6 m radius, on a 2 m ring around it
 };
 
 struct Run {
@@ -69,6 +71,12 @@ Run walk(FieldSimulation &r_sim, int p_frames, const Walk &p_walk) {
 		};
 		r_sim.get_frustum().set_planes(planes, 4);
 		r_sim.set_observer(eye);
+		std::vector<Pusher> bodies;
+		for (int b = 0; b < p_walk.pushers; ++b) {
+			const float around = float(b) * TAU / float(p_walk.pushers);
+			bodies.push_back(Pusher{ eye + glm::vec3(2.0f * std::cos(around), -0.7f, 2.0f * std::sin(around)), 0.6f });
+		}
+		r_sim.set_pushers(bodies.data(), bodies.size());
 		const auto start = std::chrono::steady_clock::now();
 		r_sim.update(1.0f / 60.0f);
 		times.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
@@ -87,6 +95,10 @@ Result run(const char *p_name, const std::string &p_text, int p_frames, const Wa
 	}
 	const double load_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - load_start).count();
 	sim.set_worker_threads(p_walk.threads);
+	WindParams wind;
+	wind.model = p_walk.wind_model;
+	wind.power = 3.0f;
+	sim.set_wind(wind);
 	LodParams lod;
 	lod.distances = { 6.0f, 10.0f, p_walk.mesh_reach, p_walk.mesh_reach + 5.0f };
 	sim.set_lod(lod);
@@ -119,6 +131,43 @@ int main() {
 	const Result four = run("4M 2000x2000", rect_map(2000, 2000), 1200, path);
 	std::printf("\n4M vs 1M per frame, same path, same run: median %.2fx, p99 %.2fx\n", four.median / one.median,
 			four.p99 / one.p99);
+
+	// The wind models' cost per near plant, and what pushers add, on one thread along the 1M walk.
+	std::printf("\nWind models and pushers (1M field, power 3, one thread, 1200 frames each):\n\n");
+	std::printf("| run | median ms | p99 ms | near plants | ns per near plant |\n|---|---|---|---|---|\n");
+	Walk one_thread = path;
+	one_thread.threads = 1;
+	one_thread.print = false;
+	double per_plant[2] = { 0.0, 0.0 };
+	Result no_pushers;
+	for (int model : { WIND_THESIS, WIND_NATURAL }) {
+		FieldSimulation sim;
+		MapError error;
+		sim.load_map(rect_map(1000, 1000), U"", "1M", MapLimits{}, error);
+		sim.set_worker_threads(1);
+		WindParams wind;
+		wind.model = model;
+		wind.power = 3.0f;
+		sim.set_wind(wind);
+		const Run result = walk(sim, 1200, one_thread);
+		per_plant[model] = result.result.median * 1e6 / result.active_plants;
+		no_pushers = result.result;
+		std::printf("| %s wind | %.3f | %.3f | %u | %.1f |\n", model == WIND_THESIS ? "thesis" : "natural",
+				result.result.median, result.result.p99, result.active_plants, per_plant[model]);
+	}
+	{
+		FieldSimulation sim;
+		MapError error;
+		sim.load_map(rect_map(1000, 1000), U"", "1M", MapLimits{}, error);
+		sim.set_worker_threads(1);
+		Walk pushed = one_thread;
+		pushed.pushers = 10;
+		const Run result = walk(sim, 1200, pushed);
+		std::printf("| natural wind + 10 pushers | %.3f | %.3f | %u | (%u plants pushed or springing back) |\n",
+				result.result.median, result.result.p99, result.active_plants, sim.get_pushed_count());
+		std::printf("\nnatural vs thesis per near plant: %.2fx; 10 pushers add %.3f ms to the median frame\n",
+				per_plant[WIND_NATURAL] / per_plant[WIND_THESIS], result.result.median - no_pushers.median);
+	}
 
 	// Where a second thread pays: the same walk over the 1M field with the near work grown by
 	// pushing the mesh → sprite distance out, on one thread and on two (the split forced on).

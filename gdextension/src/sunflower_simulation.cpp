@@ -22,12 +22,16 @@ void SunflowerSimulation::bind_methods() {
 	gdx::bind_method(CLASS, "set_layout", &SunflowerSimulation::set_layout, { "cell_size", "seed", "independent_jitter", "chunk_size" });
 	gdx::bind_method(CLASS, "set_plant_height", &SunflowerSimulation::set_plant_height, { "metres" });
 	gdx::bind_method(CLASS, "set_wind", &SunflowerSimulation::set_wind,
-			{ "power", "direction", "stiffness_middle", "stiffness_bottom", "bend_per_power", "max_bend", "flip_interval",
+			{ "model", "power", "direction", "stiffness_middle", "stiffness_bottom", "bend_per_power", "max_bend", "flip_interval",
 					"flip_chance", "gust_speed", "gust_share" });
 	gdx::bind_method(CLASS, "set_lod", &SunflowerSimulation::set_lod, { "distances", "hysteresis", "interval", "force_level" });
 	gdx::bind_method(CLASS, "set_observer", &SunflowerSimulation::set_observer, { "position", "frustum" });
 	gdx::bind_method(CLASS, "set_worker_threads", &SunflowerSimulation::set_worker_threads, { "threads" });
 	gdx::bind_method(CLASS, "get_worker_threads", &SunflowerSimulation::get_worker_threads);
+	gdx::bind_method(CLASS, "set_pushers", &SunflowerSimulation::set_pushers, { "pushers" });
+	gdx::bind_method(CLASS, "set_push_params", &SunflowerSimulation::set_push_params, { "strength", "recovery_seconds" });
+	gdx::bind_method(CLASS, "get_pushed_count", &SunflowerSimulation::get_pushed_count);
+	gdx::bind_method(CLASS, "get_plants_near", &SunflowerSimulation::get_plants_near, { "position", "radius" });
 	gdx::bind_method(CLASS, "get_last_task_count", &SunflowerSimulation::get_last_task_count);
 	gdx::bind_method(CLASS, "set_bucket_multimesh", &SunflowerSimulation::set_bucket_multimesh, { "bucket", "multimesh" });
 	gdx::bind_method(CLASS, "set_chunk_multimeshes", &SunflowerSimulation::set_chunk_multimeshes, { "chunk", "sprite", "billboard" });
@@ -117,10 +121,11 @@ void SunflowerSimulation::set_plant_height(double p_metres) {
 	_sim.set_plant_height(float(p_metres));
 }
 
-void SunflowerSimulation::set_wind(double p_power, gdx::Vector2 p_direction, double p_stiffness_middle, double p_stiffness_bottom,
+void SunflowerSimulation::set_wind(int64_t p_model, double p_power, gdx::Vector2 p_direction, double p_stiffness_middle, double p_stiffness_bottom,
 		double p_bend_per_power, double p_max_bend, double p_flip_interval, double p_flip_chance, double p_gust_speed,
 		double p_gust_share) {
 	WindParams params;
+	params.model = int(std::clamp<int64_t>(p_model, INT32_MIN, INT32_MAX)); // the core clamps
 	params.power = float(p_power);
 	params.direction = gdx::to_core(p_direction);
 	params.d1 = float(p_stiffness_middle);
@@ -325,6 +330,27 @@ void SunflowerSimulation::set_worker_threads(int64_t p_threads) {
 	SF_FAIL_COND_MSG(p_threads < 0 || p_threads > param::MAX_THREADS,
 			"worker threads " + std::to_string(p_threads) + " is out of range (0 to " + std::to_string(param::MAX_THREADS) + ")");
 	_sim.set_worker_threads(static_cast<uint32_t>(p_threads));
+}
+
+void SunflowerSimulation::set_pushers(const gdx::PackedFloat32Array &p_pushers) {
+	SF_FAIL_COND_MSG(p_pushers.size() % 4 != 0,
+			"set_pushers takes 4 floats per pusher (x, y, z, radius), got " + std::to_string(p_pushers.size()));
+	gdx::to_core_pushers(p_pushers, _pushers);
+	_sim.set_pushers(_pushers.data(), _pushers.size());
+}
+
+void SunflowerSimulation::set_push_params(double p_strength, double p_recovery_seconds) {
+	_sim.set_push_params(float(p_strength), float(p_recovery_seconds)); // the core applies param::PUSH_*
+}
+
+int64_t SunflowerSimulation::get_pushed_count() const {
+	return _sim.get_pushed_count();
+}
+
+gdx::PackedInt32Array SunflowerSimulation::get_plants_near(gdx::Vector3 p_position, double p_radius) const {
+	std::vector<uint32_t> plants;
+	_sim.find_plants_near(gdx::to_core_ground(p_position), float(p_radius), plants);
+	return gdx::to_godot_indices(plants);
 }
 
 int64_t SunflowerSimulation::get_worker_threads() const {

@@ -20,12 +20,16 @@ public:
 
 	void set_layout(double p_cell_size, int64_t p_seed, bool p_independent_jitter, double p_chunk_size);
 	void set_plant_height(double p_metres);
-	void set_wind(double p_power, gdx::Vector2 p_direction, double p_stiffness_middle, double p_stiffness_bottom,
+	void set_wind(int64_t p_model, double p_power, gdx::Vector2 p_direction, double p_stiffness_middle, double p_stiffness_bottom,
 			double p_bend_per_power, double p_max_bend, double p_flip_interval, double p_flip_chance, double p_gust_speed,
 			double p_gust_share);
 	void set_lod(const gdx::PackedFloat32Array &p_distances, double p_hysteresis, double p_interval, int64_t p_force_level);
 	void set_observer(gdx::Vector3 p_position, const gdx::PackedFloat32Array &p_frustum);
 	void set_worker_threads(int64_t p_threads);
+	void set_pushers(const gdx::PackedFloat32Array &p_pushers);
+	void set_push_params(double p_strength, double p_recovery_seconds);
+	int64_t get_pushed_count() const;
+	gdx::PackedInt32Array get_plants_near(gdx::Vector3 p_position, double p_radius) const;
 	int64_t get_worker_threads() const;
 	int64_t get_last_task_count() const;
 
@@ -78,5 +82,6 @@ private:
 	sunflower::FieldSimulation _sim;
 	std::array<BucketTarget, sunflower::BUCKET_COUNT> _buckets;
 	std::vector<ChunkTarget> _chunks;
+	std::vector<sunflower::Pusher> _pushers; // reused between frames
 	int64_t _last_update_usec = 0;
 };

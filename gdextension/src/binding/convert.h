@@ -2,11 +2,14 @@
 // The one place where engine types and core (GLM / std) types meet.
 #include "godot_api.h"
 
+#include "core/field_simulation.h"
+
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
 #include <string>
+#include <vector>
 
 namespace gdx {
 
@@ -36,6 +39,30 @@ inline std::string to_core(const PackedByteArray &p_bytes) {
 // Frustum planes: (normal.x, normal.y, normal.z, d) four floats each, as the node packs them.
 inline const glm::vec4 *to_core_planes(const PackedFloat32Array &p_planes) {
 	return reinterpret_cast<const glm::vec4 *>(p_planes.data());
+}
+
+// A point's place on the ground (x, z), for lookups that ignore height.
+inline glm::vec2 to_core_ground(const Vector3 &p_v) {
+	return glm::vec2(p_v.x, p_v.z);
+}
+
+// Pushers: (x, y, z, radius) four floats each, as the node packs them.
+inline void to_core_pushers(const PackedFloat32Array &p_packed, std::vector<sunflower::Pusher> &r_pushers) {
+	const float *data = p_packed.data();
+	r_pushers.resize(size_t(p_packed.size() / 4));
+	for (size_t i = 0; i < r_pushers.size(); ++i) {
+		r_pushers[i] = sunflower::Pusher{ glm::vec3(data[4 * i], data[4 * i + 1], data[4 * i + 2]), data[4 * i + 3] };
+	}
+}
+
+inline PackedInt32Array to_godot_indices(const std::vector<uint32_t> &p_indices) {
+	PackedInt32Array out;
+	out.resize(int64_t(p_indices.size()));
+	int32_t *data = out.data();
+	for (size_t i = 0; i < p_indices.size(); ++i) {
+		data[i] = static_cast<int32_t>(p_indices[i]);
+	}
+	return out;
 }
 
 } // namespace gdx

@@ -287,7 +287,8 @@ void FieldSimulation::set_push_params(float p_strength, float p_recovery_seconds
 }
 
 void FieldSimulation::find_plants_near(const glm::vec2 &p_center, float p_radius, std::vector<uint32_t> &r_plants) const {
-	if (_layout.grid_chunks.empty() || !(p_radius >= 0.0f)) {
+	if (_layout.grid_chunks.empty() || !(p_radius >= 0.0f) || !std::isfinite(p_radius) || !std::isfinite(p_center.x) ||
+			!std::isfinite(p_center.y)) {
 		return;
 	}
 	const float size = _layout.chunk_size;

@@ -79,11 +79,15 @@ inline constexpr ParameterSpec PUSH_STRENGTH{ "SunflowerField.push_strength", 1.
 inline constexpr ParameterSpec PUSH_RECOVERY{ "SunflowerField.push_recovery_time", 1.5, 0.05, 60.0, ParameterSpec::CLAMP, 1.5 };
 inline constexpr ParameterSpec PUSHER_RADIUS{ "SunflowerField.pusher_radius", 0.6, 0.01, 20.0, ParameterSpec::CLAMP, 0.6 };
 
-inline constexpr std::array<const ParameterSpec *, 27> ALL{ { &WIND_MODEL, &WIND_POWER, &WIND_INCREMENT, &WIND_STIFFNESS_MIDDLE,
+// Stalk colliders stand within this reach of each pusher and of the observer; 0: none.
+inline constexpr ParameterSpec COLLISION_REACH{ "SunflowerField.collision_reach", 0.0, 0.0, 1000.0, ParameterSpec::CLAMP, 0.0 };
+
+inline constexpr std::array<const ParameterSpec *, 28> ALL{ { &WIND_MODEL, &WIND_POWER, &WIND_INCREMENT, &WIND_STIFFNESS_MIDDLE,
 		&WIND_STIFFNESS_BOTTOM, &WIND_BEND_PER_POWER, &WIND_MAX_BEND, &WIND_FLIP_INTERVAL, &WIND_FLIP_CHANCE,
 		&WIND_GUST_SPEED, &WIND_GUST_SHARE, &CELL_SIZE, &PLANT_HEIGHT, &CHUNK_SIZE, &MAX_PLANTS, &LOD_HYSTERESIS,
 		&LOD_INTERVAL, &FORCE_LOD, &ALPHA_SCISSOR, &THINNING_DISTANCE, &THINNING_MIN_DENSITY, &MAX_DRAW_DISTANCE,
-		&BUILD_BUDGET_MS, &WORKER_THREADS, &PUSH_STRENGTH, &PUSH_RECOVERY, &PUSHER_RADIUS } };
+		&BUILD_BUDGET_MS, &WORKER_THREADS, &PUSH_STRENGTH, &PUSH_RECOVERY, &PUSHER_RADIUS,
+		&COLLISION_REACH } };
 
 } // namespace param
 

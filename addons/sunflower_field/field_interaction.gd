@@ -1,0 +1,110 @@
+@tool
+extends RefCounted
+## Bodies among the plants: gathers the pushers (the nodes in the field's pusher group) for the
+## native core, which bends the plants near them away, and keeps the stalks' collision bubble —
+## a static capsule on the physics server for each plant within reach of a pusher or the observer,
+## made as plants come into reach and freed as they leave (no nodes per plant).
+
+## Meta key a pusher may carry to set its own radius (metres); else the field's pusher_radius.
+const RADIUS_META: StringName = &"push_radius"
+
+var _field: Node3D
+var _shape: RID
+var _shape_size: Vector2 = Vector2.ZERO
+var _bodies: Dictionary = {}  # plant index -> body RID
+var _plants_of_bodies: Dictionary = {}  # body RID -> plant index
+var _pushers: PackedFloat32Array = PackedFloat32Array()
+
+
+func _init(field: Node3D) -> void:
+	_field = field
+
+
+## The pushers' positions in the field's space and their radii: 4 floats each (x, y, z, radius).
+func gather_pushers(group: StringName, default_radius: float) -> PackedFloat32Array:
+	_pushers.clear()
+	if group.is_empty() or not _field.is_inside_tree():
+		return _pushers
+	var to_local: Transform3D = _field.global_transform.affine_inverse()
+	for node: Node in _field.get_tree().get_nodes_in_group(group):
+		var body: Node3D = node as Node3D
+		if body == null or not body.is_inside_tree():
+			continue
+		var radius: float = float(body.get_meta(RADIUS_META, default_radius))
+		var local: Vector3 = to_local * body.global_position
+		_pushers.append_array([local.x, local.y, local.z, radius])
+	return _pushers
+
+
+## Keeps a capsule ([param stalk]: radius, height in metres) standing on every plant within
+## [param reach] of the gathered pushers and of [param observer] (if any), in the field's physics
+## space, with the given collision layer and mask. [param reach] 0 frees them all.
+func update_colliders(
+	simulation: RefCounted, observer: Node3D, reach: float, stalk: Vector2, layer: int, mask: int
+) -> void:
+	if reach <= 0.0 or not _field.is_inside_tree():
+		free_colliders()
+		return
+	if stalk != _shape_size:
+		free_colliders()
+		_shape_size = stalk
+	var wanted: Dictionary = {}
+	var centres: Array[Vector3] = []
+	if observer:
+		centres.append(_field.to_local(observer.global_position))
+	for i: int in range(0, _pushers.size(), 4):
+		centres.append(Vector3(_pushers[i], _pushers[i + 1], _pushers[i + 2]))
+	for centre: Vector3 in centres:
+		for plant: int in simulation.get_plants_near(centre, reach):
+			wanted[plant] = true
+	for plant: int in _bodies.keys():
+		if not wanted.has(plant):
+			_free_body(plant)
+	var space: RID = _field.get_world_3d().space
+	for plant: int in wanted:
+		if not _bodies.has(plant):
+			_make_body(plant, simulation.get_plant_position(plant), space, layer, mask)
+
+
+## The plant whose stalk collider is [param body] (a ray cast's [code]rid[/code]), or -1.
+func get_plant_of_body(body: RID) -> int:
+	return _plants_of_bodies.get(body, -1)
+
+
+## How many stalk colliders exist now.
+func get_collider_count() -> int:
+	return _bodies.size()
+
+
+## Frees every collider and the shared shape.
+func free_colliders() -> void:
+	for plant: int in _bodies.keys():
+		_free_body(plant)
+	if _shape.is_valid():
+		PhysicsServer3D.free_rid(_shape)
+		_shape = RID()
+
+
+func _make_body(plant: int, root: Vector3, space: RID, layer: int, mask: int) -> void:
+	if not _shape.is_valid():
+		_shape = PhysicsServer3D.capsule_shape_create()
+		PhysicsServer3D.shape_set_data(_shape, {"radius": _shape_size.x, "height": _shape_size.y})
+	var body: RID = PhysicsServer3D.body_create()
+	PhysicsServer3D.body_set_mode(body, PhysicsServer3D.BODY_MODE_STATIC)
+	PhysicsServer3D.body_add_shape(body, _shape, Transform3D(Basis(), Vector3(0.0, _shape_size.y * 0.5, 0.0)))
+	PhysicsServer3D.body_set_collision_layer(body, layer)
+	PhysicsServer3D.body_set_collision_mask(body, mask)
+	PhysicsServer3D.body_attach_object_instance_id(body, _field.get_instance_id())
+	PhysicsServer3D.body_set_state(
+		body, PhysicsServer3D.BODY_STATE_TRANSFORM, _field.global_transform * Transform3D(Basis(), root)
+	)
+	PhysicsServer3D.body_set_space(body, space)
+	_bodies[plant] = body
+	_plants_of_bodies[body] = plant
+
+
+func _free_body(plant: int) -> void:
+	var body: RID = _bodies[plant]
+	_plants_of_bodies.erase(body)
+	_bodies.erase(plant)
+	PhysicsServer3D.free_rid(body)
