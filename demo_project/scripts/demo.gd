@@ -19,6 +19,8 @@ const MAP_PATHS: PackedStringArray = ["res://fields/demo.field", "res://fields/l
 const INCREMENTS: PackedFloat32Array = [0.1, 10.0]
 const TRIANGLES_SPRITE: int = 4
 const TRIANGLES_BILLBOARD: int = 2
+## Below this eye height the camera is a pusher: the flowers part around it.
+const PUSHER_HEIGHT: float = 2.5
 
 var _map_path: String = MAP_PATHS[0]
 var _frames_total: int = -1
@@ -146,6 +148,13 @@ func _unhandled_input(event: InputEvent) -> void:
 		_field.wind_increment = (
 			INCREMENTS[1] if is_equal_approx(_field.wind_increment, INCREMENTS[0]) else INCREMENTS[0]
 		)
+	elif event.is_action_pressed("walk_mode"):
+		_camera.walking = not _camera.walking
+		_hud.show_message("walk mode: head height, the flowers part around you" if _camera.walking else "fly mode")
+	elif event.is_action_pressed("wind_model"):
+		var natural: bool = _field.wind.model == SunflowerWind.Model.NATURAL
+		_field.wind.model = SunflowerWind.Model.THESIS if natural else SunflowerWind.Model.NATURAL
+		_hud.show_message("wind model: " + _wind_model_name())
 	elif event.is_action_pressed("toggle_wireframe"):
 		var wireframe: bool = get_viewport().debug_draw != Viewport.DEBUG_DRAW_WIREFRAME
 		get_viewport().debug_draw = Viewport.DEBUG_DRAW_WIREFRAME if wireframe else Viewport.DEBUG_DRAW_DISABLED
@@ -163,6 +172,13 @@ func _unhandled_input(event: InputEvent) -> void:
 
 
 func _process(delta: float) -> void:
+	# Flying low (or walking), the camera is a body among the flowers: they part around it.
+	var low: bool = _camera.global_position.y < PUSHER_HEIGHT
+	if low != _camera.is_in_group(_field.pusher_group):
+		if low:
+			_camera.add_to_group(_field.pusher_group)
+		else:
+			_camera.remove_from_group(_field.pusher_group)
 	_stats_timer -= delta
 	if _stats_timer <= 0.0:
 		_stats_timer = 0.25
@@ -220,7 +236,8 @@ func _stats_text() -> String:
 			"%d FPS (%.1f ms)   native update %.2f ms\n"
 			+ "%d plants: mesh 1 %d, mesh 2 %d, mesh 3 %d, sprite %d, billboard %d\n"
 			+ "triangles drawn ~%.2f M\n"
-			+ "wind %.1f m/s towards (%.2f, %.2f), increment %.1f"
+			+ "wind %.1f m/s towards (%.2f, %.2f), increment %.1f, %s model (F9)\n"
+			+ "%s, %d plants pushed"
 		)
 		% [
 			fps,
@@ -237,8 +254,15 @@ func _stats_text() -> String:
 			_field.wind_direction.x,
 			_field.wind_direction.y,
 			_field.wind_increment,
+			_wind_model_name(),
+			"walking (F8)" if _camera.walking else "flying (F8 walks)",
+			_field.get_pushed_count(),
 		]
 	)
+
+
+func _wind_model_name() -> String:
+	return "natural" if _field.wind.model == SunflowerWind.Model.NATURAL else "thesis"
 
 
 func _open_part_dialog() -> void:

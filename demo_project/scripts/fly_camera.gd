@@ -12,6 +12,14 @@ extends Camera3D
 @export var mouse_sensitivity: float = 0.003
 ## When false the camera ignores the keyboard and mouse (the recording mode flies it).
 @export var manual: bool = true
+## Walk mode: the camera keeps to head height over the ground and moves level (F8).
+@export var walking: bool = false:
+	set(value):
+		walking = value
+		if walking:
+			global_position.y = walk_height
+## Eye height while walking, metres.
+@export var walk_height: float = 1.7
 
 var start_transform: Transform3D
 
@@ -39,6 +47,11 @@ func _process(delta: float) -> void:
 	var input: Vector2 = Input.get_vector("move_left", "move_right", "move_forward", "move_back")
 	var lift: float = Input.get_axis("move_down", "move_up")
 	var factor: float = fast_factor if Input.is_action_pressed("move_fast") else 1.0
+	if walking:
+		var level: Basis = Basis(Vector3.UP, global_rotation.y)
+		global_position += level * Vector3(input.x, 0.0, input.y) * speed * 0.4 * factor * delta
+		global_position.y = walk_height
+		return
 	translate(Vector3(input.x, 0.0, input.y) * speed * factor * delta)
 	global_position.y += lift * speed * factor * delta
 

@@ -8,7 +8,8 @@ signal map_chosen(path: String)
 const HELP: String = """W/S forward/back   A/D strafe   E/Space up   Q/C down   Shift faster
 Mouse look (click to capture)   R start position   F1 wireframe
 F2/F3 wind +/- increment   F4/F5 wind direction x/z   F6 increment 0.1 <-> 10
-F7 load a part mesh (glTF)   M next map   F10/H hide this help   Esc quit"""
+F7 load a part mesh (glTF)   F8 walk among the flowers   F9 wind model (natural/thesis)
+M next map   F10/H hide this help   Esc quit"""
 
 var _stats: Label
 var _help: Label

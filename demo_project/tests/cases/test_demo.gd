@@ -120,3 +120,21 @@ func test_the_map_menu_builds_a_large_map_in_the_background_with_progress_shown(
 	check(field.get_build_stats()["background"], "it built in the background")
 	await frames(1)
 	check(progress != null and not progress.visible, "the progress display hides again")
+
+
+func test_walk_mode_puts_the_camera_among_the_flowers_and_they_part() -> void:
+	await frames(3)
+	var camera: FlyCamera = demo.get_node("Camera") as FlyCamera
+	await _press("walk_mode")  # F8
+	check(camera.walking, "F8 walks")
+	check_near(camera.global_position.y, camera.walk_height, 1e-4, "at head height")
+	camera.global_position = field.get_plant_info(600)["position"] + Vector3(0.2, camera.walk_height, 0.0)
+	await frames(30)
+	check(camera.is_in_group(field.pusher_group), "a low camera is a pusher")
+	check(field.get_pushed_count() > 0, "the flowers around it are pushed (%d)" % field.get_pushed_count())
+	await _press("walk_mode")
+	check(not camera.walking, "F8 again flies")
+	await _press("wind_model")  # F9
+	check_eq(field.wind.model, SunflowerWind.Model.THESIS, "F9 switches to the thesis' wind")
+	await _press("wind_model")
+	check_eq(field.wind.model, SunflowerWind.Model.NATURAL, "and back")
