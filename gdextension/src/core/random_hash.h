@@ -29,8 +29,6 @@ enum RandomStream : uint64_t {
 	STREAM_FLIP_OFFSET = 5,
 	STREAM_FLIP = 6,
 	STREAM_DIRECTION = 7,
-	STREAM_PACE = 8,
-	STREAM_GUST = 9,
 };
 
 } // namespace sunflower

@@ -24,6 +24,20 @@ glm::mat3 rotation_about_horizontal(const glm::vec2 &p_axis, float p_angle) {
 			glm::vec3(t * x * z, -s * x, c + t * z * z)); // image of +z
 }
 
+// Natural wind's per-plant hash: cheap, as it runs for every near plant every frame. Its low 16 bits
+// stagger the plant's redraws of b, its high 16 bits set its pace.
+uint32_t natural_hash(uint64_t p_seed, uint32_t p_plant) {
+	const uint32_t h = (p_plant ^ uint32_t(p_seed)) * 0x9e3779b1u;
+	return h ^ (h >> 16);
+}
+
+// A smooth saturation like tanh, cheaper: the Padé form x(27 + x²)/(27 + 9x²), which reaches ±1 at
+// |x| = 3 with zero slope, and ±1 beyond. Monotone, odd, slope 1 at 0.
+float soft_clip(float p_x) {
+	const float x = std::clamp(p_x, -3.0f, 3.0f);
+	return x * (27.0f + x * x) / (27.0f + 9.0f * x * x);
+}
+
 glm::mat3 yaw_scale(float p_yaw, float p_scale_xz, float p_scale_y) {
 	const float c = std::cos(p_yaw);
 	const float s = std::sin(p_yaw);
@@ -81,7 +95,9 @@ void WindModel::advance(float p_delta) {
 	turn = std::remainder(turn, TAU); // the shorter way round
 	_lean = glm::vec2(std::cos(now + turn * k), std::sin(now + turn * k));
 	_derive();
-	_gust_scroll += double(_power) * double(p_delta); // gusts travel with the wind: p_w ≈ m/s
+	// Gusts travel with the wind (p_w ≈ m/s). Kept in cells, wrapped every 2^16 cells (524 km) so a
+	// float keeps its precision; the lattice hash repeats there too, so the wrap is seamless.
+	_gust_scroll_cells = float(std::fmod(double(_gust_scroll_cells) + double(_power) * double(p_delta) / double(GUST_CELL), 65536.0));
 }
 
 float WindModel::gust_strength(const glm::vec2 &p_position) const {
@@ -89,19 +105,29 @@ float WindModel::gust_strength(const glm::vec2 &p_position) const {
 		return 0.0f;
 	}
 	// Smooth value noise over (downwind, crosswind) cells, scrolled downwind.
-	const float u = float((double(downwind(p_position)) - _gust_scroll) / double(GUST_CELL));
-	const float v = (p_position.y * _lean.x - p_position.x * _lean.y) / GUST_CELL;
+	constexpr float PER_CELL = 1.0f / GUST_CELL;
+	const float u = downwind(p_position) * PER_CELL - _gust_scroll_cells;
+	const float v = (p_position.y * _lean.x - p_position.x * _lean.y) * PER_CELL;
 	const float fu = std::floor(u);
 	const float fv = std::floor(v);
-	const auto corner = [&](float p_u, float p_v) {
-		const uint64_t key = (uint64_t(uint32_t(int32_t(p_u))) << 32) | uint32_t(int32_t(p_v));
-		return unit_float(hash_plant(0x5eed, key, STREAM_GUST));
+	const auto corner = [](int32_t p_u, int32_t p_v) {
+		// A cheap 32-bit lattice hash: it runs four times per near plant per frame.
+		uint32_t h = uint32_t(p_u) * 0x27d4eb2du ^ uint32_t(p_v) * 0x165667b1u;
+		h ^= h >> 15;
+		h *= 0x2c1b3c6du;
+		h ^= h >> 12;
+		return float(h >> 8) * (1.0f / 16777216.0f);
 	};
-	const auto smooth = [](float p_t) { return p_t * p_t * (3.0f - 2.0f * p_t); };
-	const float tu = smooth(u - fu);
-	const float tv = smooth(v - fv);
-	const float top = corner(fu, fv) + (corner(fu + 1.0f, fv) - corner(fu, fv)) * tu;
-	const float bottom = corner(fu, fv + 1.0f) + (corner(fu + 1.0f, fv + 1.0f) - corner(fu, fv + 1.0f)) * tu;
+	const int32_t iu = int32_t(fu);
+	const int32_t iv = int32_t(fv);
+	const float a = corner(iu, iv);
+	const float b = corner(iu + 1, iv);
+	const float c = corner(iu, iv + 1);
+	const float d = corner(iu + 1, iv + 1);
+	const float tu = (u - fu) * (u - fu) * (3.0f - 2.0f * (u - fu)); // smoothstep
+	const float tv = (v - fv) * (v - fv) * (3.0f - 2.0f * (v - fv));
+	const float top = a + (b - a) * tu;
+	const float bottom = c + (d - c) * tu;
 	return top + (bottom - top) * tv;
 }
 
@@ -114,10 +140,13 @@ glm::vec2 WindModel::bend_vector(const PlantWind &p_wind, const glm::vec2 &p_pos
 	}
 	const float gust = _params.gust_share * 0.5f * _amplitude * gust_strength(p_position);
 	const float lean = 0.55f * _amplitude + 0.35f * _amplitude * std::sin(p_wind.phase) + gust;
-	return _bend_limit * std::tanh(lean / _bend_limit) * _lean;
+	return _bend_limit * soft_clip(lean / _bend_limit) * _lean;
 }
 
 float WindModel::flip_offset(uint64_t p_seed, uint32_t p_plant) const {
+	if (_params.model == WIND_NATURAL) {
+		return float(natural_hash(p_seed, p_plant) & 0xFFFFu) * (1.0f / 65536.0f) * _params.flip_interval;
+	}
 	return unit_float(hash_plant(p_seed, p_plant, STREAM_FLIP_OFFSET)) * _params.flip_interval;
 }
 
@@ -130,16 +159,16 @@ void WindModel::init_plant(PlantWind &r_wind, uint64_t p_seed, uint32_t p_plant,
 }
 
 void WindModel::advance_plant(PlantWind &r_wind, uint64_t p_seed, uint32_t p_plant, double p_time, float p_delta) const {
+	if (_params.model == WIND_NATURAL) {
+		_advance_natural(r_wind, p_seed, p_plant, p_time, p_delta);
+		return;
+	}
 	const double offset = double(flip_offset(p_seed, p_plant));
 	while (offset + double(r_wind.next_flip) * double(_params.flip_interval) <= p_time) {
 		if (unit_float(hash_plant(p_seed, p_plant, STREAM_FLIP, r_wind.next_flip)) < _params.flip_chance) {
 			r_wind.direction = int8_t(-r_wind.direction);
 		}
 		++r_wind.next_flip;
-	}
-	if (_params.model == WIND_NATURAL) {
-		_advance_natural(r_wind, p_seed, p_plant, p_delta);
-		return;
 	}
 	float phase = r_wind.phase + float(r_wind.direction) * _rate * p_delta;
 	if (phase < 0.0f) {
@@ -150,14 +179,24 @@ void WindModel::advance_plant(PlantWind &r_wind, uint64_t p_seed, uint32_t p_pla
 	r_wind.phase = phase;
 }
 
-void WindModel::_advance_natural(PlantWind &r_wind, uint64_t p_seed, uint32_t p_plant, float p_delta) const {
+void WindModel::_advance_natural(PlantWind &r_wind, uint64_t p_seed, uint32_t p_plant, double p_time, float p_delta) const {
+	// One cheap hash per plant and frame gives its pace and the stagger of its redraws of b (as
+	// flip_offset()); the full hash decides a redraw only when one is due (every flip_interval).
+	const uint32_t h = natural_hash(p_seed, p_plant);
+	const double offset = double(h & 0xFFFFu) * (1.0 / 65536.0) * double(_params.flip_interval);
+	while (offset + double(r_wind.next_flip) * double(_params.flip_interval) <= p_time) {
+		if (unit_float(hash_plant(p_seed, p_plant, STREAM_FLIP, r_wind.next_flip)) < _params.flip_chance) {
+			r_wind.direction = int8_t(-r_wind.direction);
+		}
+		++r_wind.next_flip;
+	}
 	// b turns the sway round over EASE_SECONDS instead of at once.
 	const int step = std::max(1, int(127.0f * p_delta / EASE_SECONDS + 0.5f));
 	const int target = 127 * r_wind.direction;
 	const int eased = r_wind.eased < target ? std::min(target, r_wind.eased + step) : std::max(target, r_wind.eased - step);
 	r_wind.eased = int8_t(eased);
 	// Each plant sways at its own pace, 0.85–1.15 times ω.
-	const float pace = 0.85f + 0.3f * unit_float(hash_plant(p_seed, p_plant, STREAM_PACE));
+	const float pace = 0.85f + 0.3f * float(h >> 16) * (1.0f / 65536.0f);
 	float phase = r_wind.phase + float(eased) / 127.0f * _rate * pace * p_delta;
 	phase = std::fmod(phase, TAU);
 	r_wind.phase = phase < 0.0f ? phase + TAU : phase;

@@ -11,7 +11,7 @@
 // NATURAL (the default, for games): the plant leans downwind by a mean that grows with the power,
 // sways about it, and gusts roll over the field. With A = L·(1 − e^(−p·h/L)) (L the bend that tilts
 // the plant by max_bend): lean = 0.55·A + 0.35·A·sin φ + gust_share·0.5·A·g(s − c·t, q), smoothly
-// saturated as L·tanh(lean/L), so it never pins at the limit. g is a smooth noise of gust strength
+// saturated as L·soft_clip(lean/L) (a tanh-like curve), so it never pins at the limit. g is a smooth noise of gust strength
 // in [0, 1] over the field (8 m cells), scrolling downwind at the wind's speed c = p_w m/s; φ runs
 // at ω(p_w) times a per-plant factor, and a redrawn b turns it round over half a second instead of
 // at once. Power and direction changes ease in over half a second. The lean never goes upwind.
@@ -106,7 +106,7 @@ public:
 
 private:
 	void _derive();
-	void _advance_natural(PlantWind &r_wind, uint64_t p_seed, uint32_t p_plant, float p_delta) const;
+	void _advance_natural(PlantWind &r_wind, uint64_t p_seed, uint32_t p_plant, double p_time, float p_delta) const;
 
 	WindParams _params;
 	float _rate = 0.0f; // ω at the power felt now
@@ -115,7 +115,7 @@ private:
 	float _power = 0.0f; // the power felt now (natural: eased)
 	float _amplitude = 0.0f; // natural: A for the power felt now
 	float _gust_phase = 0.0f; // thesis: Ψ
-	double _gust_scroll = 0.0; // natural: metres the gust pattern has moved downwind
+	float _gust_scroll_cells = 0.0f; // natural: gust cells the pattern has moved downwind (mod 2^16)
 	bool _advanced = false; // natural wind eases changes only once it moves
 };
 
