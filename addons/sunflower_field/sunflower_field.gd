@@ -28,21 +28,13 @@ enum Part { BOTTOM, MIDDLE, HEAD }
 enum Lod { MESH_1, MESH_2, MESH_3, SPRITE, BILLBOARD }
 
 const Native: GDScript = preload("native.gd")
-const FieldBuild: GDScript = preload("field_build.gd")
-const FieldInteraction: GDScript = preload("field_interaction.gd")
+const FieldDriver: GDScript = preload("field_driver.gd")
 const FieldNodes: GDScript = preload("field_nodes.gd")
 const FieldObserver: GDScript = preload("field_observer.gd")
 const ImpostorSet: GDScript = preload("impostor_set.gd")
 const PartMeshes: GDScript = preload("part_meshes.gd")
 const DEFAULT_FRONT_TEXTURE: Texture2D = preload("textures/sunflower_front.png")
 const DEFAULT_SIDE_TEXTURE: Texture2D = preload("textures/sunflower_side.png")
-## Maps of at least this many bytes (about as many cells) build in the background when
-## [member background_build] is on; smaller ones take a few milliseconds and build at once.
-const BACKGROUND_BUILD_MIN_BYTES: int = 65536
-
-## Fields building in the background now, for progress displays.
-static var _building: Array[SunflowerField] = []
-
 @export_group("Field")
 ## The field map. Import a [code].field[/code] file (the plugin turns it into a
 ## [SunflowerFieldMap]) or call [method load_map_file].
@@ -129,11 +121,11 @@ static var _building: Array[SunflowerField] = []
 			value = SunflowerWind.new()
 		if value == wind:
 			return
-		if wind and wind.changed.is_connected(_on_wind_changed):
-			wind.changed.disconnect(_on_wind_changed)
+		if wind and wind.changed.is_connected(_driver.configure_wind):
+			wind.changed.disconnect(_driver.configure_wind)
 		wind = value
-		wind.changed.connect(_on_wind_changed)
-		_on_wind_changed()
+		wind.changed.connect(_driver.configure_wind)
+		_driver.configure_wind()
 
 @export_group("Plant")
 ## Texture of the sprite's front quad (the flower head seen from the front), with alpha.
@@ -168,29 +160,29 @@ static var _building: Array[SunflowerField] = []
 			return
 		if value != lod_distances:
 			lod_distances = value
-			_configure_lod()
-			_apply_ranges()
+			_driver.configure_lod()
+			_driver.apply_ranges()
 ## Hysteresis on every switch: less detail this much later, more detail this much earlier.
 @export_range(0.0, 5.0, 0.05, "or_greater", "suffix:m") var lod_hysteresis: float = 0.5:
 	set(value):
 		value = Native.accept("SunflowerField.lod_hysteresis", value, lod_hysteresis)
 		if value != lod_hysteresis:
 			lod_hysteresis = value
-			_configure_lod()
+			_driver.configure_lod()
 ## Seconds between LOD updates (thesis: 0.25 s). Plants move every frame regardless.
 @export_range(0.0, 2.0, 0.01, "or_greater", "suffix:s") var lod_interval: float = 0.25:
 	set(value):
 		value = Native.accept("SunflowerField.lod_interval", value, lod_interval)
 		if value != lod_interval:
 			lod_interval = value
-			_configure_lod()
+			_driver.configure_lod()
 ## Draw every plant as one representation, whatever its distance (for benchmarks and debugging).
 @export_enum("Automatic:-1", "Mesh 1:0", "Mesh 2:1", "Mesh 3:2", "Sprite:3", "Billboard:4") var force_lod: int = -1:
 	set(value):
 		value = Native.accept_int("SunflowerField.force_lod", value, force_lod)
 		if value != force_lod:
 			force_lod = value
-			_configure_lod()
+			_driver.configure_lod()
 ## Skip writing plants outside the observer camera's view (the engine culls the far chunks itself).
 @export var frustum_culling: bool = true
 ## Beyond this distance, draw only a share of the impostors, falling with the square of the
@@ -211,7 +203,7 @@ static var _building: Array[SunflowerField] = []
 		value = Native.accept("SunflowerField.max_draw_distance", value, max_draw_distance)
 		if value != max_draw_distance:
 			max_draw_distance = value
-			_apply_ranges()
+			_driver.apply_ranges()
 
 @export_group("Interaction")
 ## Nodes in this group part the plants around them, like a body walking through the field: near
@@ -229,14 +221,14 @@ static var _building: Array[SunflowerField] = []
 		value = Native.accept("SunflowerField.push_strength", value, push_strength)
 		if value != push_strength:
 			push_strength = value
-			_configure_push()
+			_driver.configure_push()
 ## Seconds a plant takes to spring back upright once the pusher has gone.
 @export_range(0.05, 60.0, 0.05, "suffix:s") var push_recovery_time: float = 1.5:
 	set(value):
 		value = Native.accept("SunflowerField.push_recovery_time", value, push_recovery_time)
 		if value != push_recovery_time:
 			push_recovery_time = value
-			_configure_push()
+			_driver.configure_push()
 ## Stalks within this distance of a pusher or the observer get capsule colliders (running game
 ## only), so characters bump into them and ray casts hit them ([method get_plant_for_body]). 0: none.
 @export_range(0.0, 100.0, 0.1, "or_greater", "suffix:m") var collision_reach: float = 0.0:
@@ -267,8 +259,7 @@ static var _building: Array[SunflowerField] = []
 		value = Native.accept_int("SunflowerField.worker_threads", value, worker_threads)
 		if value != worker_threads:
 			worker_threads = value
-			if _drawn:
-				_drawn.simulation.set_worker_threads(worker_threads)
+			_driver.configure_threads()
 
 @export_group("Observer")
 ## The node distances are measured from. Empty: the viewport's active camera (in the editor, the
@@ -280,21 +271,15 @@ static var _building: Array[SunflowerField] = []
 
 ## The shared look of the far levels.
 var _impostors: ImpostorSet = ImpostorSet.new()
-## Pushers and stalk colliders.
-var _interaction: FieldInteraction = FieldInteraction.new(self)
 ## The meshes the near levels draw.
 var _parts: PartMeshes = PartMeshes.new()
-## The field drawn now (its simulation and nodes), and the build of the next one.
-var _drawn: FieldNodes
-var _build: FieldBuild
-var _build_stats: Dictionary = {}
+## Everything behind the public face: builds, the field drawn, each frame.
+var _driver: FieldDriver = FieldDriver.new(self, _impostors, _parts)
 var _empty_simulation: RefCounted
-var _rebuild_queued: bool = false
-var _last_error: String = ""
 
 
 func _init() -> void:
-	wind.changed.connect(_on_wind_changed)
+	wind.changed.connect(_driver.configure_wind)
 	_impostors.set_texture("front", sprite_front_texture)
 	_impostors.set_texture("side", sprite_side_texture)
 	_impostors.set_texture("billboard", billboard_texture)
@@ -311,19 +296,15 @@ func _ready() -> void:
 
 func _notification(what: int) -> void:
 	if what == NOTIFICATION_PREDELETE:
-		_cancel_build()
-		_show(null)
-		_interaction.free_colliders()
+		_driver.cancel_build()
+		_driver.show(null)
+		_driver.interaction.free_colliders()
 	elif what == NOTIFICATION_EXIT_TREE:
-		_interaction.free_colliders()  # they stand in this world's physics space
+		_driver.interaction.free_colliders()  # they stand in this world's physics space
 
 
 func _process(delta: float) -> void:
-	if _rebuild_queued:
-		_rebuild(true)
-	if _build:
-		_step_build(int(1000.0 * maxf(build_budget_ms, minf(delta * 500.0, 100.0))))
-	_update_field(delta)
+	_driver.process(delta, build_budget_ms)
 
 
 ## Reads a map from [param path] ([code]res://[/code], [code]user://[/code] or an absolute path)
@@ -334,36 +315,36 @@ func load_map_file(path: String, background: bool = false) -> Error:
 	var errors: Array[String] = []
 	var field_map: SunflowerFieldMap = SunflowerFieldMap.from_file(path, errors)
 	if field_map == null:
-		_report_map_error(errors[0])
+		_driver.report_map_error(errors[0])
 		return ERR_FILE_CANT_OPEN
 	var message: String = field_map.check(FieldNodes.legend_symbols(legend), max_plants)
 	if not message.is_empty():
-		_report_map_error(message)
+		_driver.report_map_error(message)
 		return ERR_PARSE_ERROR
 	map = field_map
-	_rebuild(background)
+	_driver.rebuild(background)
 	return OK
 
 
 ## Whether a new field is due (a change waits for the next frame) or being built in the
 ## background; the previous field is drawn meanwhile.
 func is_building() -> bool:
-	return _build != null or (_rebuild_queued and is_inside_tree())
+	return _driver.build != null or (_driver.rebuild_queued and is_inside_tree())
 
 
 ## How far the coming field is, from 0 to 1 (1 when no build is due or running).
 func get_build_progress() -> float:
-	if _build == null:
+	if _driver.build == null:
 		return 0.0 if is_building() else 1.0
-	return _build.get_progress()
+	return _driver.build.get_progress()
 
 
 ## Completes a running background build now, blocking until the field is ready.
 func finish_build() -> void:
-	if _rebuild_queued:
-		_rebuild()
-	if _build:
-		_step_build(-1)
+	if _driver.rebuild_queued:
+		_driver.rebuild()
+	if _driver.build:
+		_driver.step_build(-1)
 
 
 ## Figures of the last build: [code]total_ms[/code] (start to [signal field_built]),
@@ -371,21 +352,21 @@ func finish_build() -> void:
 ## nodes and buffers), [code]longest_step_ms[/code] (the longest the build held up one frame),
 ## [code]frames[/code] (frames it spanned) and [code]background[/code].
 func get_build_stats() -> Dictionary:
-	return _build_stats.duplicate()
+	return _driver.stats.duplicate()
 
 
 ## The fields building in the background now (for progress displays such as the editor's).
 static func get_building_fields() -> Array[SunflowerField]:
 	var fields: Array[SunflowerField] = []
-	for field: SunflowerField in _building:
+	for field: Node3D in FieldDriver.building:
 		if is_instance_valid(field) and field.is_inside_tree():
-			fields.append(field)
+			fields.append(field as SunflowerField)
 	return fields
 
 
 ## Number of plants in the field.
 func get_plant_count() -> int:
-	return _drawn.simulation.get_plant_count() if _drawn else 0
+	return _driver.plant_count()
 
 
 ## Plants per representation (mesh 1, mesh 2, mesh 3, sprite, billboard). Every plant is counted
@@ -395,7 +376,7 @@ func get_lod_counts() -> PackedInt32Array:
 		var zeros: PackedInt32Array = PackedInt32Array()
 		zeros.resize(Lod.size())
 		return zeros
-	return _drawn.simulation.get_lod_counts()
+	return _driver.simulation().get_lod_counts()
 
 
 ## A plant's state in the field's space: [code]position[/code] (Vector3, its root),
@@ -406,9 +387,9 @@ func get_plant_info(index: int) -> Dictionary:
 		push_error("SunflowerField.get_plant_info: index %d is out of range (%d plants)" % [index, get_plant_count()])
 		return {}
 	return {
-		"position": _drawn.simulation.get_plant_position(index),
-		"lod": _drawn.simulation.get_plant_lod(index),
-		"parts": Native.unpack_transforms(_drawn.simulation.get_plant_parts(index)),
+		"position": _driver.simulation().get_plant_position(index),
+		"lod": _driver.simulation().get_plant_lod(index),
+		"parts": Native.unpack_transforms(_driver.simulation().get_plant_parts(index)),
 	}
 
 
@@ -416,7 +397,7 @@ func get_plant_info(index: int) -> Dictionary:
 ## itself every frame).
 func advance(delta: float) -> void:
 	finish_build()
-	_update_field(delta)
+	_driver.update_field(delta)
 
 
 ## Replaces one part mesh, like the thesis' [code]setSunflower[/code]: [param lod] 0–2 (mesh level),
@@ -425,8 +406,8 @@ func advance(delta: float) -> void:
 func set_part_mesh(lod: int, part: int, mesh: Mesh) -> void:
 	if _parts.check(lod, part, "set_part_mesh"):
 		_parts.choose(lod, part, mesh)
-		if _drawn:
-			_drawn.set_part_mesh(lod, part, _parts.get_mesh(lod, part))
+		if _driver.drawn:
+			_driver.drawn.set_part_mesh(lod, part, _parts.get_mesh(lod, part))
 
 
 ## The mesh drawn for a part (the default model where none was set).
@@ -436,7 +417,7 @@ func get_part_mesh(lod: int, part: int) -> Mesh:
 
 ## Plants pushed by bodies now or still springing back.
 func get_pushed_count() -> int:
-	return _drawn.simulation.get_pushed_count() if _drawn else 0
+	return _driver.simulation().get_pushed_count() if _driver.drawn else 0
 
 
 ## The plant whose root is nearest to [param point] (field space, on the ground) within
@@ -444,10 +425,9 @@ func get_pushed_count() -> int:
 func get_plant_at(point: Vector3, max_distance: float = 0.5) -> int:
 	var nearest: int = -1
 	var best: float = INF
-	for plant: int in _drawn.simulation.get_plants_near(point, max_distance) if _drawn else PackedInt32Array():
-		var distance: float = _drawn.simulation.get_plant_position(plant).distance_squared_to(
-			Vector3(point.x, 0, point.z)
-		)
+	var simulation: RefCounted = _driver.simulation()
+	for plant: int in simulation.get_plants_near(point, max_distance) if simulation else PackedInt32Array():
+		var distance: float = simulation.get_plant_position(plant).distance_squared_to(Vector3(point.x, 0, point.z))
 		if distance < best:
 			best = distance
 			nearest = plant
@@ -457,12 +437,12 @@ func get_plant_at(point: Vector3, max_distance: float = 0.5) -> int:
 ## The plant whose stalk collider is [param body] (a ray cast's or a collision's [code]rid[/code],
 ## see [member collision_reach]), or -1.
 func get_plant_for_body(body: RID) -> int:
-	return _interaction.get_plant_of_body(body)
+	return _driver.interaction.get_plant_of_body(body)
 
 
 ## How many stalk colliders stand now (see [member collision_reach]).
 func get_collider_count() -> int:
-	return _interaction.get_collider_count()
+	return _driver.interaction.get_collider_count()
 
 
 ## Adds [member wind_increment] to the wind power.
@@ -478,8 +458,8 @@ func decrease_wind() -> void:
 ## The native simulation behind the field drawn now ([code]SunflowerSimulation[/code], for tools and
 ## tests); an empty one before the first field is built, null without the native library.
 func get_simulation() -> RefCounted:
-	if _drawn:
-		return _drawn.simulation
+	if _driver.drawn:
+		return _driver.simulation()
 	if _empty_simulation == null:
 		_empty_simulation = Native.create_simulation()
 	return _empty_simulation
@@ -491,11 +471,11 @@ func _get_configuration_warnings() -> PackedStringArray:
 		warnings.append(Native.missing_message())
 	if map == null:
 		warnings.append("No map: import a .field file and assign it to 'map', or call load_map_file().")
-	elif _last_error != "":
-		warnings.append("The map cannot be used: " + _last_error)
+	elif _driver.last_error != "":
+		warnings.append("The map cannot be used: " + _driver.last_error)
 	if not observer.is_empty() and not (get_node_or_null(observer) is Node3D):
 		warnings.append("'observer' does not point to a Node3D; the active camera is used instead.")
-	if is_inside_tree() and not Engine.is_editor_hint() and _resolve_observer() == null:
+	if is_inside_tree() and not Engine.is_editor_hint() and FieldObserver.resolve(self, observer) == null:
 		warnings.append("No observer: set 'observer' or add a current Camera3D; the field keeps its last LOD.")
 	if not scale.is_equal_approx(Vector3.ONE):
 		warnings.append("Keep the field's scale at 1; size it with 'cell_size' and 'plant_height'.")
@@ -534,149 +514,5 @@ func _property_get_revert(_property: StringName) -> Variant:
 	return null  # the default model
 
 
-# --- Building -------------------------------------------------------------------------------------
-
-
 func _queue_rebuild() -> void:
-	_rebuild_queued = true
-
-
-## Starts a build of the field from [member map] (in the background when asked and the map is
-## large), or clears the field when there is no map.
-func _rebuild(background: bool = false) -> void:
-	_rebuild_queued = false
-	if not is_inside_tree():
-		_rebuild_queued = true
-		return
-	_cancel_build()
-	var simulation: RefCounted = Native.create_simulation() if map else null
-	if simulation == null:
-		_show(null)
-		return
-	var job: FieldBuild.Job = FieldBuild.Job.for_field(self, simulation)
-	background = background and background_build and map.text.size() >= BACKGROUND_BUILD_MIN_BYTES
-	_build = FieldBuild.new(self, _impostors, job, background)
-	if background:
-		_building.append(self)
-		build_progress.emit(0.0)
-	else:
-		_step_build(-1)
-
-
-## One step of the running build within [param budget_usec] (negative: to the end); the last step
-## puts the new field in place of the old.
-func _step_build(budget_usec: int) -> void:
-	if not _build.step(budget_usec, lod_distances[3], max_draw_distance):
-		if _build.get_progress() > 0.0:  # not while the worker reads the map
-			build_progress.emit(_build.get_progress())
-		return
-	var message: String = _build.get_error()
-	if not message.is_empty():
-		_cancel_build()
-		_report_map_error(message)  # the current field stays
-		return
-	var start: int = Time.get_ticks_usec()
-	var build: FieldBuild = _build
-	_build = null
-	_building.erase(self)
-	_show(build.nodes)
-	build.add_main_thread_time(start)
-	_build_stats = build.get_stats()
-	_last_error = ""
-	update_configuration_warnings()
-	if build.background:
-		build_progress.emit(1.0)
-	field_built.emit(get_plant_count())
-
-
-## Draws [param nodes] (a completed build's) in place of the field drawn now; null draws nothing.
-func _show(nodes: FieldNodes) -> void:
-	if _drawn:
-		_drawn.free_nodes()
-	_drawn = nodes
-	_free_foreign_children()
-	if _drawn == null:
-		return
-	_drawn.finish(_parts.get_all(), legend, cell_size, plant_height * 0.5)
-	_on_wind_changed()
-	_configure_lod()
-	_configure_push()
-	_drawn.simulation.set_worker_threads(worker_threads)
-	_push_observer()
-	_drawn.simulation.update(0.0)
-
-
-## Frees internal children that belong to no field of this node: copies that duplicate() made of
-## another field's nodes.
-func _free_foreign_children() -> void:
-	var spared: Dictionary = {}
-	for node: Node in get_children(false):
-		spared[node] = true  # the user's own children
-	for nodes: FieldNodes in [_drawn, _build.nodes if _build else null]:
-		if nodes:
-			nodes.collect(spared)
-	for node: Node in get_children(true):
-		if not spared.has(node):
-			node.free()
-
-
-## Stops a running build (waiting for its worker) and frees what it made; the current field stays.
-func _cancel_build() -> void:
-	if _build:
-		_build.cancel()
-		_build = null
-	_building.erase(self)
-
-
-func _report_map_error(message: String) -> void:
-	_last_error = message
-	push_error("SunflowerField: " + message)
-	map_error.emit(message)
-	update_configuration_warnings()
-
-
-# --- Configuration and the observer ----------------------------------------------------------------
-
-
-func _apply_ranges() -> void:
-	for nodes: FieldNodes in [_drawn, _build.nodes if _build else null]:
-		if nodes:
-			nodes.apply_ranges(lod_distances[3], max_draw_distance)
-
-
-func _on_wind_changed() -> void:
-	if _drawn:
-		wind.apply_to(_drawn.simulation)
-
-
-func _configure_push() -> void:
-	if _drawn:
-		_drawn.simulation.set_push_params(push_strength, push_recovery_time)
-
-
-## One frame of the field drawn: observer and pushers to the core, its update, the stalk colliders.
-func _update_field(delta: float) -> void:
-	if get_plant_count() == 0:
-		return
-	var simulation: RefCounted = _drawn.simulation
-	_push_observer()
-	simulation.set_pushers(_interaction.gather_pushers(pusher_group, pusher_radius))
-	simulation.update(delta)
-	if not Engine.is_editor_hint():
-		# A stalk: the bottom and middle parts, two of the plant's three part heights.
-		var stalk: Vector2 = Vector2(0.025 * plant_height, plant_height * 2.0 / 3.0)
-		var reach: float = collision_reach
-		_interaction.update_colliders(simulation, _resolve_observer(), reach, stalk, collision_layer, collision_mask)
-
-
-func _configure_lod() -> void:
-	if _drawn:
-		_drawn.simulation.set_lod(lod_distances, lod_hysteresis, lod_interval, force_lod)
-
-
-func _resolve_observer() -> Node3D:
-	return FieldObserver.resolve(self, observer)
-
-
-func _push_observer() -> void:
-	FieldObserver.push(self, observer, frustum_culling, _drawn.simulation)
+	_driver.rebuild_queued = true

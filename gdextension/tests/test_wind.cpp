@@ -236,9 +236,10 @@ TEST_CASE("natural wind: no frame-to-frame jump beyond what the smooth motion al
 	// The bound, from the model's rates at the largest power used (10): the sway 0.35·A·sin φ with φ
 	// at up to 1.15·ω; gusts 0.5·share·A·g with g's slope at most 1.5 per cell (smoothstep) on both
 	// axes, scrolling at c = p m/s over 8 m cells; A's change with the eased power (dA/dp ≤ h); the
-	// lean direction turning at most π·k per frame (k = 1 − e^(−dt/0.5)). tanh's slope is at most 1.
+	// lean direction turning at most π·k per frame; power and direction changes ease in at a steady
+	// rate over 0.5 s (k = dt / 0.5 of the change per frame). The soft clip's slope is at most 1.
 	const float dt = 1.0f / 60.0f;
-	const float k = 1.0f - std::exp(-dt / 0.5f);
+	const float k = dt / 0.5f;
 	WindModel strong = natural_wind(10.0f);
 	const float a_max = strong.get_bend_limit() * (1.0f - std::exp(-10.0f * PI / 12.0f / strong.get_bend_limit()));
 	const float omega_max = strong.get_phase_rate() * 1.15f;

@@ -72,6 +72,10 @@ void WindModel::configure(const WindParams &p_params) {
 		_power = _params.power;
 		_lean = glm::normalize(_params.direction);
 	}
+	// Natural wind eases a change in at a steady rate that takes EASE_SECONDS.
+	const glm::vec2 target = glm::normalize(_params.direction);
+	_power_rate = std::abs(_params.power - _power) / EASE_SECONDS;
+	_turn_rate = std::abs(std::remainder(std::atan2(target.y, target.x) - std::atan2(_lean.y, _lean.x), TAU)) / EASE_SECONDS;
 	_derive();
 }
 
@@ -87,13 +91,14 @@ void WindModel::advance(float p_delta) {
 		_gust_phase = std::fmod(_gust_phase + _rate * p_delta, TAU);
 		return;
 	}
-	const float k = 1.0f - std::exp(-p_delta / EASE_SECONDS);
-	_power += (_params.power - _power) * k;
+	const float step = _power_rate * p_delta;
+	_power = std::abs(_params.power - _power) <= step ? _params.power : _power + std::copysign(step, _params.power - _power);
 	const float now = std::atan2(_lean.y, _lean.x);
 	const glm::vec2 target = glm::normalize(_params.direction);
-	float turn = std::atan2(target.y, target.x) - now;
-	turn = std::remainder(turn, TAU); // the shorter way round
-	_lean = glm::vec2(std::cos(now + turn * k), std::sin(now + turn * k));
+	const float turn = std::remainder(std::atan2(target.y, target.x) - now, TAU); // the shorter way round
+	const float turn_step = _turn_rate * p_delta;
+	_lean = std::abs(turn) <= turn_step ? target
+										: glm::vec2(std::cos(now + std::copysign(turn_step, turn)), std::sin(now + std::copysign(turn_step, turn)));
 	_derive();
 	// Gusts travel with the wind (p_w ≈ m/s). Kept in cells, wrapped every 2^16 cells (524 km) so a
 	// float keeps its precision; the lattice hash repeats there too, so the wrap is seamless.

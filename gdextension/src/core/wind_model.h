@@ -14,7 +14,7 @@
 // saturated as L·soft_clip(lean/L) (a tanh-like curve), so it never pins at the limit. g is a smooth noise of gust strength
 // in [0, 1] over the field (8 m cells), scrolling downwind at the wind's speed c = p_w m/s; φ runs
 // at ω(p_w) times a per-plant factor, and a redrawn b turns it round over half a second instead of
-// at once. Power and direction changes ease in over half a second. The lean never goes upwind.
+// at once. Power and direction changes ease in at a steady rate over half a second. The lean never goes upwind.
 //
 // Both: the bottom part tilts p/d2 and the middle part p/d1 (eq. 4), about the horizontal axis
 // across the lean; the head sits rigidly on the middle. A bend is a vector on the ground (x, z):
@@ -113,6 +113,8 @@ private:
 	float _bend_limit = 0.0f; // limit on p so that p/d1 + p/d2 ≤ max_bend
 	glm::vec2 _lean{ 1.0f, 0.0f }; // the lean direction now (natural: eased)
 	float _power = 0.0f; // the power felt now (natural: eased)
+	float _power_rate = 0.0f; // natural: how fast _power moves to the configured power, per second
+	float _turn_rate = 0.0f; // natural: how fast the lean turns to the configured direction, rad/s
 	float _amplitude = 0.0f; // natural: A for the power felt now
 	float _gust_phase = 0.0f; // thesis: Ψ
 	float _gust_scroll_cells = 0.0f; // natural: gust cells the pattern has moved downwind (mod 2^16)
