@@ -27,21 +27,26 @@ var stats: Dictionary = {}
 var last_error: String = ""
 var rebuild_queued: bool = false
 var interaction: FieldInteraction
+## The far levels' look, shared by the field drawn and one being built.
+var impostors: ImpostorSet = ImpostorSet.new()
+## The meshes the near levels draw.
+var parts: PartMeshes = PartMeshes.new()
 var _field: Node3D
-var _impostors: ImpostorSet
-var _parts: PartMeshes
 
 
-func _init(field: Node3D, impostors: ImpostorSet, parts: PartMeshes) -> void:
+func _init(field: Node3D) -> void:
 	_field = field
-	_impostors = impostors
-	_parts = parts
 	interaction = FieldInteraction.new(field)
 
 
 ## The native simulation drawn now, or null.
 func simulation() -> RefCounted:
 	return drawn.simulation if drawn else null
+
+
+## Whom the field measures distances from now, or null.
+func observer_node() -> Node3D:
+	return FieldObserver.resolve(_field, _field.observer)
 
 
 ## Plants in the field drawn now.
@@ -73,7 +78,7 @@ func rebuild(background: bool = false) -> void:
 		return
 	var job: FieldBuild.Job = FieldBuild.Job.for_field(_field, native_simulation)
 	background = background and _field.background_build and field_map.text.size() >= BACKGROUND_BUILD_MIN_BYTES
-	build = FieldBuild.new(_field, _impostors, job, background)
+	build = FieldBuild.new(_field, impostors, job, background)
 	if background:
 		building.append(_field)
 		_field.emit_signal(&"build_progress", 0.0)
@@ -123,7 +128,7 @@ func show(nodes: FieldNodes) -> void:
 	_free_foreign_children()
 	if drawn == null:
 		return
-	drawn.finish(_parts.get_all(), _field.legend, _field.cell_size, _field.plant_height * 0.5)
+	drawn.finish(parts.get_all(), _field.legend, _field.cell_size, _field.plant_height * 0.5)
 	configure_wind()
 	configure_lod()
 	configure_push()
@@ -152,7 +157,7 @@ func update_field(delta: float) -> void:
 		# A stalk: the bottom and middle parts, two of the plant's three part heights.
 		var height: float = _field.plant_height
 		var stalk: Vector2 = Vector2(0.025 * height, height * 2.0 / 3.0)
-		var observer: Node3D = FieldObserver.resolve(_field, _field.observer)
+		var observer: Node3D = observer_node()
 		var reach: float = _field.collision_reach
 		interaction.update_colliders(
 			native_simulation, observer, reach, stalk, _field.collision_layer, _field.collision_mask

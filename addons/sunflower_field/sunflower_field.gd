@@ -30,9 +30,6 @@ enum Lod { MESH_1, MESH_2, MESH_3, SPRITE, BILLBOARD }
 const Native: GDScript = preload("native.gd")
 const FieldDriver: GDScript = preload("field_driver.gd")
 const FieldNodes: GDScript = preload("field_nodes.gd")
-const FieldObserver: GDScript = preload("field_observer.gd")
-const ImpostorSet: GDScript = preload("impostor_set.gd")
-const PartMeshes: GDScript = preload("part_meshes.gd")
 const DEFAULT_FRONT_TEXTURE: Texture2D = preload("textures/sunflower_front.png")
 const DEFAULT_SIDE_TEXTURE: Texture2D = preload("textures/sunflower_side.png")
 @export_group("Field")
@@ -132,22 +129,22 @@ const DEFAULT_SIDE_TEXTURE: Texture2D = preload("textures/sunflower_side.png")
 @export var sprite_front_texture: Texture2D = DEFAULT_FRONT_TEXTURE:
 	set(value):
 		sprite_front_texture = value
-		_impostors.set_texture("front", value)
+		_driver.impostors.set_texture("front", value)
 ## Texture of the sprite's side quad, with alpha.
 @export var sprite_side_texture: Texture2D = DEFAULT_SIDE_TEXTURE:
 	set(value):
 		sprite_side_texture = value
-		_impostors.set_texture("side", value)
+		_driver.impostors.set_texture("side", value)
 ## Texture of the billboard, with alpha.
 @export var billboard_texture: Texture2D = DEFAULT_FRONT_TEXTURE:
 	set(value):
 		billboard_texture = value
-		_impostors.set_texture("billboard", value)
+		_driver.impostors.set_texture("billboard", value)
 ## Alpha below which sprite and billboard pixels are discarded (thesis: 190/255).
 @export_range(0.0, 1.0, 0.001) var alpha_scissor: float = 190.0 / 255.0:
 	set(value):
 		alpha_scissor = Native.accept("SunflowerField.alpha_scissor", value, alpha_scissor)
-		_impostors.set_shared(&"alpha_scissor", alpha_scissor)
+		_driver.impostors.set_shared(&"alpha_scissor", alpha_scissor)
 
 @export_group("Level of detail")
 ## Switch distances: mesh 1 → 2, mesh 2 → 3, mesh 3 → sprite, sprite → billboard (thesis:
@@ -191,12 +188,12 @@ const DEFAULT_SIDE_TEXTURE: Texture2D = preload("textures/sunflower_side.png")
 @export_range(0.0, 1000.0, 1.0, "or_greater", "suffix:m") var thinning_distance: float = 0.0:
 	set(value):
 		thinning_distance = Native.accept("SunflowerField.thinning_distance", value, thinning_distance)
-		_impostors.set_shared(&"thinning_start", thinning_distance)
+		_driver.impostors.set_shared(&"thinning_start", thinning_distance)
 ## The least share of impostors drawn far away, with thinning on.
 @export_range(0.01, 1.0, 0.01) var thinning_min_density: float = 0.25:
 	set(value):
 		thinning_min_density = Native.accept("SunflowerField.thinning_min_density", value, thinning_min_density)
-		_impostors.set_shared(&"thinning_min_density", thinning_min_density)
+		_driver.impostors.set_shared(&"thinning_min_density", thinning_min_density)
 ## Billboards beyond this distance are not drawn (0: no limit).
 @export_range(0.0, 10000.0, 1.0, "or_greater", "suffix:m") var max_draw_distance: float = 0.0:
 	set(value):
@@ -269,23 +266,19 @@ const DEFAULT_SIDE_TEXTURE: Texture2D = preload("textures/sunflower_side.png")
 		observer = value
 		update_configuration_warnings()
 
-## The shared look of the far levels.
-var _impostors: ImpostorSet = ImpostorSet.new()
-## The meshes the near levels draw.
-var _parts: PartMeshes = PartMeshes.new()
-## Everything behind the public face: builds, the field drawn, each frame.
-var _driver: FieldDriver = FieldDriver.new(self, _impostors, _parts)
+## Everything behind the public face: builds, the field drawn, each frame, impostors, part meshes.
+var _driver: FieldDriver = FieldDriver.new(self)
 var _empty_simulation: RefCounted
 
 
 func _init() -> void:
 	wind.changed.connect(_driver.configure_wind)
-	_impostors.set_texture("front", sprite_front_texture)
-	_impostors.set_texture("side", sprite_side_texture)
-	_impostors.set_texture("billboard", billboard_texture)
-	_impostors.set_shared(&"alpha_scissor", alpha_scissor)
-	_impostors.set_shared(&"thinning_start", thinning_distance)
-	_impostors.set_shared(&"thinning_min_density", thinning_min_density)
+	_driver.impostors.set_texture("front", sprite_front_texture)
+	_driver.impostors.set_texture("side", sprite_side_texture)
+	_driver.impostors.set_texture("billboard", billboard_texture)
+	_driver.impostors.set_shared(&"alpha_scissor", alpha_scissor)
+	_driver.impostors.set_shared(&"thinning_start", thinning_distance)
+	_driver.impostors.set_shared(&"thinning_min_density", thinning_min_density)
 
 
 func _ready() -> void:
@@ -404,15 +397,15 @@ func advance(delta: float) -> void:
 ## [param part] 0–2 (see [enum Part]). [code]null[/code] restores the default model. Parts are
 ## modelled with their root at the origin and height 1 along +y.
 func set_part_mesh(lod: int, part: int, mesh: Mesh) -> void:
-	if _parts.check(lod, part, "set_part_mesh"):
-		_parts.choose(lod, part, mesh)
+	if _driver.parts.check(lod, part, "set_part_mesh"):
+		_driver.parts.choose(lod, part, mesh)
 		if _driver.drawn:
-			_driver.drawn.set_part_mesh(lod, part, _parts.get_mesh(lod, part))
+			_driver.drawn.set_part_mesh(lod, part, _driver.parts.get_mesh(lod, part))
 
 
 ## The mesh drawn for a part (the default model where none was set).
 func get_part_mesh(lod: int, part: int) -> Mesh:
-	return _parts.get_mesh(lod, part) if _parts.check(lod, part, "get_part_mesh") else null
+	return _driver.parts.get_mesh(lod, part) if _driver.parts.check(lod, part, "get_part_mesh") else null
 
 
 ## Plants pushed by bodies now or still springing back.
@@ -475,7 +468,7 @@ func _get_configuration_warnings() -> PackedStringArray:
 		warnings.append("The map cannot be used: " + _driver.last_error)
 	if not observer.is_empty() and not (get_node_or_null(observer) is Node3D):
 		warnings.append("'observer' does not point to a Node3D; the active camera is used instead.")
-	if is_inside_tree() and not Engine.is_editor_hint() and FieldObserver.resolve(self, observer) == null:
+	if is_inside_tree() and not Engine.is_editor_hint() and _driver.observer_node() == null:
 		warnings.append("No observer: set 'observer' or add a current Camera3D; the field keeps its last LOD.")
 	if not scale.is_equal_approx(Vector3.ONE):
 		warnings.append("Keep the field's scale at 1; size it with 'cell_size' and 'plant_height'.")
@@ -486,28 +479,28 @@ func _get_configuration_warnings() -> PackedStringArray:
 
 
 func _get_property_list() -> Array[Dictionary]:
-	return _parts.list_properties()
+	return _driver.parts.list_properties()
 
 
 func _get(property: StringName) -> Variant:
-	var slot: int = _parts.slot_of(property)
-	return _parts.get_chosen(slot) if slot >= 0 else null
+	var slot: int = _driver.parts.slot_of(property)
+	return _driver.parts.get_chosen(slot) if slot >= 0 else null
 
 
 func _set(property: StringName, value: Variant) -> bool:
-	var slot: int = _parts.slot_of(property)
+	var slot: int = _driver.parts.slot_of(property)
 	if slot < 0:
 		return false
 	if value != null and not (value is Mesh):
 		push_warning("SunflowerField.%s: %s is not a Mesh; using the default part" % [property, value])
 		value = null
-	var per_level: int = _parts.get_parts_per_level()
+	var per_level: int = _driver.parts.get_parts_per_level()
 	set_part_mesh(slot / per_level, slot % per_level, value as Mesh)
 	return true
 
 
 func _property_can_revert(property: StringName) -> bool:
-	return _parts.slot_of(property) >= 0
+	return _driver.parts.slot_of(property) >= 0
 
 
 func _property_get_revert(_property: StringName) -> Variant:

@@ -20,6 +20,18 @@ func after_each() -> void:
 
 
 ## The warnings the engine logged since the last call (or since the test began).
+## A field of [param map] in the tree, measuring distances from [param observer] (which joins the
+## tree first), built and updated once.
+func field_in_tree(observer: Node3D, map: SunflowerFieldMap) -> SunflowerField:
+	tree.root.add_child(observer)
+	var field: SunflowerField = SunflowerField.new()
+	field.observer = NodePath("../" + observer.name)
+	tree.root.add_child(field)
+	field.map = map
+	field.advance(0.0)
+	return field
+
+
 func take_warnings() -> PackedStringArray:
 	return log.call("take_warnings")
 

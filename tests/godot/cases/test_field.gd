@@ -9,12 +9,7 @@ var observer: Node3D
 func before_each() -> void:
 	observer = Node3D.new()
 	observer.name = "Observer"
-	tree.root.add_child(observer)
-	field = SunflowerField.new()
-	field.observer = NodePath("../Observer")
-	tree.root.add_child(field)
-	field.map = load("res://fields/demo.field") as SunflowerFieldMap
-	field.advance(0.0)
+	field = field_in_tree(observer, load("res://fields/demo.field") as SunflowerFieldMap)
 
 
 func after_each() -> void:

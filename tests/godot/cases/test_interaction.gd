@@ -8,19 +8,16 @@ var pusher: Node3D
 
 
 func before_each() -> void:
-	observer = Node3D.new()
-	observer.name = "Observer"
-	observer.position = Vector3(10.0, 1.7, 8.0)
-	tree.root.add_child(observer)
 	pusher = Node3D.new()
 	pusher.name = "Pusher"
 	tree.root.add_child(pusher)
-	field = SunflowerField.new()
-	field.observer = NodePath("../Observer")
+	observer = Node3D.new()
+	observer.name = "Observer"
+	observer.position = Vector3(10.0, 1.7, 8.0)
+	field = field_in_tree(observer, load("res://fields/demo.field") as SunflowerFieldMap)
 	field.wind_power = 0.0  # calm air: only the pusher moves plants
-	tree.root.add_child(field)
-	field.map = load("res://fields/demo.field") as SunflowerFieldMap
-	field.advance(0.0)
+	for i: int in 40:  # natural wind eases the change in
+		field.advance(0.05)
 
 
 func after_each() -> void:
