@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
-# Builds everything and runs the demo. With a display: the interactive demo. Without one: the
+# Builds everything (the libraries for every desktop platform, as tools/test.sh does) and runs the demo. With a display: the interactive demo. Without one: the
 # demo's recording mode under Xvfb, which saves a screenshot and prints the field's statistics.
 #   tools/demo.sh [extra demo arguments, e.g. --frames 120 --screenshot /tmp/shot.png]
 set -euo pipefail
 repo=$(cd "$(dirname "$0")/.." && pwd)
-"$repo/tools/build.sh"
+"$repo/tools/build.sh" --all
 godot=$("$repo/tools/find_godot.sh")
 if [[ -n "${DISPLAY:-}" && -z "${CI:-}" ]]; then
   exec "$godot" --path "$repo/demo_project" -- "$@"
