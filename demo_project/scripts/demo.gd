@@ -21,6 +21,8 @@ const TRIANGLES_SPRITE: int = 4
 const TRIANGLES_BILLBOARD: int = 2
 ## Below this eye height the camera is a pusher: the flowers part around it.
 const PUSHER_HEIGHT: float = 2.5
+## How far around the low camera the flowers part, metres (wide enough to see the parting ahead).
+const PUSHER_RADIUS: float = 1.1
 
 var _map_path: String = MAP_PATHS[0]
 var _frames_total: int = -1
@@ -176,6 +178,7 @@ func _process(delta: float) -> void:
 	var low: bool = _camera.global_position.y < PUSHER_HEIGHT
 	if low != _camera.is_in_group(_field.pusher_group):
 		if low:
+			_camera.set_meta(&"push_radius", PUSHER_RADIUS)
 			_camera.add_to_group(_field.pusher_group)
 		else:
 			_camera.remove_from_group(_field.pusher_group)
