@@ -89,7 +89,9 @@ TEST_CASE("a plant's own LOD matches its distance outside the hysteresis bands")
 	const glm::vec3 observer(20.0f, 1.0f, 20.0f);
 	sim.set_observer(observer);
 	sim.request_lod_update();
-	sim.update(0.016f);
+	for (int i = 0; i < 10; ++i) { // chunks turn active over a few updates (ACTIVATION_BUDGET)
+		sim.update(0.016f);
+	}
 	LodSelector plain;
 	plain.configure(sim.get_lod().get_params());
 	const float margin = sim.get_lod().get_params().hysteresis;
@@ -114,11 +116,11 @@ TEST_CASE("LOD is re-selected every interval, not every frame") {
 	sim.update(0.016f);
 	const auto near_counts = sim.get_lod_counts();
 	CHECK(near_counts[LOD_MESH_1] > 0);
-	sim.set_observer({ 10.0f, 1.7f, 40.0f }); // step away
+	sim.set_observer({ 10.0f, 1.7f, 11.0f }); // a step (not a jump: under JUMP_DISTANCE)
 	sim.update(0.1f);
 	CHECK(sim.get_lod_counts()[LOD_MESH_1] == near_counts[LOD_MESH_1]);
 	sim.update(0.2f); // 0.3 s since the last selection
-	CHECK(sim.get_lod_counts()[LOD_MESH_1] == 0);
+	CHECK(sim.get_lod_counts()[LOD_MESH_1] != near_counts[LOD_MESH_1]);
 }
 
 TEST_CASE("the frustum culls what is written, not what is counted") {
@@ -361,4 +363,41 @@ TEST_CASE("pushers: a body above the plants pushes nothing; a push never bends a
 		const float tilt = std::acos(glm::normalize(parts.basis[1][1]).y) + 0.0f;
 		CHECK(tilt <= sim.get_wind().get_params().max_bend * 1.001f);
 	}
+}
+
+TEST_CASE("a jump of the observer re-selects at once, nearest chunks first, within the activation budget") {
+	FieldSimulation sim;
+	load(sim, rect_map(400, 400), 16.0f); // 200 × 200 m, 160 000 plants
+	sim.set_observer({ 20.0f, 1.7f, 20.0f });
+	for (int i = 0; i < 10; ++i) {
+		sim.update(0.016f);
+	}
+	const uint32_t settled = sim.get_active_plant_count();
+	CHECK(settled > FieldSimulation::ACTIVATION_BUDGET); // more than one update's worth
+	const glm::vec3 there(150.0f, 1.7f, 150.0f);
+	sim.set_observer(there); // a teleport, 184 m, in the middle of an LOD interval
+	sim.update(0.016f);
+	std::vector<uint32_t> nearest;
+	sim.find_plants_near({ there.x, there.z }, 1.7f, nearest);
+	REQUIRE(!nearest.empty());
+	for (uint32_t plant : nearest) {
+		CHECK(sim.get_plant_lod(plant) == LOD_MESH_1); // a mesh on the first update after the jump
+	}
+	uint32_t largest_chunk = 0;
+	for (const Chunk &chunk : sim.get_layout().chunks) {
+		largest_chunk = std::max(largest_chunk, chunk.count);
+	}
+	CHECK(sim.get_active_plant_count() <= FieldSimulation::ACTIVATION_BUDGET + largest_chunk);
+	for (int i = 0; i < 10; ++i) {
+		sim.update(0.016f);
+	}
+	FieldSimulation fresh; // the neighbourhood as a simulation that started there has it
+	load(fresh, rect_map(400, 400), 16.0f);
+	fresh.set_observer(there);
+	for (int i = 0; i < 10; ++i) {
+		fresh.update(0.016f);
+	}
+	CHECK(sim.get_active_plant_count() == fresh.get_active_plant_count());
+	CHECK(sim.get_lod_counts() == fresh.get_lod_counts());
+	CHECK(drawn(sim) == sim.get_plant_count()); // exactly once all the while
 }

@@ -146,14 +146,35 @@ void FieldSimulation::_select_lods() {
 	const int x1 = std::min(_layout.grid_x - 1, static_cast<int>(std::floor((_observer.x + reach) / _layout.chunk_size)));
 	const int z0 = std::max(0, static_cast<int>(std::floor((_observer.z - reach) / _layout.chunk_size)));
 	const int z1 = std::min(_layout.grid_z - 1, static_cast<int>(std::floor((_observer.z + reach) / _layout.chunk_size)));
+	// Chunks turning active are taken nearest first, at most ACTIVATION_BUDGET plants per update: after
+	// a jump of the observer the plants next to it are meshes at once, and the rest of the
+	// neighbourhood follows over the next updates (drawn as static impostors meanwhile) instead of
+	// all in one long frame.
+	_activation.clear();
 	for (int z = z0; z <= z1; ++z) {
 		for (int x = x0; x <= x1; ++x) {
 			const uint32_t c = _layout.grid_chunks[static_cast<size_t>(z) * size_t(_layout.grid_x) + size_t(x)];
-			if (c != FieldLayout::NO_CHUNK && _visit_mark[c] != _lod_pass) {
-				_select_chunk_lods(c, false, enter, leave);
+			if (c == FieldLayout::NO_CHUNK || _visit_mark[c] == _lod_pass) {
+				continue;
 			}
+			const float distance_sq = _chunk_distance_sq(c);
+			if (distance_sq < enter * enter) {
+				_activation.push_back({ distance_sq, c });
+			}
+			_visit_mark[c] = _lod_pass;
 		}
 	}
+	std::sort(_activation.begin(), _activation.end());
+	uint32_t activated = 0;
+	for (const auto &[distance_sq, c] : _activation) {
+		if (activated >= ACTIVATION_BUDGET) {
+			_lod_due = true; // the rest next update
+			break;
+		}
+		activated += _layout.chunks[c].count;
+		_select_chunk_lods(c, false, enter, leave);
+	}
+	_lod_observer = _observer;
 }
 
 void FieldSimulation::_select_chunk_lods(uint32_t p_chunk, bool p_forced, float p_enter, float p_leave) {
@@ -195,10 +216,14 @@ void FieldSimulation::update(float p_delta) {
 	_wind.advance(delta);
 	_update_pushes(delta);
 	_since_lod += delta;
+	const glm::vec3 moved = _observer - _lod_observer;
+	if (glm::dot(moved, moved) > JUMP_DISTANCE * JUMP_DISTANCE) {
+		_lod_due = true; // the observer jumped: do not wait for the interval
+	}
 	if (_lod_due || _since_lod >= _lod.get_params().interval) {
-		_select_lods();
+		_lod_due = false; // _select_lods() sets it again when chunks are left for the next update
 		_since_lod = 0.0f;
-		_lod_due = false;
+		_select_lods();
 	} else {
 		_changed_chunks.clear();
 	}

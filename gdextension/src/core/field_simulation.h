@@ -23,6 +23,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace sunflower {
@@ -103,6 +104,11 @@ public:
 	void update(float p_delta);
 	// Makes the next update re-select LODs regardless of the interval.
 	void request_lod_update() { _lod_due = true; }
+	// An observer that moved farther than this since the last LOD pass gets one at the next update,
+	// whatever the interval (a teleport; at 0.25 s intervals normal walking and flying stay below).
+	static constexpr float JUMP_DISTANCE = 4.0f;
+	// The most plants whose chunks turn active in one update (nearest chunks first).
+	static constexpr uint32_t ACTIVATION_BUDGET = 4096;
 
 	// Bodies the plants part around, from the next update on. A plant within a pusher's radius bends
 	// away from its centre (whole plant from the ground, the bottom part most, like a stalk) by up to
@@ -193,6 +199,8 @@ private:
 	std::vector<uint32_t> _changed_chunks;
 	std::vector<uint32_t> _visit_mark; // per chunk: the LOD pass that last visited it
 	uint32_t _lod_pass = 0;
+	std::vector<std::pair<float, uint32_t>> _activation; // (distance², chunk) turning active, scratch
+	glm::vec3 _lod_observer{ 0.0f }; // where the observer was at the last LOD pass
 	BucketSet _buckets;
 	std::unique_ptr<WorkerPool> _pool;
 	std::vector<BucketSet> _task_buckets; // the buckets of parallel tasks after the first
