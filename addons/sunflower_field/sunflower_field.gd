@@ -128,18 +128,21 @@ const DEFAULT_SIDE_TEXTURE: Texture2D = preload("textures/sunflower_side.png")
 ## Texture of the sprite's front quad (the flower head seen from the front), with alpha.
 @export var sprite_front_texture: Texture2D = DEFAULT_FRONT_TEXTURE:
 	set(value):
-		sprite_front_texture = value
-		_driver.impostors.set_texture("front", value)
+		if value != sprite_front_texture:
+			sprite_front_texture = value
+			_driver.impostors.set_texture("front", value)
 ## Texture of the sprite's side quad, with alpha.
 @export var sprite_side_texture: Texture2D = DEFAULT_SIDE_TEXTURE:
 	set(value):
-		sprite_side_texture = value
-		_driver.impostors.set_texture("side", value)
+		if value != sprite_side_texture:
+			sprite_side_texture = value
+			_driver.impostors.set_texture("side", value)
 ## Texture of the billboard, with alpha.
 @export var billboard_texture: Texture2D = DEFAULT_FRONT_TEXTURE:
 	set(value):
-		billboard_texture = value
-		_driver.impostors.set_texture("billboard", value)
+		if value != billboard_texture:
+			billboard_texture = value
+			_driver.impostors.set_texture("billboard", value)
 ## Alpha below which sprite and billboard pixels are discarded (thesis: 190/255).
 @export_range(0.0, 1.0, 0.001) var alpha_scissor: float = 190.0 / 255.0:
 	set(value):

@@ -78,7 +78,7 @@ func test_buffers_reach_the_rendering_server() -> void:
 	var simulation: SunflowerSimulation = field.get_simulation()
 	var heads: MultiMeshInstance3D = _node("Mesh1Head")
 	var rid: RID = heads.multimesh.get_rid()
-	var count: int = simulation.get_bucket_instance_count(2)
+	var count: int = simulation.get_bucket_instance_count(SunflowerSimulation.mesh_bucket(0, SunflowerField.Part.HEAD))
 	check(count > 100, "mesh-1 heads written: %d" % count)
 	check_eq(RenderingServer.multimesh_get_visible_instances(rid), count, "visible instances")
 	var buffer: PackedFloat32Array = RenderingServer.multimesh_get_buffer(rid)
