@@ -135,6 +135,7 @@ func show(nodes: FieldNodes) -> void:
 	configure_threads()
 	FieldObserver.push(_field, _field.observer, _field.frustum_culling, drawn.simulation)
 	drawn.simulation.update(0.0)
+	drawn.show_filled_buckets()
 
 
 ## Says that a map cannot be used, as an error, a signal and a configuration warning.
@@ -153,6 +154,7 @@ func update_field(delta: float) -> void:
 	FieldObserver.push(_field, _field.observer, _field.frustum_culling, native_simulation)
 	native_simulation.set_pushers(interaction.gather_pushers(_field.pusher_group, _field.pusher_radius))
 	native_simulation.update(delta)
+	drawn.show_filled_buckets()
 	if not Engine.is_editor_hint():
 		# A stalk: the bottom and middle parts, two of the plant's three part heights.
 		var height: float = _field.plant_height

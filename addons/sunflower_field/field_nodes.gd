@@ -15,6 +15,8 @@ var _owner: Node3D
 var _impostors: ImpostorSet
 var _chunk_nodes: Array[MultiMeshInstance3D] = []
 var _dynamic_nodes: Array[MultiMeshInstance3D] = []
+var _dynamic_buckets: PackedInt32Array = []  # the native bucket each dynamic node draws
+var _shown_buckets: int = -1  # the filled-bucket mask the nodes' visibility follows
 var _object_nodes: Array[Node] = []
 
 
@@ -61,15 +63,28 @@ func finish(part_meshes: Array[Mesh], legend: Dictionary, cell_size: float, sway
 			var node: MultiMeshInstance3D = _make_node(node_name, part_meshes[level * PART_NAMES.size() + part], aabb)
 			simulation.set_bucket_multimesh(Native.mesh_bucket(level, part), node.multimesh.get_rid())
 			_dynamic_nodes.append(node)
+			_dynamic_buckets.append(Native.mesh_bucket(level, part))
 	var sprite: MultiMeshInstance3D = _make_node("Sprites", _impostors.sprite_mesh(), aabb)
 	var billboard: MultiMeshInstance3D = _make_node("Billboards", _impostors.billboard_mesh(), aabb)
 	billboard.cast_shadow = GeometryInstance3D.SHADOW_CASTING_SETTING_OFF
 	simulation.set_bucket_multimesh(Native.constant(&"BUCKET_SPRITE"), sprite.multimesh.get_rid())
 	simulation.set_bucket_multimesh(Native.constant(&"BUCKET_BILLBOARD"), billboard.multimesh.get_rid())
 	_dynamic_nodes.append_array([sprite, billboard])
+	_dynamic_buckets.append_array([Native.constant(&"BUCKET_SPRITE"), Native.constant(&"BUCKET_BILLBOARD")])
 	_place_objects(legend, cell_size)
 	for node: MultiMeshInstance3D in _chunk_nodes:
 		node.visible = true
+
+
+## Shows only the near buckets that hold plants after the simulation's last update: an empty
+## MultiMesh would still cost a draw call (and its shadow pass another).
+func show_filled_buckets() -> void:
+	var filled: int = simulation.get_filled_buckets()
+	if filled == _shown_buckets:
+		return
+	_shown_buckets = filled
+	for i: int in _dynamic_nodes.size():
+		_dynamic_nodes[i].visible = (filled & (1 << _dynamic_buckets[i])) != 0
 
 
 ## Sets the switch distance between each chunk's sprite and billboard, and where billboards end

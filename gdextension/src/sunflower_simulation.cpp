@@ -45,6 +45,7 @@ void SunflowerSimulation::bind_methods() {
 	gdx::bind_method(CLASS, "get_plant_lod", &SunflowerSimulation::get_plant_lod, { "plant" });
 	gdx::bind_method(CLASS, "get_plant_parts", &SunflowerSimulation::get_plant_parts, { "plant" });
 	gdx::bind_method(CLASS, "get_bucket_instance_count", &SunflowerSimulation::get_bucket_instance_count, { "bucket" });
+	gdx::bind_method(CLASS, "get_filled_buckets", &SunflowerSimulation::get_filled_buckets);
 	gdx::bind_method(CLASS, "get_last_update_usec", &SunflowerSimulation::get_last_update_usec);
 	gdx::bind_method(CLASS, "get_memory_bytes", &SunflowerSimulation::get_memory_bytes);
 	gdx::bind_method(CLASS, "get_time", &SunflowerSimulation::get_time);
@@ -320,6 +321,14 @@ gdx::PackedFloat32Array SunflowerSimulation::get_plant_parts(int64_t p_plant) co
 
 int64_t SunflowerSimulation::get_bucket_instance_count(int64_t p_bucket) const {
 	return p_bucket >= 0 && p_bucket < BUCKET_COUNT ? _sim.get_bucket(uint32_t(p_bucket)).get_count() : 0;
+}
+
+int64_t SunflowerSimulation::get_filled_buckets() const {
+	int64_t mask = 0;
+	for (uint32_t b = 0; b < BUCKET_COUNT; ++b) {
+		mask |= _sim.get_bucket(b).get_count() > 0 ? int64_t(1) << b : 0;
+	}
+	return mask;
 }
 
 int64_t SunflowerSimulation::get_last_update_usec() const {

@@ -47,6 +47,7 @@ public:
 	int64_t get_plant_lod(int64_t p_plant) const;
 	gdx::PackedFloat32Array get_plant_parts(int64_t p_plant) const;
 	int64_t get_bucket_instance_count(int64_t p_bucket) const;
+	int64_t get_filled_buckets() const;
 	int64_t get_last_update_usec() const;
 	int64_t get_memory_bytes() const;
 	double get_time() const;
