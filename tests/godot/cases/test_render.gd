@@ -98,6 +98,43 @@ func test_density_thinning_draws_fewer_far_impostors() -> void:
 	check(thinned < full * 0.98, "thinning draws fewer pixels of plants (%s vs %s)" % [thinned, full])
 
 
+func test_thinning_keeps_the_same_plants_whatever_their_order_in_a_buffer() -> void:
+	var field: SunflowerField = _still_field(
+		"res://fields/large.field", Vector3(100.0, 25.0, 190.0), Vector3(100.0, 0.0, 60.0)
+	)
+	field.thinning_distance = 20.0
+	field.thinning_min_density = 0.1
+	await frames(6)
+	field.set_process(false)  # no updates: the buffers stay as this test leaves them
+	var before: Image = tree.root.get_viewport().get_texture().get_image()
+	# Reverse the order of the instances in every visible chunk's billboard buffer (as the near
+	# buckets reorder theirs when plants come and go): the same plants must stay drawn.
+	var reversed: int = 0
+	for node: Node in field.get_children(true):
+		if node.name.begins_with("ChunkBillboards"):
+			var rid: RID = (node as MultiMeshInstance3D).multimesh.get_rid()
+			var buffer: PackedFloat32Array = RenderingServer.multimesh_get_buffer(rid)
+			var count: int = buffer.size() / 12
+			var flipped: PackedFloat32Array = PackedFloat32Array()
+			flipped.resize(buffer.size())
+			for i: int in count:
+				for k: int in 12:
+					flipped[(count - 1 - i) * 12 + k] = buffer[i * 12 + k]
+			RenderingServer.multimesh_set_buffer(rid, flipped)
+			reversed += 1
+	await frames(4)
+	var after: Image = tree.root.get_viewport().get_texture().get_image()
+	var changed: int = 0
+	for y: int in range(0, before.get_height(), 2):
+		for x: int in range(0, before.get_width(), 2):
+			changed += 1 if before.get_pixel(x, y).is_equal_approx(after.get_pixel(x, y)) == false else 0
+	var share: float = changed / float((before.get_height() / 2) * (before.get_width() / 2))
+	print("     %d chunk buffers reversed; %.2f%% of pixels changed" % [reversed, 100.0 * share])
+	check(reversed > 10, "far chunks were reversed (%d)" % reversed)
+	check(share < 0.002, "the same plants are drawn after reordering (%.2f%% of pixels changed)" % (100.0 * share))
+	field.set_process(true)
+
+
 ## A calm field from [param map_path] in the scene, seen by a current camera at [param eye]
 ## looking at [param target].
 func _still_field(map_path: String, eye: Vector3, target: Vector3) -> SunflowerField:
