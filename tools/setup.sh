@@ -20,13 +20,14 @@ if ((${#missing[@]})); then
   DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 fi
 
-# Python tools in a private virtual environment: SCons, gdtoolkit, and Zig's C/C++ compiler (which
-# cross-compiles the libraries for every desktop platform).
+# Python tools in a private virtual environment: SCons, gdtoolkit, Zig's C/C++ compiler (which
+# cross-compiles the libraries for every desktop platform), numpy and Pillow (picture measurements).
 venv="$repo/.cache/venv"
-if [[ ! -x "$venv/bin/scons" || ! -x "$venv/bin/gdlint" ]] || ! "$venv/bin/python" -m ziglang version >/dev/null 2>&1; then
-  echo "setup: creating $venv with scons, gdtoolkit and ziglang"
+if [[ ! -x "$venv/bin/scons" || ! -x "$venv/bin/gdlint" ]] || ! "$venv/bin/python" -m ziglang version >/dev/null 2>&1 ||
+  ! "$venv/bin/python" -c "import numpy, PIL" 2>/dev/null; then
+  echo "setup: creating $venv with scons, gdtoolkit, ziglang, numpy and pillow"
   python3 -m venv "$venv"
-  "$venv/bin/pip" install -q --disable-pip-version-check "scons>=4.5" "gdtoolkit>=4.3,<5" "ziglang>=0.13"
+  "$venv/bin/pip" install -q --disable-pip-version-check "scons>=4.5" "gdtoolkit>=4.3,<5" "ziglang>=0.13" numpy pillow
 fi
 
 # The engine.

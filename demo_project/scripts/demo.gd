@@ -13,6 +13,9 @@ extends Node3D
 ##   --force-lod N            draw every plant as one representation (0-2 meshes, 3 sprite, 4 billboard)
 ##   --culling off            do not skip plants outside the camera's view
 ##   --baseline native        draw the field the Godot-native way instead (benchmark baseline)
+##   --wind P                 the wind power (0: calm)
+##   --no-hud                 hide the heads-up display (pictures for measurements)
+##   --impostor-mask          draw only the impostors, on black (the impostor region of a view)
 
 const MAP_NAMES: PackedStringArray = ["Demo field (40 x 30)", "Large field (400 x 300)"]
 const MAP_PATHS: PackedStringArray = ["res://fields/demo.field", "res://fields/large.field"]
@@ -78,6 +81,14 @@ func _ready() -> void:
 				_field.frustum_culling = value != "off"
 			"--baseline":
 				_baseline = value
+			"--wind":
+				_field.wind_power = value.to_float()
+			"--no-hud":
+				_hud.visible = false
+				i -= 1
+			"--impostor-mask":
+				_mask_impostors()
+				i -= 1
 			_:
 				_hud.show_message("unknown argument '%s' (see demo.gd for the options)" % args[i])
 				i -= 1
@@ -96,6 +107,26 @@ func _ready() -> void:
 		apply_part_argument(argument)
 	if _frames_total >= 0:
 		_start_recording(path_file)
+
+
+## Draws the impostors alone on black: the mesh parts in unshaded black (so they still hide what
+## is behind them), no ground, a black background. The picture's non-black pixels are where the
+## view shows sprites and billboards.
+func _mask_impostors() -> void:
+	var black: StandardMaterial3D = StandardMaterial3D.new()
+	black.shading_mode = BaseMaterial3D.SHADING_MODE_UNSHADED
+	black.albedo_color = Color.BLACK
+	black.cull_mode = BaseMaterial3D.CULL_DISABLED  # leaves are seen from both sides
+	for level: int in SunflowerSimulation.MESH_LEVEL_COUNT:
+		for part: int in SunflowerSimulation.PART_COUNT:
+			var mesh: ArrayMesh = _field.get_part_mesh(level, part).duplicate() as ArrayMesh
+			for surface: int in mesh.get_surface_count():
+				mesh.surface_set_material(surface, black)
+			_field.set_part_mesh(level, part, mesh)
+	_ground.visible = false
+	var environment: Environment = ($WorldEnvironment as WorldEnvironment).environment
+	environment.background_mode = Environment.BG_COLOR
+	environment.background_color = Color.BLACK
 
 
 ## Loads a map; an imported res:// map is used as a resource, any other path is read directly.
