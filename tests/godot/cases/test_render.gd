@@ -135,6 +135,25 @@ func test_thinning_keeps_the_same_plants_whatever_their_order_in_a_buffer() -> v
 	field.set_process(true)
 
 
+func test_empty_near_buckets_are_not_drawn() -> void:
+	# Far outside the field, looking at it: every plant is in a static chunk, no near bucket holds one.
+	var field: SunflowerField = _still_field(
+		"res://fields/demo.field", Vector3(10.0, 30.0, 120.0), Vector3(10.0, 0.0, 7.5)
+	)
+	await frames(4)
+	var with_field: int = RenderingServer.get_rendering_info(RenderingServer.RENDERING_INFO_TOTAL_DRAW_CALLS_IN_FRAME)
+	field.visible = false
+	await frames(4)
+	var without: int = RenderingServer.get_rendering_info(RenderingServer.RENDERING_INFO_TOTAL_DRAW_CALLS_IN_FRAME)
+	field.visible = true
+	var chunks: int = 0
+	for node: Node in field.get_children(true):
+		chunks += 1 if node.name.begins_with("ChunkBillboards") else 0
+	var field_calls: int = with_field - without
+	print("     draw calls of the field: %d, for %d chunks (the sun's shadow pass included)" % [field_calls, chunks])
+	check(field_calls <= 2 * chunks, "only the chunks draw: %d calls for %d chunks" % [field_calls, chunks])
+
+
 ## A calm field from [param map_path] in the scene, seen by a current camera at [param eye]
 ## looking at [param target].
 func _still_field(map_path: String, eye: Vector3, target: Vector3) -> SunflowerField:
