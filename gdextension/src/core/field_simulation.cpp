@@ -118,6 +118,16 @@ uint8_t FieldSimulation::_static_chunk_lod(uint32_t p_chunk) const {
 	return distance <= get_billboard_distance() ? LOD_SPRITE : LOD_BILLBOARD;
 }
 
+FieldSimulation::GridRange FieldSimulation::_grid_range(const glm::vec2 &p_center, float p_reach) const {
+	const float size = _layout.chunk_size;
+	GridRange range;
+	range.x0 = std::max(0, static_cast<int>(std::floor((p_center.x - p_reach) / size)));
+	range.x1 = std::min(_layout.grid_x - 1, static_cast<int>(std::floor((p_center.x + p_reach) / size)));
+	range.z0 = std::max(0, static_cast<int>(std::floor((p_center.y - p_reach) / size)));
+	range.z1 = std::min(_layout.grid_z - 1, static_cast<int>(std::floor((p_center.y + p_reach) / size)));
+	return range;
+}
+
 void FieldSimulation::_select_lods() {
 	const LodParams &params = _lod.get_params();
 	// A chunk becomes active once any of it could need a mesh; it goes static again a margin later.
@@ -142,17 +152,14 @@ void FieldSimulation::_select_lods() {
 		_select_chunk_lods(c, false, enter, leave);
 	}
 	const float reach = leave + _shape.cull_radius * _shape.part_scale;
-	const int x0 = std::max(0, static_cast<int>(std::floor((_observer.x - reach) / _layout.chunk_size)));
-	const int x1 = std::min(_layout.grid_x - 1, static_cast<int>(std::floor((_observer.x + reach) / _layout.chunk_size)));
-	const int z0 = std::max(0, static_cast<int>(std::floor((_observer.z - reach) / _layout.chunk_size)));
-	const int z1 = std::min(_layout.grid_z - 1, static_cast<int>(std::floor((_observer.z + reach) / _layout.chunk_size)));
+	const GridRange cells = _grid_range(glm::vec2(_observer.x, _observer.z), reach);
 	// Chunks turning active are taken nearest first, at most ACTIVATION_BUDGET plants per update: after
 	// a jump of the observer the plants next to it are meshes at once, and the rest of the
 	// neighbourhood follows over the next updates (drawn as static impostors meanwhile) instead of
 	// all in one long frame.
 	_activation.clear();
-	for (int z = z0; z <= z1; ++z) {
-		for (int x = x0; x <= x1; ++x) {
+	for (int z = cells.z0; z <= cells.z1; ++z) {
+		for (int x = cells.x0; x <= cells.x1; ++x) {
 			const uint32_t c = _layout.grid_chunks[static_cast<size_t>(z) * size_t(_layout.grid_x) + size_t(x)];
 			if (c == FieldLayout::NO_CHUNK || _visit_mark[c] == _lod_pass) {
 				continue;
@@ -316,14 +323,10 @@ void FieldSimulation::find_plants_near(const glm::vec2 &p_center, float p_radius
 			!std::isfinite(p_center.y)) {
 		return;
 	}
-	const float size = _layout.chunk_size;
-	const int x0 = std::max(0, static_cast<int>(std::floor((p_center.x - p_radius) / size)));
-	const int x1 = std::min(_layout.grid_x - 1, static_cast<int>(std::floor((p_center.x + p_radius) / size)));
-	const int z0 = std::max(0, static_cast<int>(std::floor((p_center.y - p_radius) / size)));
-	const int z1 = std::min(_layout.grid_z - 1, static_cast<int>(std::floor((p_center.y + p_radius) / size)));
+	const GridRange cells = _grid_range(p_center, p_radius);
 	const float radius_sq = p_radius * p_radius;
-	for (int z = z0; z <= z1; ++z) {
-		for (int x = x0; x <= x1; ++x) {
+	for (int z = cells.z0; z <= cells.z1; ++z) {
+		for (int x = cells.x0; x <= cells.x1; ++x) {
 			const uint32_t c = _layout.grid_chunks[static_cast<size_t>(z) * size_t(_layout.grid_x) + size_t(x)];
 			if (c == FieldLayout::NO_CHUNK) {
 				continue;
@@ -439,7 +442,8 @@ size_t FieldSimulation::get_memory_bytes() const {
 	bytes += _chunk_active.capacity() + _visit_mark.capacity() * sizeof(uint32_t);
 	bytes += (_active_chunks.capacity() + _previous_active.capacity() + _changed_chunks.capacity()) * sizeof(uint32_t);
 	bytes += _layout.grid_chunks.capacity() * sizeof(uint32_t);
-	bytes += _pushed.capacity() * sizeof(PushState) + (_pushers.capacity() + _near.capacity()) * sizeof(uint32_t);
+	bytes += _pushed.capacity() * sizeof(PushState) + _pushers.capacity() * sizeof(Pusher);
+	bytes += _near.capacity() * sizeof(uint32_t) + _activation.capacity() * sizeof(_activation[0]);
 	for (const InstanceBuffer &bucket : _buckets) {
 		bytes += size_t(bucket.get_capacity()) * FLOATS_PER_INSTANCE * sizeof(float);
 	}

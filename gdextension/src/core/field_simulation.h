@@ -170,6 +170,11 @@ private:
 		glm::vec2 velocity{ 0.0f };
 		glm::vec2 target{ 0.0f }; // where the pushers want it this frame
 	};
+	// The grid cells (chunk_size squares) within p_reach of a point (x, z), clamped to the grid.
+	struct GridRange {
+		int x0 = 0, x1 = -1, z0 = 0, z1 = -1;
+	};
+	GridRange _grid_range(const glm::vec2 &p_center, float p_reach) const;
 	void _update_pushes(float p_delta);
 	glm::vec2 _plant_bend(uint32_t p_plant, const Plant &p_plant_data, bool p_moving) const;
 	void _rebuild();
