@@ -151,7 +151,7 @@ func update_field(delta: float) -> void:
 	if plant_count() == 0:
 		return
 	var native_simulation: RefCounted = drawn.simulation
-	FieldObserver.push(_field, _field.observer, _field.frustum_culling, native_simulation)
+	var observer: Node3D = FieldObserver.push(_field, _field.observer, _field.frustum_culling, native_simulation)
 	native_simulation.set_pushers(interaction.gather_pushers(_field.pusher_group, _field.pusher_radius))
 	native_simulation.update(delta)
 	drawn.show_filled_buckets()
@@ -159,7 +159,6 @@ func update_field(delta: float) -> void:
 		# A stalk: the bottom and middle parts, two of the plant's three part heights.
 		var height: float = _field.plant_height
 		var stalk: Vector2 = Vector2(0.025 * height, height * 2.0 / 3.0)
-		var observer: Node3D = observer_node()
 		var reach: float = _field.collision_reach
 		interaction.update_colliders(
 			native_simulation, observer, reach, stalk, _field.collision_layer, _field.collision_mask

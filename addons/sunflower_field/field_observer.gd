@@ -22,11 +22,12 @@ static func resolve(field: Node3D, observer: NodePath) -> Node3D:
 
 
 ## Hands the observer's position (and with [param culling], a camera's frustum planes) to
-## [param simulation], in [param field]'s space. Nothing happens without an observer.
-static func push(field: Node3D, observer: NodePath, culling: bool, simulation: RefCounted) -> void:
+## [param simulation], in [param field]'s space, and returns the observer. Nothing happens without
+## one (null).
+static func push(field: Node3D, observer: NodePath, culling: bool, simulation: RefCounted) -> Node3D:
 	var node: Node3D = resolve(field, observer)
 	if node == null:
-		return
+		return null
 	var to_local: Transform3D = field.global_transform.affine_inverse()
 	var frustum: PackedFloat32Array = PackedFloat32Array()
 	var camera: Camera3D = node as Camera3D
@@ -35,3 +36,4 @@ static func push(field: Node3D, observer: NodePath, culling: bool, simulation: R
 			var local_plane: Plane = to_local * plane
 			frustum.append_array([local_plane.normal.x, local_plane.normal.y, local_plane.normal.z, local_plane.d])
 	simulation.set_observer(to_local * node.global_position, frustum)
+	return node
