@@ -1,11 +1,13 @@
 @tool
 extends RefCounted
 ## One build of a field: its map read and laid out into a new native simulation (on a worker
-## thread, or at once), then the field's nodes made within a per-frame budget. Owns the pending
+## thread, or at once), on colliders after rays found the ground (main thread, budgeted, then the
+## layout on the worker again), then the field's nodes made within a per-frame budget. Owns the pending
 ## pair (that simulation and its [code]FieldNodes[/code]) until the field takes it, so finishing a
 ## build swaps two pairs; cancelling frees what it made. Keeps the build's figures.
 
 const Native: GDScript = preload("native.gd")
+const FieldGround: GDScript = preload("field_ground.gd")
 const FieldNodes: GDScript = preload("field_nodes.gd")
 const ImpostorSet: GDScript = preload("impostor_set.gd")
 
@@ -24,6 +26,7 @@ class Job:
 	var independent_jitter: bool
 	var chunk_size: float
 	var plant_height: float
+	var ground: FieldGround
 	var error: String = ""
 	var usec: int = 0
 
@@ -40,21 +43,38 @@ class Job:
 		job.independent_jitter = field.independent_jitter
 		job.chunk_size = field.chunk_size
 		job.plant_height = field.plant_height
+		job.ground = FieldGround.for_field(field)
 		return job
 
+	## Reads the map and lays it out on a flat field or a height map (on colliders: on no ground
+	## until the rays are in).
 	func run() -> void:
 		var start: int = Time.get_ticks_usec()
+		simulation.set_layout(cell_size, seed, independent_jitter, chunk_size)
+		simulation.set_plant_height(plant_height)
+		ground.prepare(simulation)
 		error = simulation.load_map(text, source, legend, max_plants)
 		if error.is_empty():
-			simulation.set_layout(cell_size, seed, independent_jitter, chunk_size)
-			simulation.set_plant_height(plant_height)
-		usec = Time.get_ticks_usec() - start
+			error = ground.apply_height_map(simulation, cell_size)
+		usec += Time.get_ticks_usec() - start
 
+	## Lays the plants out on the ground the rays found.
+	func lay_out_on_rays() -> void:
+		var start: int = Time.get_ticks_usec()
+		error = ground.apply_rays(simulation)
+		usec += Time.get_ticks_usec() - start
+
+
+## Where a build is: the map read (worker), rays cast at colliders (main thread, only on colliders),
+## the plants laid out on them (worker), nodes made (main thread).
+enum Phase { READ, RAYS, NODES }
 
 ## The pending pair: the job's simulation and the nodes made for it so far.
 var nodes: FieldNodes
 var job: Job
 var background: bool
+var _field: Node3D
+var _phase: Phase = Phase.READ
 var _task: int = -1
 var _start_usec: int = Time.get_ticks_usec()
 var _frames: int = 0
@@ -66,6 +86,7 @@ var _longest_step_ms: float = 0.0
 func _init(field: Node3D, impostors: ImpostorSet, build_job: Job, in_background: bool) -> void:
 	job = build_job
 	background = in_background
+	_field = field
 	nodes = FieldNodes.new(field, job.simulation, impostors)
 	if background:
 		_task = WorkerThreadPool.add_task(job.run, false, "SunflowerField: " + job.source.get_file())
@@ -73,10 +94,17 @@ func _init(field: Node3D, impostors: ImpostorSet, build_job: Job, in_background:
 		job.run()
 
 
-## One step: waits for the worker (unless [param budget_usec] ≥ 0 and it is still running), then
-## makes chunk nodes until the budget is spent (negative: until done). True when the pending field
-## is complete or the map failed ([method get_error]).
-func step(budget_usec: int, switch_distance: float, max_draw_distance: float) -> bool:
+## Whether the build waits for collider rays, which need frames: such a build is stepped even when
+## the map is small.
+func needs_frames() -> bool:
+	return job.ground.needs_rays()
+
+
+## One step: waits for the worker (unless [param budget_usec] ≥ 0 and it is still running), casts
+## collider rays (which miss none of [param exclude]: the field's own stalks), then makes chunk nodes
+## until the budget is spent (negative: until done). True when the pending field is complete or the
+## map failed ([method get_error]).
+func step(budget_usec: int, switch_distance: float, max_draw_distance: float, exclude: Array[RID]) -> bool:
 	var start: int = Time.get_ticks_usec()
 	if _task >= 0:
 		if budget_usec >= 0 and not WorkerThreadPool.is_task_completed(_task):
@@ -86,6 +114,28 @@ func step(budget_usec: int, switch_distance: float, max_draw_distance: float) ->
 		_task = -1
 	if not job.error.is_empty():
 		return true
+	if _phase == Phase.READ:
+		_phase = Phase.NODES
+		if job.ground.needs_rays():
+			_phase = Phase.RAYS
+			job.ground.start_rays(
+				_field, job.simulation, _field.ground_ray_above, _field.ground_ray_below, _field.ground_collision_mask
+			)
+	if _phase == Phase.RAYS:
+		var left: int = budget_usec - (Time.get_ticks_usec() - start) if budget_usec >= 0 else -1
+		var cast: bool = job.ground.cast_rays(maxi(left, 0) if budget_usec >= 0 else -1, exclude)
+		_frames += 1
+		add_main_thread_time(start)
+		if not cast:
+			return false
+		_phase = Phase.NODES
+		if budget_usec >= 0:
+			_task = WorkerThreadPool.add_task(job.lay_out_on_rays, false, "SunflowerField: ground")
+			return false
+		job.lay_out_on_rays()
+		if not job.error.is_empty():
+			return true
+		start = Time.get_ticks_usec()
 	var done: bool = nodes.make_chunks(budget_usec, switch_distance, max_draw_distance)
 	_frames += 1
 	add_main_thread_time(start)
@@ -97,9 +147,15 @@ func get_error() -> String:
 	return job.error
 
 
-## How far the build is, 0 to 1: the worker's part is the first tenth.
+## How far the build is, 0 to 1: the worker's part is the first tenth; rays, when cast, the next
+## four.
 func get_progress() -> float:
-	return 0.0 if _task >= 0 else 0.1 + 0.9 * nodes.get_chunk_progress()
+	var rays: float = 0.4 if job.ground.needs_rays() else 0.0
+	if _phase == Phase.READ:
+		return 0.0 if _task >= 0 else 0.1
+	if _phase == Phase.RAYS:
+		return 0.1 + rays * job.ground.get_ray_progress()
+	return 0.1 + rays + (0.9 - rays) * (0.0 if _task >= 0 else nodes.get_chunk_progress())
 
 
 ## Counts main-thread time spent on this build since [param start_usec].
@@ -117,6 +173,8 @@ func get_stats() -> Dictionary:
 		"longest_step_ms": _longest_step_ms,
 		"main_thread_ms": _main_thread_ms,
 		"worker_ms": job.usec / 1000.0,
+		"ground_ray_ms": job.ground.get_ray_ms(),
+		"cells_without_ground": job.simulation.get_cells_without_ground(),
 		"total_ms": (Time.get_ticks_usec() - _start_usec) / 1000.0,
 	}
 

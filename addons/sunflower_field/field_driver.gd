@@ -79,7 +79,7 @@ func rebuild(background: bool = false) -> void:
 	var job: FieldBuild.Job = FieldBuild.Job.for_field(_field, native_simulation)
 	background = background and _field.background_build and field_map.text.size() >= BACKGROUND_BUILD_MIN_BYTES
 	build = FieldBuild.new(_field, impostors, job, background)
-	if background:
+	if background or build.needs_frames():
 		building.append(_field)
 		_field.emit_signal(&"build_progress", 0.0)
 	else:
@@ -89,7 +89,8 @@ func rebuild(background: bool = false) -> void:
 ## One step of the running build within [param budget_usec] (negative: to the end); the last step
 ## puts the new field in place of the old.
 func step_build(budget_usec: int) -> void:
-	if not build.step(budget_usec, _field.lod_distances[3], _field.max_draw_distance):
+	var stalks: Array[RID] = interaction.get_body_rids()
+	if not build.step(budget_usec, _field.lod_distances[3], _field.max_draw_distance, stalks):
 		if build.get_progress() > 0.0:  # not while the worker reads the map
 			_field.emit_signal(&"build_progress", build.get_progress())
 		return
@@ -107,7 +108,7 @@ func step_build(budget_usec: int) -> void:
 	stats = done.get_stats()
 	last_error = ""
 	_field.update_configuration_warnings()
-	if done.background:
+	if done.background or done.needs_frames():
 		_field.emit_signal(&"build_progress", 1.0)
 	_field.emit_signal(&"field_built", plant_count())
 

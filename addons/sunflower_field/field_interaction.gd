@@ -71,6 +71,13 @@ func get_plant_of_body(body: RID) -> int:
 	return _plants_of_bodies.get(body, -1)
 
 
+## The stalk colliders' bodies (which the ground's rays must not take for the ground).
+func get_body_rids() -> Array[RID]:
+	var rids: Array[RID] = []
+	rids.assign(_bodies.values())
+	return rids
+
+
 ## How many stalk colliders exist now.
 func get_collider_count() -> int:
 	return _bodies.size()

@@ -162,7 +162,12 @@ func _field_aabb() -> AABB:
 
 func _place_objects(legend: Dictionary, cell_size: float) -> void:
 	var objects: PackedInt32Array = simulation.get_map_objects()
+	var heights: PackedFloat32Array = simulation.get_object_heights()
+	var grounded: int = 0
 	for i: int in range(0, objects.size(), 3):
+		if is_nan(heights[i / 3]):
+			continue  # no ground under it: counted below
+		grounded += 1
 		var symbol: String = String.chr(objects[i + 2])
 		var scene: PackedScene = legend.get(symbol) as PackedScene
 		if scene == null:
@@ -177,7 +182,14 @@ func _place_objects(legend: Dictionary, cell_size: float) -> void:
 		instance.name = "%s_%d_%d" % [instance.name, objects[i], objects[i + 1]]
 		if instance is Node3D:
 			(instance as Node3D).position = Vector3(
-				(objects[i] + 0.5) * cell_size, 0.0, (objects[i + 1] + 0.5) * cell_size
+				(objects[i] + 0.5) * cell_size, heights[i / 3], (objects[i + 1] + 0.5) * cell_size
 			)
 		_owner.add_child(instance, false, Node.INTERNAL_MODE_BACK)
 		_object_nodes.append(instance)
+	if grounded < heights.size():
+		push_warning(
+			(
+				"SunflowerField.legend: %d of %d objects have no ground under them and are not placed"
+				% [heights.size() - grounded, heights.size()]
+			)
+		)

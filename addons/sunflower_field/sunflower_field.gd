@@ -26,9 +26,16 @@ signal build_progress(progress: float)
 enum Part { BOTTOM, MIDDLE, HEAD }
 ## The five representations, most detailed first (the native core's levels).
 enum Lod { MESH_1, MESH_2, MESH_3, SPRITE, BILLBOARD }
+## Where plants stand (see [member ground_source]).
+enum GroundSource {
+	FLAT = FieldGround.Source.FLAT,
+	COLLIDERS = FieldGround.Source.COLLIDERS,
+	HEIGHT_MAP = FieldGround.Source.HEIGHT_MAP,
+}
 
 const Native: GDScript = preload("native.gd")
 const FieldDriver: GDScript = preload("field_driver.gd")
+const FieldGround: GDScript = preload("field_ground.gd")
 const FieldNodes: GDScript = preload("field_nodes.gd")
 const DEFAULT_FRONT_TEXTURE: Texture2D = preload("textures/sunflower_front.png")
 const DEFAULT_SIDE_TEXTURE: Texture2D = preload("textures/sunflower_side.png")
@@ -89,6 +96,72 @@ const DEFAULT_SIDE_TEXTURE: Texture2D = preload("textures/sunflower_side.png")
 		value = Native.accept("SunflowerField.chunk_size", value, chunk_size)
 		if value != chunk_size:
 			chunk_size = value
+			_queue_rebuild()
+
+@export_group("Ground")
+## Where the plants stand. [b]Flat[/b]: on the node's plane (y = 0). [b]Colliders[/b]: where a ray
+## straight down hits a physics body in [member ground_collision_mask], between
+## [member ground_ray_above] and [member ground_ray_below] of the node — any terrain with collision
+## (a HeightMapShape3D, a trimesh, a terrain plugin's). The rays run on the main thread, a
+## [member build_budget_ms] share per frame, from the physics frame after the build starts.
+## [b]Height Map[/b]: on [member height_map], read on the build's worker thread. Cells with no
+## ground under their plant (a hole, past the colliders or the map) get no plant; legend objects
+## stand on the ground too.
+@export var ground_source: GroundSource = GroundSource.FLAT:
+	set(value):
+		if value != ground_source:
+			ground_source = value
+			_queue_rebuild()
+## Colliders: the physics layers that are ground.
+@export_flags_3d_physics var ground_collision_mask: int = 1:
+	set(value):
+		if value != ground_collision_mask:
+			ground_collision_mask = value
+			_queue_rebuild()
+## Colliders: how far above the node the rays start.
+@export_range(0.0, 1000.0, 0.1, "or_greater", "suffix:m") var ground_ray_above: float = 100.0:
+	set(value):
+		value = Native.accept("SunflowerField.ground_ray_above", value, ground_ray_above)
+		if value != ground_ray_above:
+			ground_ray_above = value
+			_queue_rebuild()
+## Colliders: how far below the node the rays end.
+@export_range(0.0, 1000.0, 0.1, "or_greater", "suffix:m") var ground_ray_below: float = 100.0:
+	set(value):
+		value = Native.accept("SunflowerField.ground_ray_below", value, ground_ray_below)
+		if value != ground_ray_below:
+			ground_ray_below = value
+			_queue_rebuild()
+## Height Map: its red channel (0 to 1) is the height from [code]height_range.x[/code] to
+## [code]height_range.y[/code] — as [method HeightMapShape3D.update_map_data_from_image] reads it, so
+## one image can make both the collision and the field. Pixels with alpha below 0.5 are holes.
+## Sampled bilinearly; the first and last pixels lie on [member height_map_rect]'s edges.
+@export var height_map: Texture2D:
+	set(value):
+		if value != height_map:
+			height_map = value
+			_queue_rebuild()
+## Height Map: the rectangle it covers in the node's space, x and z (an empty one: the whole map,
+## from (0, 0) to columns × rows cells). A HeightMapShape3D of w × d heights at the node's origin
+## spans [code]Rect2(-(w - 1) / 2, -(d - 1) / 2, w - 1, d - 1)[/code].
+@export var height_map_rect: Rect2 = Rect2():
+	set(value):
+		if value != height_map_rect:
+			height_map_rect = value
+			_queue_rebuild()
+## Height Map: the heights of red 0 and red 1.
+@export var height_range: Vector2 = Vector2(0.0, 10.0):
+	set(value):
+		if value != height_range:
+			height_range = value
+			_queue_rebuild()
+## How far plants lean from upright towards the ground's normal: 0 keeps them upright (sunflowers
+## do), 1 stands them along it.
+@export_range(0.0, 1.0, 0.01) var ground_tilt: float = 0.0:
+	set(value):
+		value = Native.accept("SunflowerField.ground_tilt", value, ground_tilt)
+		if value != ground_tilt:
+			ground_tilt = value
 			_queue_rebuild()
 
 @export_group("Wind")
@@ -346,7 +419,9 @@ func finish_build() -> void:
 ## Figures of the last build: [code]total_ms[/code] (start to [signal field_built]),
 ## [code]worker_ms[/code] (reading and laying out the map), [code]main_thread_ms[/code] (making
 ## nodes and buffers), [code]longest_step_ms[/code] (the longest the build held up one frame),
-## [code]frames[/code] (frames it spanned) and [code]background[/code].
+## [code]frames[/code] (frames it spanned), [code]background[/code], [code]ground_ray_ms[/code]
+## (main-thread time casting rays at colliders) and [code]cells_without_ground[/code] (plant cells
+## with no ground under their plant, so no plant).
 func get_build_stats() -> Dictionary:
 	return _driver.stats.duplicate()
 
@@ -423,7 +498,8 @@ func get_plant_at(point: Vector3, max_distance: float = 0.5) -> int:
 	var best: float = INF
 	var simulation: RefCounted = _driver.simulation()
 	for plant: int in simulation.get_plants_near(point, max_distance) if simulation else PackedInt32Array():
-		var distance: float = simulation.get_plant_position(plant).distance_squared_to(Vector3(point.x, 0, point.z))
+		var root: Vector3 = simulation.get_plant_position(plant)
+		var distance: float = Vector2(root.x, root.z).distance_squared_to(Vector2(point.x, point.z))
 		if distance < best:
 			best = distance
 			nearest = plant

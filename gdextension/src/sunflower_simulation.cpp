@@ -20,6 +20,13 @@ void SunflowerSimulation::bind_methods() {
 	gdx::bind_method(CLASS, "get_map_rows", &SunflowerSimulation::get_map_rows);
 	gdx::bind_method(CLASS, "get_map_objects", &SunflowerSimulation::get_map_objects);
 	gdx::bind_method(CLASS, "set_layout", &SunflowerSimulation::set_layout, { "cell_size", "seed", "independent_jitter", "chunk_size" });
+	gdx::bind_method(CLASS, "set_ground_flat", &SunflowerSimulation::set_ground_flat);
+	gdx::bind_method(CLASS, "set_ground_height_map", &SunflowerSimulation::set_ground_height_map,
+			{ "rgba", "width", "depth", "origin", "size", "height_min", "height_max", "tilt" });
+	gdx::bind_method(CLASS, "set_ground_heights", &SunflowerSimulation::set_ground_heights, { "heights", "normals", "tilt" });
+	gdx::bind_method(CLASS, "get_ground_points", &SunflowerSimulation::get_ground_points);
+	gdx::bind_method(CLASS, "get_cells_without_ground", &SunflowerSimulation::get_cells_without_ground);
+	gdx::bind_method(CLASS, "get_object_heights", &SunflowerSimulation::get_object_heights);
 	gdx::bind_method(CLASS, "set_plant_height", &SunflowerSimulation::set_plant_height, { "metres" });
 	gdx::bind_method(CLASS, "set_wind", &SunflowerSimulation::set_wind,
 			{ "model", "power", "direction", "stiffness_middle", "stiffness_bottom", "bend_per_power", "max_bend", "flip_interval",
@@ -116,6 +123,62 @@ void SunflowerSimulation::set_layout(double p_cell_size, int64_t p_seed, bool p_
 	if (_sim.set_layout_params(params)) {
 		release_multimeshes(); // the chunks changed
 	}
+}
+
+void SunflowerSimulation::set_ground_flat() {
+	_sim.set_ground(Ground{});
+	release_multimeshes(); // the chunks changed
+}
+
+gdx::String SunflowerSimulation::set_ground_height_map(const gdx::PackedFloat32Array &p_rgba, int64_t p_width, int64_t p_depth,
+		gdx::Vector2 p_origin, gdx::Vector2 p_size, double p_height_min, double p_height_max, double p_tilt) {
+	Ground ground;
+	ground.kind = Ground::GRID;
+	ground.tilt = float(p_tilt);
+	const std::string problem = gdx::to_core_height_grid(p_rgba, p_width, p_depth, p_origin, p_size, p_height_min, p_height_max, ground.grid);
+	if (!problem.empty()) {
+		return gdx::String(problem); // the field keeps its ground
+	}
+	_sim.set_ground(std::move(ground));
+	release_multimeshes();
+	return gdx::String();
+}
+
+gdx::String SunflowerSimulation::set_ground_heights(const gdx::PackedFloat32Array &p_heights, const gdx::PackedFloat32Array &p_normals,
+		double p_tilt) {
+	const size_t points = size_t(_sim.get_map().plant_count) + _sim.get_map().objects.size();
+	if (size_t(p_heights.size()) != points || (p_normals.size() != 0 && size_t(p_normals.size()) != 3 * points)) {
+		return gdx::String("set_ground_heights: the map has " + std::to_string(points) + " ground points; got " +
+				std::to_string(p_heights.size()) + " heights and " + std::to_string(p_normals.size()) +
+				" normal floats (0 or 3 per point)");
+	}
+	Ground ground;
+	ground.kind = Ground::HEIGHTS;
+	ground.tilt = float(p_tilt);
+	ground.heights.assign(p_heights.data(), p_heights.data() + p_heights.size());
+	ground.normals.assign(p_normals.data(), p_normals.data() + p_normals.size());
+	_sim.set_ground(std::move(ground));
+	release_multimeshes();
+	return gdx::String();
+}
+
+gdx::PackedFloat32Array SunflowerSimulation::get_ground_points() const {
+	std::vector<glm::vec2> points;
+	ground_points(_sim.get_map(), _sim.get_layout_params(), points);
+	gdx::PackedFloat32Array out;
+	out.assign(reinterpret_cast<const float *>(points.data()), points.size() * 2);
+	return out;
+}
+
+int64_t SunflowerSimulation::get_cells_without_ground() const {
+	return _sim.get_layout().cells_without_ground;
+}
+
+gdx::PackedFloat32Array SunflowerSimulation::get_object_heights() const {
+	const std::vector<float> &heights = _sim.get_layout().object_ground;
+	gdx::PackedFloat32Array out;
+	out.assign(heights.data(), heights.size());
+	return out;
 }
 
 void SunflowerSimulation::set_plant_height(double p_metres) {
@@ -297,7 +360,7 @@ gdx::Vector3 SunflowerSimulation::get_plant_position(int64_t p_plant) const {
 	if (!_is_plant(p_plant)) {
 		return gdx::Vector3{};
 	}
-	return gdx::to_godot_ground(_sim.get_layout().plants[size_t(p_plant)].position);
+	return gdx::to_godot(_sim.get_layout().plants[size_t(p_plant)].root());
 }
 
 int64_t SunflowerSimulation::get_plant_lod(int64_t p_plant) const {

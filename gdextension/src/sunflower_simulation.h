@@ -19,6 +19,13 @@ public:
 	gdx::PackedInt32Array get_map_objects() const;
 
 	void set_layout(double p_cell_size, int64_t p_seed, bool p_independent_jitter, double p_chunk_size);
+	void set_ground_flat();
+	gdx::String set_ground_height_map(const gdx::PackedFloat32Array &p_rgba, int64_t p_width, int64_t p_depth, gdx::Vector2 p_origin,
+			gdx::Vector2 p_size, double p_height_min, double p_height_max, double p_tilt);
+	gdx::String set_ground_heights(const gdx::PackedFloat32Array &p_heights, const gdx::PackedFloat32Array &p_normals, double p_tilt);
+	gdx::PackedFloat32Array get_ground_points() const;
+	int64_t get_cells_without_ground() const;
+	gdx::PackedFloat32Array get_object_heights() const;
 	void set_plant_height(double p_metres);
 	void set_wind(int64_t p_model, double p_power, gdx::Vector2 p_direction, double p_stiffness_middle, double p_stiffness_bottom,
 			double p_bend_per_power, double p_max_bend, double p_flip_interval, double p_flip_chance, double p_gust_speed,

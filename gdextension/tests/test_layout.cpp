@@ -25,7 +25,7 @@ TEST_CASE("positions follow x = (column + α)·cell, z = (row + α)·cell with �
 	const FieldMap map = full_map(40, 30);
 	LayoutParams params;
 	FieldLayout layout;
-	build_layout(map, params, layout);
+	build_layout(map, params, Ground{}, layout);
 	REQUIRE(layout.plants.size() == 1200);
 	CHECK(layout.size.x == doctest::Approx(20.0f)); // a 40 × 30 map is a 20 × 15 m field
 	CHECK(layout.size.y == doctest::Approx(15.0f));
@@ -45,10 +45,10 @@ TEST_CASE("a seed reproduces a field exactly; another seed does not") {
 	LayoutParams params;
 	params.seed = 42;
 	FieldLayout a, b, c;
-	build_layout(map, params, a);
-	build_layout(map, params, b);
+	build_layout(map, params, Ground{}, a);
+	build_layout(map, params, Ground{}, b);
 	params.seed = 43;
-	build_layout(map, params, c);
+	build_layout(map, params, Ground{}, c);
 	int same = 0;
 	for (size_t i = 0; i < a.plants.size(); ++i) {
 		CHECK(a.plants[i].position == b.plants[i].position);
@@ -63,7 +63,7 @@ TEST_CASE("independent jitter moves x and z by different amounts") {
 	LayoutParams params;
 	params.independent_jitter = true;
 	FieldLayout layout;
-	build_layout(map, params, layout);
+	build_layout(map, params, Ground{}, layout);
 	int differ = 0;
 	for (size_t i = 0; i < layout.plants.size(); ++i) {
 		const float jx = layout.plants[i].position.x / 0.5f - float(i % 10);
@@ -80,7 +80,7 @@ TEST_CASE("chunks hold every plant exactly once and bound their plants") {
 	LayoutParams params;
 	params.chunk_size = 8.0f;
 	FieldLayout layout;
-	build_layout(map, params, layout);
+	build_layout(map, params, Ground{}, layout);
 	CHECK(layout.chunks.size() == 7 * 5);
 	std::set<uint32_t> seen;
 	for (uint32_t c = 0; c < layout.chunks.size(); ++c) {

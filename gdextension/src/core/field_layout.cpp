@@ -7,11 +7,47 @@
 
 namespace sunflower {
 
-void build_layout(const FieldMap &p_map, const LayoutParams &p_params, FieldLayout &r_layout) {
+namespace {
+
+// The root (x, z) of the plant of a map's plant cell, and its α: the thesis' rule, seeded per cell.
+glm::vec2 plant_root(const LayoutParams &p_params, uint64_t p_index, int p_column, int p_row, float &r_alpha) {
+	r_alpha = unit_float(hash_plant(p_params.seed, p_index, STREAM_ALPHA)) * p_params.jitter;
+	const float alpha_z = p_params.independent_jitter
+			? unit_float(hash_plant(p_params.seed, p_index, STREAM_ALPHA_Z)) * p_params.jitter
+			: r_alpha;
+	return glm::vec2((float(p_column) + r_alpha) * p_params.cell_size, (float(p_row) + alpha_z) * p_params.cell_size);
+}
+
+glm::vec2 object_centre(const LayoutParams &p_params, const MapObject &p_object) {
+	return (glm::vec2(float(p_object.column), float(p_object.row)) + 0.5f) * p_params.cell_size;
+}
+
+} // namespace
+
+void ground_points(const FieldMap &p_map, const LayoutParams &p_params, std::vector<glm::vec2> &r_points) {
+	r_points.clear();
+	r_points.reserve(size_t(p_map.plant_count) + p_map.objects.size());
+	uint64_t index = 0;
+	float alpha = 0.0f;
+	for (int row = 0; row < p_map.rows; ++row) {
+		for (int column = 0; column < p_map.columns; ++column) {
+			if (p_map.has_plant(column, row)) {
+				r_points.push_back(plant_root(p_params, index++, column, row, alpha));
+			}
+		}
+	}
+	for (const MapObject &object : p_map.objects) {
+		r_points.push_back(object_centre(p_params, object));
+	}
+}
+
+void build_layout(const FieldMap &p_map, const LayoutParams &p_params, const Ground &p_ground, FieldLayout &r_layout) {
 	r_layout.plants.clear();
 	r_layout.chunks.clear();
 	r_layout.chunk_plants.clear();
 	r_layout.grid_chunks.clear();
+	r_layout.object_ground.clear();
+	r_layout.cells_without_ground = 0;
 	r_layout.plants.reserve(static_cast<size_t>(p_map.plant_count));
 	r_layout.size = glm::vec2(float(p_map.columns), float(p_map.rows)) * p_params.cell_size;
 
@@ -23,19 +59,24 @@ void build_layout(const FieldMap &p_map, const LayoutParams &p_params, FieldLayo
 	r_layout.grid_z = chunks_z;
 	r_layout.chunk_size = chunk_size;
 
-	uint64_t index = 0;
+	// Listed heights of another count than the ground points belong to another map: no ground.
+	const bool ground_fits = p_ground.kind != Ground::HEIGHTS ||
+			p_ground.heights.size() == size_t(p_map.plant_count) + p_map.objects.size();
+	uint64_t index = 0; // the plant cell's, in map order: also its ground point
 	for (int row = 0; row < p_map.rows; ++row) {
 		for (int column = 0; column < p_map.columns; ++column) {
 			if (!p_map.has_plant(column, row)) {
 				continue;
 			}
 			Plant plant;
-			plant.alpha = unit_float(hash_plant(p_params.seed, index, STREAM_ALPHA)) * p_params.jitter;
-			const float alpha_z = p_params.independent_jitter
-					? unit_float(hash_plant(p_params.seed, index, STREAM_ALPHA_Z)) * p_params.jitter
-					: plant.alpha;
-			plant.position = glm::vec2((float(column) + plant.alpha) * p_params.cell_size,
-					(float(row) + alpha_z) * p_params.cell_size);
+			plant.position = plant_root(p_params, index, column, row, plant.alpha);
+			plant.ground = ground_fits ? p_ground.height_at(uint32_t(index), plant.position) : NAN;
+			if (!std::isfinite(plant.ground)) {
+				++r_layout.cells_without_ground;
+				++index;
+				continue;
+			}
+			plant.lean = p_ground.lean_at(uint32_t(index), plant.position);
 			plant.yaw = (unit_float(hash_plant(p_params.seed, index, STREAM_YAW)) * 2.0f - 1.0f) * p_params.yaw_jitter;
 			const int cx = std::min(chunks_x - 1, static_cast<int>(plant.position.x / chunk_size));
 			const int cz = std::min(chunks_z - 1, static_cast<int>(plant.position.y / chunk_size));
@@ -44,6 +85,12 @@ void build_layout(const FieldMap &p_map, const LayoutParams &p_params, FieldLayo
 			r_layout.plants.push_back(plant);
 			++index;
 		}
+	}
+	r_layout.object_ground.reserve(p_map.objects.size());
+	for (const MapObject &object : p_map.objects) {
+		const float height = ground_fits ? p_ground.height_at(uint32_t(index), object_centre(p_params, object)) : NAN;
+		++index;
+		r_layout.object_ground.push_back(std::isfinite(height) ? height : NAN);
 	}
 
 	// Compact the grid to the chunks that hold plants, then group plant indices by chunk.
@@ -59,6 +106,8 @@ void build_layout(const FieldMap &p_map, const LayoutParams &p_params, FieldLayo
 		chunk.first = offset;
 		chunk.min = glm::vec2(INFINITY);
 		chunk.max = glm::vec2(-INFINITY);
+		chunk.ground_min = INFINITY;
+		chunk.ground_max = -INFINITY;
 		r_layout.chunks.push_back(chunk);
 		offset += grid_count[g];
 	}
@@ -70,6 +119,8 @@ void build_layout(const FieldMap &p_map, const LayoutParams &p_params, FieldLayo
 		r_layout.chunk_plants[chunk.first + chunk.count++] = i;
 		chunk.min = glm::min(chunk.min, plant.position);
 		chunk.max = glm::max(chunk.max, plant.position);
+		chunk.ground_min = std::min(chunk.ground_min, plant.ground);
+		chunk.ground_max = std::max(chunk.ground_max, plant.ground);
 	}
 }
 

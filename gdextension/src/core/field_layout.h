@@ -1,7 +1,9 @@
 #pragma once
 // Plant layout (thesis 5.3): every '*' cell becomes one plant at
-// x = (column + α)·cell, z = (row + α)·cell with α ∈ [0, 0.5) drawn once per plant from the seed.
+// x = (column + α)·cell, z = (row + α)·cell with α ∈ [0, 0.5) drawn once per plant from the seed,
+// standing on the field's ground (ground.h): a cell with no ground under its plant gets none.
 #include "field_map.h"
+#include "ground.h"
 #include "parameters.h"
 
 #include <glm/common.hpp>
@@ -30,14 +32,22 @@ struct LayoutParams {
 
 struct Plant {
 	glm::vec2 position{ 0.0f }; // x, z in the field's space, metres
+	float ground = 0.0f; // y of the root: the ground's height there
 	float alpha = 0.0f; // the thesis' α, also used for height variety (s' = s + α/10)
 	float yaw = 0.0f; // radians about +y
 	uint32_t chunk = 0;
+	// The plant's up axis leaning towards the ground's normal: its horizontal part (x, z); zero for an
+	// upright plant.
+	glm::vec2 lean{ 0.0f };
+
+	glm::vec3 root() const { return glm::vec3(position.x, ground, position.y); }
 };
 
 struct Chunk {
 	glm::vec2 min{ 0.0f }; // x, z bounds of its plants' roots, metres
 	glm::vec2 max{ 0.0f };
+	float ground_min = 0.0f; // y bounds of its plants' roots
+	float ground_max = 0.0f;
 	uint32_t first = 0; // range in FieldLayout::chunk_plants
 	uint32_t count = 0;
 };
@@ -54,9 +64,19 @@ struct FieldLayout {
 	int grid_z = 0;
 	float chunk_size = 16.0f;
 	std::vector<uint32_t> grid_chunks;
+	// Plant cells of the map with no ground under their plant (so no plant).
+	uint32_t cells_without_ground = 0;
+	// The ground's height under each of the map's objects (its cell's centre), in map order; NaN where
+	// there is none.
+	std::vector<float> object_ground;
 };
 
-// Fills r_layout from p_map. Deterministic: the same map, params and seed give the same layout.
-void build_layout(const FieldMap &p_map, const LayoutParams &p_params, FieldLayout &r_layout);
+// Where the ground is asked for: every plant cell's plant root (x, z) in map order, then every object's
+// cell centre. The HEIGHTS ground lists one height per point, in this order.
+void ground_points(const FieldMap &p_map, const LayoutParams &p_params, std::vector<glm::vec2> &r_points);
+
+// Fills r_layout from p_map on p_ground. Deterministic: the same map, params, seed and ground give the
+// same layout; a plant's randomness follows its cell, so a hole elsewhere changes no other plant.
+void build_layout(const FieldMap &p_map, const LayoutParams &p_params, const Ground &p_ground, FieldLayout &r_layout);
 
 } // namespace sunflower

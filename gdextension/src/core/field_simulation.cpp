@@ -4,6 +4,7 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <utility>
 #include <cmath>
 
 namespace sunflower {
@@ -41,6 +42,12 @@ bool FieldSimulation::set_layout_params(const LayoutParams &p_params) {
 	return true;
 }
 
+void FieldSimulation::set_ground(Ground p_ground) {
+	p_ground.tilt = sanitize(param::GROUND_TILT, p_ground.tilt, _ground.tilt);
+	_ground = std::move(p_ground);
+	_rebuild();
+}
+
 void FieldSimulation::set_lod(const LodParams &p_params) {
 	_lod.configure(p_params);
 	_lod_due = true;
@@ -59,7 +66,7 @@ void FieldSimulation::set_plant_height(float p_metres) {
 }
 
 void FieldSimulation::_rebuild() {
-	build_layout(_map, _layout_params, _layout);
+	build_layout(_map, _layout_params, _ground, _layout);
 	const size_t plants = _layout.plants.size();
 	_plant_lod.assign(plants, LOD_BILLBOARD);
 	_plant_wind.assign(plants, PlantWind{});
@@ -93,8 +100,8 @@ ChunkBounds FieldSimulation::get_chunk_bounds(uint32_t p_chunk) const {
 	const Chunk &chunk = _layout.chunks[p_chunk];
 	const float reach = _shape.cull_radius * _shape.part_scale;
 	ChunkBounds bounds;
-	bounds.min = glm::vec3(chunk.min.x - reach, 0.0f, chunk.min.y - reach);
-	bounds.max = glm::vec3(chunk.max.x + reach, _shape.height * _shape.part_scale * 1.05f, chunk.max.y + reach);
+	bounds.min = glm::vec3(chunk.min.x - reach, chunk.ground_min, chunk.min.y - reach);
+	bounds.max = glm::vec3(chunk.max.x + reach, chunk.ground_max + _shape.height * _shape.part_scale * 1.05f, chunk.max.y + reach);
 	return bounds;
 }
 
@@ -107,7 +114,7 @@ float FieldSimulation::_chunk_distance_sq(uint32_t p_chunk) const {
 
 float FieldSimulation::_plant_distance_sq(const Plant &p_plant) const {
 	// From the observer's eye to the plant's middle: on the ground this is the thesis' distance.
-	const glm::vec3 d = _observer - glm::vec3(p_plant.position.x, 0.5f * _shape.height * _shape.part_scale, p_plant.position.y);
+	const glm::vec3 d = _observer - (p_plant.root() + glm::vec3(0.0f, 0.5f * _shape.height * _shape.part_scale, 0.0f));
 	return glm::dot(d, d);
 }
 
@@ -275,7 +282,7 @@ void FieldSimulation::_move_chunks(size_t p_first, size_t p_last, float p_delta,
 			const uint32_t index = _layout.chunk_plants[chunk.first + k];
 			const Plant &plant = _layout.plants[index];
 			const uint8_t lod = _plant_lod[index];
-			const bool visible = _frustum.intersects_sphere(glm::vec3(plant.position.x, mid_height, plant.position.y), radius);
+			const bool visible = _frustum.intersects_sphere(plant.root() + glm::vec3(0.0f, mid_height, 0.0f), radius);
 			if (lod >= LOD_SPRITE) {
 				if (visible) {
 					_write_impostor(r_buckets[lod == LOD_SPRITE ? BUCKET_SPRITE : BUCKET_BILLBOARD].push(), plant);
@@ -352,13 +359,17 @@ void FieldSimulation::_update_pushes(float p_delta) {
 	}
 	const float top = _shape.height * _shape.part_scale;
 	for (const Pusher &pusher : _pushers) {
-		if (!(pusher.radius > 0.0f) || pusher.position.y - pusher.radius > top || pusher.position.y + pusher.radius < 0.0f) {
-			continue; // flying over the plants, or under the ground
+		if (!(pusher.radius > 0.0f)) {
+			continue;
 		}
 		const glm::vec2 center(pusher.position.x, pusher.position.z);
 		_near.clear();
 		find_plants_near(center, pusher.radius, _near);
 		for (uint32_t index : _near) {
+			const float above_root = pusher.position.y - _layout.plants[index].ground;
+			if (above_root - pusher.radius > top || above_root + pusher.radius < 0.0f) {
+				continue; // flying over the plant, or under its ground
+			}
 			PlantWind &wind = _plant_wind[index];
 			if (wind.push_slot == 0) {
 				if (_pushed.size() >= 0xFFFFu) {
@@ -404,7 +415,7 @@ void FieldSimulation::_write_impostor(float *r_out, const Plant &p_plant) const 
 	const float c = std::cos(p_plant.yaw) * _shape.part_scale;
 	const float s = std::sin(p_plant.yaw) * _shape.part_scale;
 	const glm::mat3 basis(glm::vec3(c, 0.0f, -s), glm::vec3(0.0f, _shape.part_scale, 0.0f), glm::vec3(s, 0.0f, c));
-	write_instance(r_out, basis, glm::vec3(p_plant.position.x, 0.0f, p_plant.position.y));
+	write_instance(r_out, p_plant.lean == glm::vec2(0.0f) ? basis : lean_rotation(p_plant.lean) * basis, p_plant.root());
 }
 
 void FieldSimulation::write_chunk_instances(uint32_t p_chunk, float *r_out) const {
@@ -441,7 +452,8 @@ size_t FieldSimulation::get_memory_bytes() const {
 	bytes += _plant_lod.capacity() + _plant_wind.capacity() * sizeof(PlantWind);
 	bytes += _chunk_active.capacity() + _visit_mark.capacity() * sizeof(uint32_t);
 	bytes += (_active_chunks.capacity() + _previous_active.capacity() + _changed_chunks.capacity()) * sizeof(uint32_t);
-	bytes += _layout.grid_chunks.capacity() * sizeof(uint32_t);
+	bytes += _layout.grid_chunks.capacity() * sizeof(uint32_t) + _layout.object_ground.capacity() * sizeof(float);
+	bytes += (_ground.grid.heights.capacity() + _ground.heights.capacity() + _ground.normals.capacity()) * sizeof(float);
 	bytes += _pushed.capacity() * sizeof(PushState) + _pushers.capacity() * sizeof(Pusher);
 	bytes += _near.capacity() * sizeof(uint32_t) + _activation.capacity() * sizeof(_activation[0]);
 	for (const InstanceBuffer &bucket : _buckets) {

@@ -86,6 +86,9 @@ public:
 	// whether it did.
 	bool set_layout_params(const LayoutParams &p_params);
 	const LayoutParams &get_layout_params() const { return _layout_params; }
+	// Stands the plants on p_ground (rebuilding the layout). Plants whose cells have no ground go.
+	void set_ground(Ground p_ground);
+	const Ground &get_ground() const { return _ground; }
 	void set_wind(const WindParams &p_params) { _wind.configure(p_params); }
 	const WindModel &get_wind() const { return _wind; }
 	void set_lod(const LodParams &p_params);
@@ -189,6 +192,7 @@ private:
 
 	FieldMap _map;
 	LayoutParams _layout_params;
+	Ground _ground;
 	FieldLayout _layout;
 	WindModel _wind;
 	LodSelector _lod;

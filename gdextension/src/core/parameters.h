@@ -82,12 +82,17 @@ inline constexpr ParameterSpec PUSHER_RADIUS{ "SunflowerField.pusher_radius", 0.
 // Stalk colliders stand within this reach of each pusher and of the observer; 0: none.
 inline constexpr ParameterSpec COLLISION_REACH{ "SunflowerField.collision_reach", 0.0, 0.0, 1000.0, ParameterSpec::CLAMP, 0.0 };
 
-inline constexpr std::array<const ParameterSpec *, 28> ALL{ { &WIND_MODEL, &WIND_POWER, &WIND_INCREMENT, &WIND_STIFFNESS_MIDDLE,
+// Ground: how far plants lean towards the ground's normal; where rays for colliders start and end.
+inline constexpr ParameterSpec GROUND_TILT{ "SunflowerField.ground_tilt", 0.0, 0.0, 1.0, ParameterSpec::CLAMP, 0.0 };
+inline constexpr ParameterSpec GROUND_RAY_ABOVE{ "SunflowerField.ground_ray_above", 100.0, 0.0, NO_MAX, ParameterSpec::CLAMP, 100.0 };
+inline constexpr ParameterSpec GROUND_RAY_BELOW{ "SunflowerField.ground_ray_below", 100.0, 0.0, NO_MAX, ParameterSpec::CLAMP, 100.0 };
+
+inline constexpr std::array<const ParameterSpec *, 31> ALL{ { &WIND_MODEL, &WIND_POWER, &WIND_INCREMENT, &WIND_STIFFNESS_MIDDLE,
 		&WIND_STIFFNESS_BOTTOM, &WIND_BEND_PER_POWER, &WIND_MAX_BEND, &WIND_FLIP_INTERVAL, &WIND_FLIP_CHANCE,
 		&WIND_GUST_SPEED, &WIND_GUST_SHARE, &CELL_SIZE, &PLANT_HEIGHT, &CHUNK_SIZE, &MAX_PLANTS, &LOD_HYSTERESIS,
 		&LOD_INTERVAL, &FORCE_LOD, &ALPHA_SCISSOR, &THINNING_DISTANCE, &THINNING_MIN_DENSITY, &MAX_DRAW_DISTANCE,
 		&BUILD_BUDGET_MS, &WORKER_THREADS, &PUSH_STRENGTH, &PUSH_RECOVERY, &PUSHER_RADIUS,
-		&COLLISION_REACH } };
+		&COLLISION_REACH, &GROUND_TILT, &GROUND_RAY_ABOVE, &GROUND_RAY_BELOW } };
 
 } // namespace param
 

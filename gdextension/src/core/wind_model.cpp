@@ -47,6 +47,14 @@ glm::mat3 yaw_scale(float p_yaw, float p_scale_xz, float p_scale_y) {
 
 } // namespace
 
+glm::mat3 lean_rotation(const glm::vec2 &p_lean) {
+	const float size = std::min(glm::length(p_lean), 1.0f);
+	if (!(size > 1e-9f)) {
+		return glm::mat3(1.0f);
+	}
+	return rotation_about_horizontal(glm::vec2(p_lean.y, -p_lean.x) / glm::length(p_lean), std::asin(size));
+}
+
 // Natural wind: how fast power and direction changes ease in, and how long a redrawn b takes to
 // turn the sway round.
 constexpr float EASE_SECONDS = 0.5f;
@@ -233,11 +241,18 @@ void WindModel::part_transforms(const Plant &p_plant, const glm::vec2 &p_bend, f
 	const glm::mat3 shape = yaw_scale(p_plant.yaw, p_part_scale, p_part_scale);
 	const glm::mat3 middle_shape = yaw_scale(p_plant.yaw, p_part_scale, p_part_scale * middle_height);
 
-	r_parts.basis[0] = bottom_tilt * shape;
-	r_parts.origin[0] = glm::vec3(p_plant.position.x, 0.0f, p_plant.position.y);
-	r_parts.basis[1] = upper_tilt * middle_shape;
+	if (p_plant.lean == glm::vec2(0.0f)) {
+		r_parts.basis[0] = bottom_tilt * shape;
+		r_parts.basis[1] = upper_tilt * middle_shape;
+		r_parts.basis[2] = upper_tilt * shape;
+	} else {
+		const glm::mat3 lean = lean_rotation(p_plant.lean); // the plant's upright, tilted with the ground
+		r_parts.basis[0] = lean * bottom_tilt * shape;
+		r_parts.basis[1] = lean * upper_tilt * middle_shape;
+		r_parts.basis[2] = lean * upper_tilt * shape;
+	}
+	r_parts.origin[0] = p_plant.root();
 	r_parts.origin[1] = r_parts.origin[0] + r_parts.basis[0][1]; // the bottom part's tip: M·(0, 1, 0)
-	r_parts.basis[2] = upper_tilt * shape;
 	r_parts.origin[2] = r_parts.origin[1] + r_parts.basis[1][1];
 }
 

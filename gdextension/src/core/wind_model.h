@@ -59,6 +59,10 @@ struct PlantWind {
 };
 static_assert(sizeof(PlantWind) == 12, "per-plant wind state stays 12 bytes");
 
+// The rotation that stands a plant on sloping ground: +y to the up axis whose horizontal part is
+// p_lean (Plant::lean), about the horizontal axis across it.
+glm::mat3 lean_rotation(const glm::vec2 &p_lean);
+
 // The three part transforms of one plant: linear part and origin (the part's root), bottom to top.
 struct PartTransforms {
 	glm::mat3 basis[3];
