@@ -6,6 +6,10 @@ extends RefCounted
 ## pair (that simulation and its [code]FieldNodes[/code]) until the field takes it, so finishing a
 ## build swaps two pairs; cancelling frees what it made. Keeps the build's figures.
 
+## Where a build is: the map read (worker), rays cast at colliders (main thread, only on colliders),
+## the plants laid out on them (worker), nodes made (main thread).
+enum Phase { READ, RAYS, NODES }
+
 const Native: GDScript = preload("native.gd")
 const FieldGround: GDScript = preload("field_ground.gd")
 const FieldNodes: GDScript = preload("field_nodes.gd")
@@ -56,6 +60,8 @@ class Job:
 		error = simulation.load_map(text, source, legend, max_plants)
 		if error.is_empty():
 			error = ground.apply_height_map(simulation, cell_size)
+		if error.is_empty():
+			ground.prepare_rays(simulation)
 		usec += Time.get_ticks_usec() - start
 
 	## Lays the plants out on the ground the rays found.
@@ -64,10 +70,6 @@ class Job:
 		error = ground.apply_rays(simulation)
 		usec += Time.get_ticks_usec() - start
 
-
-## Where a build is: the map read (worker), rays cast at colliders (main thread, only on colliders),
-## the plants laid out on them (worker), nodes made (main thread).
-enum Phase { READ, RAYS, NODES }
 
 ## The pending pair: the job's simulation and the nodes made for it so far.
 var nodes: FieldNodes
@@ -119,7 +121,7 @@ func step(budget_usec: int, switch_distance: float, max_draw_distance: float, ex
 		if job.ground.needs_rays():
 			_phase = Phase.RAYS
 			job.ground.start_rays(
-				_field, job.simulation, _field.ground_ray_above, _field.ground_ray_below, _field.ground_collision_mask
+				_field, _field.ground_ray_above, _field.ground_ray_below, _field.ground_collision_mask
 			)
 	if _phase == Phase.RAYS:
 		var left: int = budget_usec - (Time.get_ticks_usec() - start) if budget_usec >= 0 else -1

@@ -5,13 +5,11 @@ extends RefCounted
 ## straight down on the main thread, a budget's worth per frame, after the bodies have had a physics
 ## frame to enter the space.
 
-const Native: GDScript = preload("native.gd")
-
 ## The ground sources (the node's [code]ground_source[/code]).
 enum Source { FLAT, COLLIDERS, HEIGHT_MAP }
 
-## Rays cast between two clock reads: the clock costs about as much as a ray.
-const RAYS_PER_CLOCK_READ: int = 256
+## Rays cast between two clock reads (about 0.1 ms of them): how far a step may overrun its budget.
+const RAYS_PER_CLOCK_READ: int = 64
 
 ## What the worker needs of the node's ground: copied on the main thread, so the node may change.
 var source: Source = Source.FLAT
@@ -89,13 +87,19 @@ func needs_rays() -> bool:
 	return source == Source.COLLIDERS
 
 
-## Readies the rays for [param simulation]'s ground points, cast from [param above] metres above
-## the field's origin down to [param below] metres under it, hitting bodies in [param mask].
-func start_rays(field: Node3D, simulation: RefCounted, above: float, below: float, mask: int) -> void:
+## After the map is read (on the worker): the ground points the rays go through, when on colliders.
+func prepare_rays(simulation: RefCounted) -> void:
+	if not needs_rays():
+		return
 	_points = simulation.get_ground_points()
 	_heights.resize(_points.size() / 2)
 	_normals.resize(_points.size() / 2 * 3 if tilt > 0.0 else 0)
 	_next = 0
+
+
+## Readies the rays (on the main thread), cast from [param above] metres above the field's origin
+## down to [param below] metres under it, hitting bodies in [param mask].
+func start_rays(field: Node3D, above: float, below: float, mask: int) -> void:
 	_to_world = field.global_transform
 	_to_local = _to_world.affine_inverse()
 	_space = field.get_world_3d().direct_space_state

@@ -11,8 +11,9 @@ var targets: PackedVector3Array = []
 
 
 ## The built-in flight over a field of [param size] metres (x, z): in at head height from the south,
-## up over the middle, high over the north edge looking back, then low along the west side.
-static func built_in(size: Vector2) -> CameraPath:
+## up over the middle, high over the north edge looking back, then low along the west side. Heights
+## are above [param ground] (a Callable giving the ground's height under a point), when given.
+static func built_in(size: Vector2, ground: Callable = Callable()) -> CameraPath:
 	var path: CameraPath = CameraPath.new()
 	var w: float = size.x
 	var h: float = size.y
@@ -21,6 +22,10 @@ static func built_in(size: Vector2) -> CameraPath:
 	path.add(Vector3(0.5 * w, 8.0, 0.5 * h), Vector3(0.5 * w, 0.0, 0.2 * h))
 	path.add(Vector3(0.3 * w, 25.0, -12.0), Vector3(0.5 * w, 0.0, 0.5 * h))
 	path.add(Vector3(-12.0, 3.0, 0.5 * h), Vector3(0.5 * w, 1.5, 0.5 * h))
+	if ground.is_valid():
+		for i: int in path.eyes.size():
+			path.eyes[i].y += ground.call(path.eyes[i])
+			path.targets[i].y += ground.call(path.targets[i])
 	return path
 
 

@@ -17,8 +17,12 @@ extends Node3D
 ##   --no-hud                 hide the heads-up display (pictures for measurements)
 ##   --impostor-mask          draw only the impostors, on black (the impostor region of a view)
 
-const MAP_NAMES: PackedStringArray = ["Demo field (40 x 30)", "Large field (400 x 300)"]
-const MAP_PATHS: PackedStringArray = ["res://fields/demo.field", "res://fields/large.field"]
+const MAP_NAMES: PackedStringArray = [
+	"Demo field (40 x 30)", "Large field (400 x 300)", "Hills (240 x 240, on a terrain)"
+]
+const MAP_PATHS: PackedStringArray = ["res://fields/demo.field", "res://fields/large.field", "res://fields/hills.field"]
+## The map that stands on the demo's hills (ground source Colliders); the others lie on the plane.
+const HILLS_MAP: String = "hills.field"
 const INCREMENTS: PackedFloat32Array = [0.1, 10.0]
 const TRIANGLES_SPRITE: int = 4
 const TRIANGLES_BILLBOARD: int = 2
@@ -43,11 +47,13 @@ var _stats_timer: float = 0.0
 var _exit_code: int = 0
 var _build_ms: float = 0.0
 var _baseline: String = ""
+var _impostor_mask: bool = false
 
 @onready var _field: SunflowerField = $Field
 @onready var _camera: FlyCamera = $Camera
 @onready var _hud: DemoHud = $Hud
 @onready var _ground: MeshInstance3D = $Ground
+@onready var _hills: DemoHills = $Hills
 
 
 func _ready() -> void:
@@ -123,6 +129,7 @@ func _mask_impostors() -> void:
 			for surface: int in mesh.get_surface_count():
 				mesh.surface_set_material(surface, black)
 			_field.set_part_mesh(level, part, mesh)
+	_impostor_mask = true
 	_ground.visible = false
 	var environment: Environment = ($WorldEnvironment as WorldEnvironment).environment
 	environment.background_mode = Environment.BG_COLOR
@@ -133,6 +140,10 @@ func _mask_impostors() -> void:
 ## A large map builds in the background while the current field stays (see [member
 ## SunflowerField.background_build]).
 func load_map(path: String) -> void:
+	var hilly: bool = path.get_file() == HILLS_MAP
+	_hills.set_enabled(hilly)
+	_ground.visible = not hilly and not _impostor_mask
+	_field.ground_source = SunflowerField.GroundSource.COLLIDERS if hilly else SunflowerField.GroundSource.FLAT
 	var imported: Resource = load(path) if path.begins_with("res://") and ResourceLoader.exists(path) else null
 	if imported is SunflowerFieldMap:
 		_field.map = imported
@@ -236,7 +247,11 @@ func _on_field_built(_plants: int) -> void:
 	var plane: PlaneMesh = _ground.mesh as PlaneMesh
 	plane.size = size + Vector2(400.0, 400.0)
 	_ground.position = Vector3(size.x * 0.5, 0.0, size.y * 0.5)
-	_camera.set_start(Vector3(0.6 * size.x, 2.4, size.y + 3.5), Vector3(0.45 * size.x, 1.0, size.y - 11.0))
+	var eye: Vector3 = Vector3(0.6 * size.x, 2.4, size.y + 3.5)
+	var target: Vector3 = Vector3(0.45 * size.x, 1.0, size.y - 11.0)
+	eye.y += _camera.ground_below(eye)
+	target.y += _camera.ground_below(target)
+	_camera.set_start(eye, target)
 	_count_triangles()
 
 
@@ -336,14 +351,14 @@ func _start_recording(path_file: String) -> void:
 	var size: Vector2 = Vector2(_field.get_simulation().get_map_columns(), _field.get_simulation().get_map_rows())
 	size *= _field.cell_size
 	if path_file.is_empty():
-		_camera_path = CameraPath.built_in(size)
+		_camera_path = CameraPath.built_in(size, _camera.ground_below)
 	else:
 		var errors: Array[String] = []
 		_camera_path = CameraPath.from_file(path_file, errors)
 		if _camera_path == null:
 			_hud.show_message(errors[0])
 			_exit_code = 1
-			_camera_path = CameraPath.built_in(size)
+			_camera_path = CameraPath.built_in(size, _camera.ground_below)
 	_camera.manual = false
 	_last_ticks = Time.get_ticks_usec()
 

@@ -16,8 +16,8 @@ extends Camera3D
 @export var walking: bool = false:
 	set(value):
 		walking = value
-		if walking:
-			global_position.y = walk_height
+		if walking and is_inside_tree():
+			global_position.y = ground_below(global_position) + walk_height
 ## Eye height while walking, metres.
 @export var walk_height: float = 1.7
 
@@ -50,10 +50,19 @@ func _process(delta: float) -> void:
 	if walking:
 		var level: Basis = Basis(Vector3.UP, global_rotation.y)
 		global_position += level * Vector3(input.x, 0.0, input.y) * speed * 0.4 * factor * delta
-		global_position.y = walk_height
+		global_position.y = ground_below(global_position) + walk_height
 		return
 	translate(Vector3(input.x, 0.0, input.y) * speed * factor * delta)
 	global_position.y += lift * speed * factor * delta
+
+
+## The height of the ground (any collider on layer 1) under [param point], or 0 where there is none.
+func ground_below(point: Vector3) -> float:
+	var ray: PhysicsRayQueryParameters3D = PhysicsRayQueryParameters3D.create(
+		Vector3(point.x, 500.0, point.z), Vector3(point.x, -500.0, point.z), 1
+	)
+	var hit: Dictionary = get_world_3d().direct_space_state.intersect_ray(ray)
+	return (hit["position"] as Vector3).y if not hit.is_empty() else 0.0
 
 
 ## Places the camera at [param eye] looking at [param target] and makes that the start (R).

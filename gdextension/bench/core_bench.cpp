@@ -193,5 +193,42 @@ int main() {
 				runs[0].active_plants, runs[0].result.median, runs[0].result.p99, runs[1].result.median, runs[1].result.p99,
 				runs[1].result.median / runs[0].result.median);
 	}
+	// Ground: laying out a 1M field (what a build's worker does) flat, on a height map and on listed
+	// heights (the collider rays' results), five times each; and the memory per plant on the map.
+	{
+		std::printf("\nGround placement of the 1M field (1000 x 1000 cells, 500 x 500 m), layout on one thread, 5 runs:\n\n");
+		std::printf("| ground | median ms | min ms | B / plant |\n|---|---|---|---|\n");
+		FieldSimulation sim;
+		MapError error;
+		sim.load_map(rect_map(1000, 1000), U"", "1M", MapLimits{}, error);
+		Ground grid;
+		grid.kind = Ground::GRID;
+		grid.grid.width = grid.grid.depth = 1025; // half a metre between samples
+		grid.grid.size = glm::vec2(500.0f);
+		for (int z = 0; z < 1025; ++z) {
+			for (int x = 0; x < 1025; ++x) {
+				grid.grid.heights.push_back(6.0f * std::sin(float(x) * 0.011f) * std::cos(float(z) * 0.013f));
+			}
+		}
+		std::vector<glm::vec2> points;
+		ground_points(sim.get_map(), sim.get_layout_params(), points);
+		Ground listed;
+		listed.kind = Ground::HEIGHTS;
+		for (const glm::vec2 &point : points) {
+			listed.heights.push_back(grid.grid.sample(point));
+		}
+		const std::pair<const char *, const Ground *> grounds[] = { { "flat", nullptr }, { "height map 1025 x 1025", &grid },
+			{ "listed heights (colliders)", &listed } };
+		for (const auto &[name, ground] : grounds) {
+			std::vector<double> times;
+			for (int r = 0; r < 5; ++r) {
+				const auto start = std::chrono::steady_clock::now();
+				sim.set_ground(ground ? *ground : Ground{});
+				times.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+			}
+			std::printf("| %s | %.1f | %.1f | %.1f |\n", name, percentile(times, 0.5), *std::min_element(times.begin(), times.end()),
+					double(sim.get_memory_bytes()) / sim.get_plant_count());
+		}
+	}
 	return 0;
 }

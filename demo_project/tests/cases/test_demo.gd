@@ -138,3 +138,29 @@ func test_walk_mode_puts_the_camera_among_the_flowers_and_they_part() -> void:
 	check_eq(field.wind.model, SunflowerWind.Model.THESIS, "F9 switches to the thesis' wind")
 	await _press("wind_model")
 	check_eq(field.wind.model, SunflowerWind.Model.NATURAL, "and back")
+
+
+func test_the_hills_map_stands_the_field_on_the_terrain() -> void:
+	await frames(2)
+	demo.call("load_map", "res://fields/hills.field")
+	await frames_until(func() -> bool: return field.get_plant_count() == 55008 and not field.is_building(), 600)
+	check_eq(field.get_plant_count(), 55008, "the hills field is built")
+	check_eq(field.ground_source, SunflowerField.GroundSource.COLLIDERS, "on the terrain's collision")
+	check((demo.get_node("Hills") as Node3D).visible and not (demo.get_node("Ground") as Node3D).visible)
+	var camera: FlyCamera = demo.get_node("Camera") as FlyCamera
+	var worst: float = 0.0
+	var lowest: float = INF
+	var highest: float = -INF
+	for i: int in range(0, 55008, 97):
+		var root: Vector3 = field.to_global(field.get_plant_info(i)["position"])
+		worst = maxf(worst, absf(root.y - camera.ground_below(root)))
+		lowest = minf(lowest, root.y)
+		highest = maxf(highest, root.y)
+	check(worst < 0.001, "plants stand on the terrain (worst %.4f m)" % worst)
+	check(highest - lowest > 3.0, "the terrain is hilly (%.1f m)" % (highest - lowest))
+	await _press("walk_mode")  # F8 walks over the hills at head height
+	check_near(camera.global_position.y - camera.ground_below(camera.global_position), camera.walk_height, 0.01)
+	demo.call("load_map", "res://fields/demo.field")
+	await frames_until(func() -> bool: return field.get_plant_count() == 1103 and not field.is_building(), 600)
+	check_eq(field.ground_source, SunflowerField.GroundSource.FLAT, "the demo field lies flat again")
+	check(not (demo.get_node("Hills") as Node3D).visible and (demo.get_node("Ground") as Node3D).visible)
