@@ -112,7 +112,7 @@ fi
 echo "== drop-in: the release zip (tools/package.sh) unzipped into a new project, a scene without code"
 dropin=$(mktemp -d)
 if "$repo/tools/package.sh" >"$artifacts/dropin.log" 2>&1 && unzip -q "$repo"/build/dist/sunflower_field-*.zip -d "$dropin" &&
-  cp "$repo/fields/demo.field" "$repo/tests/dropin/project.godot" "$repo/tests/dropin/main.tscn" \
+  cp "$repo/fields/demo.field" "$repo/tests/dropin/project.godot" "$repo/tests/dropin/main.tscn" "$repo/tests/dropin/terrain.tscn" \
     "$repo/tests/dropin/check_dropin.gd" "$repo/tests/dropin/check_exported_map.gd" "$dropin/" &&
   "$repo/tools/import_project.sh" "$dropin" >>"$artifacts/dropin.log" 2>&1 &&
   timeout 300 xvfb-run -a -s "-screen 0 1280x720x24" "$godot" --audio-driver Dummy \
