@@ -29,13 +29,14 @@ class Job:
 	var seed: int
 	var independent_jitter: bool
 	var chunk_size: float
-	var plant_height: float
+	var plant: Resource
 	var ground: FieldGround
 	var error: String = ""
 	var usec: int = 0
 
-	## A job for [param field]'s map and layout properties, filling [param native_simulation].
-	static func for_field(field: Node3D, native_simulation: RefCounted) -> Job:
+	## A job for [param field]'s map and layout properties and [param field_plant] (a FieldPlant),
+	## filling [param native_simulation].
+	static func for_field(field: Node3D, field_plant: Resource, native_simulation: RefCounted) -> Job:
 		var job: Job = Job.new()
 		job.simulation = native_simulation
 		job.text = field.map.text
@@ -46,7 +47,7 @@ class Job:
 		job.seed = field.seed
 		job.independent_jitter = field.independent_jitter
 		job.chunk_size = field.chunk_size
-		job.plant_height = field.plant_height
+		job.plant = field_plant.duplicate()
 		job.ground = FieldGround.for_field(field)
 		return job
 
@@ -55,7 +56,7 @@ class Job:
 	func run() -> void:
 		var start: int = Time.get_ticks_usec()
 		simulation.set_layout(cell_size, seed, independent_jitter, chunk_size)
-		simulation.set_plant_height(plant_height)
+		plant.apply_to(simulation)
 		ground.prepare(simulation)
 		error = simulation.load_map(text, source, legend, max_plants)
 		if error.is_empty():

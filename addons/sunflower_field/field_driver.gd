@@ -10,7 +10,6 @@ const FieldInteraction: GDScript = preload("field_interaction.gd")
 const FieldNodes: GDScript = preload("field_nodes.gd")
 const FieldObserver: GDScript = preload("field_observer.gd")
 const ImpostorSet: GDScript = preload("impostor_set.gd")
-const PartMeshes: GDScript = preload("part_meshes.gd")
 ## Maps of at least this many bytes (about as many cells) build in the background when the field's
 ## background_build is on; smaller ones take a few milliseconds and build at once.
 const BACKGROUND_BUILD_MIN_BYTES: int = 65536
@@ -29,8 +28,9 @@ var rebuild_queued: bool = false
 var interaction: FieldInteraction
 ## The far levels' look, shared by the field drawn and one being built.
 var impostors: ImpostorSet = ImpostorSet.new()
-## The meshes the near levels draw.
-var parts: PartMeshes = PartMeshes.new()
+## The plant drawn (a FieldPlant: the node's, or the built-in sunflower).
+var plant: Resource
+var _layout_key: Array = []
 var _field: Node3D
 
 
@@ -76,7 +76,7 @@ func rebuild(background: bool = false) -> void:
 	if native_simulation == null:
 		show(null)
 		return
-	var job: FieldBuild.Job = FieldBuild.Job.for_field(_field, native_simulation)
+	var job: FieldBuild.Job = FieldBuild.Job.for_field(_field, plant, native_simulation)
 	background = background and _field.background_build and field_map.text.size() >= BACKGROUND_BUILD_MIN_BYTES
 	build = FieldBuild.new(_field, impostors, job, background)
 	if background or build.needs_frames():
@@ -129,7 +129,7 @@ func show(nodes: FieldNodes) -> void:
 	_free_foreign_children()
 	if drawn == null:
 		return
-	drawn.finish(parts.get_all(), _field.legend, _field.cell_size, _field.plant_height * 0.5)
+	drawn.finish(plant.meshes_drawn(), _field.legend, _field.cell_size, plant.height * 0.5)
 	configure_wind()
 	configure_lod()
 	configure_push()
@@ -158,12 +158,27 @@ func update_field(delta: float) -> void:
 	drawn.show_filled_buckets()
 	if not Engine.is_editor_hint():
 		# A stalk: the bottom and middle parts, two of the plant's three part heights.
-		var height: float = _field.plant_height
+		var height: float = plant.height
 		var stalk: Vector2 = Vector2(0.025 * height, height * 2.0 / 3.0)
 		var reach: float = _field.collision_reach
 		interaction.update_colliders(
 			native_simulation, observer, reach, stalk, _field.collision_layer, _field.collision_mask
 		)
+
+
+## Draws [param field_plant] (a FieldPlant): its impostor textures and frame, and its meshes on the
+## field drawn. True when its layout values changed, so the field must be rebuilt.
+func configure_plant(field_plant: Resource) -> bool:
+	plant = field_plant
+	impostors.configure(plant)
+	if drawn:
+		for level: int in 3:
+			for part: int in 3:
+				drawn.set_part_mesh(level, part, plant.mesh_drawn(level, part))
+	var key: Array = plant.layout_key()
+	var changed: bool = key != _layout_key and not _layout_key.is_empty()
+	_layout_key = key
+	return changed
 
 
 ## Hands the field's wind to the simulation drawn.

@@ -7,8 +7,9 @@ extends RefCounted
 
 const Native: GDScript = preload("native.gd")
 const ImpostorSet: GDScript = preload("impostor_set.gd")
-## The parts of a plant, bottom to top, as node and property names use them.
-const PART_NAMES: PackedStringArray = ["bottom", "middle", "head"]
+const PartMeshes: GDScript = preload("part_meshes.gd")
+## The parts of a plant, bottom to top, as node names use them.
+const PART_NAMES: PackedStringArray = PartMeshes.PART_NAMES
 
 var simulation: RefCounted
 var _owner: Node3D
@@ -97,7 +98,7 @@ func apply_ranges(switch_distance: float, max_draw_distance: float) -> void:
 ## Draws [param mesh] for the near plants' [param level] / [param part] (once the field is complete).
 func set_part_mesh(level: int, part: int, mesh: Mesh) -> void:
 	var slot: int = level * PART_NAMES.size() + part
-	if slot < _dynamic_nodes.size():
+	if slot < _dynamic_nodes.size() and _dynamic_nodes[slot].multimesh.mesh != mesh:
 		_dynamic_nodes[slot].multimesh.mesh = mesh
 
 

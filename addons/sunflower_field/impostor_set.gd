@@ -1,21 +1,17 @@
 @tool
 extends RefCounted
 ## The far representations' look: the impostor materials (one per texture) and the sprite and
-## billboard quad meshes, made once per field and shared by the field drawn and one being built.
+## billboard quad meshes, framed as the plant type says (its impostor width, height and sprite
+## lean, in model units); made once per field and shared by the field drawn and one being built.
 
-const Native: GDScript = preload("native.gd")
 const SHADER: Shader = preload("shaders/impostor.gdshader")
-## The impostor quads' width in model units; their height is the native plant shape's (3.2), and
-## the baked textures frame exactly this rectangle (assets/bake_impostors.gd reads both).
-const WIDTH_UNITS: float = 1.6
-## How far the sprite's top edge leans forward, like the nodding head, in model units.
-const SPRITE_LEAN: float = 0.12
 ## The materials, by the texture they show.
 const KINDS: PackedStringArray = ["front", "side", "billboard"]
 
 var _materials: Dictionary = {}
 var _sprite: ArrayMesh
 var _billboard: ArrayMesh
+var _frame: Vector3 = Vector3(1.6, 3.2, 0.12)  # width, height, sprite lean (model units)
 
 
 func _init() -> void:
@@ -26,16 +22,28 @@ func _init() -> void:
 		_materials[kind] = material
 
 
-## The height of the impostor quads in model units.
-static func height_units() -> float:
-	return Native.plant_height_units()
+## Frames the quads and textures as [param plant] (a FieldPlant) says; the quad meshes are made
+## anew when the frame changed (nodes made before keep theirs).
+func configure(plant: Resource) -> void:
+	for kind: String in KINDS:
+		set_texture(kind, plant.texture_drawn(kind))
+	var frame: Vector3 = Vector3(plant.impostor_width, plant.height_units, plant.sprite_lean)
+	if frame != _frame:
+		_frame = frame
+		_sprite = null
+		_billboard = null
 
 
 ## Shows [param texture] on the [param kind] impostor ("front", "side" or "billboard"); null draws it
 ## untextured, with a warning.
 func set_texture(kind: String, texture: Texture2D) -> void:
+	var material: ShaderMaterial = _materials[kind]
+	if texture == material.get_shader_parameter("albedo_texture"):
+		return
 	if texture == null:
-		push_warning("SunflowerField: no %s texture; that impostor is drawn untextured" % kind)
+		push_warning(
+			"SunflowerField: no %s texture; that impostor is drawn untextured (bake the plant's impostors)" % kind
+		)
 	(_materials[kind] as ShaderMaterial).set_shader_parameter("albedo_texture", texture)
 
 
@@ -50,9 +58,9 @@ func set_shared(parameter: StringName, value: Variant) -> void:
 ## forward like the nodding head (thesis 3.2.3).
 func sprite_mesh() -> ArrayMesh:
 	if _sprite == null:
-		var w: float = WIDTH_UNITS * 0.5
-		var h: float = height_units()
-		var lean: float = SPRITE_LEAN
+		var w: float = _frame.x * 0.5
+		var h: float = _frame.y
+		var lean: float = _frame.z
 		_sprite = ArrayMesh.new()
 		var front: Array = [Vector3(-w, 0, 0), Vector3(w, 0, 0), Vector3(w, h, lean), Vector3(-w, h, lean)]
 		var side: Array = [Vector3(0, 0, w), Vector3(0, 0, -w), Vector3(lean, h, -w), Vector3(lean, h, w)]
@@ -64,8 +72,8 @@ func sprite_mesh() -> ArrayMesh:
 ## One quad; the shader turns it about y to face the observer.
 func billboard_mesh() -> ArrayMesh:
 	if _billboard == null:
-		var w: float = WIDTH_UNITS * 0.5
-		var h: float = height_units()
+		var w: float = _frame.x * 0.5
+		var h: float = _frame.y
 		_billboard = ArrayMesh.new()
 		var corners: Array = [Vector3(-w, 0, 0), Vector3(w, 0, 0), Vector3(w, h, 0), Vector3(-w, h, 0)]
 		_add_quad(_billboard, corners, Vector3(0, 0, 1), _materials["billboard"])

@@ -13,7 +13,7 @@ extends Node3D
 ## [br][br]
 ## Distances are measured from the [member observer] (by default the active camera; in the editor,
 ## the editor's camera). Keep this node's scale at 1: size the field with [member cell_size] and
-## [member plant_height].
+## the [member plant]'s height. The plant (a [FieldPlant]) is the built-in sunflower unless set.
 
 ## Emitted when a field has been built from the map.
 signal field_built(plant_count: int)
@@ -37,8 +37,7 @@ const Native: GDScript = preload("native.gd")
 const FieldDriver: GDScript = preload("field_driver.gd")
 const FieldGround: GDScript = preload("field_ground.gd")
 const FieldNodes: GDScript = preload("field_nodes.gd")
-const DEFAULT_FRONT_TEXTURE: Texture2D = preload("textures/sunflower_front.png")
-const DEFAULT_SIDE_TEXTURE: Texture2D = preload("textures/sunflower_side.png")
+const PartMeshes: GDScript = preload("part_meshes.gd")
 @export_group("Field")
 ## The field map. Import a [code].field[/code] file (the plugin turns it into a
 ## [SunflowerFieldMap]) or call [method load_map_file].
@@ -68,13 +67,6 @@ const DEFAULT_SIDE_TEXTURE: Texture2D = preload("textures/sunflower_side.png")
 	set(value):
 		if value != independent_jitter:
 			independent_jitter = value
-			_queue_rebuild()
-## Height of a plant from root to head.
-@export_range(0.1, 20.0, 0.01, "or_greater", "suffix:m") var plant_height: float = 2.0:
-	set(value):
-		value = Native.accept("SunflowerField.plant_height", value, plant_height)
-		if value != plant_height:
-			plant_height = value
 			_queue_rebuild()
 ## Scenes placed at map cells holding other symbols, e.g. [code]{"S": preload("stone.tscn")}[/code]
 ## for the thesis' "big stone". Keys are single characters.
@@ -198,24 +190,18 @@ const DEFAULT_SIDE_TEXTURE: Texture2D = preload("textures/sunflower_side.png")
 		_driver.configure_wind()
 
 @export_group("Plant")
-## Texture of the sprite's front quad (the flower head seen from the front), with alpha.
-@export var sprite_front_texture: Texture2D = DEFAULT_FRONT_TEXTURE:
+## The plant the field grows: its parts, form, variety and impostor textures. Empty: the built-in
+## sunflower. A plant shared by several fields changes them all.
+@export var plant: FieldPlant:
 	set(value):
-		if value != sprite_front_texture:
-			sprite_front_texture = value
-			_driver.impostors.set_texture("front", value)
-## Texture of the sprite's side quad, with alpha.
-@export var sprite_side_texture: Texture2D = DEFAULT_SIDE_TEXTURE:
-	set(value):
-		if value != sprite_side_texture:
-			sprite_side_texture = value
-			_driver.impostors.set_texture("side", value)
-## Texture of the billboard, with alpha.
-@export var billboard_texture: Texture2D = DEFAULT_FRONT_TEXTURE:
-	set(value):
-		if value != billboard_texture:
-			billboard_texture = value
-			_driver.impostors.set_texture("billboard", value)
+		if value == plant:
+			return
+		if plant and plant.changed.is_connected(_on_plant_changed):
+			plant.changed.disconnect(_on_plant_changed)
+		plant = value
+		if plant:
+			plant.changed.connect(_on_plant_changed)
+		_on_plant_changed()
 ## Alpha below which sprite and billboard pixels are discarded (thesis: 190/255).
 @export_range(0.0, 1.0, 0.001) var alpha_scissor: float = 190.0 / 255.0:
 	set(value):
@@ -343,15 +329,39 @@ const DEFAULT_SIDE_TEXTURE: Texture2D = preload("textures/sunflower_side.png")
 		update_configuration_warnings()
 
 ## Everything behind the public face: builds, the field drawn, each frame, impostors, part meshes.
+## The plant's height from root to head, metres: the [member plant]'s [member FieldPlant.height]
+## (setting it gives the field its own copy of the plant).
+var plant_height: float:
+	get:
+		return _plant().height
+	set(value):
+		_own_plant().height = value
+## Texture of the sprite's front quad: the [member plant]'s (setting it gives the field its own copy).
+var sprite_front_texture: Texture2D:
+	get:
+		return _plant().texture_drawn("front")
+	set(value):
+		_own_plant().front_texture = value
+## Texture of the sprite's side quad: the [member plant]'s.
+var sprite_side_texture: Texture2D:
+	get:
+		return _plant().texture_drawn("side")
+	set(value):
+		_own_plant().side_texture = value
+## Texture of the billboard: the [member plant]'s.
+var billboard_texture: Texture2D:
+	get:
+		return _plant().texture_drawn("billboard")
+	set(value):
+		_own_plant().billboard_texture = value
+
 var _driver: FieldDriver = FieldDriver.new(self)
 var _empty_simulation: RefCounted
 
 
 func _init() -> void:
 	wind.changed.connect(_driver.configure_wind)
-	_driver.impostors.set_texture("front", sprite_front_texture)
-	_driver.impostors.set_texture("side", sprite_side_texture)
-	_driver.impostors.set_texture("billboard", billboard_texture)
+	_driver.configure_plant(_plant())
 	_driver.impostors.set_shared(&"alpha_scissor", alpha_scissor)
 	_driver.impostors.set_shared(&"thinning_start", thinning_distance)
 	_driver.impostors.set_shared(&"thinning_min_density", thinning_min_density)
@@ -475,15 +485,13 @@ func advance(delta: float) -> void:
 ## [param part] 0–2 (see [enum Part]). [code]null[/code] restores the default model. Parts are
 ## modelled with their root at the origin and height 1 along +y.
 func set_part_mesh(lod: int, part: int, mesh: Mesh) -> void:
-	if _driver.parts.check(lod, part, "set_part_mesh"):
-		_driver.parts.choose(lod, part, mesh)
-		if _driver.drawn:
-			_driver.drawn.set_part_mesh(lod, part, _driver.parts.get_mesh(lod, part))
+	if PartMeshes.check(lod, part, "set_part_mesh"):
+		_own_plant().set_part_mesh(lod, part, mesh)
 
 
-## The mesh drawn for a part (the default model where none was set).
+## The mesh drawn for a part (the built-in sunflower's where the plant has none).
 func get_part_mesh(lod: int, part: int) -> Mesh:
-	return _driver.parts.get_mesh(lod, part) if _driver.parts.check(lod, part, "get_part_mesh") else null
+	return _plant().mesh_drawn(lod, part) if PartMeshes.check(lod, part, "get_part_mesh") else null
 
 
 ## Plants pushed by bodies now or still springing back.
@@ -554,36 +562,42 @@ func _get_configuration_warnings() -> PackedStringArray:
 	return warnings
 
 
-# --- Part meshes as inspector properties ---------------------------------------------------------
+# --- The plant ------------------------------------------------------------------------------------
 
 
-func _get_property_list() -> Array[Dictionary]:
-	return _driver.parts.list_properties()
+## The plant grown: the one set, else the built-in sunflower.
+func _plant() -> FieldPlant:
+	return plant if plant else FieldPlant.default_plant()
 
 
+## The plant, made this field's own first when it is the shared built-in sunflower (so changing it
+## through the node's proxies changes no other field).
+func _own_plant() -> FieldPlant:
+	if plant == null or plant == FieldPlant.default_plant():
+		plant = FieldPlant.default_plant().duplicate() as FieldPlant
+	return plant
+
+
+func _on_plant_changed() -> void:
+	if _driver.configure_plant(_plant()):
+		_queue_rebuild()
+
+
+# Scenes saved before plant types set part meshes as "part_meshes/mesh_N/part"; they still load.
 func _get(property: StringName) -> Variant:
-	var slot: int = _driver.parts.slot_of(property)
-	return _driver.parts.get_chosen(slot) if slot >= 0 else null
+	var slot: Vector2i = PartMeshes.slot_of(property)
+	return _plant().get_part_mesh(slot.x, slot.y) if slot.x >= 0 else null
 
 
 func _set(property: StringName, value: Variant) -> bool:
-	var slot: int = _driver.parts.slot_of(property)
-	if slot < 0:
+	var slot: Vector2i = PartMeshes.slot_of(property)
+	if slot.x < 0:
 		return false
 	if value != null and not (value is Mesh):
 		push_warning("SunflowerField.%s: %s is not a Mesh; using the default part" % [property, value])
 		value = null
-	var per_level: int = _driver.parts.get_parts_per_level()
-	set_part_mesh(slot / per_level, slot % per_level, value as Mesh)
+	set_part_mesh(slot.x, slot.y, value as Mesh)
 	return true
-
-
-func _property_can_revert(property: StringName) -> bool:
-	return _driver.parts.slot_of(property) >= 0
-
-
-func _property_get_revert(_property: StringName) -> Variant:
-	return null  # the default model
 
 
 func _queue_rebuild() -> void:

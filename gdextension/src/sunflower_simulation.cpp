@@ -28,6 +28,9 @@ void SunflowerSimulation::bind_methods() {
 	gdx::bind_method(CLASS, "get_cells_without_ground", &SunflowerSimulation::get_cells_without_ground);
 	gdx::bind_method(CLASS, "get_object_heights", &SunflowerSimulation::get_object_heights);
 	gdx::bind_method(CLASS, "set_plant_height", &SunflowerSimulation::set_plant_height, { "metres" });
+	gdx::bind_method(CLASS, "set_plant_form", &SunflowerSimulation::set_plant_form,
+			{ "part_lengths", "middle_variation", "height_units", "cull_radius_units" });
+	gdx::bind_method(CLASS, "set_plant_variation", &SunflowerSimulation::set_plant_variation, { "yaw_range", "scale_min", "scale_max" });
 	gdx::bind_method(CLASS, "set_wind", &SunflowerSimulation::set_wind,
 			{ "model", "power", "direction", "stiffness_middle", "stiffness_bottom", "bend_per_power", "max_bend", "flip_interval",
 					"flip_chance", "gust_speed", "gust_share" });
@@ -183,6 +186,28 @@ gdx::PackedFloat32Array SunflowerSimulation::get_object_heights() const {
 
 void SunflowerSimulation::set_plant_height(double p_metres) {
 	_sim.set_plant_height(float(p_metres));
+}
+
+void SunflowerSimulation::set_plant_form(gdx::Vector3 p_part_lengths, double p_middle_variation, double p_height_units,
+		double p_cull_radius_units) {
+	PlantShape shape = _sim.get_shape();
+	const float metres = shape.part_scale * shape.parts_height(); // the plant keeps its height
+	shape.part_lengths = gdx::to_core(p_part_lengths);
+	shape.middle_variation = float(p_middle_variation);
+	shape.height = float(p_height_units);
+	shape.cull_radius = float(p_cull_radius_units);
+	_sim.set_shape(shape);
+	_sim.set_plant_height(metres);
+}
+
+void SunflowerSimulation::set_plant_variation(double p_yaw_range, double p_scale_min, double p_scale_max) {
+	LayoutParams params = _sim.get_layout_params();
+	params.yaw_jitter = float(p_yaw_range);
+	params.scale_min = float(p_scale_min);
+	params.scale_max = float(p_scale_max);
+	if (_sim.set_layout_params(params)) {
+		release_multimeshes(); // the chunks changed
+	}
 }
 
 void SunflowerSimulation::set_wind(int64_t p_model, double p_power, gdx::Vector2 p_direction, double p_stiffness_middle, double p_stiffness_bottom,

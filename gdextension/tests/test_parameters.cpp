@@ -60,7 +60,7 @@ TEST_CASE("parameters: the core's own structures start at the table's defaults")
 	CHECK(layout.cell_size == float(param::CELL_SIZE.default_value));
 	CHECK(layout.chunk_size == float(param::CHUNK_SIZE.default_value));
 	const PlantShape shape;
-	CHECK(shape.part_scale * PlantShape::PARTS_HEIGHT == doctest::Approx(param::PLANT_HEIGHT.default_value));
+	CHECK(shape.part_scale * shape.parts_height() == doctest::Approx(param::PLANT_HEIGHT.default_value));
 }
 
 TEST_CASE("parameters: the models apply the rules themselves") {
@@ -84,7 +84,7 @@ TEST_CASE("parameters: the models apply the rules themselves") {
 
 	FieldSimulation sim;
 	sim.set_plant_height(-2.0f);
-	CHECK(sim.get_shape().part_scale * PlantShape::PARTS_HEIGHT == doctest::Approx(2.0f));
+	CHECK(sim.get_shape().part_scale * sim.get_shape().parts_height() == doctest::Approx(2.0f));
 	sim.set_plant_height(3.0f);
 	CHECK(sim.get_shape().part_scale == doctest::Approx(1.0f));
 }

@@ -401,3 +401,48 @@ TEST_CASE("a jump of the observer re-selects at once, nearest chunks first, with
 	CHECK(sim.get_lod_counts() == fresh.get_lod_counts());
 	CHECK(drawn(sim) == sim.get_plant_count()); // exactly once all the while
 }
+
+TEST_CASE("a plant type's form and variety: parts stack by their lengths, sizes and yaws stay within their ranges") {
+	FieldSimulation sim;
+	MapError error;
+	REQUIRE(sim.load_map("10 10\n**********\n**********\n**********\n", U"", "form", MapLimits{}, error));
+	PlantShape shape;
+	shape.part_lengths = glm::vec3(2.0f, 0.5f, 1.0f);
+	shape.middle_variation = 0.0f;
+	sim.set_shape(shape);
+	sim.set_plant_height(7.0f); // 3.5 model units tall: 2 m per unit
+	LayoutParams params = sim.get_layout_params();
+	params.yaw_jitter = 1.0f;
+	params.scale_min = 0.5f;
+	params.scale_max = 1.5f;
+	REQUIRE(sim.set_layout_params(params));
+	float smallest = 10.0f, largest = 0.0f, widest_yaw = 0.0f;
+	for (uint32_t i = 0; i < sim.get_plant_count(); ++i) {
+		const Plant &plant = sim.get_layout().plants[i];
+		smallest = std::min(smallest, plant.scale);
+		largest = std::max(largest, plant.scale);
+		widest_yaw = std::max(widest_yaw, std::abs(plant.yaw));
+		PartTransforms parts;
+		sim.get_plant_parts(i, parts);
+		// Upright (no wind): the middle starts 2 units up and the head 0.5 above it, at 2 m a unit.
+		CHECK(parts.origin[1].y - parts.origin[0].y == doctest::Approx(2.0f * 2.0f * plant.scale));
+		CHECK(parts.origin[2].y - parts.origin[1].y == doctest::Approx(0.5f * 2.0f * plant.scale));
+		CHECK(glm::length(parts.basis[0][1]) == doctest::Approx(2.0f * plant.scale));
+		// Chunk bounds hold the tallest plant.
+		const ChunkBounds bounds = sim.get_chunk_bounds(plant.chunk);
+		CHECK(bounds.max.y >= plant.ground + shape.height * 2.0f * plant.scale);
+	}
+	CHECK(smallest >= 0.5f);
+	CHECK(largest <= 1.5f);
+	CHECK(largest - smallest > 0.8f); // 30 plants spread over the range
+	CHECK(widest_yaw <= 1.0f);
+	CHECK(widest_yaw > 0.7f);
+	// A reversed range is read as one size; a nonsense form keeps the built-in one.
+	params.scale_min = 2.0f;
+	params.scale_max = 1.0f;
+	sim.set_layout_params(params);
+	CHECK(sim.get_layout_params().scale_max == 2.0f);
+	shape.part_lengths = glm::vec3(NAN, -1.0f, 1.0f);
+	sim.set_shape(shape);
+	CHECK(sim.get_shape().part_lengths == PlantShape::PART_LENGTHS);
+}

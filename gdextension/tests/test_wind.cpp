@@ -12,6 +12,13 @@ using namespace sunflower;
 
 namespace {
 
+// The default form at p_scale metres per model unit.
+PlantShape unit_shape(float p_scale = 1.0f) {
+	PlantShape shape;
+	shape.part_scale = p_scale;
+	return shape;
+}
+
 WindModel make_wind(float p_power, glm::vec2 p_direction, float p_gust_share = 0.0f) {
 	WindParams params;
 	params.model = WIND_THESIS; // the thesis' equations, exactly
@@ -64,18 +71,18 @@ TEST_CASE("eq. 4: part ends move by m2 and m1 + m2 along the wind, vertical exte
 	PartTransforms parts;
 
 	SUBCASE("wind blowing towards +x") {
-		make_wind(1.0f, { 1, 0 }).part_transforms(plant, p, 1.0f, parts);
+		make_wind(1.0f, { 1, 0 }).part_transforms(plant, p, unit_shape(), parts);
 		check_vec(parts.origin[0], { 0, 0, 0 });
 		check_vec(parts.origin[1], { m2, y2, 0 });
 		check_vec(parts.origin[2], { m1 + m2, y1 + y2, 0 });
 	}
 	SUBCASE("wind blowing towards +z: (w_x, w_z) = (1, 0) so Z1 = Z1' + w_x·(m1 + m2)") {
-		make_wind(1.0f, { 0, 3 }).part_transforms(plant, p, 1.0f, parts);
+		make_wind(1.0f, { 0, 3 }).part_transforms(plant, p, unit_shape(), parts);
 		check_vec(parts.origin[1], { 0, y2, m2 });
 		check_vec(parts.origin[2], { 0, y1 + y2, m1 + m2 });
 	}
 	SUBCASE("a diagonal wind leans the plant along it") {
-		make_wind(1.0f, { 1, 1 }).part_transforms(plant, p, 1.0f, parts);
+		make_wind(1.0f, { 1, 1 }).part_transforms(plant, p, unit_shape(), parts);
 		const float s = std::sqrt(0.5f);
 		check_vec(parts.origin[2], { (m1 + m2) * s, y1 + y2, (m1 + m2) * s });
 	}
@@ -88,7 +95,7 @@ TEST_CASE("joints chain exactly: each part's root is the previous part's tip, he
 	plant.yaw = 0.3f;
 	PartTransforms parts;
 	const WindModel wind = make_wind(3.0f, { 0.3f, -1.0f });
-	wind.part_transforms(plant, 0.37f, 0.7f, parts);
+	wind.part_transforms(plant, 0.37f, unit_shape(0.7f), parts);
 	for (int part = 0; part < 2; ++part) {
 		const glm::vec3 tip = parts.origin[part] + parts.basis[part] * glm::vec3(0, 1, 0);
 		check_vec(parts.origin[part + 1], tip);
@@ -107,7 +114,7 @@ TEST_CASE("no wind: the plant stands upright") {
 	Plant plant;
 	plant.position = { 1.0f, 1.0f };
 	PartTransforms parts;
-	make_wind(0.0f, { 1, 0 }).part_transforms(plant, 0.0f, 1.0f, parts);
+	make_wind(0.0f, { 1, 0 }).part_transforms(plant, 0.0f, unit_shape(), parts);
 	check_vec(parts.origin[1], { 1, 1, 1 });
 	check_vec(parts.origin[2], { 1, 2, 1 });
 }

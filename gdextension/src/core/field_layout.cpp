@@ -78,6 +78,8 @@ void build_layout(const FieldMap &p_map, const LayoutParams &p_params, const Gro
 			}
 			plant.lean = p_ground.lean_at(uint32_t(index), plant.position);
 			plant.yaw = (unit_float(hash_plant(p_params.seed, index, STREAM_YAW)) * 2.0f - 1.0f) * p_params.yaw_jitter;
+			plant.scale = p_params.scale_min +
+					(p_params.scale_max - p_params.scale_min) * unit_float(hash_plant(p_params.seed, index, STREAM_SCALE));
 			const int cx = std::min(chunks_x - 1, static_cast<int>(plant.position.x / chunk_size));
 			const int cz = std::min(chunks_z - 1, static_cast<int>(plant.position.y / chunk_size));
 			plant.chunk = static_cast<uint32_t>(cz * chunks_x + cx);
@@ -121,6 +123,7 @@ void build_layout(const FieldMap &p_map, const LayoutParams &p_params, const Gro
 		chunk.max = glm::max(chunk.max, plant.position);
 		chunk.ground_min = std::min(chunk.ground_min, plant.ground);
 		chunk.ground_max = std::max(chunk.ground_max, plant.ground);
+		chunk.scale_max = std::max(chunk.scale_max, plant.scale);
 	}
 }
 

@@ -21,12 +21,16 @@ struct LayoutParams {
 	bool independent_jitter = false; // false: the same α on x and z, as in the thesis
 	float jitter = 0.5f; // α ∈ [0, jitter) in cells (thesis: 0.5)
 	float yaw_jitter = 0.35f; // radians either side of facing +z, for variety between plants
+	// Each plant's size factor, uniform in [scale_min, scale_max] (1, 1: all alike).
+	float scale_min = 1.0f;
+	float scale_max = 1.0f;
 	// Metres; the far representations are grouped in square chunks.
 	float chunk_size = float(param::CHUNK_SIZE.default_value);
 
 	bool operator==(const LayoutParams &p_other) const {
 		return cell_size == p_other.cell_size && seed == p_other.seed && independent_jitter == p_other.independent_jitter &&
-				jitter == p_other.jitter && yaw_jitter == p_other.yaw_jitter && chunk_size == p_other.chunk_size;
+				jitter == p_other.jitter && yaw_jitter == p_other.yaw_jitter && chunk_size == p_other.chunk_size &&
+				scale_min == p_other.scale_min && scale_max == p_other.scale_max;
 	}
 };
 
@@ -35,6 +39,7 @@ struct Plant {
 	float ground = 0.0f; // y of the root: the ground's height there
 	float alpha = 0.0f; // the thesis' α, also used for height variety (s' = s + α/10)
 	float yaw = 0.0f; // radians about +y
+	float scale = 1.0f; // the plant's size factor (LayoutParams' scale range)
 	uint32_t chunk = 0;
 	// The plant's up axis leaning towards the ground's normal: its horizontal part (x, z); zero for an
 	// upright plant.
@@ -48,6 +53,7 @@ struct Chunk {
 	glm::vec2 max{ 0.0f };
 	float ground_min = 0.0f; // y bounds of its plants' roots
 	float ground_max = 0.0f;
+	float scale_max = 0.0f; // the largest size factor among its plants
 	uint32_t first = 0; // range in FieldLayout::chunk_plants
 	uint32_t count = 0;
 };

@@ -34,6 +34,9 @@ bool FieldSimulation::set_layout_params(const LayoutParams &p_params) {
 	LayoutParams params = p_params;
 	params.cell_size = sanitize(param::CELL_SIZE, p_params.cell_size, _layout_params.cell_size);
 	params.chunk_size = sanitize(param::CHUNK_SIZE, p_params.chunk_size, _layout_params.chunk_size);
+	params.yaw_jitter = sanitize(param::PLANT_YAW_RANGE, p_params.yaw_jitter, _layout_params.yaw_jitter);
+	params.scale_min = sanitize(param::PLANT_SCALE_MIN, p_params.scale_min, _layout_params.scale_min);
+	params.scale_max = std::max(params.scale_min, sanitize(param::PLANT_SCALE_MAX, p_params.scale_max, _layout_params.scale_max));
 	if (params == _layout_params) {
 		return false;
 	}
@@ -54,14 +57,26 @@ void FieldSimulation::set_lod(const LodParams &p_params) {
 }
 
 void FieldSimulation::set_shape(const PlantShape &p_shape) {
-	_shape = p_shape;
+	const PlantShape defaults;
+	PlantShape shape = p_shape;
+	// A form that is not finite and positive keeps the built-in sunflower's value.
+	for (int i = 0; i < 3; ++i) {
+		if (!(shape.part_lengths[i] > 0.0f) || !std::isfinite(shape.part_lengths[i])) {
+			shape.part_lengths[i] = defaults.part_lengths[i];
+		}
+	}
+	shape.middle_variation = sanitize(param::PLANT_MIDDLE_VARIATION, shape.middle_variation, _shape.middle_variation);
+	shape.height = shape.height > 0.0f && std::isfinite(shape.height) ? shape.height : defaults.height;
+	shape.cull_radius = shape.cull_radius > 0.0f && std::isfinite(shape.cull_radius) ? shape.cull_radius : defaults.cull_radius;
+	shape.part_scale = shape.part_scale > 0.0f && std::isfinite(shape.part_scale) ? shape.part_scale : _shape.part_scale;
+	_shape = shape;
 	_lod_due = true;
 }
 
 void FieldSimulation::set_plant_height(float p_metres) {
 	PlantShape shape = _shape;
-	shape.part_scale = sanitize(param::PLANT_HEIGHT, p_metres, _shape.part_scale * PlantShape::PARTS_HEIGHT) /
-			PlantShape::PARTS_HEIGHT;
+	const float parts = _shape.parts_height();
+	shape.part_scale = sanitize(param::PLANT_HEIGHT, p_metres, _shape.part_scale * parts) / parts;
 	set_shape(shape);
 }
 
@@ -98,10 +113,11 @@ void FieldSimulation::set_worker_threads(uint32_t p_threads) {
 
 ChunkBounds FieldSimulation::get_chunk_bounds(uint32_t p_chunk) const {
 	const Chunk &chunk = _layout.chunks[p_chunk];
-	const float reach = _shape.cull_radius * _shape.part_scale;
+	const float scale = _shape.part_scale * chunk.scale_max;
+	const float reach = _shape.cull_radius * scale;
 	ChunkBounds bounds;
 	bounds.min = glm::vec3(chunk.min.x - reach, chunk.ground_min, chunk.min.y - reach);
-	bounds.max = glm::vec3(chunk.max.x + reach, chunk.ground_max + _shape.height * _shape.part_scale * 1.05f, chunk.max.y + reach);
+	bounds.max = glm::vec3(chunk.max.x + reach, chunk.ground_max + _shape.height * scale * 1.05f, chunk.max.y + reach);
 	return bounds;
 }
 
@@ -114,7 +130,7 @@ float FieldSimulation::_chunk_distance_sq(uint32_t p_chunk) const {
 
 float FieldSimulation::_plant_distance_sq(const Plant &p_plant) const {
 	// From the observer's eye to the plant's middle: on the ground this is the thesis' distance.
-	const glm::vec3 d = _observer - (p_plant.root() + glm::vec3(0.0f, 0.5f * _shape.height * _shape.part_scale, 0.0f));
+	const glm::vec3 d = _observer - (p_plant.root() + glm::vec3(0.0f, 0.5f * _shape.height * _shape.part_scale * p_plant.scale, 0.0f));
 	return glm::dot(d, d);
 }
 
@@ -158,7 +174,7 @@ void FieldSimulation::_select_lods() {
 	for (uint32_t c : _previous_active) {
 		_select_chunk_lods(c, false, enter, leave);
 	}
-	const float reach = leave + _shape.cull_radius * _shape.part_scale;
+	const float reach = leave + _shape.cull_radius * _shape.part_scale * _layout_params.scale_max;
 	const GridRange cells = _grid_range(glm::vec2(_observer.x, _observer.z), reach);
 	// Chunks turning active are taken nearest first, at most ACTIVATION_BUDGET plants per update: after
 	// a jump of the observer the plants next to it are meshes at once, and the rest of the
@@ -271,9 +287,8 @@ void FieldSimulation::_move_chunks(size_t p_first, size_t p_last, float p_delta,
 	for (InstanceBuffer &bucket : r_buckets) {
 		bucket.clear();
 	}
-	const float scale = _shape.part_scale;
-	const float radius = _shape.cull_radius * scale;
-	const float mid_height = 0.5f * _shape.height * scale;
+	const float radius = _shape.cull_radius * _shape.part_scale;
+	const float mid_height = 0.5f * _shape.height * _shape.part_scale;
 	const bool moving = _wind.get_effective_power() > 0.0f;
 	PartTransforms parts;
 	for (size_t a = p_first; a < p_last; ++a) {
@@ -282,7 +297,7 @@ void FieldSimulation::_move_chunks(size_t p_first, size_t p_last, float p_delta,
 			const uint32_t index = _layout.chunk_plants[chunk.first + k];
 			const Plant &plant = _layout.plants[index];
 			const uint8_t lod = _plant_lod[index];
-			const bool visible = _frustum.intersects_sphere(plant.root() + glm::vec3(0.0f, mid_height, 0.0f), radius);
+			const bool visible = _frustum.intersects_sphere(plant.root() + glm::vec3(0.0f, mid_height * plant.scale, 0.0f), radius * plant.scale);
 			if (lod >= LOD_SPRITE) {
 				if (visible) {
 					_write_impostor(r_buckets[lod == LOD_SPRITE ? BUCKET_SPRITE : BUCKET_BILLBOARD].push(), plant);
@@ -296,7 +311,7 @@ void FieldSimulation::_move_chunks(size_t p_first, size_t p_last, float p_delta,
 			if (!visible) {
 				continue;
 			}
-			_wind.part_transforms(plant, _plant_bend(index, plant, moving), scale, parts);
+			_wind.part_transforms(plant, _plant_bend(index, plant, moving), _shape, parts);
 			for (uint32_t part = 0; part < PART_COUNT; ++part) {
 				write_instance(r_buckets[mesh_bucket(lod, part)].push(), parts.basis[part], parts.origin[part]);
 			}
@@ -357,7 +372,6 @@ void FieldSimulation::_update_pushes(float p_delta) {
 	for (PushState &state : _pushed) {
 		state.target = glm::vec2(0.0f);
 	}
-	const float top = _shape.height * _shape.part_scale;
 	for (const Pusher &pusher : _pushers) {
 		if (!(pusher.radius > 0.0f)) {
 			continue;
@@ -366,8 +380,9 @@ void FieldSimulation::_update_pushes(float p_delta) {
 		_near.clear();
 		find_plants_near(center, pusher.radius, _near);
 		for (uint32_t index : _near) {
-			const float above_root = pusher.position.y - _layout.plants[index].ground;
-			if (above_root - pusher.radius > top || above_root + pusher.radius < 0.0f) {
+			const Plant &plant = _layout.plants[index];
+			const float above_root = pusher.position.y - plant.ground;
+			if (above_root - pusher.radius > _shape.height * _shape.part_scale * plant.scale || above_root + pusher.radius < 0.0f) {
 				continue; // flying over the plant, or under its ground
 			}
 			PlantWind &wind = _plant_wind[index];
@@ -412,9 +427,10 @@ void FieldSimulation::_update_pushes(float p_delta) {
 }
 
 void FieldSimulation::_write_impostor(float *r_out, const Plant &p_plant) const {
-	const float c = std::cos(p_plant.yaw) * _shape.part_scale;
-	const float s = std::sin(p_plant.yaw) * _shape.part_scale;
-	const glm::mat3 basis(glm::vec3(c, 0.0f, -s), glm::vec3(0.0f, _shape.part_scale, 0.0f), glm::vec3(s, 0.0f, c));
+	const float scale = _shape.part_scale * p_plant.scale;
+	const float c = std::cos(p_plant.yaw) * scale;
+	const float s = std::sin(p_plant.yaw) * scale;
+	const glm::mat3 basis(glm::vec3(c, 0.0f, -s), glm::vec3(0.0f, scale, 0.0f), glm::vec3(s, 0.0f, c));
 	write_instance(r_out, p_plant.lean == glm::vec2(0.0f) ? basis : lean_rotation(p_plant.lean) * basis, p_plant.root());
 }
 
@@ -473,7 +489,7 @@ void FieldSimulation::get_plant_parts(uint32_t p_plant, PartTransforms &r_parts)
 	if (_chunk_active[plant.chunk] && _plant_lod[p_plant] < LOD_SPRITE) {
 		bend = _plant_bend(p_plant, plant, _wind.get_effective_power() > 0.0f);
 	}
-	_wind.part_transforms(plant, bend, _shape.part_scale, r_parts);
+	_wind.part_transforms(plant, bend, _shape, r_parts);
 }
 
 } // namespace sunflower

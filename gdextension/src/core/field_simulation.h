@@ -14,6 +14,7 @@
 #include "frustum.h"
 #include "instance_buffer.h"
 #include "lod_selector.h"
+#include "plant_shape.h"
 #include "wind_model.h"
 #include "worker_pool.h"
 
@@ -39,25 +40,6 @@ constexpr uint32_t mesh_bucket(uint32_t p_level, uint32_t p_part) {
 }
 
 using BucketSet = std::array<InstanceBuffer, BUCKET_COUNT>;
-
-// The plant's size, for culling and bounds. Parts are modelled one unit tall from their root (the
-// default models and any part a user supplies), stacked bottom, middle, head.
-struct PlantShape {
-	// Model units from the root to the top of anything drawn: the three stacked parts (3 units, the
-	// middle up to 1.05 with the α/10 height variety) and the nodding head's petals above them;
-	// the impostor quads frame exactly this height (addon: impostor_set.gd reads it back).
-	static constexpr float HEIGHT = 3.2f;
-	// Radius of the sphere about the plant's middle (HEIGHT / 2 up) that holds the whole plant
-	// leaning by the largest bend (45°) with its leaves (half-width ~0.8): what frustum culling
-	// and chunk bounds use. Smaller radii cut swaying heads at the screen edge.
-	static constexpr float CULL_RADIUS = 1.9f;
-	// Model units of the three stacked parts: a plant `plant_height` metres tall is drawn at
-	// plant_height / PARTS_HEIGHT metres per model unit.
-	static constexpr float PARTS_HEIGHT = 3.0f;
-	float part_scale = float(param::PLANT_HEIGHT.default_value) / PARTS_HEIGHT; // metres per model unit
-	float cull_radius = CULL_RADIUS; // model units
-	float height = HEIGHT; // model units
-};
 
 // A body that plants part around: a point in the field's space and the radius it reaches.
 struct Pusher {
@@ -94,7 +76,8 @@ public:
 	void set_lod(const LodParams &p_params);
 	const LodSelector &get_lod() const { return _lod; }
 	void set_shape(const PlantShape &p_shape);
-	// Sets the part scale for a plant p_metres tall (param::PLANT_HEIGHT rules).
+	// Sets the part scale for a plant p_metres tall from its root to the top of its parts
+	// (param::PLANT_HEIGHT rules).
 	void set_plant_height(float p_metres);
 	const PlantShape &get_shape() const { return _shape; }
 

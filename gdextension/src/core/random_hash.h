@@ -29,6 +29,7 @@ enum RandomStream : uint64_t {
 	STREAM_FLIP_OFFSET = 5,
 	STREAM_FLIP = 6,
 	STREAM_DIRECTION = 7,
+	STREAM_SCALE = 8,
 };
 
 } // namespace sunflower

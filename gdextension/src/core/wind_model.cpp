@@ -226,20 +226,21 @@ float WindModel::bend(const PlantWind &p_wind, float p_downwind, float p_gust_ph
 	return std::clamp(p, -_bend_limit, _bend_limit);
 }
 
-void WindModel::part_transforms(const Plant &p_plant, float p_bend, float p_part_scale, PartTransforms &r_parts) const {
-	part_transforms(p_plant, p_bend * _lean, p_part_scale, r_parts);
+void WindModel::part_transforms(const Plant &p_plant, float p_bend, const PlantShape &p_shape, PartTransforms &r_parts) const {
+	part_transforms(p_plant, p_bend * _lean, p_shape, r_parts);
 }
 
-void WindModel::part_transforms(const Plant &p_plant, const glm::vec2 &p_bend, float p_part_scale, PartTransforms &r_parts) const {
+void WindModel::part_transforms(const Plant &p_plant, const glm::vec2 &p_bend, const PlantShape &p_shape, PartTransforms &r_parts) const {
 	// The plant rotates about the horizontal axis across its lean: (w_x, w_z) = (lean.z, −lean.x).
 	const float size = glm::length(p_bend);
 	const glm::vec2 axis = size > 1e-9f ? glm::vec2(p_bend.y, -p_bend.x) / size : glm::vec2(0.0f, -1.0f);
 	const glm::mat3 bottom_tilt = rotation_about_horizontal(axis, size / _params.d2);
 	const glm::mat3 upper_tilt = rotation_about_horizontal(axis, size / _params.d1);
-	const float middle_height = 1.0f + p_plant.alpha / 10.0f; // s' = s + α/10
+	const float middle_height = 1.0f + p_plant.alpha * p_shape.middle_variation; // thesis: s' = s + α/10
+	const float scale = p_shape.part_scale * p_plant.scale;
 
-	const glm::mat3 shape = yaw_scale(p_plant.yaw, p_part_scale, p_part_scale);
-	const glm::mat3 middle_shape = yaw_scale(p_plant.yaw, p_part_scale, p_part_scale * middle_height);
+	const glm::mat3 shape = yaw_scale(p_plant.yaw, scale, scale);
+	const glm::mat3 middle_shape = yaw_scale(p_plant.yaw, scale, scale * middle_height);
 
 	if (p_plant.lean == glm::vec2(0.0f)) {
 		r_parts.basis[0] = bottom_tilt * shape;
@@ -252,8 +253,9 @@ void WindModel::part_transforms(const Plant &p_plant, const glm::vec2 &p_bend, f
 		r_parts.basis[2] = lean * upper_tilt * shape;
 	}
 	r_parts.origin[0] = p_plant.root();
-	r_parts.origin[1] = r_parts.origin[0] + r_parts.basis[0][1]; // the bottom part's tip: M·(0, 1, 0)
-	r_parts.origin[2] = r_parts.origin[1] + r_parts.basis[1][1];
+	// Each part starts at the previous one's tip: M·(0, length, 0).
+	r_parts.origin[1] = r_parts.origin[0] + r_parts.basis[0][1] * p_shape.part_lengths.x;
+	r_parts.origin[2] = r_parts.origin[1] + r_parts.basis[1][1] * p_shape.part_lengths.y;
 }
 
 } // namespace sunflower

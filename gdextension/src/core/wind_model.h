@@ -20,6 +20,7 @@
 // across the lean; the head sits rigidly on the middle. A bend is a vector on the ground (x, z):
 // its length the bend force, its direction the lean, so pushes from bodies add to the wind's.
 #include "field_layout.h"
+#include "plant_shape.h"
 #include "parameters.h"
 
 #include <glm/mat3x3.hpp>
@@ -101,9 +102,9 @@ public:
 
 	// Part transforms for bend p along the lean direction (eq. 4). p_part_scale: metres per model unit
 	// (parts are 1 unit tall).
-	void part_transforms(const Plant &p_plant, float p_bend, float p_part_scale, PartTransforms &r_parts) const;
+	void part_transforms(const Plant &p_plant, float p_bend, const PlantShape &p_shape, PartTransforms &r_parts) const;
 	// Part transforms for a bend vector on the ground (x, z): tilted by its length, towards it.
-	void part_transforms(const Plant &p_plant, const glm::vec2 &p_bend, float p_part_scale, PartTransforms &r_parts) const;
+	void part_transforms(const Plant &p_plant, const glm::vec2 &p_bend, const PlantShape &p_shape, PartTransforms &r_parts) const;
 
 	// A flip offset in [0, flip_interval) for a plant, so redraws are staggered across the field.
 	float flip_offset(uint64_t p_seed, uint32_t p_plant) const;

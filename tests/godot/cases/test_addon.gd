@@ -23,7 +23,9 @@ func test_the_node_names_the_cores_indices() -> void:
 ## defaults of the node and of the wind resource equal the core's.
 func test_inspector_defaults_equal_the_cores() -> void:
 	var field: SunflowerField = SunflowerField.new()
-	var owners: Dictionary = {"SunflowerField": field, "SunflowerWind": SunflowerWind.new()}
+	var owners: Dictionary = {
+		"SunflowerField": field, "SunflowerWind": SunflowerWind.new(), "FieldPlant": FieldPlant.new()
+	}
 	var names: PackedStringArray = SunflowerField.Native.parameter_names()
 	check(names.size() >= 20, "the core lists its parameters (%d)" % names.size())
 	for qualified: String in names:

@@ -1,0 +1,203 @@
+@tool
+@icon("icons/sunflower_field.svg")
+class_name FieldPlant
+extends Resource
+## One kind of plant for a [SunflowerField]: its three parts at each mesh level, how they stack,
+## its height and variety, and the impostor textures of its far levels.
+##
+## Parts are modelled with their root at the origin and their height along +y; a plant stands as
+## bottom, middle and head, each starting at the previous one's tip ([member part_lengths] model
+## units up it). The whole plant is [member height] metres from the root to the top of its parts.
+## The impostor quads frame [member impostor_width] × [member height_units] model units, and the
+## textures are rendered from the level-1 parts in that frame (the editor's "Bake impostors").
+## The built-in sunflower is [method default_plant]; [code]null[/code] mesh or texture slots use it.
+
+const Native: GDScript = preload("native.gd")
+const DEFAULT_PATH: String = "res://addons/sunflower_field/plants/sunflower.tres"
+const PartMeshes: GDScript = preload("part_meshes.gd")
+
+static var _default: FieldPlant
+
+## A name for the plant (menus, warnings).
+@export var name: String = "Sunflower":
+	set(value):
+		name = value
+		emit_changed()
+## Height from the root to the top of the parts, metres.
+@export_range(0.01, 50.0, 0.01, "or_greater", "suffix:m") var height: float = 2.0:
+	set(value):
+		height = Native.accept("FieldPlant.height", value, height)
+		emit_changed()
+
+@export_group("Meshes")
+## The most detailed level's parts: bottom, middle, head.
+@export var mesh_level_1: Array[Mesh] = [null, null, null]:
+	set(value):
+		mesh_level_1 = _three(value)
+		emit_changed()
+## The middle level's parts.
+@export var mesh_level_2: Array[Mesh] = [null, null, null]:
+	set(value):
+		mesh_level_2 = _three(value)
+		emit_changed()
+## The simplest level's parts.
+@export var mesh_level_3: Array[Mesh] = [null, null, null]:
+	set(value):
+		mesh_level_3 = _three(value)
+		emit_changed()
+
+@export_group("Form")
+## Model units from each part's root to the next one's: bottom → middle, middle → head, and the
+## head's own length. [member height] spans their sum.
+@export var part_lengths: Vector3 = Vector3(1.0, 1.0, 1.0):
+	set(value):
+		part_lengths = Vector3(_positive(value.x, 1.0), _positive(value.y, 1.0), _positive(value.z, 1.0))
+		emit_changed()
+## Model units from the root to the top of anything drawn (the parts and what stands out above
+## them, such as petals): the impostor quads' height.
+@export_range(0.01, 100.0, 0.01, "or_greater") var height_units: float = 3.2:
+	set(value):
+		height_units = _positive(value, height_units)
+		emit_changed()
+## Radius, in model units, of the sphere about the plant's middle that holds it leaning by the
+## largest bend with its leaves: culling and chunk bounds use it.
+@export_range(0.01, 100.0, 0.01, "or_greater") var cull_radius_units: float = 1.9:
+	set(value):
+		cull_radius_units = _positive(value, cull_radius_units)
+		emit_changed()
+## The impostor quads' width, model units.
+@export_range(0.01, 100.0, 0.01, "or_greater") var impostor_width: float = 1.6:
+	set(value):
+		impostor_width = _positive(value, impostor_width)
+		emit_changed()
+## How far the sprite's top edge leans forward (a nodding head), model units.
+@export_range(-10.0, 10.0, 0.01) var sprite_lean: float = 0.12:
+	set(value):
+		sprite_lean = value if is_finite(value) else sprite_lean
+		emit_changed()
+
+@export_group("Variety")
+## The middle part is stretched to (1 + α × this) of its length, α ∈ [0, 0.5) per plant (the
+## thesis' s' = s + α/10).
+@export_range(0.0, 10.0, 0.01) var middle_variation: float = 0.1:
+	set(value):
+		middle_variation = Native.accept("FieldPlant.middle_variation", value, middle_variation)
+		emit_changed()
+## Each plant turns up to this much either side of facing +z (seeded).
+@export_range(0.0, 180.0, 0.1, "radians_as_degrees") var yaw_range: float = 0.35:
+	set(value):
+		yaw_range = Native.accept("FieldPlant.yaw_range", value, yaw_range)
+		emit_changed()
+## Each plant's size factor is drawn from [member scale_min] to [member scale_max] (seeded).
+@export_range(0.01, 100.0, 0.01) var scale_min: float = 1.0:
+	set(value):
+		scale_min = Native.accept("FieldPlant.scale_min", value, scale_min)
+		emit_changed()
+## See [member scale_min].
+@export_range(0.01, 100.0, 0.01) var scale_max: float = 1.0:
+	set(value):
+		scale_max = Native.accept("FieldPlant.scale_max", value, scale_max)
+		emit_changed()
+
+@export_group("Impostors")
+## The sprite's front quad (the plant seen from +z), with alpha.
+@export var front_texture: Texture2D:
+	set(value):
+		front_texture = value
+		emit_changed()
+## The sprite's side quad (seen from +x), with alpha.
+@export var side_texture: Texture2D:
+	set(value):
+		side_texture = value
+		emit_changed()
+## The billboard (turned to the observer), with alpha.
+@export var billboard_texture: Texture2D:
+	set(value):
+		billboard_texture = value
+		emit_changed()
+
+
+## The built-in sunflower (shared: duplicate it before changing it).
+static func default_plant() -> FieldPlant:
+	if _default == null:
+		_default = load(DEFAULT_PATH) as FieldPlant
+	return _default
+
+
+## The mesh of a part (level 0–2, part 0–2); null where none is set.
+func get_part_mesh(level: int, part: int) -> Mesh:
+	return _level(level)[part]
+
+
+## The mesh a part is drawn with: its own, else the built-in sunflower's.
+func mesh_drawn(level: int, part: int) -> Mesh:
+	var mesh: Mesh = _level(level)[part]
+	return mesh if mesh else default_plant().get_part_mesh(level, part)
+
+
+## Every part's mesh as drawn, by [code]level × 3 + part[/code].
+func meshes_drawn() -> Array[Mesh]:
+	var meshes: Array[Mesh] = []
+	for level: int in 3:
+		for part: int in PartMeshes.PART_NAMES.size():
+			meshes.append(mesh_drawn(level, part))
+	return meshes
+
+
+## The texture an impostor shows ("front", "side" or "billboard"): its own, else the built-in
+## sunflower's when this plant uses the sunflower's level-1 meshes, else none.
+func texture_drawn(kind: String) -> Texture2D:
+	var own: Texture2D = get(kind + "_texture")
+	if own or self == default_plant():
+		return own
+	return default_plant().get(kind + "_texture") if mesh_level_1.all(func(m: Mesh) -> bool: return m == null) else null
+
+
+## What the layout and the impostor quads depend on: a change of any of these rebuilds the field.
+func layout_key() -> Array:
+	return [
+		height,
+		part_lengths,
+		height_units,
+		cull_radius_units,
+		impostor_width,
+		sprite_lean,
+		middle_variation,
+		yaw_range,
+		scale_min,
+		scale_max,
+	]
+
+
+## Sets the mesh of a part (level 0–2, part 0–2); null clears it.
+func set_part_mesh(level: int, part: int, mesh: Mesh) -> void:
+	var meshes: Array[Mesh] = _level(level).duplicate()
+	meshes[part] = mesh
+	match level:
+		0:
+			mesh_level_1 = meshes
+		1:
+			mesh_level_2 = meshes
+		_:
+			mesh_level_3 = meshes
+
+
+## Hands the plant's form, height and variety to a native simulation.
+func apply_to(simulation: RefCounted) -> void:
+	simulation.set_plant_form(part_lengths, middle_variation, height_units, cull_radius_units)
+	simulation.set_plant_height(height)
+	simulation.set_plant_variation(yaw_range, scale_min, scale_max)
+
+
+func _level(level: int) -> Array[Mesh]:
+	return mesh_level_1 if level == 0 else (mesh_level_2 if level == 1 else mesh_level_3)
+
+
+static func _three(meshes: Array[Mesh]) -> Array[Mesh]:
+	var out: Array[Mesh] = meshes.duplicate()
+	out.resize(PartMeshes.PART_NAMES.size())
+	return out
+
+
+static func _positive(value: float, fallback: float) -> float:
+	return value if value > 0.0 and is_finite(value) else fallback

@@ -1,0 +1,42 @@
+#pragma once
+// A plant type's form: how its three parts stack and the space it takes, in model units (a part's
+// root at its origin, its height along +y), and the metres per model unit it is drawn at. The
+// addon's plant resource (FieldPlant) sets every value; the defaults are the built-in sunflower.
+#include "parameters.h"
+
+#include <glm/vec3.hpp>
+
+namespace sunflower {
+
+struct PlantShape {
+	// Model units from each part's root to the next one's: bottom → middle, middle → head, and the
+	// head's own length. The default sunflower's parts are one unit each.
+	static constexpr glm::vec3 PART_LENGTHS{ 1.0f, 1.0f, 1.0f };
+	// The middle part is stretched to (1 + α × this) of its length, α ∈ [0, 0.5) per plant (thesis:
+	// s' = s + α/10), for variety in height.
+	static constexpr float MIDDLE_VARIATION = 0.1f;
+	// Model units from the root to the top of anything drawn: the stacked parts (3 units, the middle
+	// up to 1.05 with the variation) and the nodding head's petals above them; the impostor quads
+	// frame exactly this height.
+	static constexpr float HEIGHT = 3.2f;
+	// Radius of the sphere about the plant's middle (height / 2 up) that holds the whole plant
+	// leaning by the largest bend (45°) with its leaves (half-width ~0.8): what frustum culling and
+	// chunk bounds use. Smaller radii cut swaying heads at the screen edge.
+	static constexpr float CULL_RADIUS = 1.9f;
+
+	glm::vec3 part_lengths = PART_LENGTHS;
+	float middle_variation = MIDDLE_VARIATION;
+	float height = HEIGHT; // model units
+	float cull_radius = CULL_RADIUS; // model units
+	// Metres per model unit: a plant `plant_height` metres tall from its root to the top of its
+	// parts is drawn at plant_height / parts_height().
+	float part_scale = float(param::PLANT_HEIGHT.default_value) / (PART_LENGTHS.x + PART_LENGTHS.y + PART_LENGTHS.z);
+
+	float parts_height() const { return part_lengths.x + part_lengths.y + part_lengths.z; }
+	bool operator==(const PlantShape &p_other) const {
+		return part_lengths == p_other.part_lengths && middle_variation == p_other.middle_variation &&
+				height == p_other.height && cull_radius == p_other.cull_radius && part_scale == p_other.part_scale;
+	}
+};
+
+} // namespace sunflower

@@ -1,0 +1,128 @@
+extends TestCase
+## Plant types (FieldPlant): the built-in sunflower by default, shared unchanged; a field's own plant
+## through set_part_mesh and the old properties; a plant's form (part lengths, height) and variety
+## (size and yaw ranges) in the plants drawn; a shared plant's change rebuilds every field using it.
+
+const DEMO_MAP: SunflowerFieldMap = preload("res://fields/demo.field")
+
+var fields: Array[SunflowerField] = []
+
+
+func after_each() -> void:
+	for field: SunflowerField in fields:
+		if is_instance_valid(field):
+			field.free()
+	fields.clear()
+
+
+func _field(plant: FieldPlant = null) -> SunflowerField:
+	var field: SunflowerField = SunflowerField.new()
+	field.plant = plant
+	field.map = DEMO_MAP
+	tree.root.add_child(field)
+	field.finish_build()
+	fields.append(field)
+	return field
+
+
+## The mesh a field's near bucket node draws for a part.
+func _drawn_mesh(field: SunflowerField, level: int, part: int) -> Mesh:
+	var name: String = "Mesh%d%s" % [level + 1, ["Bottom", "Middle", "Head"][part]]
+	for node: Node in field.get_children(true):
+		if node.name == name:
+			return (node as MultiMeshInstance3D).multimesh.mesh
+	return null
+
+
+func test_the_built_in_sunflower_is_the_default_and_stays_shared_unchanged() -> void:
+	var default_plant: FieldPlant = FieldPlant.default_plant()
+	check(default_plant != null, "the addon ships the sunflower plant")
+	check_eq(default_plant.name, "Sunflower")
+	var first: SunflowerField = _field()
+	var second: SunflowerField = _field()
+	check(first.plant == null, "no plant set: the built-in one is grown")
+	check(_drawn_mesh(first, 0, 2) == default_plant.get_part_mesh(0, 2), "the sunflower's head is drawn")
+	check(first.sprite_front_texture == default_plant.front_texture, "and its impostor textures")
+	var box: BoxMesh = BoxMesh.new()
+	first.set_part_mesh(0, 2, box)
+	check(first.plant != null and first.plant != default_plant, "set_part_mesh gives the field its own plant")
+	check(_drawn_mesh(first, 0, 2) == box, "the new head is drawn")
+	check(default_plant.get_part_mesh(0, 2) != box, "the built-in plant is unchanged")
+	check(_drawn_mesh(second, 0, 2) == default_plant.get_part_mesh(0, 2), "another field is unchanged")
+	check(first.get_part_mesh(0, 1) == default_plant.get_part_mesh(0, 1), "the other parts stay the sunflower's")
+	first.set_part_mesh(0, 2, null)
+	check(_drawn_mesh(first, 0, 2) == default_plant.get_part_mesh(0, 2), "null restores the default part")
+	# Scenes saved before plant types named part meshes "part_meshes/mesh_N/part".
+	second.set("part_meshes/mesh_2/middle", box)
+	check(_drawn_mesh(second, 1, 1) == box, "the old property name still sets a part")
+	check(second.get("part_meshes/mesh_2/middle") == box)
+
+
+func test_a_plants_form_and_height_shape_the_plants_drawn() -> void:
+	var plant: FieldPlant = FieldPlant.new()
+	plant.part_lengths = Vector3(2.0, 0.5, 1.0)
+	plant.middle_variation = 0.0
+	plant.height = 7.0  # 3.5 model units: 2 m each
+	plant.yaw_range = 0.0
+	var field: SunflowerField = _field(plant)
+	field.force_lod = SunflowerField.Lod.MESH_1
+	field.advance(0.0)
+	check_eq(field.plant_height, 7.0, "the node reports its plant's height")
+	field.wind_power = 0.0
+	field.advance(1.0)  # the natural wind eases out over half a second
+	var parts: Array = field.get_plant_info(10)["parts"]
+	var root: Vector3 = field.get_plant_info(10)["position"]
+	check_near((parts[1] as Transform3D).origin.y - root.y, 4.0, 0.01, "the middle starts 2 units (4 m) up")
+	check_near((parts[2] as Transform3D).origin.y - root.y, 5.0, 0.01, "the head 0.5 units (1 m) above it")
+	check((parts[0] as Transform3D).basis.z.is_equal_approx(Vector3(0, 0, 2)), "no yaw with a zero yaw range")
+	# Without meshes of its own, the plant is drawn with the sunflower's parts and impostors; with
+	# its own level-1 parts but no textures (not baked yet), its impostors are untextured, and it says so.
+	check(_drawn_mesh(field, 0, 0) == FieldPlant.default_plant().get_part_mesh(0, 0))
+	check(field.sprite_front_texture == FieldPlant.default_plant().front_texture)
+	take_warnings()
+	plant.set_part_mesh(0, 1, BoxMesh.new())
+	check(field.sprite_front_texture == null, "no sunflower texture on a plant of other parts")
+	check(warned("drawn untextured"), "a plant of its own parts without textures warns")
+
+
+func test_a_plants_variety_spreads_sizes_and_yaws_within_its_ranges() -> void:
+	var plant: FieldPlant = FieldPlant.new()
+	plant.scale_min = 0.6
+	plant.scale_max = 1.4
+	plant.yaw_range = PI / 2.0
+	plant.middle_variation = 0.0
+	var field: SunflowerField = _field(plant)
+	field.wind_power = 0.0
+	field.force_lod = SunflowerField.Lod.MESH_1
+	field.advance(0.1)
+	var smallest: float = INF
+	var largest: float = 0.0
+	var widest: float = 0.0
+	for i: int in field.get_plant_count():
+		var bottom: Transform3D = field.get_plant_info(i)["parts"][0]
+		var size: float = bottom.basis.y.length() * 3.0 / plant.height  # the plant's size factor
+		smallest = minf(smallest, size)
+		largest = maxf(largest, size)
+		widest = maxf(widest, absf(atan2(bottom.basis.z.x, bottom.basis.z.z)))
+	check(smallest >= 0.6 - 1e-4 and largest <= 1.4 + 1e-4, "sizes within 0.6–1.4 (%.3f–%.3f)" % [smallest, largest])
+	check(largest - smallest > 0.7, "and spread over the range")
+	check(widest <= PI / 2.0 + 1e-4 and widest > 1.3, "yaws within ±90° (widest %.2f rad)" % widest)
+	take_warnings()
+
+
+func test_changing_a_shared_plant_rebuilds_every_field_that_grows_it() -> void:
+	var plant: FieldPlant = FieldPlant.new()
+	var first: SunflowerField = _field(plant)
+	var second: SunflowerField = _field(plant)
+	var before: float = second.get_simulation().get_chunk_aabb(0).end.y
+	plant.height = 4.0
+	await frames(1)
+	first.finish_build()
+	second.finish_build()
+	for field: SunflowerField in [first, second]:
+		check_near(field.get_simulation().get_chunk_aabb(0).end.y, before * 2.0, 0.05, "chunk bounds follow the height")
+	var box: BoxMesh = BoxMesh.new()
+	plant.set_part_mesh(2, 0, box)
+	check(_drawn_mesh(first, 2, 0) == box and _drawn_mesh(second, 2, 0) == box, "a mesh change shows in both")
+	check(not first.is_building(), "a mesh change needs no rebuild")
+	take_warnings()
