@@ -15,6 +15,7 @@ extends Resource
 const Native: GDScript = preload("native.gd")
 const DEFAULT_PATH: String = "res://addons/sunflower_field/plants/sunflower.tres"
 const PartMeshes: GDScript = preload("part_meshes.gd")
+const ImpostorBaker: GDScript = preload("impostor_baker.gd")
 
 static var _default: FieldPlant
 
@@ -180,6 +181,13 @@ func set_part_mesh(level: int, part: int, mesh: Mesh) -> void:
 			mesh_level_2 = meshes
 		_:
 			mesh_level_3 = meshes
+
+
+## Renders this plant's impostor textures from its level-1 parts and takes them (see
+## ImpostorBaker: [code]impostor_baker.gd[/code]); await it. [param host] is any node in a tree that
+## draws; the files go to [param folder] (default: beside this resource). Returns OK or an error.
+func bake_impostors(host: Node, folder: String = "", base_name: String = "") -> Error:
+	return await ImpostorBaker.bake(self, host, folder, base_name)
 
 
 ## Hands the plant's form, height and variety to a native simulation.

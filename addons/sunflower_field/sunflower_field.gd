@@ -494,6 +494,13 @@ func get_part_mesh(lod: int, part: int) -> Mesh:
 	return _plant().mesh_drawn(lod, part) if PartMeshes.check(lod, part, "get_part_mesh") else null
 
 
+## Renders the field's plant's impostor textures from its level-1 parts (after [method set_part_mesh]
+## at run time, say) and draws them; await it. A field growing the built-in sunflower gets its own
+## copy first. Files go beside the plant's resource, else to [code]user://[/code]. Needs a renderer.
+func bake_impostors() -> Error:
+	return await _own_plant().bake_impostors(self)
+
+
 ## Plants pushed by bodies now or still springing back.
 func get_pushed_count() -> int:
 	return _driver.simulation().get_pushed_count() if _driver.drawn else 0
