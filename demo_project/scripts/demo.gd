@@ -170,13 +170,20 @@ func load_part(lod: int, part: int, path: String) -> String:
 		return loaded["error"]
 	_field.set_part_mesh(lod, part, loaded["mesh"])
 	_count_triangles()
-	_hud.show_message(
-		loaded.get(
-			"warning",
-			"mesh %d %s replaced by %s" % [lod + 1, SunflowerField.FieldNodes.PART_NAMES[part], path.get_file()]
-		)
+	var message: String = loaded.get(
+		"warning", "mesh %d %s replaced by %s" % [lod + 1, SunflowerField.FieldNodes.PART_NAMES[part], path.get_file()]
 	)
+	_hud.show_message(message)
+	if lod == 0 and DisplayServer.get_name() != "headless":
+		_rebake_impostors.call_deferred(message)  # the far levels show the new part too
 	return ""
+
+
+## Bakes the field's impostors from its level-1 parts after a part swap, so sprites and billboards
+## match the meshes.
+func _rebake_impostors(message: String) -> void:
+	if await _field.bake_impostors() == OK:
+		_hud.show_message(message + "; impostors baked to match")
 
 
 func _unhandled_input(event: InputEvent) -> void:
