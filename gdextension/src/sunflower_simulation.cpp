@@ -14,7 +14,8 @@ using namespace sunflower;
 
 void SunflowerSimulation::bind_methods() {
 	const char *CLASS = "SunflowerSimulation";
-	gdx::bind_method(CLASS, "load_map", &SunflowerSimulation::load_map, { "text", "source", "legend", "max_plants" });
+	gdx::bind_method(CLASS, "load_map", &SunflowerSimulation::load_map, { "text", "source", "legend", "plant_symbols", "max_plants" });
+	gdx::bind_method(CLASS, "get_species_count", &SunflowerSimulation::get_species_count);
 	gdx::bind_method(CLASS, "clear", &SunflowerSimulation::clear);
 	gdx::bind_method(CLASS, "get_map_columns", &SunflowerSimulation::get_map_columns);
 	gdx::bind_method(CLASS, "get_map_rows", &SunflowerSimulation::get_map_rows);
@@ -27,10 +28,11 @@ void SunflowerSimulation::bind_methods() {
 	gdx::bind_method(CLASS, "get_ground_points", &SunflowerSimulation::get_ground_points);
 	gdx::bind_method(CLASS, "get_cells_without_ground", &SunflowerSimulation::get_cells_without_ground);
 	gdx::bind_method(CLASS, "get_object_heights", &SunflowerSimulation::get_object_heights);
-	gdx::bind_method(CLASS, "set_plant_height", &SunflowerSimulation::set_plant_height, { "metres" });
+	gdx::bind_method(CLASS, "set_plant_height", &SunflowerSimulation::set_plant_height, { "species", "metres" });
 	gdx::bind_method(CLASS, "set_plant_form", &SunflowerSimulation::set_plant_form,
-			{ "part_lengths", "middle_variation", "height_units", "cull_radius_units" });
-	gdx::bind_method(CLASS, "set_plant_variation", &SunflowerSimulation::set_plant_variation, { "yaw_range", "scale_min", "scale_max" });
+			{ "species", "part_lengths", "middle_variation", "height_units", "cull_radius_units" });
+	gdx::bind_method(CLASS, "set_plant_variation", &SunflowerSimulation::set_plant_variation,
+			{ "species", "yaw_range", "scale_min", "scale_max" });
 	gdx::bind_method(CLASS, "set_wind", &SunflowerSimulation::set_wind,
 			{ "model", "power", "direction", "stiffness_middle", "stiffness_bottom", "bend_per_power", "max_bend", "flip_interval",
 					"flip_chance", "gust_speed", "gust_share" });
@@ -51,6 +53,8 @@ void SunflowerSimulation::bind_methods() {
 	gdx::bind_method(CLASS, "update", &SunflowerSimulation::update, { "delta" });
 	gdx::bind_method(CLASS, "get_plant_count", &SunflowerSimulation::get_plant_count);
 	gdx::bind_method(CLASS, "get_lod_counts", &SunflowerSimulation::get_lod_counts);
+	gdx::bind_method(CLASS, "get_lod_counts_by_species", &SunflowerSimulation::get_lod_counts_by_species);
+	gdx::bind_method(CLASS, "get_chunk_species", &SunflowerSimulation::get_chunk_species, { "chunk" });
 	gdx::bind_method(CLASS, "get_plant_position", &SunflowerSimulation::get_plant_position, { "plant" });
 	gdx::bind_method(CLASS, "get_plant_lod", &SunflowerSimulation::get_plant_lod, { "plant" });
 	gdx::bind_method(CLASS, "get_plant_parts", &SunflowerSimulation::get_plant_parts, { "plant" });
@@ -75,19 +79,21 @@ void SunflowerSimulation::bind_methods() {
 	gdx::bind_integer_constant(CLASS, "", "BUCKET_SPRITE", BUCKET_SPRITE);
 	gdx::bind_integer_constant(CLASS, "", "BUCKET_BILLBOARD", BUCKET_BILLBOARD);
 	gdx::bind_integer_constant(CLASS, "", "BUCKET_COUNT", BUCKET_COUNT);
+	gdx::bind_integer_constant(CLASS, "", "MAX_SPECIES", FieldMap::MAX_SPECIES);
 	gdx::bind_integer_constant(CLASS, "", "PARALLEL_MIN_PLANTS", FieldSimulation::PARALLEL_MIN_PLANTS);
 	gdx::bind_integer_constant(CLASS, "", "MAX_AUTO_THREADS", param::MAX_AUTO_THREADS);
 	gdx::bind_integer_constant(CLASS, "", "MAX_THREADS", param::MAX_THREADS);
 }
 
 gdx::String SunflowerSimulation::load_map(const gdx::PackedByteArray &p_text, const gdx::String &p_source,
-		const gdx::String &p_legend, int64_t p_max_plants) {
+		const gdx::String &p_legend, const gdx::String &p_plant_symbols, int64_t p_max_plants) {
 	MapLimits limits;
 	if (p_max_plants > 0) {
 		limits.max_plants = p_max_plants;
 	}
 	MapError error;
-	if (!_sim.load_map(gdx::to_core(p_text), decode_utf8_text(p_legend.utf8()), p_source.utf8(), limits, error)) {
+	if (!_sim.load_map(gdx::to_core(p_text), decode_utf8_text(p_legend.utf8()), decode_utf8_text(p_plant_symbols.utf8()),
+				p_source.utf8(), limits, error)) {
 		return gdx::String(error.to_string());
 	}
 	release_multimeshes(); // the old field's chunks no longer exist
@@ -184,27 +190,47 @@ gdx::PackedFloat32Array SunflowerSimulation::get_object_heights() const {
 	return out;
 }
 
-void SunflowerSimulation::set_plant_height(double p_metres) {
-	_sim.set_plant_height(float(p_metres));
+int64_t SunflowerSimulation::get_species_count() const {
+	return _sim.get_species_count();
 }
 
-void SunflowerSimulation::set_plant_form(gdx::Vector3 p_part_lengths, double p_middle_variation, double p_height_units,
-		double p_cull_radius_units) {
-	PlantShape shape = _sim.get_shape();
+bool SunflowerSimulation::_is_species(int64_t p_species) const {
+	SF_FAIL_COND_V_MSG(p_species < 0 || p_species >= FieldMap::MAX_SPECIES, false,
+			"species " + std::to_string(p_species) + " is out of range (0 to " + std::to_string(FieldMap::MAX_SPECIES - 1) + ")");
+	return true;
+}
+
+void SunflowerSimulation::set_plant_height(int64_t p_species, double p_metres) {
+	if (_is_species(p_species)) {
+		_sim.set_plant_height(float(p_metres), uint32_t(p_species));
+	}
+}
+
+void SunflowerSimulation::set_plant_form(int64_t p_species, gdx::Vector3 p_part_lengths, double p_middle_variation,
+		double p_height_units, double p_cull_radius_units) {
+	if (!_is_species(p_species)) {
+		return;
+	}
+	const uint32_t species = uint32_t(p_species);
+	PlantShape shape = _sim.get_shape(species);
 	const float metres = shape.part_scale * shape.parts_height(); // the plant keeps its height
 	shape.part_lengths = gdx::to_core(p_part_lengths);
 	shape.middle_variation = float(p_middle_variation);
 	shape.height = float(p_height_units);
 	shape.cull_radius = float(p_cull_radius_units);
-	_sim.set_shape(shape);
-	_sim.set_plant_height(metres);
+	_sim.set_shape(shape, species);
+	_sim.set_plant_height(metres, species);
 }
 
-void SunflowerSimulation::set_plant_variation(double p_yaw_range, double p_scale_min, double p_scale_max) {
+void SunflowerSimulation::set_plant_variation(int64_t p_species, double p_yaw_range, double p_scale_min, double p_scale_max) {
+	if (!_is_species(p_species)) {
+		return;
+	}
 	LayoutParams params = _sim.get_layout_params();
-	params.yaw_jitter = float(p_yaw_range);
-	params.scale_min = float(p_scale_min);
-	params.scale_max = float(p_scale_max);
+	PlantVariety &variety = params.varieties[size_t(p_species)];
+	variety.yaw_range = float(p_yaw_range);
+	variety.scale_min = float(p_scale_min);
+	variety.scale_max = float(p_scale_max);
 	if (_sim.set_layout_params(params)) {
 		release_multimeshes(); // the chunks changed
 	}
@@ -251,8 +277,9 @@ void SunflowerSimulation::set_observer(gdx::Vector3 p_position, const gdx::Packe
 }
 
 void SunflowerSimulation::set_bucket_multimesh(int64_t p_bucket, gdx::Rid p_multimesh) {
-	SF_FAIL_COND_MSG(p_bucket < 0 || p_bucket >= BUCKET_COUNT,
-			"bucket " + std::to_string(p_bucket) + " is out of range (0 to " + std::to_string(BUCKET_COUNT - 1) + ")");
+	SF_FAIL_COND_MSG(p_bucket < 0 || p_bucket >= int64_t(_buckets.size()),
+			"bucket " + std::to_string(p_bucket) + " is out of range (0 to " + std::to_string(_buckets.size() - 1) + ": " +
+					std::to_string(BUCKET_COUNT) + " per species)");
 	if (!gdx::RenderingServer::ensure_loaded()) {
 		return;
 	}
@@ -272,11 +299,7 @@ void SunflowerSimulation::set_chunk_multimeshes(int64_t p_chunk, gdx::Rid p_spri
 }
 
 void SunflowerSimulation::release_multimeshes() {
-	for (BucketTarget &target : _buckets) {
-		target.multimesh = gdx::Rid{};
-		target.allocated = 0;
-		target.last_count = 0;
-	}
+	_buckets.assign(_sim.get_bucket_count(), BucketTarget{});
 	_chunks.clear();
 }
 
@@ -341,7 +364,7 @@ void SunflowerSimulation::_push_bucket(uint32_t p_bucket) {
 void SunflowerSimulation::update(double p_delta) {
 	const auto start = std::chrono::steady_clock::now();
 	_sim.update(static_cast<float>(p_delta));
-	for (uint32_t b = 0; b < BUCKET_COUNT; ++b) {
+	for (uint32_t b = 0; b < _buckets.size(); ++b) {
 		_push_bucket(b);
 	}
 	for (uint32_t chunk : _sim.get_changed_chunks()) {
@@ -368,6 +391,22 @@ bool SunflowerSimulation::_is_chunk(int64_t p_chunk) const {
 
 int64_t SunflowerSimulation::get_plant_count() const {
 	return _sim.get_plant_count();
+}
+
+gdx::PackedInt32Array SunflowerSimulation::get_lod_counts_by_species() const {
+	std::vector<int32_t> values;
+	for (uint32_t species = 0; species < _sim.get_species_count(); ++species) {
+		for (int64_t count : _sim.get_lod_counts(species)) {
+			values.push_back(static_cast<int32_t>(count));
+		}
+	}
+	gdx::PackedInt32Array out;
+	out.assign(values.data(), values.size());
+	return out;
+}
+
+int64_t SunflowerSimulation::get_chunk_species(int64_t p_chunk) const {
+	return _is_chunk(p_chunk) ? int64_t(_sim.get_layout().chunks[size_t(p_chunk)].species) : -1;
 }
 
 gdx::PackedInt32Array SunflowerSimulation::get_lod_counts() const {
@@ -408,15 +447,17 @@ gdx::PackedFloat32Array SunflowerSimulation::get_plant_parts(int64_t p_plant) co
 }
 
 int64_t SunflowerSimulation::get_bucket_instance_count(int64_t p_bucket) const {
-	return p_bucket >= 0 && p_bucket < BUCKET_COUNT ? _sim.get_bucket(uint32_t(p_bucket)).get_count() : 0;
+	return p_bucket >= 0 && p_bucket < int64_t(_sim.get_bucket_count()) ? _sim.get_bucket(uint32_t(p_bucket)).get_count() : 0;
 }
 
-int64_t SunflowerSimulation::get_filled_buckets() const {
-	int64_t mask = 0;
-	for (uint32_t b = 0; b < BUCKET_COUNT; ++b) {
-		mask |= _sim.get_bucket(b).get_count() > 0 ? int64_t(1) << b : 0;
+gdx::PackedByteArray SunflowerSimulation::get_filled_buckets() const {
+	gdx::PackedByteArray out;
+	out.resize(_sim.get_bucket_count());
+	uint8_t *filled = out.data();
+	for (uint32_t b = 0; b < _sim.get_bucket_count(); ++b) {
+		filled[b] = _sim.get_bucket(b).get_count() > 0 ? 1 : 0;
 	}
-	return mask;
+	return out;
 }
 
 int64_t SunflowerSimulation::get_last_update_usec() const {

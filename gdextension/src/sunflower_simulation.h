@@ -12,7 +12,9 @@ class SunflowerSimulation {
 public:
 	static void bind_methods();
 
-	gdx::String load_map(const gdx::PackedByteArray &p_text, const gdx::String &p_source, const gdx::String &p_legend, int64_t p_max_plants);
+	gdx::String load_map(const gdx::PackedByteArray &p_text, const gdx::String &p_source, const gdx::String &p_legend,
+			const gdx::String &p_plant_symbols, int64_t p_max_plants);
+	int64_t get_species_count() const;
 	void clear();
 	int64_t get_map_columns() const;
 	int64_t get_map_rows() const;
@@ -26,9 +28,10 @@ public:
 	gdx::PackedFloat32Array get_ground_points() const;
 	int64_t get_cells_without_ground() const;
 	gdx::PackedFloat32Array get_object_heights() const;
-	void set_plant_height(double p_metres);
-	void set_plant_form(gdx::Vector3 p_part_lengths, double p_middle_variation, double p_height_units, double p_cull_radius_units);
-	void set_plant_variation(double p_yaw_range, double p_scale_min, double p_scale_max);
+	void set_plant_height(int64_t p_species, double p_metres);
+	void set_plant_form(int64_t p_species, gdx::Vector3 p_part_lengths, double p_middle_variation, double p_height_units,
+			double p_cull_radius_units);
+	void set_plant_variation(int64_t p_species, double p_yaw_range, double p_scale_min, double p_scale_max);
 	void set_wind(int64_t p_model, double p_power, gdx::Vector2 p_direction, double p_stiffness_middle, double p_stiffness_bottom,
 			double p_bend_per_power, double p_max_bend, double p_flip_interval, double p_flip_chance, double p_gust_speed,
 			double p_gust_share);
@@ -52,11 +55,13 @@ public:
 
 	int64_t get_plant_count() const;
 	gdx::PackedInt32Array get_lod_counts() const;
+	gdx::PackedInt32Array get_lod_counts_by_species() const;
+	int64_t get_chunk_species(int64_t p_chunk) const;
 	gdx::Vector3 get_plant_position(int64_t p_plant) const;
 	int64_t get_plant_lod(int64_t p_plant) const;
 	gdx::PackedFloat32Array get_plant_parts(int64_t p_plant) const;
 	int64_t get_bucket_instance_count(int64_t p_bucket) const;
-	int64_t get_filled_buckets() const;
+	gdx::PackedByteArray get_filled_buckets() const;
 	int64_t get_last_update_usec() const;
 	int64_t get_memory_bytes() const;
 	double get_time() const;
@@ -74,6 +79,7 @@ public:
 private:
 	bool _is_plant(int64_t p_plant) const;
 	bool _is_chunk(int64_t p_chunk) const;
+	bool _is_species(int64_t p_species) const;
 	void _push_bucket(uint32_t p_bucket);
 	void _upload_chunk(uint32_t p_chunk);
 	void _show_static_chunk(uint32_t p_chunk);
@@ -90,7 +96,7 @@ private:
 	};
 
 	sunflower::FieldSimulation _sim;
-	std::array<BucketTarget, sunflower::BUCKET_COUNT> _buckets;
+	std::vector<BucketTarget> _buckets; // BUCKET_COUNT per species of the map
 	std::vector<ChunkTarget> _chunks;
 	std::vector<sunflower::Pusher> _pushers; // reused between frames
 	int64_t _last_update_usec = 0;

@@ -412,9 +412,9 @@ TEST_CASE("a plant type's form and variety: parts stack by their lengths, sizes 
 	sim.set_shape(shape);
 	sim.set_plant_height(7.0f); // 3.5 model units tall: 2 m per unit
 	LayoutParams params = sim.get_layout_params();
-	params.yaw_jitter = 1.0f;
-	params.scale_min = 0.5f;
-	params.scale_max = 1.5f;
+	params.varieties[0].yaw_range = 1.0f;
+	params.varieties[0].scale_min = 0.5f;
+	params.varieties[0].scale_max = 1.5f;
 	REQUIRE(sim.set_layout_params(params));
 	float smallest = 10.0f, largest = 0.0f, widest_yaw = 0.0f;
 	for (uint32_t i = 0; i < sim.get_plant_count(); ++i) {
@@ -438,11 +438,74 @@ TEST_CASE("a plant type's form and variety: parts stack by their lengths, sizes 
 	CHECK(widest_yaw <= 1.0f);
 	CHECK(widest_yaw > 0.7f);
 	// A reversed range is read as one size; a nonsense form keeps the built-in one.
-	params.scale_min = 2.0f;
-	params.scale_max = 1.0f;
+	params.varieties[0].scale_min = 2.0f;
+	params.varieties[0].scale_max = 1.0f;
 	sim.set_layout_params(params);
-	CHECK(sim.get_layout_params().scale_max == 2.0f);
+	CHECK(sim.get_layout_params().varieties[0].scale_max == 2.0f);
 	shape.part_lengths = glm::vec3(NAN, -1.0f, 1.0f);
 	sim.set_shape(shape);
 	CHECK(sim.get_shape().part_lengths == PlantShape::PART_LENGTHS);
+}
+
+TEST_CASE("several species: each has its own chunks, form, variety and buckets; LOD counts add up") {
+	FieldSimulation sim;
+	MapError error;
+	std::string text = "32 32\n";
+	for (int row = 0; row < 32; ++row) {
+		for (int column = 0; column < 32; ++column) {
+			text += (column + row) % 3 == 0 ? 'm' : ((column + row) % 3 == 1 ? '*' : 'S');
+		}
+		text += '\n';
+	}
+	REQUIRE(sim.load_map(text, U"S", U"m", "species", MapLimits{}, error));
+	CHECK(sim.get_species_count() == 2);
+	CHECK(sim.get_bucket_count() == 2 * BUCKET_COUNT);
+	CHECK(sim.get_map().objects.size() > 300); // 'S' stays an object
+	uint32_t maize = 0;
+	for (uint32_t c = 0; c < sim.get_chunk_count(); ++c) {
+		const Chunk &chunk = sim.get_layout().chunks[c];
+		for (uint32_t k = 0; k < chunk.count; ++k) {
+			const uint32_t plant = sim.get_layout().chunk_plants[chunk.first + k];
+			const glm::vec2 cell = glm::floor(sim.get_layout().plants[plant].position / 0.5f);
+			const bool is_m = (int(cell.x) + int(cell.y)) % 3 == 0;
+			CHECK(is_m == (chunk.species == 1)); // a chunk holds one species
+		}
+		maize += chunk.species == 1 ? chunk.count : 0;
+	}
+	CHECK(maize > 300);
+	// Species 1 twice as tall, and each keeps its own variety.
+	sim.set_plant_height(4.0f, 1);
+	LayoutParams params = sim.get_layout_params();
+	params.varieties[1].yaw_range = 0.0f;
+	sim.set_layout_params(params);
+	PartTransforms parts;
+	for (uint32_t i = 0; i < sim.get_plant_count(); ++i) {
+		const uint32_t species = sim.get_layout().chunks[sim.get_layout().plants[i].chunk].species;
+		sim.get_plant_parts(i, parts);
+		CHECK(glm::length(parts.basis[0][1]) == doctest::Approx(species == 1 ? 4.0f / 3.0f : 2.0f / 3.0f));
+		if (species == 1) {
+			CHECK(sim.get_layout().plants[i].yaw == 0.0f);
+		}
+	}
+	// Each species' plants go to its own buckets; the counts add up per species and in all.
+	LodParams lod;
+	lod.force_level = LOD_MESH_2;
+	sim.set_lod(lod);
+	sim.update(0.0f);
+	CHECK(sim.get_bucket(mesh_bucket(LOD_MESH_2, 0)).get_count() == sim.get_plant_count() - maize);
+	CHECK(sim.get_bucket(BUCKET_COUNT + mesh_bucket(LOD_MESH_2, 0)).get_count() == maize);
+	CHECK(sim.get_lod_counts(1)[LOD_MESH_2] == maize);
+	CHECK(sim.get_lod_counts()[LOD_MESH_2] == sim.get_plant_count());
+	// A plant near a point is found whatever its species.
+	std::vector<uint32_t> near;
+	sim.find_plants_near(glm::vec2(8.0f), 1.0f, near);
+	bool both[2] = { false, false };
+	for (uint32_t plant : near) {
+		both[sim.get_layout().chunks[sim.get_layout().plants[plant].chunk].species] = true;
+	}
+	CHECK(both[0]);
+	CHECK(both[1]);
+	// At most MAX_SPECIES - 1 legend plants.
+	CHECK_FALSE(sim.load_map("2 1\n**\n", U"", U"abcdefgh", "too_many", MapLimits{}, error));
+	CHECK(error.message.find("at most 7") != std::string::npos);
 }

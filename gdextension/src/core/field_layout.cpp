@@ -54,7 +54,10 @@ void build_layout(const FieldMap &p_map, const LayoutParams &p_params, const Gro
 	const float chunk_size = std::max(p_params.chunk_size, p_params.cell_size);
 	const int chunks_x = std::max(1, static_cast<int>(std::ceil(r_layout.size.x / chunk_size)));
 	const int chunks_z = std::max(1, static_cast<int>(std::ceil(r_layout.size.y / chunk_size)));
-	std::vector<uint32_t> grid_count(static_cast<size_t>(chunks_x) * static_cast<size_t>(chunks_z), 0);
+	const size_t cells = static_cast<size_t>(chunks_x) * static_cast<size_t>(chunks_z);
+	const uint32_t species_count = uint32_t(std::clamp(p_map.species_count, 1, FieldMap::MAX_SPECIES));
+	// Plants per (grid cell, species): the chunks to be.
+	std::vector<uint32_t> key_count(cells * species_count, 0);
 	r_layout.grid_x = chunks_x;
 	r_layout.grid_z = chunks_z;
 	r_layout.chunk_size = chunk_size;
@@ -68,6 +71,8 @@ void build_layout(const FieldMap &p_map, const LayoutParams &p_params, const Gro
 			if (!p_map.has_plant(column, row)) {
 				continue;
 			}
+			const uint32_t species = std::min(uint32_t(p_map.species_at(column, row)), species_count - 1);
+			const PlantVariety &variety = p_params.varieties[species];
 			Plant plant;
 			plant.position = plant_root(p_params, index, column, row, plant.alpha);
 			plant.ground = ground_fits ? p_ground.height_at(uint32_t(index), plant.position) : NAN;
@@ -77,13 +82,13 @@ void build_layout(const FieldMap &p_map, const LayoutParams &p_params, const Gro
 				continue;
 			}
 			plant.lean = p_ground.lean_at(uint32_t(index), plant.position);
-			plant.yaw = (unit_float(hash_plant(p_params.seed, index, STREAM_YAW)) * 2.0f - 1.0f) * p_params.yaw_jitter;
-			plant.scale = p_params.scale_min +
-					(p_params.scale_max - p_params.scale_min) * unit_float(hash_plant(p_params.seed, index, STREAM_SCALE));
+			plant.yaw = (unit_float(hash_plant(p_params.seed, index, STREAM_YAW)) * 2.0f - 1.0f) * variety.yaw_range;
+			plant.scale = variety.scale_min +
+					(variety.scale_max - variety.scale_min) * unit_float(hash_plant(p_params.seed, index, STREAM_SCALE));
 			const int cx = std::min(chunks_x - 1, static_cast<int>(plant.position.x / chunk_size));
 			const int cz = std::min(chunks_z - 1, static_cast<int>(plant.position.y / chunk_size));
-			plant.chunk = static_cast<uint32_t>(cz * chunks_x + cx);
-			++grid_count[plant.chunk];
+			plant.chunk = static_cast<uint32_t>(cz * chunks_x + cx) * species_count + species; // key for now
+			++key_count[plant.chunk];
 			r_layout.plants.push_back(plant);
 			++index;
 		}
@@ -95,28 +100,29 @@ void build_layout(const FieldMap &p_map, const LayoutParams &p_params, const Gro
 		r_layout.object_ground.push_back(std::isfinite(height) ? height : NAN);
 	}
 
-	// Compact the grid to the chunks that hold plants, then group plant indices by chunk.
-	std::vector<uint32_t> &grid_to_chunk = r_layout.grid_chunks;
-	grid_to_chunk.assign(grid_count.size(), FieldLayout::NO_CHUNK);
+	// Compact the keys to the chunks that hold plants, cell by cell, then group plant indices by chunk.
+	std::vector<uint32_t> key_to_chunk(key_count.size(), 0);
+	r_layout.grid_chunks.assign(cells + 1, 0);
 	uint32_t offset = 0;
-	for (size_t g = 0; g < grid_count.size(); ++g) {
-		if (grid_count[g] == 0) {
-			continue;
+	for (size_t key = 0; key < key_count.size(); ++key) {
+		if (key_count[key] != 0) {
+			key_to_chunk[key] = static_cast<uint32_t>(r_layout.chunks.size());
+			Chunk chunk;
+			chunk.first = offset;
+			chunk.species = static_cast<uint32_t>(key % species_count);
+			chunk.min = glm::vec2(INFINITY);
+			chunk.max = glm::vec2(-INFINITY);
+			chunk.ground_min = INFINITY;
+			chunk.ground_max = -INFINITY;
+			r_layout.chunks.push_back(chunk);
+			offset += key_count[key];
 		}
-		grid_to_chunk[g] = static_cast<uint32_t>(r_layout.chunks.size());
-		Chunk chunk;
-		chunk.first = offset;
-		chunk.min = glm::vec2(INFINITY);
-		chunk.max = glm::vec2(-INFINITY);
-		chunk.ground_min = INFINITY;
-		chunk.ground_max = -INFINITY;
-		r_layout.chunks.push_back(chunk);
-		offset += grid_count[g];
+		r_layout.grid_chunks[key / species_count + 1] = static_cast<uint32_t>(r_layout.chunks.size());
 	}
 	r_layout.chunk_plants.resize(r_layout.plants.size());
 	for (uint32_t i = 0; i < r_layout.plants.size(); ++i) {
 		Plant &plant = r_layout.plants[i];
-		plant.chunk = grid_to_chunk[plant.chunk];
+		plant.chunk = key_to_chunk[plant.chunk];
 		Chunk &chunk = r_layout.chunks[plant.chunk];
 		r_layout.chunk_plants[chunk.first + chunk.count++] = i;
 		chunk.min = glm::min(chunk.min, plant.position);

@@ -10,27 +10,37 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
 namespace sunflower {
+
+// A plant type's variety between its plants: yaw either side of facing +z (radians) and the range
+// of the size factor (1, 1: all alike).
+struct PlantVariety {
+	float yaw_range = float(param::PLANT_YAW_RANGE.default_value);
+	float scale_min = float(param::PLANT_SCALE_MIN.default_value);
+	float scale_max = float(param::PLANT_SCALE_MAX.default_value);
+
+	bool operator==(const PlantVariety &p_other) const {
+		return yaw_range == p_other.yaw_range && scale_min == p_other.scale_min && scale_max == p_other.scale_max;
+	}
+};
 
 struct LayoutParams {
 	float cell_size = float(param::CELL_SIZE.default_value); // metres per map character (thesis: 0.5 m)
 	uint64_t seed = 1;
 	bool independent_jitter = false; // false: the same α on x and z, as in the thesis
 	float jitter = 0.5f; // α ∈ [0, jitter) in cells (thesis: 0.5)
-	float yaw_jitter = 0.35f; // radians either side of facing +z, for variety between plants
-	// Each plant's size factor, uniform in [scale_min, scale_max] (1, 1: all alike).
-	float scale_min = 1.0f;
-	float scale_max = 1.0f;
+	// Each species' variety (index: species).
+	std::array<PlantVariety, FieldMap::MAX_SPECIES> varieties{};
 	// Metres; the far representations are grouped in square chunks.
 	float chunk_size = float(param::CHUNK_SIZE.default_value);
 
 	bool operator==(const LayoutParams &p_other) const {
 		return cell_size == p_other.cell_size && seed == p_other.seed && independent_jitter == p_other.independent_jitter &&
-				jitter == p_other.jitter && yaw_jitter == p_other.yaw_jitter && chunk_size == p_other.chunk_size &&
-				scale_min == p_other.scale_min && scale_max == p_other.scale_max;
+				jitter == p_other.jitter && chunk_size == p_other.chunk_size && varieties == p_other.varieties;
 	}
 };
 
@@ -54,18 +64,20 @@ struct Chunk {
 	float ground_min = 0.0f; // y bounds of its plants' roots
 	float ground_max = 0.0f;
 	float scale_max = 0.0f; // the largest size factor among its plants
+	uint32_t species = 0; // every plant of a chunk is of one species
 	uint32_t first = 0; // range in FieldLayout::chunk_plants
 	uint32_t count = 0;
 };
 
 struct FieldLayout {
 	std::vector<Plant> plants; // in map order: row by row, column by column
-	std::vector<Chunk> chunks; // only chunks that hold plants
+	// Only chunks that hold plants: one per grid cell and species present there, cell by cell.
+	std::vector<Chunk> chunks;
 	std::vector<uint32_t> chunk_plants; // plant indices grouped by chunk
 	glm::vec2 size{ 0.0f }; // columns·cell, rows·cell
-	// The square grid the chunks come from: cell (x, z) holds chunk grid_chunks[z·grid_x + x], or
-	// NO_CHUNK where no plant stands. Lets per-frame work visit only the chunks near a point.
-	static constexpr uint32_t NO_CHUNK = 0xFFFFFFFFu;
+	// The square grid the chunks come from: cell g = z·grid_x + x holds chunks [grid_chunks[g],
+	// grid_chunks[g + 1]) (none where no plant stands). Lets per-frame work visit only the chunks near
+	// a point.
 	int grid_x = 0;
 	int grid_z = 0;
 	float chunk_size = 16.0f;

@@ -181,8 +181,19 @@ std::u32string decode_utf8_text(std::string_view p_text) {
 
 bool parse_field_map(std::string_view p_text, std::u32string_view p_legend, const std::string &p_source,
 		const MapLimits &p_limits, FieldMap &r_map, MapError &r_error) {
+	return parse_field_map(p_text, p_legend, std::u32string_view(), p_source, p_limits, r_map, r_error);
+}
+
+bool parse_field_map(std::string_view p_text, std::u32string_view p_legend, std::u32string_view p_plant_symbols,
+		const std::string &p_source, const MapLimits &p_limits, FieldMap &r_map, MapError &r_error) {
 	r_error = MapError{ p_source, 0, 0, {} };
 	r_map = FieldMap{};
+	if (p_plant_symbols.size() >= size_t(FieldMap::MAX_SPECIES)) {
+		r_error.message = "the legend names " + std::to_string(p_plant_symbols.size()) + " plant types besides '*'; at most " +
+				std::to_string(FieldMap::MAX_SPECIES - 1) + " are allowed";
+		return false;
+	}
+	r_map.species_count = 1 + int(p_plant_symbols.size());
 	LineReader reader(p_text);
 	Line line;
 
@@ -266,8 +277,13 @@ bool parse_field_map(std::string_view p_text, std::u32string_view p_legend, cons
 						" columns the header declares (found " + describe_char(symbol) + ")";
 				return false;
 			}
-			if (symbol == '*') {
-				r_map.plants[static_cast<size_t>(row) * static_cast<size_t>(columns) + static_cast<size_t>(column)] = 1;
+			const size_t species = symbol == '*' ? 0
+					: symbol != 0 && symbol != 0xFFFD && p_plant_symbols.find(symbol) != std::u32string_view::npos
+					? 1 + p_plant_symbols.find(symbol)
+					: size_t(FieldMap::MAX_SPECIES);
+			if (species < size_t(FieldMap::MAX_SPECIES)) {
+				r_map.plants[static_cast<size_t>(row) * static_cast<size_t>(columns) + static_cast<size_t>(column)] =
+						static_cast<uint8_t>(1 + species);
 				if (++r_map.plant_count > p_limits.max_plants) {
 					r_error.line = line.number;
 					r_error.column = column + 1;
@@ -284,7 +300,7 @@ bool parse_field_map(std::string_view p_text, std::u32string_view p_legend, cons
 				r_error.column = column + 1;
 				r_error.message = "unexpected " + describe_char(symbol) +
 						"; expected '*' (a sunflower), ' ' or '.' (nothing)" +
-						(p_legend.empty() ? std::string() : std::string(" or a legend symbol"));
+						(p_legend.empty() && p_plant_symbols.empty() ? std::string() : std::string(" or a legend symbol"));
 				return false;
 			}
 			++column;

@@ -10,14 +10,20 @@
 namespace sunflower {
 
 FieldSimulation::FieldSimulation() {
+	_buckets.assign(BUCKET_COUNT, InstanceBuffer{});
 	_wind.configure(WindParams{});
 	_lod.configure(LodParams{});
 }
 
 bool FieldSimulation::load_map(const std::string &p_text, const std::u32string &p_legend, const std::string &p_source,
 		const MapLimits &p_limits, MapError &r_error) {
+	return load_map(p_text, p_legend, std::u32string(), p_source, p_limits, r_error);
+}
+
+bool FieldSimulation::load_map(const std::string &p_text, const std::u32string &p_legend, const std::u32string &p_plant_symbols,
+		const std::string &p_source, const MapLimits &p_limits, MapError &r_error) {
 	FieldMap parsed;
-	if (!parse_field_map(p_text, p_legend, p_source, p_limits, parsed, r_error)) {
+	if (!parse_field_map(p_text, p_legend, p_plant_symbols, p_source, p_limits, parsed, r_error)) {
 		return false;
 	}
 	_map = std::move(parsed);
@@ -34,9 +40,13 @@ bool FieldSimulation::set_layout_params(const LayoutParams &p_params) {
 	LayoutParams params = p_params;
 	params.cell_size = sanitize(param::CELL_SIZE, p_params.cell_size, _layout_params.cell_size);
 	params.chunk_size = sanitize(param::CHUNK_SIZE, p_params.chunk_size, _layout_params.chunk_size);
-	params.yaw_jitter = sanitize(param::PLANT_YAW_RANGE, p_params.yaw_jitter, _layout_params.yaw_jitter);
-	params.scale_min = sanitize(param::PLANT_SCALE_MIN, p_params.scale_min, _layout_params.scale_min);
-	params.scale_max = std::max(params.scale_min, sanitize(param::PLANT_SCALE_MAX, p_params.scale_max, _layout_params.scale_max));
+	for (size_t s = 0; s < params.varieties.size(); ++s) {
+		PlantVariety &variety = params.varieties[s];
+		const PlantVariety &current = _layout_params.varieties[s];
+		variety.yaw_range = sanitize(param::PLANT_YAW_RANGE, variety.yaw_range, current.yaw_range);
+		variety.scale_min = sanitize(param::PLANT_SCALE_MIN, variety.scale_min, current.scale_min);
+		variety.scale_max = std::max(variety.scale_min, sanitize(param::PLANT_SCALE_MAX, variety.scale_max, current.scale_max));
+	}
 	if (params == _layout_params) {
 		return false;
 	}
@@ -56,7 +66,11 @@ void FieldSimulation::set_lod(const LodParams &p_params) {
 	_lod_due = true;
 }
 
-void FieldSimulation::set_shape(const PlantShape &p_shape) {
+void FieldSimulation::set_shape(const PlantShape &p_shape, uint32_t p_species) {
+	if (p_species >= _shapes.size()) {
+		return;
+	}
+	PlantShape &current = _shapes[p_species];
 	const PlantShape defaults;
 	PlantShape shape = p_shape;
 	// A form that is not finite and positive keeps the built-in sunflower's value.
@@ -65,19 +79,22 @@ void FieldSimulation::set_shape(const PlantShape &p_shape) {
 			shape.part_lengths[i] = defaults.part_lengths[i];
 		}
 	}
-	shape.middle_variation = sanitize(param::PLANT_MIDDLE_VARIATION, shape.middle_variation, _shape.middle_variation);
+	shape.middle_variation = sanitize(param::PLANT_MIDDLE_VARIATION, shape.middle_variation, current.middle_variation);
 	shape.height = shape.height > 0.0f && std::isfinite(shape.height) ? shape.height : defaults.height;
 	shape.cull_radius = shape.cull_radius > 0.0f && std::isfinite(shape.cull_radius) ? shape.cull_radius : defaults.cull_radius;
-	shape.part_scale = shape.part_scale > 0.0f && std::isfinite(shape.part_scale) ? shape.part_scale : _shape.part_scale;
-	_shape = shape;
+	shape.part_scale = shape.part_scale > 0.0f && std::isfinite(shape.part_scale) ? shape.part_scale : current.part_scale;
+	current = shape;
 	_lod_due = true;
 }
 
-void FieldSimulation::set_plant_height(float p_metres) {
-	PlantShape shape = _shape;
-	const float parts = _shape.parts_height();
-	shape.part_scale = sanitize(param::PLANT_HEIGHT, p_metres, _shape.part_scale * parts) / parts;
-	set_shape(shape);
+void FieldSimulation::set_plant_height(float p_metres, uint32_t p_species) {
+	if (p_species >= _shapes.size()) {
+		return;
+	}
+	PlantShape shape = _shapes[p_species];
+	const float parts = shape.parts_height();
+	shape.part_scale = sanitize(param::PLANT_HEIGHT, p_metres, shape.part_scale * parts) / parts;
+	set_shape(shape, p_species);
 }
 
 void FieldSimulation::_rebuild() {
@@ -93,8 +110,9 @@ void FieldSimulation::_rebuild() {
 	_previous_active.clear();
 	_changed_chunks.clear();
 	_active_plants = 0;
-	for (InstanceBuffer &bucket : _buckets) {
-		bucket.clear();
+	_buckets.assign(size_t(std::max(_map.species_count, 1)) * BUCKET_COUNT, InstanceBuffer{});
+	for (BucketSet &set : _task_buckets) {
+		set.assign(_buckets.size(), InstanceBuffer{});
 	}
 	_lod_due = true;
 }
@@ -108,16 +126,17 @@ void FieldSimulation::set_worker_threads(uint32_t p_threads) {
 		return;
 	}
 	_pool.reset(threads > 1 ? new WorkerPool(threads) : nullptr);
-	_task_buckets.resize(threads > 1 ? threads * TASKS_PER_THREAD - 1 : 0);
+	_task_buckets.assign(threads > 1 ? threads * TASKS_PER_THREAD - 1 : 0, BucketSet(_buckets.size()));
 }
 
 ChunkBounds FieldSimulation::get_chunk_bounds(uint32_t p_chunk) const {
 	const Chunk &chunk = _layout.chunks[p_chunk];
-	const float scale = _shape.part_scale * chunk.scale_max;
-	const float reach = _shape.cull_radius * scale;
+	const PlantShape &shape = _shapes[chunk.species];
+	const float scale = shape.part_scale * chunk.scale_max;
+	const float reach = shape.cull_radius * scale;
 	ChunkBounds bounds;
 	bounds.min = glm::vec3(chunk.min.x - reach, chunk.ground_min, chunk.min.y - reach);
-	bounds.max = glm::vec3(chunk.max.x + reach, chunk.ground_max + _shape.height * scale * 1.05f, chunk.max.y + reach);
+	bounds.max = glm::vec3(chunk.max.x + reach, chunk.ground_max + shape.height * scale * 1.05f, chunk.max.y + reach);
 	return bounds;
 }
 
@@ -130,7 +149,8 @@ float FieldSimulation::_chunk_distance_sq(uint32_t p_chunk) const {
 
 float FieldSimulation::_plant_distance_sq(const Plant &p_plant) const {
 	// From the observer's eye to the plant's middle: on the ground this is the thesis' distance.
-	const glm::vec3 d = _observer - (p_plant.root() + glm::vec3(0.0f, 0.5f * _shape.height * _shape.part_scale * p_plant.scale, 0.0f));
+	const PlantShape &shape = _shapes[_layout.chunks[p_plant.chunk].species];
+	const glm::vec3 d = _observer - (p_plant.root() + glm::vec3(0.0f, 0.5f * shape.height * shape.part_scale * p_plant.scale, 0.0f));
 	return glm::dot(d, d);
 }
 
@@ -174,7 +194,12 @@ void FieldSimulation::_select_lods() {
 	for (uint32_t c : _previous_active) {
 		_select_chunk_lods(c, false, enter, leave);
 	}
-	const float reach = leave + _shape.cull_radius * _shape.part_scale * _layout_params.scale_max;
+	float plant_reach = 0.0f; // the farthest a plant of any species reaches from its root
+	for (uint32_t species = 0; species < get_species_count(); ++species) {
+		const PlantShape &shape = _shapes[species];
+		plant_reach = std::max(plant_reach, shape.cull_radius * shape.part_scale * _layout_params.varieties[species].scale_max);
+	}
+	const float reach = leave + plant_reach;
 	const GridRange cells = _grid_range(glm::vec2(_observer.x, _observer.z), reach);
 	// Chunks turning active are taken nearest first, at most ACTIVATION_BUDGET plants per update: after
 	// a jump of the observer the plants next to it are meshes at once, and the rest of the
@@ -183,15 +208,17 @@ void FieldSimulation::_select_lods() {
 	_activation.clear();
 	for (int z = cells.z0; z <= cells.z1; ++z) {
 		for (int x = cells.x0; x <= cells.x1; ++x) {
-			const uint32_t c = _layout.grid_chunks[static_cast<size_t>(z) * size_t(_layout.grid_x) + size_t(x)];
-			if (c == FieldLayout::NO_CHUNK || _visit_mark[c] == _lod_pass) {
-				continue;
+			const size_t cell = static_cast<size_t>(z) * size_t(_layout.grid_x) + size_t(x);
+			for (uint32_t c = _layout.grid_chunks[cell]; c < _layout.grid_chunks[cell + 1]; ++c) {
+				if (_visit_mark[c] == _lod_pass) {
+					continue;
+				}
+				const float distance_sq = _chunk_distance_sq(c);
+				if (distance_sq < enter * enter) {
+					_activation.push_back({ distance_sq, c });
+				}
+				_visit_mark[c] = _lod_pass;
 			}
-			const float distance_sq = _chunk_distance_sq(c);
-			if (distance_sq < enter * enter) {
-				_activation.push_back({ distance_sq, c });
-			}
-			_visit_mark[c] = _lod_pass;
 		}
 	}
 	std::sort(_activation.begin(), _activation.end());
@@ -277,7 +304,7 @@ void FieldSimulation::update(float p_delta) {
 	};
 	_pool->run(tasks, move);
 	for (uint32_t task = 1; task < tasks; ++task) {
-		for (uint32_t b = 0; b < BUCKET_COUNT; ++b) {
+		for (size_t b = 0; b < _buckets.size(); ++b) {
 			_buckets[b].append(_task_buckets[task - 1][b]);
 		}
 	}
@@ -287,12 +314,14 @@ void FieldSimulation::_move_chunks(size_t p_first, size_t p_last, float p_delta,
 	for (InstanceBuffer &bucket : r_buckets) {
 		bucket.clear();
 	}
-	const float radius = _shape.cull_radius * _shape.part_scale;
-	const float mid_height = 0.5f * _shape.height * _shape.part_scale;
 	const bool moving = _wind.get_effective_power() > 0.0f;
 	PartTransforms parts;
 	for (size_t a = p_first; a < p_last; ++a) {
 		const Chunk &chunk = _layout.chunks[_active_chunks[a]];
+		const PlantShape &shape = _shapes[chunk.species];
+		InstanceBuffer *buckets = r_buckets.data() + size_t(chunk.species) * BUCKET_COUNT;
+		const float radius = shape.cull_radius * shape.part_scale;
+		const float mid_height = 0.5f * shape.height * shape.part_scale;
 		for (uint32_t k = 0; k < chunk.count; ++k) {
 			const uint32_t index = _layout.chunk_plants[chunk.first + k];
 			const Plant &plant = _layout.plants[index];
@@ -300,7 +329,7 @@ void FieldSimulation::_move_chunks(size_t p_first, size_t p_last, float p_delta,
 			const bool visible = _frustum.intersects_sphere(plant.root() + glm::vec3(0.0f, mid_height * plant.scale, 0.0f), radius * plant.scale);
 			if (lod >= LOD_SPRITE) {
 				if (visible) {
-					_write_impostor(r_buckets[lod == LOD_SPRITE ? BUCKET_SPRITE : BUCKET_BILLBOARD].push(), plant);
+					_write_impostor(buckets[lod == LOD_SPRITE ? BUCKET_SPRITE : BUCKET_BILLBOARD].push(), plant);
 				}
 				continue;
 			}
@@ -311,9 +340,9 @@ void FieldSimulation::_move_chunks(size_t p_first, size_t p_last, float p_delta,
 			if (!visible) {
 				continue;
 			}
-			_wind.part_transforms(plant, _plant_bend(index, plant, moving), _shape, parts);
+			_wind.part_transforms(plant, _plant_bend(index, plant, moving), shape, parts);
 			for (uint32_t part = 0; part < PART_COUNT; ++part) {
-				write_instance(r_buckets[mesh_bucket(lod, part)].push(), parts.basis[part], parts.origin[part]);
+				write_instance(buckets[mesh_bucket(lod, part)].push(), parts.basis[part], parts.origin[part]);
 			}
 		}
 	}
@@ -349,16 +378,15 @@ void FieldSimulation::find_plants_near(const glm::vec2 &p_center, float p_radius
 	const float radius_sq = p_radius * p_radius;
 	for (int z = cells.z0; z <= cells.z1; ++z) {
 		for (int x = cells.x0; x <= cells.x1; ++x) {
-			const uint32_t c = _layout.grid_chunks[static_cast<size_t>(z) * size_t(_layout.grid_x) + size_t(x)];
-			if (c == FieldLayout::NO_CHUNK) {
-				continue;
-			}
-			const Chunk &chunk = _layout.chunks[c];
-			for (uint32_t k = 0; k < chunk.count; ++k) {
-				const uint32_t index = _layout.chunk_plants[chunk.first + k];
-				const glm::vec2 d = _layout.plants[index].position - p_center;
-				if (glm::dot(d, d) < radius_sq) {
-					r_plants.push_back(index);
+			const size_t cell = static_cast<size_t>(z) * size_t(_layout.grid_x) + size_t(x);
+			for (uint32_t c = _layout.grid_chunks[cell]; c < _layout.grid_chunks[cell + 1]; ++c) {
+				const Chunk &chunk = _layout.chunks[c];
+				for (uint32_t k = 0; k < chunk.count; ++k) {
+					const uint32_t index = _layout.chunk_plants[chunk.first + k];
+					const glm::vec2 d = _layout.plants[index].position - p_center;
+					if (glm::dot(d, d) < radius_sq) {
+						r_plants.push_back(index);
+					}
 				}
 			}
 		}
@@ -382,7 +410,8 @@ void FieldSimulation::_update_pushes(float p_delta) {
 		for (uint32_t index : _near) {
 			const Plant &plant = _layout.plants[index];
 			const float above_root = pusher.position.y - plant.ground;
-			if (above_root - pusher.radius > _shape.height * _shape.part_scale * plant.scale || above_root + pusher.radius < 0.0f) {
+			const PlantShape &shape = _shapes[_layout.chunks[plant.chunk].species];
+			if (above_root - pusher.radius > shape.height * shape.part_scale * plant.scale || above_root + pusher.radius < 0.0f) {
 				continue; // flying over the plant, or under its ground
 			}
 			PlantWind &wind = _plant_wind[index];
@@ -427,7 +456,7 @@ void FieldSimulation::_update_pushes(float p_delta) {
 }
 
 void FieldSimulation::_write_impostor(float *r_out, const Plant &p_plant) const {
-	const float scale = _shape.part_scale * p_plant.scale;
+	const float scale = _shapes[_layout.chunks[p_plant.chunk].species].part_scale * p_plant.scale;
 	const float c = std::cos(p_plant.yaw) * scale;
 	const float s = std::sin(p_plant.yaw) * scale;
 	const glm::mat3 basis(glm::vec3(c, 0.0f, -s), glm::vec3(0.0f, scale, 0.0f), glm::vec3(s, 0.0f, c));
@@ -448,8 +477,22 @@ uint8_t FieldSimulation::get_plant_lod(uint32_t p_plant) const {
 
 std::array<int64_t, LOD_COUNT> FieldSimulation::get_lod_counts() const {
 	std::array<int64_t, LOD_COUNT> counts{};
+	for (uint32_t species = 0; species < get_species_count(); ++species) {
+		const std::array<int64_t, LOD_COUNT> own = get_lod_counts(species);
+		for (uint32_t lod = 0; lod < LOD_COUNT; ++lod) {
+			counts[lod] += own[lod];
+		}
+	}
+	return counts;
+}
+
+std::array<int64_t, LOD_COUNT> FieldSimulation::get_lod_counts(uint32_t p_species) const {
+	std::array<int64_t, LOD_COUNT> counts{};
 	for (uint32_t c = 0; c < _layout.chunks.size(); ++c) {
 		const Chunk &chunk = _layout.chunks[c];
+		if (chunk.species != p_species) {
+			continue;
+		}
 		if (!_chunk_active[c]) {
 			counts[_static_chunk_lod(c)] += chunk.count;
 			continue;
@@ -489,7 +532,7 @@ void FieldSimulation::get_plant_parts(uint32_t p_plant, PartTransforms &r_parts)
 	if (_chunk_active[plant.chunk] && _plant_lod[p_plant] < LOD_SPRITE) {
 		bend = _plant_bend(p_plant, plant, _wind.get_effective_power() > 0.0f);
 	}
-	_wind.part_transforms(plant, bend, _shape, r_parts);
+	_wind.part_transforms(plant, bend, _shapes[_layout.chunks[plant.chunk].species], r_parts);
 }
 
 } // namespace sunflower

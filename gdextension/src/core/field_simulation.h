@@ -29,7 +29,8 @@
 
 namespace sunflower {
 
-// The dynamic buckets: mesh levels 1–3 × parts (bottom, middle, head), then sprite and billboard.
+// The dynamic buckets of one species: mesh levels 1–3 × parts (bottom, middle, head), then sprite
+// and billboard. Species s has buckets [s × BUCKET_COUNT, (s + 1) × BUCKET_COUNT).
 constexpr uint32_t PART_COUNT = 3;
 constexpr uint32_t BUCKET_SPRITE = LOD_MESH_COUNT * PART_COUNT;
 constexpr uint32_t BUCKET_BILLBOARD = BUCKET_SPRITE + 1;
@@ -39,7 +40,8 @@ constexpr uint32_t mesh_bucket(uint32_t p_level, uint32_t p_part) {
 	return p_level * PART_COUNT + p_part;
 }
 
-using BucketSet = std::array<InstanceBuffer, BUCKET_COUNT>;
+// Every species' buckets, species by species.
+using BucketSet = std::vector<InstanceBuffer>;
 
 // A body that plants part around: a point in the field's space and the radius it reaches.
 struct Pusher {
@@ -61,6 +63,9 @@ public:
 	// field and fills r_error.
 	bool load_map(const std::string &p_text, const std::u32string &p_legend, const std::string &p_source,
 			const MapLimits &p_limits, MapError &r_error);
+	// The same with p_plant_symbols: the legend's plant types, species 1, 2, … ('*' is species 0).
+	bool load_map(const std::string &p_text, const std::u32string &p_legend, const std::u32string &p_plant_symbols,
+			const std::string &p_source, const MapLimits &p_limits, MapError &r_error);
 	void clear();
 	const FieldMap &get_map() const { return _map; }
 
@@ -75,11 +80,15 @@ public:
 	const WindModel &get_wind() const { return _wind; }
 	void set_lod(const LodParams &p_params);
 	const LodSelector &get_lod() const { return _lod; }
-	void set_shape(const PlantShape &p_shape);
+	// A species' form (species 0: '*').
+	void set_shape(const PlantShape &p_shape, uint32_t p_species = 0);
 	// Sets the part scale for a plant p_metres tall from its root to the top of its parts
 	// (param::PLANT_HEIGHT rules).
-	void set_plant_height(float p_metres);
-	const PlantShape &get_shape() const { return _shape; }
+	void set_plant_height(float p_metres, uint32_t p_species = 0);
+	const PlantShape &get_shape(uint32_t p_species = 0) const { return _shapes[p_species % _shapes.size()]; }
+	uint32_t get_species_count() const { return uint32_t(_map.species_count); }
+	// Buckets in all: BUCKET_COUNT per species of the map.
+	uint32_t get_bucket_count() const { return uint32_t(_buckets.size()); }
 
 	void set_observer(const glm::vec3 &p_position) { _observer = p_position; }
 	const glm::vec3 &get_observer() const { return _observer; }
@@ -144,6 +153,8 @@ public:
 	// The representation a plant is drawn in now: its own LOD in an active chunk, else the chunk's.
 	uint8_t get_plant_lod(uint32_t p_plant) const;
 	std::array<int64_t, LOD_COUNT> get_lod_counts() const;
+	// Plants per representation of one species.
+	std::array<int64_t, LOD_COUNT> get_lod_counts(uint32_t p_species) const;
 	// CPU memory held for the field, in bytes (map cells, layout, per-plant state, dynamic buffers).
 	size_t get_memory_bytes() const;
 	// The three part transforms of a plant as they are drawn now (upright for impostors).
@@ -179,7 +190,7 @@ private:
 	FieldLayout _layout;
 	WindModel _wind;
 	LodSelector _lod;
-	PlantShape _shape;
+	std::array<PlantShape, FieldMap::MAX_SPECIES> _shapes{};
 	Frustum _frustum;
 	glm::vec3 _observer{ 0.0f };
 
