@@ -29,14 +29,15 @@ class Job:
 	var seed: int
 	var independent_jitter: bool
 	var chunk_size: float
-	var plant: Resource
+	var plant_symbols: String
+	var plants: Array = []
 	var ground: FieldGround
 	var error: String = ""
 	var usec: int = 0
 
-	## A job for [param field]'s map and layout properties and [param field_plant] (a FieldPlant),
-	## filling [param native_simulation].
-	static func for_field(field: Node3D, field_plant: Resource, native_simulation: RefCounted) -> Job:
+	## A job for [param field]'s map and layout properties and [param species_plants] (a FieldPlant
+	## per species), filling [param native_simulation].
+	static func for_field(field: Node3D, species_plants: Array, native_simulation: RefCounted) -> Job:
 		var job: Job = Job.new()
 		job.simulation = native_simulation
 		job.text = field.map.text
@@ -47,7 +48,9 @@ class Job:
 		job.seed = field.seed
 		job.independent_jitter = field.independent_jitter
 		job.chunk_size = field.chunk_size
-		job.plant = field_plant.duplicate()
+		job.plant_symbols = FieldNodes.plant_symbols(field.legend)
+		for species_plant: Resource in species_plants:
+			job.plants.append(species_plant.duplicate())
 		job.ground = FieldGround.for_field(field)
 		return job
 
@@ -56,9 +59,10 @@ class Job:
 	func run() -> void:
 		var start: int = Time.get_ticks_usec()
 		simulation.set_layout(cell_size, seed, independent_jitter, chunk_size)
-		plant.apply_to(simulation)
+		for species: int in plants.size():
+			plants[species].apply_to(simulation, species)
 		ground.prepare(simulation)
-		error = simulation.load_map(text, source, legend, max_plants)
+		error = simulation.load_map(text, source, legend, plant_symbols, max_plants)
 		if error.is_empty():
 			error = ground.apply_height_map(simulation, cell_size)
 		if error.is_empty():
@@ -86,7 +90,7 @@ var _longest_step_ms: float = 0.0
 
 
 ## Starts reading [param build_job] on a worker thread when [param in_background], else at once.
-func _init(field: Node3D, impostors: ImpostorSet, build_job: Job, in_background: bool) -> void:
+func _init(field: Node3D, impostors: Array[ImpostorSet], build_job: Job, in_background: bool) -> void:
 	job = build_job
 	background = in_background
 	_field = field

@@ -26,11 +26,12 @@ var stats: Dictionary = {}
 var last_error: String = ""
 var rebuild_queued: bool = false
 var interaction: FieldInteraction
-## The far levels' look, shared by the field drawn and one being built.
-var impostors: ImpostorSet = ImpostorSet.new()
-## The plant drawn (a FieldPlant: the node's, or the built-in sunflower).
-var plant: Resource
+## The far levels' look per species, shared by the field drawn and one being built.
+var impostor_sets: Array[ImpostorSet] = []
+## The plant types drawn (FieldPlant): species 0 the node's plant ('*'), then the legend's.
+var plants: Array = []
 var _layout_key: Array = []
+var _shared: Dictionary = {}  # shader parameters every impostor set gets
 var _field: Node3D
 
 
@@ -76,9 +77,9 @@ func rebuild(background: bool = false) -> void:
 	if native_simulation == null:
 		show(null)
 		return
-	var job: FieldBuild.Job = FieldBuild.Job.for_field(_field, plant, native_simulation)
+	var job: FieldBuild.Job = FieldBuild.Job.for_field(_field, plants, native_simulation)
 	background = background and _field.background_build and field_map.text.size() >= BACKGROUND_BUILD_MIN_BYTES
-	build = FieldBuild.new(_field, impostors, job, background)
+	build = FieldBuild.new(_field, impostor_sets, job, background)
 	if background or build.needs_frames():
 		building.append(_field)
 		_field.emit_signal(&"build_progress", 0.0)
@@ -129,7 +130,12 @@ func show(nodes: FieldNodes) -> void:
 	_free_foreign_children()
 	if drawn == null:
 		return
-	drawn.finish(plant.meshes_drawn(), _field.legend, _field.cell_size, plant.height * 0.5)
+	var meshes: Array = []
+	var tallest: float = 0.0
+	for species_plant: Resource in plants:
+		meshes.append(species_plant.meshes_drawn())
+		tallest = maxf(tallest, species_plant.height * species_plant.scale_max)
+	drawn.finish(meshes, _field.legend, _field.cell_size, tallest * 0.5)
 	configure_wind()
 	configure_lod()
 	configure_push()
@@ -158,7 +164,7 @@ func update_field(delta: float) -> void:
 	drawn.show_filled_buckets()
 	if not Engine.is_editor_hint():
 		# A stalk: the bottom and middle parts, two of the plant's three part heights.
-		var height: float = plant.height
+		var height: float = plants[0].height
 		var stalk: Vector2 = Vector2(0.025 * height, height * 2.0 / 3.0)
 		var reach: float = _field.collision_reach
 		interaction.update_colliders(
@@ -166,19 +172,35 @@ func update_field(delta: float) -> void:
 		)
 
 
-## Draws [param field_plant] (a FieldPlant): its impostor textures and frame, and its meshes on the
-## field drawn. True when its layout values changed, so the field must be rebuilt.
-func configure_plant(field_plant: Resource) -> bool:
-	plant = field_plant
-	impostors.configure(plant)
-	if drawn:
-		for level: int in 3:
-			for part: int in 3:
-				drawn.set_part_mesh(level, part, plant.mesh_drawn(level, part))
-	var key: Array = plant.layout_key()
+## Draws [param species_plants] (FieldPlant per species): their impostor textures and frames, and
+## their meshes on the field drawn. True when a layout value or the plant types changed, so the
+## field must be rebuilt.
+func configure_plants(species_plants: Array) -> bool:
+	plants = species_plants
+	while impostor_sets.size() < plants.size():
+		var impostors: ImpostorSet = ImpostorSet.new()
+		for parameter: StringName in _shared:
+			impostors.set_shared(parameter, _shared[parameter])
+		impostor_sets.append(impostors)
+	var key: Array = []
+	for species: int in plants.size():
+		impostor_sets[species].configure(plants[species])
+		key.append(plants[species].layout_key())
+		if drawn:
+			for level: int in 3:
+				for part: int in 3:
+					drawn.set_part_mesh(species, level, part, plants[species].mesh_drawn(level, part))
 	var changed: bool = key != _layout_key and not _layout_key.is_empty()
 	_layout_key = key
 	return changed
+
+
+## Sets a shader parameter of every impostor material ([code]alpha_scissor[/code],
+## [code]thinning_start[/code], [code]thinning_min_density[/code]).
+func set_impostor_shared(parameter: StringName, value: Variant) -> void:
+	_shared[parameter] = value
+	for impostors: ImpostorSet in impostor_sets:
+		impostors.set_shared(parameter, value)
 
 
 ## Hands the field's wind to the simulation drawn.

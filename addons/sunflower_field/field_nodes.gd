@@ -13,15 +13,17 @@ const PART_NAMES: PackedStringArray = PartMeshes.PART_NAMES
 
 var simulation: RefCounted
 var _owner: Node3D
-var _impostors: ImpostorSet
+var _impostors: Array[ImpostorSet]  # per species
 var _chunk_nodes: Array[MultiMeshInstance3D] = []
 var _dynamic_nodes: Array[MultiMeshInstance3D] = []
 var _dynamic_buckets: PackedInt32Array = []  # the native bucket each dynamic node draws
-var _shown_buckets: int = -1  # the filled-bucket mask the nodes' visibility follows
+var _shown_buckets: PackedByteArray = []  # the filled buckets the nodes' visibility follows
 var _object_nodes: Array[Node] = []
 
 
-func _init(owner: Node3D, field_simulation: RefCounted, impostors: ImpostorSet) -> void:
+## Nodes of [param owner] for [param field_simulation], its far levels drawn with [param impostors]
+## (an ImpostorSet per species).
+func _init(owner: Node3D, field_simulation: RefCounted, impostors: Array[ImpostorSet]) -> void:
 	_owner = owner
 	simulation = field_simulation
 	_impostors = impostors
@@ -35,8 +37,9 @@ func make_chunks(budget_usec: int, switch_distance: float, max_draw_distance: fl
 	while _chunk_nodes.size() < 2 * chunk_count:
 		var chunk: int = _chunk_nodes.size() / 2
 		var aabb: AABB = simulation.get_chunk_aabb(chunk)
-		var sprite: MultiMeshInstance3D = _make_node("ChunkSprites%d" % chunk, _impostors.sprite_mesh(), aabb)
-		var billboard: MultiMeshInstance3D = _make_node("ChunkBillboards%d" % chunk, _impostors.billboard_mesh(), aabb)
+		var impostors: ImpostorSet = _impostors[simulation.get_chunk_species(chunk)]
+		var sprite: MultiMeshInstance3D = _make_node("ChunkSprites%d" % chunk, impostors.sprite_mesh(), aabb)
+		var billboard: MultiMeshInstance3D = _make_node("ChunkBillboards%d" % chunk, impostors.billboard_mesh(), aabb)
 		billboard.cast_shadow = GeometryInstance3D.SHADOW_CASTING_SETTING_OFF
 		sprite.visible = false  # shown when the whole field is ready
 		billboard.visible = false
@@ -54,24 +57,27 @@ func get_chunk_progress() -> float:
 
 
 ## Completes the field: the near plants' bucket nodes and the legend's scenes, then shows it all.
-## [param part_meshes] holds each mesh level's parts ([code]level × 3 + part[/code]); the near
+## [param species_meshes] holds each species' part meshes ([code]level × 3 + part[/code]); the near
 ## plants' bounds reach [param sway_margin] metres past the chunks' (a swaying plant's lean).
-func finish(part_meshes: Array[Mesh], legend: Dictionary, cell_size: float, sway_margin: float) -> void:
+func finish(species_meshes: Array, legend: Dictionary, cell_size: float, sway_margin: float) -> void:
 	var aabb: AABB = _field_aabb().grow(sway_margin)
-	for level: int in Native.constant(&"MESH_LEVEL_COUNT"):
-		for part: int in PART_NAMES.size():
-			var node_name: String = "Mesh%d%s" % [level + 1, PART_NAMES[part].capitalize()]
-			var node: MultiMeshInstance3D = _make_node(node_name, part_meshes[level * PART_NAMES.size() + part], aabb)
-			simulation.set_bucket_multimesh(Native.mesh_bucket(level, part), node.multimesh.get_rid())
-			_dynamic_nodes.append(node)
-			_dynamic_buckets.append(Native.mesh_bucket(level, part))
-	var sprite: MultiMeshInstance3D = _make_node("Sprites", _impostors.sprite_mesh(), aabb)
-	var billboard: MultiMeshInstance3D = _make_node("Billboards", _impostors.billboard_mesh(), aabb)
-	billboard.cast_shadow = GeometryInstance3D.SHADOW_CASTING_SETTING_OFF
-	simulation.set_bucket_multimesh(Native.constant(&"BUCKET_SPRITE"), sprite.multimesh.get_rid())
-	simulation.set_bucket_multimesh(Native.constant(&"BUCKET_BILLBOARD"), billboard.multimesh.get_rid())
-	_dynamic_nodes.append_array([sprite, billboard])
-	_dynamic_buckets.append_array([Native.constant(&"BUCKET_SPRITE"), Native.constant(&"BUCKET_BILLBOARD")])
+	var per_species: int = Native.constant(&"BUCKET_COUNT")
+	for species: int in simulation.get_species_count():
+		var prefix: String = "" if species == 0 else "Plant%d" % species
+		var meshes: Array = species_meshes[species]
+		var first: int = species * per_species
+		for level: int in Native.constant(&"MESH_LEVEL_COUNT"):
+			for part: int in PART_NAMES.size():
+				var node_name: String = "%sMesh%d%s" % [prefix, level + 1, PART_NAMES[part].capitalize()]
+				var node: MultiMeshInstance3D = _make_node(node_name, meshes[level * PART_NAMES.size() + part], aabb)
+				_add_dynamic(node, first + Native.mesh_bucket(level, part))
+		var sprite: MultiMeshInstance3D = _make_node(prefix + "Sprites", _impostors[species].sprite_mesh(), aabb)
+		var billboard: MultiMeshInstance3D = _make_node(
+			prefix + "Billboards", _impostors[species].billboard_mesh(), aabb
+		)
+		billboard.cast_shadow = GeometryInstance3D.SHADOW_CASTING_SETTING_OFF
+		_add_dynamic(sprite, first + Native.constant(&"BUCKET_SPRITE"))
+		_add_dynamic(billboard, first + Native.constant(&"BUCKET_BILLBOARD"))
 	_place_objects(legend, cell_size)
 	for node: MultiMeshInstance3D in _chunk_nodes:
 		node.visible = true
@@ -80,12 +86,13 @@ func finish(part_meshes: Array[Mesh], legend: Dictionary, cell_size: float, sway
 ## Shows only the near buckets that hold plants after the simulation's last update: an empty
 ## MultiMesh would still cost a draw call (and its shadow pass another).
 func show_filled_buckets() -> void:
-	var filled: int = simulation.get_filled_buckets()
+	var filled: PackedByteArray = simulation.get_filled_buckets()
 	if filled == _shown_buckets:
 		return
 	_shown_buckets = filled
 	for i: int in _dynamic_nodes.size():
-		_dynamic_nodes[i].visible = (filled & (1 << _dynamic_buckets[i])) != 0
+		var bucket: int = _dynamic_buckets[i]
+		_dynamic_nodes[i].visible = bucket < filled.size() and filled[bucket] != 0
 
 
 ## Sets the switch distance between each chunk's sprite and billboard, and where billboards end
@@ -95,10 +102,12 @@ func apply_ranges(switch_distance: float, max_draw_distance: float) -> void:
 		_set_chunk_ranges(_chunk_nodes[i], _chunk_nodes[i + 1], switch_distance, max_draw_distance)
 
 
-## Draws [param mesh] for the near plants' [param level] / [param part] (once the field is complete).
-func set_part_mesh(level: int, part: int, mesh: Mesh) -> void:
-	var slot: int = level * PART_NAMES.size() + part
-	if slot < _dynamic_nodes.size() and _dynamic_nodes[slot].multimesh.mesh != mesh:
+## Draws [param mesh] for [param species]' near plants' [param level] / [param part] (once the
+## field is complete).
+func set_part_mesh(species: int, level: int, part: int, mesh: Mesh) -> void:
+	var bucket: int = species * Native.constant(&"BUCKET_COUNT") + Native.mesh_bucket(level, part)
+	var slot: int = _dynamic_buckets.find(bucket)
+	if slot >= 0 and _dynamic_nodes[slot].multimesh.mesh != mesh:
 		_dynamic_nodes[slot].multimesh.mesh = mesh
 
 
@@ -123,13 +132,49 @@ func free_nodes() -> void:
 ## warning about any other key.
 static func legend_symbols(legend: Dictionary) -> String:
 	var symbols: String = ""
+	for key: Variant in _usable_keys(legend, true):
+		if not (legend[key] is FieldPlant):
+			symbols += str(key)
+	return symbols
+
+
+## The legend's symbols that are plant types (species 1, 2, … in this order).
+static func plant_symbols(legend: Dictionary) -> String:
+	var symbols: String = ""
+	for key: Variant in _usable_keys(legend, false):
+		if legend[key] is FieldPlant:
+			symbols += str(key)
+	return symbols
+
+
+## The legend's plant types, in the order of [method plant_symbols].
+static func legend_plants(legend: Dictionary) -> Array[FieldPlant]:
+	var plants: Array[FieldPlant] = []
+	for key: Variant in _usable_keys(legend, false):
+		if legend[key] is FieldPlant:
+			plants.append(legend[key] as FieldPlant)
+	return plants
+
+
+## The keys that are one character other than '*', ' ' and '.' (warning about the others).
+static func _usable_keys(legend: Dictionary, warn: bool) -> Array:
+	var keys: Array = []
 	for key: Variant in legend:
 		var symbol: String = str(key)
 		if symbol.length() != 1 or symbol in ["*", " ", "."]:
-			push_warning("SunflowerField.legend: key '%s' must be one character other than '*', ' ' and '.'" % symbol)
+			if warn:
+				push_warning(
+					"SunflowerField.legend: key '%s' must be one character other than '*', ' ' and '.'" % symbol
+				)
 			continue
-		symbols += symbol
-	return symbols
+		keys.append(key)
+	return keys
+
+
+func _add_dynamic(node: MultiMeshInstance3D, bucket: int) -> void:
+	simulation.set_bucket_multimesh(bucket, node.multimesh.get_rid())
+	_dynamic_nodes.append(node)
+	_dynamic_buckets.append(bucket)
 
 
 func _make_node(node_name: String, mesh: Mesh, aabb: AABB) -> MultiMeshInstance3D:

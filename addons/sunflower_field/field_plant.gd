@@ -190,11 +190,11 @@ func bake_impostors(host: Node, folder: String = "", base_name: String = "") -> 
 	return await ImpostorBaker.bake(self, host, folder, base_name)
 
 
-## Hands the plant's form, height and variety to a native simulation.
-func apply_to(simulation: RefCounted) -> void:
-	simulation.set_plant_form(part_lengths, middle_variation, height_units, cull_radius_units)
-	simulation.set_plant_height(height)
-	simulation.set_plant_variation(yaw_range, scale_min, scale_max)
+## Hands the plant's form, height and variety to a native simulation, as [param species].
+func apply_to(simulation: RefCounted, species: int = 0) -> void:
+	simulation.set_plant_form(species, part_lengths, middle_variation, height_units, cull_radius_units)
+	simulation.set_plant_height(species, height)
+	simulation.set_plant_variation(species, yaw_range, scale_min, scale_max)
 
 
 func _level(level: int) -> Array[Mesh]:

@@ -68,13 +68,23 @@ const PartMeshes: GDScript = preload("part_meshes.gd")
 		if value != independent_jitter:
 			independent_jitter = value
 			_queue_rebuild()
-## Scenes placed at map cells holding other symbols, e.g. [code]{"S": preload("stone.tscn")}[/code]
-## for the thesis' "big stone". Keys are single characters.
+## What other map symbols stand for; keys are single characters. A [PackedScene] is placed at the
+## cell's centre (e.g. [code]{"S": preload("stone.tscn")}[/code], the thesis' "big stone"); a
+## [FieldPlant] makes the cell a plant of that type (e.g. [code]{"m": preload("maize.tres")}[/code]),
+## with its own levels of detail and impostors, sharing the field's LOD selection, wind and culling.
 @export var legend: Dictionary = {}:
 	set(value):
-		if value != legend:
-			legend = value
-			_queue_rebuild()
+		if value == legend:
+			return
+		for old: FieldPlant in FieldNodes.legend_plants(legend):
+			if old.changed.is_connected(_on_plant_changed):
+				old.changed.disconnect(_on_plant_changed)
+		legend = value
+		for grown: FieldPlant in FieldNodes.legend_plants(legend):
+			if not grown.changed.is_connected(_on_plant_changed):
+				grown.changed.connect(_on_plant_changed)
+		_driver.configure_plants(_species_plants())
+		_queue_rebuild()
 ## Refuse maps with more sunflowers than this (0: the core's limit of 16 million).
 @export_range(0, 100000000, 1) var max_plants: int = 4000000:
 	set(value):
@@ -206,7 +216,7 @@ const PartMeshes: GDScript = preload("part_meshes.gd")
 @export_range(0.0, 1.0, 0.001) var alpha_scissor: float = 190.0 / 255.0:
 	set(value):
 		alpha_scissor = Native.accept("SunflowerField.alpha_scissor", value, alpha_scissor)
-		_driver.impostors.set_shared(&"alpha_scissor", alpha_scissor)
+		_driver.set_impostor_shared(&"alpha_scissor", alpha_scissor)
 
 @export_group("Level of detail")
 ## Switch distances: mesh 1 → 2, mesh 2 → 3, mesh 3 → sprite, sprite → billboard (thesis:
@@ -250,12 +260,12 @@ const PartMeshes: GDScript = preload("part_meshes.gd")
 @export_range(0.0, 1000.0, 1.0, "or_greater", "suffix:m") var thinning_distance: float = 0.0:
 	set(value):
 		thinning_distance = Native.accept("SunflowerField.thinning_distance", value, thinning_distance)
-		_driver.impostors.set_shared(&"thinning_start", thinning_distance)
+		_driver.set_impostor_shared(&"thinning_start", thinning_distance)
 ## The least share of impostors drawn far away, with thinning on.
 @export_range(0.01, 1.0, 0.01) var thinning_min_density: float = 0.25:
 	set(value):
 		thinning_min_density = Native.accept("SunflowerField.thinning_min_density", value, thinning_min_density)
-		_driver.impostors.set_shared(&"thinning_min_density", thinning_min_density)
+		_driver.set_impostor_shared(&"thinning_min_density", thinning_min_density)
 ## Billboards beyond this distance are not drawn (0: no limit).
 @export_range(0.0, 10000.0, 1.0, "or_greater", "suffix:m") var max_draw_distance: float = 0.0:
 	set(value):
@@ -361,10 +371,10 @@ var _empty_simulation: RefCounted
 
 func _init() -> void:
 	wind.changed.connect(_driver.configure_wind)
-	_driver.configure_plant(_plant())
-	_driver.impostors.set_shared(&"alpha_scissor", alpha_scissor)
-	_driver.impostors.set_shared(&"thinning_start", thinning_distance)
-	_driver.impostors.set_shared(&"thinning_min_density", thinning_min_density)
+	_driver.configure_plants(_species_plants())
+	_driver.set_impostor_shared(&"alpha_scissor", alpha_scissor)
+	_driver.set_impostor_shared(&"thinning_start", thinning_distance)
+	_driver.set_impostor_shared(&"thinning_min_density", thinning_min_density)
 
 
 func _ready() -> void:
@@ -458,6 +468,26 @@ func get_lod_counts() -> PackedInt32Array:
 		zeros.resize(Lod.size())
 		return zeros
 	return _driver.simulation().get_lod_counts()
+
+
+## The plant types grown, species by species: [member plant] (the map's '*'), then the legend's
+## plants in its order. [method get_lod_counts_by_species] follows this order.
+func get_plant_types() -> Array[FieldPlant]:
+	var types: Array[FieldPlant] = []
+	types.assign(_species_plants())
+	return types
+
+
+## Plants per representation for each plant type of [method get_plant_types] (five counts each, as
+## [method get_lod_counts]).
+func get_lod_counts_by_species() -> Array[PackedInt32Array]:
+	var counts: Array[PackedInt32Array] = []
+	var flat: PackedInt32Array = _driver.simulation().get_lod_counts_by_species() if get_plant_count() > 0 else []
+	for species: int in _species_plants().size():
+		var own: PackedInt32Array = flat.slice(species * Lod.size(), (species + 1) * Lod.size())
+		own.resize(Lod.size())
+		counts.append(own)
+	return counts
 
 
 ## A plant's state in the field's space: [code]position[/code] (Vector3, its root),
@@ -585,8 +615,15 @@ func _own_plant() -> FieldPlant:
 	return plant
 
 
+## The plant types grown, species by species: the [member plant] ('*'), then the legend's.
+func _species_plants() -> Array:
+	var plants: Array = [_plant()]
+	plants.append_array(FieldNodes.legend_plants(legend))
+	return plants
+
+
 func _on_plant_changed() -> void:
-	if _driver.configure_plant(_plant()):
+	if _driver.configure_plants(_species_plants()):
 		_queue_rebuild()
 
 

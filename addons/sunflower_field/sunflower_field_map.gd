@@ -52,7 +52,7 @@ func check(legend: String = "", max_plants: int = 0) -> String:
 	var simulation: RefCounted = Native.create_simulation()
 	if simulation == null:
 		return Native.missing_message()
-	var message: String = simulation.load_map(text, source_path, legend, max_plants)
+	var message: String = simulation.load_map(text, source_path, legend, "", max_plants)
 	if message.is_empty():
 		columns = simulation.get_map_columns()
 		rows = simulation.get_map_rows()

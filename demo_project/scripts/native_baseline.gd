@@ -14,7 +14,7 @@ const CUT_OFF: float = 100.0
 ## Builds the baseline for [param field_map]; returns the number of plants.
 func build(field_map: SunflowerFieldMap, field: SunflowerField) -> int:
 	var simulation: SunflowerSimulation = SunflowerSimulation.new()
-	var error: String = simulation.load_map(field_map.text, field_map.source_path, "", 0)
+	var error: String = simulation.load_map(field_map.text, field_map.source_path, "", "", 0)
 	if not error.is_empty():
 		push_error("NativeBaseline: " + error)
 		return 0
