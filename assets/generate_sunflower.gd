@@ -3,17 +3,22 @@ extends SceneTree
 ## head), each with its root at the origin and height 1 along +y, so parts chain end to start.
 ## The head faces +z and nods forward. Colours are vertex colours (no textures needed).
 ##
-## Run: godot --headless --path <any project> --script assets/generate_sunflower.gd -- <out dir>
+## Run: godot --headless --path <any project> --script assets/generate_sunflower.gd -- <out dir> [red]
 ## Writes sunflower_lod{1,2,3}_{bottom,middle,head}.res into <out dir> and prints triangle counts.
+## With "red": the same plant as a red-petalled cultivar ("red_sunflower_lod…"), the addon's second
+## plant type (plants/red_sunflower.tres), drawn lower by its FieldPlant.
 
 const STEM_GREEN: Color = Color(0.23, 0.42, 0.11)
 const LEAF_GREEN: Color = Color(0.20, 0.45, 0.10)
 const LEAF_VEIN: Color = Color(0.42, 0.60, 0.22)
-const PETAL_YELLOW: Color = Color(1.0, 0.76, 0.03)
-const PETAL_TIP: Color = Color(1.0, 0.86, 0.25)
 const DISC_BROWN: Color = Color(0.26, 0.13, 0.04)
 const DISC_CENTRE: Color = Color(0.20, 0.17, 0.05)
 const BACK_GREEN: Color = Color(0.28, 0.45, 0.13)
+## Petal colours (base, tip) by variant.
+const PETALS: Dictionary = {
+	"": [Color(1.0, 0.76, 0.03), Color(1.0, 0.86, 0.25)],
+	"red": [Color(0.62, 0.07, 0.05), Color(0.93, 0.45, 0.08)],
+}
 
 ## Detail per level: stem sides and rings, leaf grid (along × across), head rings and sectors,
 ## petals per row, rows of petals, petal segments.
@@ -52,6 +57,9 @@ const LEVELS: Array[Dictionary] = [
 		"petal_segments": 2
 	},
 ]
+
+var _petal_base: Color
+var _petal_tip: Color
 
 
 class MeshBuilder:
@@ -114,6 +122,14 @@ func _init() -> void:
 		quit(2)
 		return
 	var out_dir: String = args[0]
+	var variant: String = args[1] if args.size() > 1 else ""
+	if not PETALS.has(variant):
+		printerr("unknown variant '%s' (none, or red)" % variant)
+		quit(2)
+		return
+	_petal_base = PETALS[variant][0]
+	_petal_tip = PETALS[variant][1]
+	var prefix: String = "sunflower" if variant.is_empty() else variant + "_sunflower"
 	DirAccess.make_dir_recursive_absolute(out_dir)
 	var material: StandardMaterial3D = StandardMaterial3D.new()
 	material.vertex_color_use_as_albedo = true
@@ -129,7 +145,7 @@ func _init() -> void:
 		var total: int = 0
 		for p: int in 3:
 			total += parts[p].triangle_count()
-			var path: String = out_dir.path_join("sunflower_lod%d_%s.res" % [level + 1, names[p]])
+			var path: String = out_dir.path_join("%s_lod%d_%s.res" % [prefix, level + 1, names[p]])
 			var error: Error = ResourceSaver.save(parts[p].build(material), path, ResourceSaver.FLAG_COMPRESS)
 			if error != OK:
 				printerr("cannot save %s: %s" % [path, error_string(error)])
@@ -273,6 +289,6 @@ func _head(detail: Dictionary) -> MeshBuilder:
 						+ tangent * (v - 0.5) * 2.0 * half_width
 						- facing * (0.04 * u * u + 0.01 * row)
 					),
-				func(u: float, _v: float) -> Color: return PETAL_YELLOW.lerp(PETAL_TIP, u * 0.6).darkened(0.08 * row)
+				func(u: float, _v: float) -> Color: return _petal_base.lerp(_petal_tip, u * 0.6).darkened(0.08 * row)
 			)
 	return builder

@@ -145,6 +145,19 @@ func test_the_hills_map_stands_the_field_on_the_terrain() -> void:
 	demo.call("load_map", "res://fields/hills.field")
 	await frames_until(func() -> bool: return field.get_plant_count() == 55008 and not field.is_building(), 600)
 	check_eq(field.get_plant_count(), 55008, "the hills field is built")
+	# Two plant types: the map's 'r' cells are the addon's red sunflower (the demo's legend).
+	var types: Array[FieldPlant] = field.get_plant_types()
+	check_eq(types.size(), 2, "sunflowers and red sunflowers")
+	if types.size() == 2:
+		check_eq(types[1].name, "Red sunflower")
+		var by_species: Array[PackedInt32Array] = field.get_lod_counts_by_species()
+		var sums: Array[int] = []
+		for counts: PackedInt32Array in by_species:
+			var total: int = 0
+			for count: int in counts:
+				total += count
+			sums.append(total)
+		check_eq(sums, [47167, 7841], "plants per type")
 	check_eq(field.ground_source, SunflowerField.GroundSource.COLLIDERS, "on the terrain's collision")
 	check((demo.get_node("Hills") as Node3D).visible and not (demo.get_node("Ground") as Node3D).visible)
 	var camera: FlyCamera = demo.get_node("Camera") as FlyCamera
