@@ -167,6 +167,22 @@ for scene in field_scene large_field_scene; do
     tail -n 20 "$artifacts/editor_$scene.log"; record 0 1 "editor opens $scene"
   fi
 done
+echo "== editor (Xvfb, Vulkan): a plant selected in the inspector, its 'Bake impostors' button pressed"
+bakeproj=$(mktemp -d)
+mkdir -p "$bakeproj/addons"
+cp -rL "$repo/addons/sunflower_field" "$bakeproj/addons/"
+cp -r "$repo/tests/editor_bake/bake_probe" "$bakeproj/addons/"
+cp "$repo/tests/editor_bake/project.godot" "$repo/tests/editor_bake/my_plant.tres" "$bakeproj/"
+if "$repo/tools/import_project.sh" "$bakeproj" >"$artifacts/editor_bake.log" 2>&1 &&
+  PROBE_SHOT="$artifacts/editor_bake.png" timeout 300 xvfb-run -a -s "-screen 0 1600x900x24" "$godot" --editor \
+    --audio-driver Dummy --path "$bakeproj" >>"$artifacts/editor_bake.log" 2>&1 &&
+  grep -q '^probe: ok$' "$artifacts/editor_bake.log"; then
+  record 1 0 "editor: Bake impostors writes, imports and saves the plant's textures"
+else
+  grep -E '^probe:|ERROR' "$artifacts/editor_bake.log" | head -n 10
+  record 0 1 "editor: Bake impostors writes, imports and saves the plant's textures"
+fi
+rm -rf "$bakeproj"
 badproject=$(mktemp -d)
 mkdir -p "$badproject/addons" "$badproject/.godot"
 cp -rL "$repo/addons/sunflower_field" "$badproject/addons/"

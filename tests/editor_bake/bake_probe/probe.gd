@@ -1,0 +1,58 @@
+@tool
+extends EditorPlugin
+## Selects res://my_plant.tres in the inspector as a user would, saves a picture of the editor,
+## presses the inspector's "Bake impostors" button and checks that the textures were written,
+## imported and saved into the plant. Prints "probe: ok" or what failed, then quits the editor.
+
+const PLANT_PATH: String = "res://my_plant.tres"
+
+
+func _enter_tree() -> void:
+	_run.call_deferred()
+
+
+func _run() -> void:
+	var tree: SceneTree = EditorInterface.get_base_control().get_tree()
+	for i: int in 120:  # let the editor settle (first scan, plugins)
+		await tree.process_frame
+	var problems: PackedStringArray = []
+	var plant: Resource = load(PLANT_PATH)
+	EditorInterface.edit_resource(plant)
+	for i: int in 30:
+		await tree.process_frame
+	var button: Button = _find_button(EditorInterface.get_inspector(), "Bake impostors")
+	var shot: String = OS.get_environment("PROBE_SHOT")
+	if not shot.is_empty():
+		EditorInterface.get_base_control().get_viewport().get_texture().get_image().save_png(shot)
+	if button == null:
+		problems.append("no 'Bake impostors' button in the plant's inspector")
+	else:
+		button.pressed.emit()
+		for i: int in 600:
+			await tree.process_frame
+			if plant.front_texture != null and button.text == "Bake impostors":
+				break
+		for view: String in ["front", "side"]:
+			var path: String = "res://my_plant_%s.png" % view
+			if not FileAccess.file_exists(path):
+				problems.append("%s was not written" % path)
+		if plant.front_texture == null or plant.front_texture.resource_path != "res://my_plant_front.png":
+			problems.append("the plant's front texture is not the imported file: %s" % plant.front_texture)
+		var saved: String = FileAccess.get_file_as_string(PLANT_PATH)
+		if not saved.contains("my_plant_front.png"):
+			problems.append("the plant file does not name its new textures")
+		var image: Image = plant.front_texture.get_image() if plant.front_texture else null
+		if image == null or image.is_empty() or image.detect_alpha() == Image.ALPHA_NONE:
+			problems.append("the front texture is empty or has no transparent background")
+	print("probe: " + ("ok" if problems.is_empty() else "; ".join(problems)))
+	tree.quit(0 if problems.is_empty() else 1)
+
+
+func _find_button(node: Node, text: String) -> Button:
+	if node is Button and (node as Button).text == text:
+		return node
+	for child: Node in node.get_children(true):
+		var found: Button = _find_button(child, text)
+		if found:
+			return found
+	return null
