@@ -172,7 +172,8 @@ bakeproj=$(mktemp -d)
 mkdir -p "$bakeproj/addons"
 cp -rL "$repo/addons/sunflower_field" "$bakeproj/addons/"
 cp -r "$repo/tests/editor_bake/bake_probe" "$bakeproj/addons/"
-cp "$repo/tests/editor_bake/project.godot" "$repo/tests/editor_bake/my_plant.tres" "$bakeproj/"
+cp "$repo/tests/editor_bake/"{project.godot,my_plant.tres,own_plant_terrain.tscn,check_own_plant.gd} "$repo/fields/demo.field" \
+  "$bakeproj/"
 if "$repo/tools/import_project.sh" "$bakeproj" >"$artifacts/editor_bake.log" 2>&1 &&
   PROBE_SHOT="$artifacts/editor_bake.png" timeout 300 xvfb-run -a -s "-screen 0 1600x900x24" "$godot" --editor \
     --audio-driver Dummy --path "$bakeproj" >>"$artifacts/editor_bake.log" 2>&1 &&
@@ -181,6 +182,13 @@ if "$repo/tools/import_project.sh" "$bakeproj" >"$artifacts/editor_bake.log" 2>&
 else
   grep -E '^probe:|ERROR' "$artifacts/editor_bake.log" | head -n 10
   record 0 1 "editor: Bake impostors writes, imports and saves the plant's textures"
+fi
+# Then the game: a scene without code grows that plant, with its baked impostors, on a collider terrain.
+if timeout 300 xvfb-run -a -s "-screen 0 1280x720x24" "$godot" --audio-driver Dummy --path "$bakeproj" \
+  --script res://check_own_plant.gd >"$artifacts/own_plant.log" 2>&1 && grep -q '^own plant: ok$' "$artifacts/own_plant.log"; then
+  grep '^own plant:' "$artifacts/own_plant.log" | head -n 1; record 1 0 "own plant on a collider terrain"
+else
+  grep -E '^own plant:|ERROR' "$artifacts/own_plant.log" | head -n 10; record 0 1 "own plant on a collider terrain"
 fi
 rm -rf "$bakeproj"
 badproject=$(mktemp -d)

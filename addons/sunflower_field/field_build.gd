@@ -96,7 +96,7 @@ func _init(field: Node3D, impostors: Array[ImpostorSet], build_job: Job, in_back
 	_field = field
 	nodes = FieldNodes.new(field, job.simulation, impostors)
 	if background:
-		_task = WorkerThreadPool.add_task(job.run, false, "SunflowerField: " + job.source.get_file())
+		_task = WorkerThreadPool.add_task(job.run, true, "SunflowerField: " + job.source.get_file())
 	else:
 		job.run()
 
@@ -136,8 +136,8 @@ func step(budget_usec: int, switch_distance: float, max_draw_distance: float, ex
 		if not cast:
 			return false
 		_phase = Phase.NODES
-		if budget_usec >= 0:
-			_task = WorkerThreadPool.add_task(job.lay_out_on_rays, false, "SunflowerField: ground")
+		if budget_usec >= 0 and background:  # a large map: lay it out on a worker (small ones take ~1 ms)
+			_task = WorkerThreadPool.add_task(job.lay_out_on_rays, true, "SunflowerField: ground")
 			return false
 		job.lay_out_on_rays()
 		if not job.error.is_empty():
