@@ -180,6 +180,7 @@ func _add_dynamic(node: MultiMeshInstance3D, bucket: int) -> void:
 func _make_node(node_name: String, mesh: Mesh, aabb: AABB) -> MultiMeshInstance3D:
 	var multimesh: MultiMesh = MultiMesh.new()
 	multimesh.transform_format = MultiMesh.TRANSFORM_3D
+	multimesh.use_colors = true  # the native buffers hold a colour per instance
 	multimesh.mesh = mesh
 	multimesh.custom_aabb = aabb
 	var node: MultiMeshInstance3D = MultiMeshInstance3D.new()

@@ -100,6 +100,20 @@ static var _default: FieldPlant
 		scale_max = Native.accept("FieldPlant.scale_max", value, scale_max)
 		emit_changed()
 
+## Each plant's brightness varies by up to ± this share (seeded): the instance colour multiplies
+## the albedo of materials that use vertex colour as albedo (the built-in plants do) and of the
+## impostors.
+@export_range(0.0, 1.0, 0.01) var brightness_variation: float = 0.0:
+	set(value):
+		brightness_variation = Native.accept("FieldPlant.brightness_variation", value, brightness_variation)
+		emit_changed()
+## Each plant is tinted warmer or cooler by up to ± this share (red up and blue down, or the other
+## way; seeded), like [member brightness_variation].
+@export_range(0.0, 1.0, 0.01) var tint_variation: float = 0.0:
+	set(value):
+		tint_variation = Native.accept("FieldPlant.tint_variation", value, tint_variation)
+		emit_changed()
+
 @export_group("Impostors")
 ## The sprite's front quad (the plant seen from +z), with alpha.
 @export var front_texture: Texture2D:
@@ -167,6 +181,8 @@ func layout_key() -> Array:
 		yaw_range,
 		scale_min,
 		scale_max,
+		brightness_variation,
+		tint_variation,
 	]
 
 
@@ -194,7 +210,7 @@ func bake_impostors(host: Node, folder: String = "", base_name: String = "") -> 
 func apply_to(simulation: RefCounted, species: int = 0) -> void:
 	simulation.set_plant_form(species, part_lengths, middle_variation, height_units, cull_radius_units)
 	simulation.set_plant_height(species, height)
-	simulation.set_plant_variation(species, yaw_range, scale_min, scale_max)
+	simulation.set_plant_variation(species, yaw_range, scale_min, scale_max, brightness_variation, tint_variation)
 
 
 func _level(level: int) -> Array[Mesh]:

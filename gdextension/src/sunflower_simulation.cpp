@@ -32,7 +32,7 @@ void SunflowerSimulation::bind_methods() {
 	gdx::bind_method(CLASS, "set_plant_form", &SunflowerSimulation::set_plant_form,
 			{ "species", "part_lengths", "middle_variation", "height_units", "cull_radius_units" });
 	gdx::bind_method(CLASS, "set_plant_variation", &SunflowerSimulation::set_plant_variation,
-			{ "species", "yaw_range", "scale_min", "scale_max" });
+			{ "species", "yaw_range", "scale_min", "scale_max", "brightness", "tint" });
 	gdx::bind_method(CLASS, "set_wind", &SunflowerSimulation::set_wind,
 			{ "model", "power", "direction", "stiffness_middle", "stiffness_bottom", "bend_per_power", "max_bend", "flip_interval",
 					"flip_chance", "gust_speed", "gust_share" });
@@ -80,6 +80,7 @@ void SunflowerSimulation::bind_methods() {
 	gdx::bind_integer_constant(CLASS, "", "BUCKET_BILLBOARD", BUCKET_BILLBOARD);
 	gdx::bind_integer_constant(CLASS, "", "BUCKET_COUNT", BUCKET_COUNT);
 	gdx::bind_integer_constant(CLASS, "", "MAX_SPECIES", FieldMap::MAX_SPECIES);
+	gdx::bind_integer_constant(CLASS, "", "FLOATS_PER_INSTANCE", FLOATS_PER_INSTANCE);
 	gdx::bind_integer_constant(CLASS, "", "PARALLEL_MIN_PLANTS", FieldSimulation::PARALLEL_MIN_PLANTS);
 	gdx::bind_integer_constant(CLASS, "", "MAX_AUTO_THREADS", param::MAX_AUTO_THREADS);
 	gdx::bind_integer_constant(CLASS, "", "MAX_THREADS", param::MAX_THREADS);
@@ -222,7 +223,8 @@ void SunflowerSimulation::set_plant_form(int64_t p_species, gdx::Vector3 p_part_
 	_sim.set_plant_height(metres, species);
 }
 
-void SunflowerSimulation::set_plant_variation(int64_t p_species, double p_yaw_range, double p_scale_min, double p_scale_max) {
+void SunflowerSimulation::set_plant_variation(int64_t p_species, double p_yaw_range, double p_scale_min, double p_scale_max,
+		double p_brightness, double p_tint) {
 	if (!_is_species(p_species)) {
 		return;
 	}
@@ -231,6 +233,8 @@ void SunflowerSimulation::set_plant_variation(int64_t p_species, double p_yaw_ra
 	variety.yaw_range = float(p_yaw_range);
 	variety.scale_min = float(p_scale_min);
 	variety.scale_max = float(p_scale_max);
+	variety.brightness = float(p_brightness);
+	variety.tint = float(p_tint);
 	if (_sim.set_layout_params(params)) {
 		release_multimeshes(); // the chunks changed
 	}
@@ -438,10 +442,10 @@ gdx::PackedFloat32Array SunflowerSimulation::get_plant_parts(int64_t p_plant) co
 	}
 	PartTransforms parts;
 	_sim.get_plant_parts(uint32_t(p_plant), parts);
-	out.resize(PART_COUNT * FLOATS_PER_INSTANCE);
+	out.resize(PART_COUNT * TRANSFORM_FLOATS);
 	float *data = out.data();
 	for (uint32_t part = 0; part < PART_COUNT; ++part) {
-		write_instance(data + part * FLOATS_PER_INSTANCE, parts.basis[part], parts.origin[part]);
+		write_transform(data + part * TRANSFORM_FLOATS, parts.basis[part], parts.origin[part]);
 	}
 	return out;
 }

@@ -56,12 +56,13 @@ TEST_CASE("frustum: spheres outside any plane are culled, an unset frustum keeps
 	CHECK_FALSE(frustum.intersects_sphere({ 0, 0, -12.0f }, 1.0f));
 }
 
-TEST_CASE("instance layout: 12 floats, the 3×4 matrix row by row") {
+TEST_CASE("instance layout: 16 floats, the 3×4 matrix row by row, then the colour") {
 	glm::mat3 basis(glm::vec3(1, 2, 3), glm::vec3(4, 5, 6), glm::vec3(7, 8, 9)); // columns
-	float out[12];
-	write_instance(out, basis, glm::vec3(10, 11, 12));
-	const float expected[12] = { 1, 4, 7, 10, 2, 5, 8, 11, 3, 6, 9, 12 };
-	for (int i = 0; i < 12; ++i) {
+	float out[FLOATS_PER_INSTANCE];
+	write_instance(out, basis, glm::vec3(10, 11, 12), glm::vec4(0.5f, 0.25f, 1.0f, 0.75f));
+	const float expected[16] = { 1, 4, 7, 10, 2, 5, 8, 11, 3, 6, 9, 12, 0.5f, 0.25f, 1.0f, 0.75f };
+	static_assert(FLOATS_PER_INSTANCE == 16, "transform and colour");
+	for (int i = 0; i < 16; ++i) {
 		CHECK(out[i] == expected[i]);
 	}
 }

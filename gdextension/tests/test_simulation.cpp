@@ -509,3 +509,50 @@ TEST_CASE("several species: each has its own chunks, form, variety and buckets; 
 	CHECK_FALSE(sim.load_map("2 1\n**\n", U"", U"abcdefgh", "too_many", MapLimits{}, error));
 	CHECK(error.message.find("at most 7") != std::string::npos);
 }
+
+TEST_CASE("colour variety: plants are white without it; with it, seeded brightness and tint within the ranges") {
+	FieldSimulation sim;
+	MapError error;
+	std::string text = "20 20\n";
+	for (int row = 0; row < 20; ++row) {
+		text += std::string(20, '*') + "\n";
+	}
+	REQUIRE(sim.load_map(text, U"", "colour", MapLimits{}, error));
+	LodParams lod;
+	lod.force_level = LOD_MESH_1;
+	sim.set_lod(lod);
+	sim.update(0.0f);
+	const InstanceBuffer &heads = sim.get_bucket(mesh_bucket(LOD_MESH_1, 2));
+	REQUIRE(heads.get_count() > 0);
+	for (uint32_t i = 0; i < heads.get_count(); ++i) {
+		const float *colour = heads.get_data() + size_t(i) * FLOATS_PER_INSTANCE + TRANSFORM_FLOATS;
+		CHECK(glm::vec4(colour[0], colour[1], colour[2], colour[3]) == glm::vec4(1.0f));
+	}
+	LayoutParams params = sim.get_layout_params();
+	params.varieties[0].brightness = 0.2f;
+	params.varieties[0].tint = 0.1f;
+	sim.set_layout_params(params);
+	sim.update(0.0f);
+	float darkest = 2.0f, brightest = 0.0f, warmest = -1.0f, coolest = 1.0f;
+	for (uint32_t i = 0; i < heads.get_count(); ++i) {
+		const float *colour = heads.get_data() + size_t(i) * FLOATS_PER_INSTANCE + TRANSFORM_FLOATS;
+		const float brightness = colour[1];
+		const float warmth = colour[0] / brightness - 1.0f;
+		CHECK(colour[2] / brightness == doctest::Approx(1.0f - warmth));
+		darkest = std::min(darkest, brightness);
+		brightest = std::max(brightest, brightness);
+		warmest = std::max(warmest, warmth);
+		coolest = std::min(coolest, warmth);
+	}
+	CHECK(darkest >= 0.8f - 1e-5f);
+	CHECK(brightest <= 1.2f + 1e-5f);
+	CHECK(brightest - darkest > 0.3f);
+	CHECK(warmest <= 0.1f + 1e-5f);
+	CHECK(coolest >= -0.1f - 1e-5f);
+	CHECK(warmest - coolest > 0.15f);
+	// The impostors carry the same colour as the meshes of the same plant.
+	std::vector<float> impostors(size_t(sim.get_layout().chunks[0].count) * FLOATS_PER_INSTANCE);
+	sim.write_chunk_instances(0, impostors.data());
+	const Plant &plant = sim.get_layout().plants[sim.get_layout().chunk_plants[0]];
+	CHECK(impostors[TRANSFORM_FLOATS + 1] == plant.color(params.varieties[0]).y);
+}

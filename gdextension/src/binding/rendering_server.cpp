@@ -47,8 +47,9 @@ void RenderingServer::unload() {
 
 void RenderingServer::multimesh_allocate_data(Rid p_multimesh, int64_t p_instances) {
 	const int64_t transform_3d = 1; // RenderingServer.MULTIMESH_TRANSFORM_3D
+	const GDExtensionBool yes = 1; // colours: the core writes one per instance (instance_buffer.h)
 	const GDExtensionBool no = 0;
-	call(methods.allocate_data, { &p_multimesh, &p_instances, &transform_3d, &no, &no, &no });
+	call(methods.allocate_data, { &p_multimesh, &p_instances, &transform_3d, &yes, &no, &no });
 }
 
 void RenderingServer::multimesh_set_buffer(Rid p_multimesh, const PackedFloat32Array &p_buffer) {

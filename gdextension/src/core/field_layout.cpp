@@ -4,8 +4,23 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 namespace sunflower {
+
+glm::vec4 Plant::color(const PlantVariety &p_variety) const {
+	if (p_variety.brightness <= 0.0f && p_variety.tint <= 0.0f) {
+		return glm::vec4(1.0f);
+	}
+	uint32_t x_bits = 0;
+	uint32_t z_bits = 0;
+	std::memcpy(&x_bits, &position.x, sizeof(x_bits));
+	std::memcpy(&z_bits, &position.y, sizeof(z_bits));
+	const uint64_t hash = hash_plant(uint64_t(x_bits) << 32 | z_bits, 0, STREAM_COLOR);
+	const float brightness = 1.0f + (unit_float(hash) * 2.0f - 1.0f) * p_variety.brightness;
+	const float warmth = (unit_float(hash << 24) * 2.0f - 1.0f) * p_variety.tint;
+	return glm::vec4(brightness * (1.0f + warmth), brightness, brightness * (1.0f - warmth), 1.0f);
+}
 
 namespace {
 

@@ -9,6 +9,7 @@
 #include <glm/common.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 #include <array>
 #include <cstdint>
@@ -22,9 +23,12 @@ struct PlantVariety {
 	float yaw_range = float(param::PLANT_YAW_RANGE.default_value);
 	float scale_min = float(param::PLANT_SCALE_MIN.default_value);
 	float scale_max = float(param::PLANT_SCALE_MAX.default_value);
+	float brightness = float(param::PLANT_BRIGHTNESS_VARIATION.default_value);
+	float tint = float(param::PLANT_TINT_VARIATION.default_value);
 
 	bool operator==(const PlantVariety &p_other) const {
-		return yaw_range == p_other.yaw_range && scale_min == p_other.scale_min && scale_max == p_other.scale_max;
+		return yaw_range == p_other.yaw_range && scale_min == p_other.scale_min && scale_max == p_other.scale_max &&
+				brightness == p_other.brightness && tint == p_other.tint;
 	}
 };
 
@@ -56,6 +60,9 @@ struct Plant {
 	glm::vec2 lean{ 0.0f };
 
 	glm::vec3 root() const { return glm::vec3(position.x, ground, position.y); }
+	// The instance colour it is drawn with under p_variety: white, or a seeded brightness and tint
+	// (drawn from its position, which its cell's seeded jitter makes its own).
+	glm::vec4 color(const PlantVariety &p_variety) const;
 };
 
 struct Chunk {

@@ -46,6 +46,8 @@ bool FieldSimulation::set_layout_params(const LayoutParams &p_params) {
 		variety.yaw_range = sanitize(param::PLANT_YAW_RANGE, variety.yaw_range, current.yaw_range);
 		variety.scale_min = sanitize(param::PLANT_SCALE_MIN, variety.scale_min, current.scale_min);
 		variety.scale_max = std::max(variety.scale_min, sanitize(param::PLANT_SCALE_MAX, variety.scale_max, current.scale_max));
+		variety.brightness = sanitize(param::PLANT_BRIGHTNESS_VARIATION, variety.brightness, current.brightness);
+		variety.tint = sanitize(param::PLANT_TINT_VARIATION, variety.tint, current.tint);
 	}
 	if (params == _layout_params) {
 		return false;
@@ -319,6 +321,7 @@ void FieldSimulation::_move_chunks(size_t p_first, size_t p_last, float p_delta,
 	for (size_t a = p_first; a < p_last; ++a) {
 		const Chunk &chunk = _layout.chunks[_active_chunks[a]];
 		const PlantShape &shape = _shapes[chunk.species];
+		const PlantVariety &variety = _layout_params.varieties[chunk.species];
 		InstanceBuffer *buckets = r_buckets.data() + size_t(chunk.species) * BUCKET_COUNT;
 		const float radius = shape.cull_radius * shape.part_scale;
 		const float mid_height = 0.5f * shape.height * shape.part_scale;
@@ -341,8 +344,9 @@ void FieldSimulation::_move_chunks(size_t p_first, size_t p_last, float p_delta,
 				continue;
 			}
 			_wind.part_transforms(plant, _plant_bend(index, plant, moving), shape, parts);
+			const glm::vec4 color = plant.color(variety);
 			for (uint32_t part = 0; part < PART_COUNT; ++part) {
-				write_instance(buckets[mesh_bucket(lod, part)].push(), parts.basis[part], parts.origin[part]);
+				write_instance(buckets[mesh_bucket(lod, part)].push(), parts.basis[part], parts.origin[part], color);
 			}
 		}
 	}
@@ -460,7 +464,8 @@ void FieldSimulation::_write_impostor(float *r_out, const Plant &p_plant) const 
 	const float c = std::cos(p_plant.yaw) * scale;
 	const float s = std::sin(p_plant.yaw) * scale;
 	const glm::mat3 basis(glm::vec3(c, 0.0f, -s), glm::vec3(0.0f, scale, 0.0f), glm::vec3(s, 0.0f, c));
-	write_instance(r_out, p_plant.lean == glm::vec2(0.0f) ? basis : lean_rotation(p_plant.lean) * basis, p_plant.root());
+	write_instance(r_out, p_plant.lean == glm::vec2(0.0f) ? basis : lean_rotation(p_plant.lean) * basis, p_plant.root(),
+			p_plant.color(_layout_params.varieties[_layout.chunks[p_plant.chunk].species]));
 }
 
 void FieldSimulation::write_chunk_instances(uint32_t p_chunk, float *r_out) const {

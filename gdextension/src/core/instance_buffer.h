@@ -1,8 +1,10 @@
 #pragma once
-// MultiMesh instance data: 12 floats per instance, the 3×4 matrix [basis | origin] row by row,
-// which is Godot's RenderingServer.MULTIMESH_TRANSFORM_3D layout.
+// MultiMesh instance data: 16 floats per instance, the 3×4 matrix [basis | origin] row by row, then
+// the instance colour (r, g, b, a): Godot's RenderingServer MULTIMESH_TRANSFORM_3D layout with
+// colours.
 #include <glm/mat3x3.hpp>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 #include <algorithm>
 #include <cstdint>
@@ -10,15 +12,25 @@
 
 namespace sunflower {
 
-constexpr uint32_t FLOATS_PER_INSTANCE = 12;
+// The transform's floats: the first 12 of an instance (and all of a part's in get_plant_parts).
+constexpr uint32_t TRANSFORM_FLOATS = 12;
+constexpr uint32_t FLOATS_PER_INSTANCE = TRANSFORM_FLOATS + 4;
 
-inline void write_instance(float *r_out, const glm::mat3 &p_basis, const glm::vec3 &p_origin) {
+inline void write_transform(float *r_out, const glm::mat3 &p_basis, const glm::vec3 &p_origin) {
 	for (int row = 0; row < 3; ++row) {
 		r_out[row * 4 + 0] = p_basis[0][row];
 		r_out[row * 4 + 1] = p_basis[1][row];
 		r_out[row * 4 + 2] = p_basis[2][row];
 		r_out[row * 4 + 3] = p_origin[row];
 	}
+}
+
+inline void write_instance(float *r_out, const glm::mat3 &p_basis, const glm::vec3 &p_origin, const glm::vec4 &p_color) {
+	write_transform(r_out, p_basis, p_origin);
+	r_out[12] = p_color.x;
+	r_out[13] = p_color.y;
+	r_out[14] = p_color.z;
+	r_out[15] = p_color.w;
 }
 
 // A growable buffer of instances; grows geometrically and never shrinks, so steady state

@@ -30,6 +30,7 @@ enum RandomStream : uint64_t {
 	STREAM_FLIP = 6,
 	STREAM_DIRECTION = 7,
 	STREAM_SCALE = 8,
+	STREAM_COLOR = 9,
 };
 
 } // namespace sunflower

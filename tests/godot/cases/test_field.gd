@@ -2,6 +2,9 @@ extends TestCase
 ## SunflowerField in a scene: layout against the map, LOD against the observer, buffers in the
 ## RenderingServer, wind, and the exactly-once invariant reconstructed from engine state.
 
+## Floats per instance in the native MultiMesh buffers (transform, then colour).
+const STRIDE: int = SunflowerSimulation.FLOATS_PER_INSTANCE
+
 var field: SunflowerField
 var observer: Node3D
 
@@ -82,7 +85,7 @@ func test_buffers_reach_the_rendering_server() -> void:
 	check(count > 100, "mesh-1 heads written: %d" % count)
 	check_eq(RenderingServer.multimesh_get_visible_instances(rid), count, "visible instances")
 	var buffer: PackedFloat32Array = RenderingServer.multimesh_get_buffer(rid)
-	check(buffer.size() >= count * 12, "buffer holds the instances")
+	check(buffer.size() >= count * SunflowerSimulation.FLOATS_PER_INSTANCE, "buffer holds the instances")
 	# Each head instance is some mesh-1 plant's head transform, as get_plant_info reports it.
 	var heads_by_origin: Dictionary = {}
 	for i: int in field.get_plant_count():
@@ -92,11 +95,11 @@ func test_buffers_reach_the_rendering_server() -> void:
 			heads_by_origin[_key(head.origin)] = head
 	check_eq(heads_by_origin.size(), count, "mesh-1 plants vs instances")
 	for k: int in count:
-		var origin: Vector3 = Vector3(buffer[k * 12 + 3], buffer[k * 12 + 7], buffer[k * 12 + 11])
+		var origin: Vector3 = Vector3(buffer[k * STRIDE + 3], buffer[k * STRIDE + 7], buffer[k * STRIDE + 11])
 		var expected: Variant = heads_by_origin.get(_key(origin))
 		if not check(expected != null, "instance %d at %s is no plant's head" % [k, origin]):
 			break
-		check_near(buffer[k * 12 + 1], (expected as Transform3D).basis.y.x, 1e-4, "basis y.x of instance %d" % k)
+		check_near(buffer[k * STRIDE + 1], (expected as Transform3D).basis.y.x, 1e-4, "basis y.x of instance %d" % k)
 
 
 func test_wind_moves_the_plants_and_calm_keeps_them_upright() -> void:
@@ -161,7 +164,7 @@ func test_every_plant_is_drawn_exactly_once_along_a_camera_path() -> void:
 				continue  # one part per plant: the bottom part's origin is the plant's root
 			var buffer: PackedFloat32Array = RenderingServer.multimesh_get_buffer(rid)
 			for k: int in instances:
-				var root: Vector3 = Vector3(buffer[k * 12 + 3], buffer[k * 12 + 7], buffer[k * 12 + 11])
+				var root: Vector3 = Vector3(buffer[k * STRIDE + 3], buffer[k * STRIDE + 7], buffer[k * STRIDE + 11])
 				var index: int = positions.get(_key(root), -1)
 				if check(index >= 0, "%s instance %d at %s is no plant" % [node.name, k, root]):
 					drawn[index] += 1

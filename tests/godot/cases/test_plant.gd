@@ -27,10 +27,16 @@ func _field(plant: FieldPlant = null) -> SunflowerField:
 
 ## The mesh a field's near bucket node draws for a part.
 func _drawn_mesh(field: SunflowerField, level: int, part: int) -> Mesh:
+	var node: MultiMeshInstance3D = _drawn_mesh_node(field, level, part)
+	return node.multimesh.mesh if node else null
+
+
+## A field's near bucket node for a part (of its '*' plant).
+func _drawn_mesh_node(field: SunflowerField, level: int, part: int) -> MultiMeshInstance3D:
 	var name: String = "Mesh%d%s" % [level + 1, ["Bottom", "Middle", "Head"][part]]
 	for node: Node in field.get_children(true):
 		if node.name == name:
-			return (node as MultiMeshInstance3D).multimesh.mesh
+			return node as MultiMeshInstance3D
 	return null
 
 
@@ -107,6 +113,25 @@ func test_a_plants_variety_spreads_sizes_and_yaws_within_its_ranges() -> void:
 	check(smallest >= 0.6 - 1e-4 and largest <= 1.4 + 1e-4, "sizes within 0.6–1.4 (%.3f–%.3f)" % [smallest, largest])
 	check(largest - smallest > 0.7, "and spread over the range")
 	check(widest <= PI / 2.0 + 1e-4 and widest > 1.3, "yaws within ±90° (widest %.2f rad)" % widest)
+	# Colour variety: the near buckets' instance colours (after the transform) vary by the range.
+	var heads: MultiMesh = _drawn_mesh_node(field, 0, 2).multimesh
+	var stride: int = SunflowerSimulation.FLOATS_PER_INSTANCE
+	var white: bool = true
+	for k: int in mini(RenderingServer.multimesh_get_buffer(heads.get_rid()).size() / stride, 50):
+		white = white and RenderingServer.multimesh_get_buffer(heads.get_rid())[k * stride + 12] == 1.0
+	check(white, "no colour variety: white instances")
+	plant.brightness_variation = 0.3
+	await frames(1)
+	field.finish_build()
+	field.advance(0.1)
+	var buffer: PackedFloat32Array = RenderingServer.multimesh_get_buffer(
+		_drawn_mesh_node(field, 0, 2).multimesh.get_rid()
+	)
+	var greens: Array[float] = []
+	for k: int in mini(buffer.size() / stride, 200):
+		greens.append(buffer[k * stride + 13])
+	check(not greens.is_empty() and greens.min() >= 0.7 - 1e-4 and greens.max() <= 1.3 + 1e-4, "brightness within ±0.3")
+	check(not greens.is_empty() and greens.max() - greens.min() > 0.3, "and spread (%s)" % [greens.slice(0, 5)])
 	take_warnings()
 
 

@@ -114,12 +114,13 @@ func test_thinning_keeps_the_same_plants_whatever_their_order_in_a_buffer() -> v
 		if node.name.begins_with("ChunkBillboards"):
 			var rid: RID = (node as MultiMeshInstance3D).multimesh.get_rid()
 			var buffer: PackedFloat32Array = RenderingServer.multimesh_get_buffer(rid)
-			var count: int = buffer.size() / 12
+			var stride: int = SunflowerSimulation.FLOATS_PER_INSTANCE
+			var count: int = buffer.size() / stride
 			var flipped: PackedFloat32Array = PackedFloat32Array()
 			flipped.resize(buffer.size())
 			for i: int in count:
-				for k: int in 12:
-					flipped[(count - 1 - i) * 12 + k] = buffer[i * 12 + k]
+				for k: int in stride:
+					flipped[(count - 1 - i) * stride + k] = buffer[i * stride + k]
 			RenderingServer.multimesh_set_buffer(rid, flipped)
 			reversed += 1
 	await frames(4)
