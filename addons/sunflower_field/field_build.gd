@@ -143,10 +143,13 @@ func step(budget_usec: int, switch_distance: float, max_draw_distance: float, ex
 		if not job.error.is_empty():
 			return true
 		start = Time.get_ticks_usec()
+	var had_chunks: bool = nodes.get_chunk_progress() < 1.0
 	var done: bool = nodes.make_chunks(budget_usec, switch_distance, max_draw_distance)
 	_frames += 1
 	add_main_thread_time(start)
-	return done
+	# The swap that follows (the near nodes, the legend's scenes, the first update) gets a frame of
+	# its own when this step made chunk nodes within a budget.
+	return done and not (had_chunks and budget_usec >= 0)
 
 
 ## The map's error ("file:line:column: …"), or empty.

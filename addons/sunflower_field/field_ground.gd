@@ -8,7 +8,8 @@ extends RefCounted
 ## The ground sources (the node's [code]ground_source[/code]).
 enum Source { FLAT, COLLIDERS, HEIGHT_MAP }
 
-## Rays cast between two clock reads (about 0.1 ms of them): how far a step may overrun its budget.
+## Rays cast between two clock reads (about 0.1 ms of them); a step stops when one more batch
+## would overrun its budget.
 const RAYS_PER_CLOCK_READ: int = 64
 
 ## What the worker needs of the node's ground: copied on the main thread, so the node may change.
@@ -120,7 +121,9 @@ func cast_rays(budget_usec: int, exclude: Array[RID]) -> bool:
 	var start: int = Time.get_ticks_usec()
 	_query.exclude = exclude
 	var count: int = _heights.size()
+	var slowest: int = 0  # the longest a batch took, to stop before the budget is overrun
 	while _next < count:
+		var batch_start: int = Time.get_ticks_usec()
 		var last: int = mini(_next + RAYS_PER_CLOCK_READ, count)
 		for i: int in range(_next, last):
 			var x: float = _points[2 * i]
@@ -138,7 +141,9 @@ func cast_rays(budget_usec: int, exclude: Array[RID]) -> bool:
 				_normals[3 * i + 1] = normal.y
 				_normals[3 * i + 2] = normal.z
 		_next = last
-		if budget_usec >= 0 and Time.get_ticks_usec() - start >= budget_usec:
+		var now: int = Time.get_ticks_usec()
+		slowest = maxi(slowest, now - batch_start)
+		if budget_usec >= 0 and now - start + slowest >= budget_usec:
 			break
 	_ray_usec += Time.get_ticks_usec() - start
 	return _next >= count

@@ -29,12 +29,14 @@ func _init(owner: Node3D, field_simulation: RefCounted, impostors: Array[Imposto
 	_impostors = impostors
 
 
-## Makes hidden chunk nodes until all exist or [param budget_usec] is spent (negative: no limit);
-## true when every chunk has its pair.
+## Makes hidden chunk nodes until all exist or the next pair would overrun [param budget_usec]
+## (negative: no limit; one pair is always made); true when every chunk has its pair.
 func make_chunks(budget_usec: int, switch_distance: float, max_draw_distance: float) -> bool:
 	var start: int = Time.get_ticks_usec()
 	var chunk_count: int = simulation.get_chunk_count()
+	var slowest: int = 0  # the longest a pair took in this step, to stop before the budget is overrun
 	while _chunk_nodes.size() < 2 * chunk_count:
+		var pair_start: int = Time.get_ticks_usec()
 		var chunk: int = _chunk_nodes.size() / 2
 		var aabb: AABB = simulation.get_chunk_aabb(chunk)
 		var impostors: ImpostorSet = _impostors[simulation.get_chunk_species(chunk)]
@@ -46,7 +48,9 @@ func make_chunks(budget_usec: int, switch_distance: float, max_draw_distance: fl
 		_chunk_nodes.append_array([sprite, billboard])
 		_set_chunk_ranges(sprite, billboard, switch_distance, max_draw_distance)
 		simulation.set_chunk_multimeshes(chunk, sprite.multimesh.get_rid(), billboard.multimesh.get_rid())
-		if budget_usec >= 0 and Time.get_ticks_usec() - start >= budget_usec:
+		var now: int = Time.get_ticks_usec()
+		slowest = maxi(slowest, now - pair_start)
+		if budget_usec >= 0 and now - start + slowest >= budget_usec:
 			break
 	return _chunk_nodes.size() >= 2 * chunk_count
 
