@@ -205,6 +205,7 @@ bool parse_field_map(std::string_view p_text, std::u32string_view p_legend, std:
 			++first;
 		}
 		if (first == line.text.size() || line.text[first] == '#') {
+			r_map.preamble.emplace_back(line.text);
 			continue;
 		}
 		have_header = true;
@@ -247,6 +248,8 @@ bool parse_field_map(std::string_view p_text, std::u32string_view p_legend, std:
 	r_map.columns = columns;
 	r_map.rows = rows;
 	r_map.plants.assign(static_cast<size_t>(cells), 0);
+	int64_t dots = 0; // how the file writes empty cells inside rows, to write them back alike
+	int64_t spaces = 0;
 	int row = 0;
 	while (reader.next(line)) {
 		if (row >= rows) {
@@ -292,7 +295,8 @@ bool parse_field_map(std::string_view p_text, std::u32string_view p_legend, std:
 					return false;
 				}
 			} else if (symbol == ' ' || symbol == '.') {
-				// empty cell
+				dots += symbol == '.' ? 1 : 0;
+				spaces += symbol == ' ' ? 1 : 0;
 			} else if (symbol != 0 && symbol != 0xFFFD && p_legend.find(symbol) != std::u32string_view::npos) {
 				r_map.objects.push_back(MapObject{ column, row, symbol });
 			} else {
@@ -307,6 +311,7 @@ bool parse_field_map(std::string_view p_text, std::u32string_view p_legend, std:
 		}
 		++row;
 	}
+	r_map.empty_symbol = dots > spaces ? '.' : ' ';
 	return true;
 }
 

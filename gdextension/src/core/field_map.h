@@ -34,6 +34,10 @@ struct FieldMap {
 	// 0 where none does.
 	std::vector<uint8_t> plants;
 	int species_count = 1; // '*' and the plant symbols the map was read with
+	// The lines before the header (comments and blank lines), without their line ends: written back.
+	std::vector<std::string> preamble;
+	// How the file writes an empty cell inside a row, ' ' or '.' (whichever it used more).
+	char empty_symbol = ' ';
 	// Cells holding a legend character (e.g. the thesis' "big stone").
 	std::vector<MapObject> objects;
 	int64_t plant_count = 0;
@@ -61,6 +65,40 @@ std::u32string decode_utf8_text(std::string_view p_text);
 // both is a plant). On failure returns false and fills r_error; r_map is then left unspecified.
 bool parse_field_map(std::string_view p_text, std::u32string_view p_legend, std::u32string_view p_plant_symbols,
 		const std::string &p_source, const MapLimits &p_limits, FieldMap &r_map, MapError &r_error);
+// The map as text in the format's canonical form: the preamble lines, "COLUMNS ROWS", then every
+// declared row with each cell's symbol ('*', the plant symbols, object symbols, empty_symbol for an
+// empty cell) and no trailing empty cells; LF line ends, a final LF, no byte-order mark.
+// p_plant_symbols as read (species 1, 2, …). Parsing the result gives the same map.
+std::string write_field_map(const FieldMap &p_map, std::u32string_view p_plant_symbols);
+
+// What a cell holds, as painting sets it.
+struct CellContent {
+	enum Kind : uint8_t {
+		EMPTY,
+		PLANT,
+		OBJECT,
+	};
+	Kind kind = EMPTY;
+	int species = 0; // PLANT
+	char32_t symbol = 0; // OBJECT
+
+	bool operator==(const CellContent &p_other) const {
+		return kind == p_other.kind && species == p_other.species && symbol == p_other.symbol;
+	}
+};
+
+// What a cell holds now.
+CellContent get_cell(const FieldMap &p_map, int p_column, int p_row);
+// Sets a cell; returns whether it changed. Keeps plant_count and the object list in step.
+bool set_cell(FieldMap &r_map, int p_column, int p_row, const CellContent &p_content);
+
+// A brush stroke: every cell whose centre lies within p_radius cells of p_center (in cells, x along
+// columns, y along rows) gets p_content, if its seeded draw (p_seed, column, row) falls below
+// p_density (1: every cell); an erasing stroke (p_content EMPTY) empties every cell in reach. The
+// changed cells are appended to r_changed as column, row pairs.
+void paint_cells(FieldMap &r_map, float p_center_x, float p_center_y, float p_radius, const CellContent &p_content,
+		float p_density, uint64_t p_seed, std::vector<int> &r_changed);
+
 // The same with '*' as the only plant.
 bool parse_field_map(std::string_view p_text, std::u32string_view p_legend, const std::string &p_source,
 		const MapLimits &p_limits, FieldMap &r_map, MapError &r_error);

@@ -31,6 +31,7 @@ enum RandomStream : uint64_t {
 	STREAM_DIRECTION = 7,
 	STREAM_SCALE = 8,
 	STREAM_COLOR = 9,
+	STREAM_PAINT = 10,
 };
 
 } // namespace sunflower

@@ -1,0 +1,124 @@
+#include "field_map.h"
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <set>
+#include <utility>
+
+using namespace sunflower;
+
+namespace {
+
+FieldMap parse(const std::string &p_text, const std::u32string &p_legend = U"", const std::u32string &p_plants = U"") {
+	FieldMap map;
+	MapError error;
+	REQUIRE(parse_field_map(p_text, p_legend, p_plants, "edit", MapLimits{}, map, error));
+	return map;
+}
+
+// A canonical map: comments, header, rows with inner spaces and no trailing empty cells, an empty
+// row, a legend plant and objects (one of them not ASCII).
+const std::string CANONICAL = "# A test field.\n"
+							  "#   indented comment\n"
+							  "\n"
+							  "8 5\n"
+							  "***  ***\n"
+							  "*m*S\n"
+							  "\n"
+							  "  **ö**\n"
+							  "mmmm\n";
+
+} // namespace
+
+TEST_CASE("a canonical map is written back byte for byte") {
+	const FieldMap map = parse(CANONICAL, U"Sö", U"m");
+	CHECK(write_field_map(map, U"m") == CANONICAL);
+	CHECK(map.preamble.size() == 3);
+	CHECK(map.empty_symbol == ' ');
+}
+
+TEST_CASE("any map is written in the canonical form, which reads back as the same map") {
+	// A byte-order mark, CRLF ends, trailing spaces and dots, fewer rows than declared, dots inside.
+	const std::string messy = "\xEF\xBB\xBF# messy\r\n6 4\r\n*..*..\r\n.**.  \r\n";
+	const FieldMap map = parse(messy);
+	CHECK(map.empty_symbol == '.');
+	const std::string written = write_field_map(map, U"");
+	CHECK(written == "# messy\n6 4\n*..*\n.**\n\n\n");
+	const FieldMap again = parse(written);
+	CHECK(again.plants == map.plants);
+	CHECK(write_field_map(again, U"") == written); // canonical is a fixed point
+}
+
+TEST_CASE("cells: set and get plants, legend plants and objects; counts and object order follow") {
+	FieldMap map = parse(CANONICAL, U"Sö", U"m");
+	const int64_t plants = map.plant_count;
+	CHECK(get_cell(map, 1, 1).kind == CellContent::PLANT);
+	CHECK(get_cell(map, 1, 1).species == 1);
+	CHECK(get_cell(map, 3, 1).kind == CellContent::OBJECT);
+	CHECK(get_cell(map, 3, 1).symbol == U'S');
+	CHECK(get_cell(map, 3, 0).kind == CellContent::EMPTY);
+	CHECK_FALSE(set_cell(map, 0, 0, CellContent{ CellContent::PLANT, 0, 0 })); // already a sunflower
+	CHECK(set_cell(map, 3, 0, CellContent{ CellContent::OBJECT, 0, U'S' }));
+	CHECK(set_cell(map, 3, 1, CellContent{ CellContent::PLANT, 0, 0 })); // the stone becomes a sunflower
+	CHECK(map.plant_count == plants + 1);
+	CHECK(set_cell(map, 0, 4, CellContent{})); // a maize cell emptied
+	CHECK(map.plant_count == plants);
+	CHECK_FALSE(set_cell(map, 8, 0, CellContent{ CellContent::PLANT, 0, 0 })); // outside
+	REQUIRE(map.objects.size() == 2);
+	CHECK(map.objects[0].row == 0); // map order
+	CHECK(map.objects[1].symbol == U'ö');
+	const std::string written = write_field_map(map, U"m");
+	CHECK(written.find("\n***S ***\n") != std::string::npos);
+	CHECK(written.find("\n*m**\n") != std::string::npos);
+	CHECK(written.find("\n mmm\n") != std::string::npos);
+	const FieldMap again = parse(written, U"Sö", U"m");
+	CHECK(again.plants == map.plants);
+	CHECK(again.plant_count == map.plant_count);
+}
+
+TEST_CASE("a brush stroke changes the cells within its radius only, seeded by density; erasing empties them") {
+	std::string text = "40 40\n";
+	for (int row = 0; row < 40; ++row) {
+		text += "\n";
+	}
+	FieldMap map = parse(text);
+	std::vector<int> changed;
+	const CellContent sunflower{ CellContent::PLANT, 0, 0 };
+	paint_cells(map, 10.0f, 12.0f, 4.0f, sunflower, 1.0f, 7, changed);
+	std::set<std::pair<int, int>> inside;
+	for (int row = 0; row < 40; ++row) {
+		for (int column = 0; column < 40; ++column) {
+			const float dx = float(column) + 0.5f - 10.0f;
+			const float dy = float(row) + 0.5f - 12.0f;
+			const bool within = dx * dx + dy * dy <= 16.0f;
+			CHECK(map.has_plant(column, row) == within);
+			if (within) {
+				inside.insert({ column, row });
+			}
+		}
+	}
+	CHECK(changed.size() == 2 * inside.size());
+	CHECK(map.plant_count == int64_t(inside.size()));
+	// Half density: about half the cells, the same ones for the same seed.
+	FieldMap half_a = parse(text);
+	FieldMap half_b = parse(text);
+	FieldMap other_seed = parse(text);
+	std::vector<int> scratch;
+	paint_cells(half_a, 20.0f, 20.0f, 10.0f, sunflower, 0.5f, 3, scratch);
+	paint_cells(half_b, 20.0f, 20.0f, 10.0f, sunflower, 0.5f, 3, scratch);
+	paint_cells(other_seed, 20.0f, 20.0f, 10.0f, sunflower, 0.5f, 4, scratch);
+	CHECK(half_a.plants == half_b.plants);
+	CHECK(half_a.plants != other_seed.plants);
+	CHECK(half_a.plant_count > 120);
+	CHECK(half_a.plant_count < 200); // about half of the ~314 cells in reach
+	// Erasing empties every cell in reach, whatever the density; a stroke outside the map does nothing.
+	changed.clear();
+	paint_cells(map, 10.0f, 12.0f, 2.0f, CellContent{}, 0.0f, 7, changed);
+	CHECK(changed.size() == 2 * 12); // the 12 cells whose centres lie within 2 cells
+	CHECK(map.plant_count == int64_t(inside.size()) - 12);
+	changed.clear();
+	paint_cells(map, -50.0f, -50.0f, 3.0f, sunflower, 1.0f, 7, changed);
+	paint_cells(map, NAN, 3.0f, 3.0f, sunflower, 1.0f, 7, changed);
+	CHECK(changed.empty());
+}
