@@ -205,7 +205,11 @@ bool parse_field_map(std::string_view p_text, std::u32string_view p_legend, std:
 			++first;
 		}
 		if (first == line.text.size() || line.text[first] == '#') {
-			r_map.preamble.emplace_back(line.text);
+			std::string_view kept = line.text;
+			while (!kept.empty() && kept.back() == '\r') {
+				kept.remove_suffix(1); // written back with LF ends only
+			}
+			r_map.preamble.emplace_back(kept);
 			continue;
 		}
 		have_header = true;
