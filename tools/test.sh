@@ -167,6 +167,21 @@ for scene in field_scene large_field_scene; do
     tail -n 20 "$artifacts/editor_$scene.log"; record 0 1 "editor opens $scene"
   fi
 done
+echo "== editor (headless): painting a field with synthetic mouse events, undo and redo, the file written back"
+paintproj=$(mktemp -d)
+mkdir -p "$paintproj/addons"
+cp -rL "$repo/addons/sunflower_field" "$paintproj/addons/"
+cp -r "$repo/tests/editor_paint/paint_probe" "$paintproj/addons/"
+cp "$repo/tests/editor_paint/"{project.godot,paint.field,paint.tscn} "$paintproj/"
+if "$repo/tools/import_project.sh" "$paintproj" >"$artifacts/editor_paint.log" 2>&1 &&
+  RUN_PROBE=1 timeout 300 "$godot" --headless --editor --path "$paintproj" >>"$artifacts/editor_paint.log" 2>&1 &&
+  grep -q '^probe: ok$' "$artifacts/editor_paint.log"; then
+  record 1 0 "editor: paint, erase, undo, redo, write-back, a missing file"
+else
+  grep -E '^probe:|ERROR' "$artifacts/editor_paint.log" | head -n 10
+  record 0 1 "editor: paint, erase, undo, redo, write-back, a missing file"
+fi
+rm -rf "$paintproj"
 echo "== editor (Xvfb, Vulkan): a plant selected in the inspector, its 'Bake impostors' button pressed"
 bakeproj=$(mktemp -d)
 mkdir -p "$bakeproj/addons"
@@ -175,7 +190,7 @@ cp -r "$repo/tests/editor_bake/bake_probe" "$bakeproj/addons/"
 cp "$repo/tests/editor_bake/"{project.godot,my_plant.tres,own_plant_terrain.tscn,check_own_plant.gd} "$repo/fields/demo.field" \
   "$bakeproj/"
 if "$repo/tools/import_project.sh" "$bakeproj" >"$artifacts/editor_bake.log" 2>&1 &&
-  PROBE_SHOT="$artifacts/editor_bake.png" timeout 300 xvfb-run -a -s "-screen 0 1600x900x24" "$godot" --editor \
+  RUN_PROBE=1 PROBE_SHOT="$artifacts/editor_bake.png" timeout 300 xvfb-run -a -s "-screen 0 1600x900x24" "$godot" --editor \
     --audio-driver Dummy --path "$bakeproj" >>"$artifacts/editor_bake.log" 2>&1 &&
   grep -q '^probe: ok$' "$artifacts/editor_bake.log"; then
   record 1 0 "editor: Bake impostors writes, imports and saves the plant's textures"

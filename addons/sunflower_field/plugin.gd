@@ -1,8 +1,9 @@
 @tool
 extends EditorPlugin
 ## Registers the importer that turns [code].field[/code] maps into [SunflowerFieldMap] resources,
-## shows the progress of fields building in the background in the 3D editor's toolbar, and adds
-## the "Bake impostors" button to the inspector of plants and fields.
+## shows the progress of fields building in the background in the 3D editor's toolbar, adds the
+## "Bake impostors" button to the inspector of plants and fields, and paints the selected field's
+## map with the brush toolbar (field_painter.gd).
 ## The [SunflowerField] node itself is registered by its [code]class_name[/code].
 
 const Native: GDScript = preload("native.gd")
@@ -10,6 +11,7 @@ const Native: GDScript = preload("native.gd")
 var _importer: EditorImportPlugin
 var _progress: Control
 var _inspector: EditorInspectorPlugin
+var _painter: RefCounted
 
 
 func _enter_tree() -> void:
@@ -21,6 +23,8 @@ func _enter_tree() -> void:
 	add_control_to_container(CONTAINER_SPATIAL_EDITOR_MENU, _progress)
 	_inspector = preload("impostor_inspector.gd").new()
 	add_inspector_plugin(_inspector)
+	_painter = preload("field_painter.gd").new(get_undo_redo())
+	add_control_to_container(CONTAINER_SPATIAL_EDITOR_MENU, _painter.toolbar)
 
 
 func _exit_tree() -> void:
@@ -31,3 +35,25 @@ func _exit_tree() -> void:
 	_progress = null
 	remove_inspector_plugin(_inspector)
 	_inspector = null
+	_painter.edit(null)
+	remove_control_from_container(CONTAINER_SPATIAL_EDITOR_MENU, _painter.toolbar)
+	_painter.toolbar.queue_free()
+	_painter.release()
+	_painter = null
+
+
+func _handles(object: Object) -> bool:
+	return object is SunflowerField
+
+
+func _edit(object: Object) -> void:
+	_painter.edit(object as SunflowerField)
+
+
+func _make_visible(visible: bool) -> void:
+	if not visible:
+		_painter.edit(null)
+
+
+func _forward_3d_gui_input(camera: Camera3D, event: InputEvent) -> int:
+	return AFTER_GUI_INPUT_STOP if _painter.handle_input(camera, event) else AFTER_GUI_INPUT_PASS

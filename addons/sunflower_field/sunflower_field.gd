@@ -45,7 +45,11 @@ const PartMeshes: GDScript = preload("part_meshes.gd")
 	set(value):
 		if value == map:
 			return
+		if map and map.changed.is_connected(_queue_rebuild):
+			map.changed.disconnect(_queue_rebuild)
 		map = value
+		if map:
+			map.changed.connect(_queue_rebuild)  # a reimport or a paint stroke changes it in place
 		_queue_rebuild()
 		update_configuration_warnings()
 ## The size of one map character on the ground (thesis: 0.5 m, four plants per square metre).

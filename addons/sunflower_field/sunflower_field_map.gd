@@ -12,8 +12,12 @@ const Native: GDScript = preload("native.gd")
 
 ## Where the map came from; names the file in error messages.
 @export var source_path: String = ""
-## The raw bytes of the map file.
-@export var text: PackedByteArray = PackedByteArray()
+## The raw bytes of the map file. Setting them tells the fields that use the map.
+@export var text: PackedByteArray = PackedByteArray():
+	set(value):
+		if value != text:
+			text = value
+			emit_changed()
 ## Columns declared by the header (filled when the map is checked).
 @export var columns: int = 0
 ## Rows declared by the header (filled when the map is checked).

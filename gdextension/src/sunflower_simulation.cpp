@@ -16,6 +16,8 @@ void SunflowerSimulation::bind_methods() {
 	const char *CLASS = "SunflowerSimulation";
 	gdx::bind_method(CLASS, "load_map", &SunflowerSimulation::load_map, { "text", "source", "legend", "plant_symbols", "max_plants" });
 	gdx::bind_method(CLASS, "get_species_count", &SunflowerSimulation::get_species_count);
+	gdx::bind_method(CLASS, "paint_map", &SunflowerSimulation::paint_map, { "center", "radius", "symbol", "density", "seed" });
+	gdx::bind_method(CLASS, "write_map", &SunflowerSimulation::write_map);
 	gdx::bind_method(CLASS, "clear", &SunflowerSimulation::clear);
 	gdx::bind_method(CLASS, "get_map_columns", &SunflowerSimulation::get_map_columns);
 	gdx::bind_method(CLASS, "get_map_rows", &SunflowerSimulation::get_map_rows);
@@ -188,6 +190,40 @@ gdx::PackedFloat32Array SunflowerSimulation::get_object_heights() const {
 	const std::vector<float> &heights = _sim.get_layout().object_ground;
 	gdx::PackedFloat32Array out;
 	out.assign(heights.data(), heights.size());
+	return out;
+}
+
+gdx::PackedInt32Array SunflowerSimulation::paint_map(gdx::Vector2 p_center, double p_radius, const gdx::String &p_symbol,
+		double p_density, int64_t p_seed) {
+	const std::u32string symbol = decode_utf8_text(p_symbol.utf8());
+	SF_FAIL_COND_V_MSG(symbol.size() > 1, gdx::PackedInt32Array(),
+			"paint_map: the symbol must be one character ('*', a legend symbol) or empty to erase; got \"" + p_symbol.utf8() +
+					"\"");
+	CellContent content;
+	if (!symbol.empty() && symbol[0] != U' ' && symbol[0] != U'.') {
+		const size_t plant = _sim.get_plant_symbols().find(symbol[0]);
+		if (symbol[0] == U'*') {
+			content = CellContent{ CellContent::PLANT, 0, 0 };
+		} else if (plant != std::u32string::npos) {
+			content = CellContent{ CellContent::PLANT, int(plant) + 1, 0 };
+		} else {
+			content = CellContent{ CellContent::OBJECT, 0, symbol[0] };
+		}
+	}
+	std::vector<int> changed;
+	_sim.paint_map(gdx::to_core(p_center), float(p_radius), content, float(p_density), uint64_t(p_seed), changed);
+	if (!changed.empty()) {
+		release_multimeshes(); // the layout changed
+	}
+	gdx::PackedInt32Array out;
+	out.assign(changed.data(), changed.size());
+	return out;
+}
+
+gdx::PackedByteArray SunflowerSimulation::write_map() const {
+	const std::string text = write_field_map(_sim.get_map(), _sim.get_plant_symbols());
+	gdx::PackedByteArray out;
+	out.assign(reinterpret_cast<const uint8_t *>(text.data()), text.size());
 	return out;
 }
 

@@ -15,6 +15,8 @@ public:
 	gdx::String load_map(const gdx::PackedByteArray &p_text, const gdx::String &p_source, const gdx::String &p_legend,
 			const gdx::String &p_plant_symbols, int64_t p_max_plants);
 	int64_t get_species_count() const;
+	gdx::PackedInt32Array paint_map(gdx::Vector2 p_center, double p_radius, const gdx::String &p_symbol, double p_density, int64_t p_seed);
+	gdx::PackedByteArray write_map() const;
 	void clear();
 	int64_t get_map_columns() const;
 	int64_t get_map_rows() const;

@@ -68,6 +68,12 @@ public:
 			const std::string &p_source, const MapLimits &p_limits, MapError &r_error);
 	void clear();
 	const FieldMap &get_map() const { return _map; }
+	// The legend's plant symbols the map was read with (species 1, 2, …).
+	const std::u32string &get_plant_symbols() const { return _plant_symbols; }
+	// A brush stroke on the map (see paint_cells; p_center and p_radius in cells), then the layout
+	// rebuilt when anything changed; the changed cells are appended to r_changed.
+	void paint_map(const glm::vec2 &p_center, float p_radius, const CellContent &p_content, float p_density, uint64_t p_seed,
+			std::vector<int> &r_changed);
 
 	// Rebuilds the layout when the (sanitised) parameters differ from the current ones; returns
 	// whether it did.
@@ -185,6 +191,7 @@ private:
 	void _move_chunks(size_t p_first, size_t p_last, float p_delta, BucketSet &r_buckets);
 
 	FieldMap _map;
+	std::u32string _plant_symbols;
 	LayoutParams _layout_params;
 	Ground _ground;
 	FieldLayout _layout;

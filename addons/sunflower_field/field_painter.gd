@@ -1,0 +1,306 @@
+@tool
+extends RefCounted
+## Painting a field in the editor: with a [SunflowerField] selected, a toolbar in the 3D editor
+## offers Paint and Erase, the symbol to paint ('*' and the legend's symbols), the brush radius (m)
+## and density (the share of cells a stroke fills, seeded). A circle follows the mouse on the
+## field's ground; a stroke changes the map in the native core and shows it as it goes; on release
+## the [code].field[/code] file is written back in the canonical form (see fields/FORMAT.md),
+## reimported, and the stroke is one undo/redo action. Ctrl-drag erases.
+
+## What a drag does.
+enum Mode { OFF, PAINT, ERASE }
+
+const Native: GDScript = preload("native.gd")
+const FieldNodes: GDScript = preload("field_nodes.gd")
+## The stroke's preview is rebuilt at most this often, milliseconds.
+const PREVIEW_INTERVAL_MS: int = 60
+const CIRCLE_SEGMENTS: int = 48
+
+## The painter of the editor's plugin (tests drive it).
+static var active: RefCounted
+
+var mode: Mode = Mode.OFF
+## The map symbol painted: '*' or one of the legend's.
+var symbol: String = "*"
+## Brush radius, metres.
+var radius: float = 2.0
+## The share of cells in reach a painting stroke fills, 0 to 1.
+var density: float = 1.0
+## The toolbar (added to the 3D editor's menu by the plugin).
+var toolbar: HBoxContainer
+## The last error a stroke ran into ("" when none), for tests and the toolbar's tooltip.
+var last_error: String = ""
+
+var _undo_redo: EditorUndoRedoManager
+var _field: SunflowerField
+var _stroke: RefCounted  # the native simulation holding the map while a stroke paints it
+var _original: PackedByteArray
+var _original_map: SunflowerFieldMap
+var _seed: int = 0
+var _last_preview_ms: int = 0
+var _circle: MeshInstance3D
+var _buttons: Dictionary = {}
+var _symbols: OptionButton
+var _radius_box: SpinBox
+var _density_box: SpinBox
+
+
+func _init(undo_redo: EditorUndoRedoManager) -> void:
+	_undo_redo = undo_redo
+	active = self
+	toolbar = HBoxContainer.new()
+	toolbar.name = "SunflowerFieldPainter"
+	for entry: Array in [["Paint", Mode.PAINT], ["Erase", Mode.ERASE]]:
+		var button: Button = Button.new()
+		button.text = entry[0]
+		button.toggle_mode = true
+		button.tooltip_text = "%s the field's map with the brush (Ctrl-drag erases)" % entry[0]
+		button.toggled.connect(func(on: bool) -> void: set_mode(entry[1] if on else Mode.OFF))
+		toolbar.add_child(button)
+		_buttons[entry[1]] = button
+	_symbols = OptionButton.new()
+	_symbols.tooltip_text = "The map symbol painted"
+	_symbols.item_selected.connect(func(index: int) -> void: symbol = _symbols.get_item_text(index).left(1))
+	toolbar.add_child(_symbols)
+	_radius_box = _spin_box("Brush radius", 0.25, 50.0, 0.25, radius, " m")
+	_radius_box.value_changed.connect(func(value: float) -> void: radius = value)
+	_density_box = _spin_box("Density: the share of cells a stroke fills", 0.05, 1.0, 0.05, density, "")
+	_density_box.value_changed.connect(func(value: float) -> void: density = value)
+	toolbar.visible = false
+
+
+## Lets go of the editor (the plugin leaves): no painter is active any more.
+func release() -> void:
+	if active == self:
+		active = null
+
+
+## Paints [param field] from now on (null: none); the toolbar shows while there is one.
+func edit(field: SunflowerField) -> void:
+	if field == _field:
+		return
+	_end_stroke(false)
+	_remove_circle()
+	_field = field
+	toolbar.visible = _field != null
+	if _field:
+		_symbols.clear()
+		_symbols.add_item("* (%s)" % _field.get_plant_types()[0].name)
+		for key: Variant in _field.legend:
+			var value: Variant = _field.legend[key]
+			var what: String = (value as FieldPlant).name if value is FieldPlant else "object"
+			_symbols.add_item("%s (%s)" % [str(key), what])
+		_symbols.select(0)
+		symbol = "*"
+
+
+## Sets what a drag does, keeping the toolbar's buttons in step.
+func set_mode(new_mode: Mode) -> void:
+	mode = new_mode
+	for key: Mode in _buttons:
+		(_buttons[key] as Button).set_pressed_no_signal(key == mode)
+	if mode == Mode.OFF:
+		_remove_circle()
+
+
+## The 3D editor's input while a field is edited: moves the brush circle; a left drag paints
+## (or erases with Ctrl, or in Erase mode). True when the event was used.
+func handle_input(camera: Camera3D, event: InputEvent) -> bool:
+	if _field == null or not _field.is_inside_tree() or mode == Mode.OFF:
+		return false
+	if event is InputEventMouseMotion:
+		return _on_motion(camera, event as InputEventMouseMotion)
+	if event is InputEventMouseButton and (event as InputEventMouseButton).button_index == MOUSE_BUTTON_LEFT:
+		return _on_left_button(camera, event as InputEventMouseButton)
+	return false
+
+
+func _on_motion(camera: Camera3D, motion: InputEventMouseMotion) -> bool:
+	var hit: Variant = ground_point(camera, motion.position)
+	_show_circle(hit)
+	if _stroke and hit != null and (motion.button_mask & MOUSE_BUTTON_MASK_LEFT) != 0:
+		_paint_at(hit)
+	return _stroke != null
+
+
+func _on_left_button(camera: Camera3D, button: InputEventMouseButton) -> bool:
+	if not button.pressed:
+		var was_painting: bool = _stroke != null
+		_end_stroke(true)
+		return was_painting
+	var hit: Variant = ground_point(camera, button.position)
+	if hit == null or not _begin_stroke(button.ctrl_pressed or mode == Mode.ERASE):
+		return false
+	_paint_at(hit)
+	return true
+
+
+## Where the ray through [param screen_point] meets the field's ground (world space), or null: the
+## colliders under the brush when the ground is made of them, else the field's plane.
+func ground_point(camera: Camera3D, screen_point: Vector2) -> Variant:
+	var from: Vector3 = camera.project_ray_origin(screen_point)
+	var direction: Vector3 = camera.project_ray_normal(screen_point)
+	if _field.ground_source == SunflowerField.GroundSource.COLLIDERS:
+		var query: PhysicsRayQueryParameters3D = PhysicsRayQueryParameters3D.create(
+			from, from + direction * 4000.0, _field.ground_collision_mask
+		)
+		var hit: Dictionary = _field.get_world_3d().direct_space_state.intersect_ray(query)
+		if not hit.is_empty():
+			return hit["position"]
+	var plane: Plane = Plane(_field.global_basis.y.normalized(), _field.global_position)
+	return plane.intersects_ray(from, direction)
+
+
+func _begin_stroke(erasing: bool) -> bool:
+	last_error = ""
+	var field_map: SunflowerFieldMap = _field.map
+	if field_map == null:
+		return _fail("SunflowerField painter: the field has no map to paint; give it one (a .field file)")
+	var path: String = field_map.source_path
+	if not path.begins_with("res://") or not FileAccess.file_exists(path):
+		return _fail("SunflowerField painter: %s is not a .field file in the project; nothing to write back" % path)
+	var writable: FileAccess = FileAccess.open(path, FileAccess.READ_WRITE)
+	if writable == null:
+		return _fail(
+			(
+				"SunflowerField painter: %s cannot be written (%s); the map stays as it is"
+				% [path, error_string(FileAccess.get_open_error())]
+			)
+		)
+	writable.close()
+	_stroke = Native.create_simulation()
+	if _stroke == null:
+		return false
+	var legend: Dictionary = _field.legend
+	var message: String = _stroke.load_map(
+		field_map.text, path, FieldNodes.legend_symbols(legend), FieldNodes.plant_symbols(legend), 0
+	)
+	if not message.is_empty():
+		_stroke = null
+		return _fail("SunflowerField painter: the map cannot be painted: " + message)
+	_original = field_map.text
+	_original_map = field_map
+	_seed += 1
+	_stroke.set_meta(&"erasing", erasing)
+	return true
+
+
+func _paint_at(world_point: Vector3) -> void:
+	var local: Vector3 = _field.to_local(world_point)
+	var cells: Vector2 = Vector2(local.x, local.z) / _field.cell_size
+	var painted: String = "" if _stroke.get_meta(&"erasing") else symbol
+	var changed: PackedInt32Array = _stroke.paint_map(cells, radius / _field.cell_size, painted, density, _seed)
+	if changed.is_empty() or Time.get_ticks_msec() - _last_preview_ms < PREVIEW_INTERVAL_MS:
+		return
+	_preview()
+
+
+## Shows the stroke so far: the field draws a map made from the core's text of it.
+func _preview() -> void:
+	_last_preview_ms = Time.get_ticks_msec()
+	var preview: SunflowerFieldMap = SunflowerFieldMap.new()
+	preview.source_path = _original_map.source_path
+	preview.text = _stroke.write_map()
+	_field.map = preview
+
+
+## Ends the stroke: when [param commit] and the map changed, one undo/redo action writes it.
+func _end_stroke(commit: bool) -> void:
+	if _stroke == null:
+		return
+	var painted: PackedByteArray = _stroke.write_map()
+	var path: String = _original_map.source_path
+	var field: SunflowerField = _field
+	_stroke = null
+	if not commit or painted == _original:
+		field.map = _original_map
+		return
+	_undo_redo.create_action("Paint field map", UndoRedo.MERGE_DISABLE, field)
+	_undo_redo.add_do_method(self, &"write_map", field, path, painted)
+	_undo_redo.add_undo_method(self, &"write_map", field, path, _original)
+	_undo_redo.commit_action()
+
+
+## Writes [param bytes] to the map file [param path], reimports it and gives [param field] the
+## imported map. On failure (a read-only or vanished file) says so and the field shows the file.
+func write_map(field: SunflowerField, path: String, bytes: PackedByteArray) -> void:
+	var file: FileAccess = FileAccess.open(path, FileAccess.WRITE)
+	if file == null:
+		_fail(
+			(
+				"SunflowerField painter: cannot write %s (%s); the map is unchanged"
+				% [path, error_string(FileAccess.get_open_error())]
+			)
+		)
+		field.map = load(path) as SunflowerFieldMap if ResourceLoader.exists(path) else field.map
+		return
+	file.store_buffer(bytes)
+	file.close()
+	_allow_legend_symbols(path, FieldNodes.legend_symbols(field.legend) + FieldNodes.plant_symbols(field.legend))
+	var filesystem: EditorFileSystem = EditorInterface.get_resource_filesystem()
+	filesystem.update_file(path)
+	filesystem.reimport_files(PackedStringArray([path]))
+	field.map = ResourceLoader.load(path, "", ResourceLoader.CACHE_MODE_REPLACE) as SunflowerFieldMap
+
+
+## The import settings of a map file allow the symbols painted into it.
+func _allow_legend_symbols(path: String, symbols: String) -> void:
+	var settings: ConfigFile = ConfigFile.new()
+	if settings.load(path + ".import") != OK:
+		return
+	var allowed: String = settings.get_value("params", "legend_symbols", "")
+	var missing: String = ""
+	for character: String in symbols:
+		if not allowed.contains(character):
+			missing += character
+	if not missing.is_empty():
+		settings.set_value("params", "legend_symbols", allowed + missing)
+		settings.save(path + ".import")
+
+
+func _fail(message: String) -> bool:
+	last_error = message
+	push_error(message)
+	return false
+
+
+func _show_circle(hit: Variant) -> void:
+	if hit == null:
+		_remove_circle()
+		return
+	if _circle == null:
+		_circle = MeshInstance3D.new()
+		_circle.name = "PainterBrush"
+		_circle.mesh = ImmediateMesh.new()
+		var material: StandardMaterial3D = StandardMaterial3D.new()
+		material.shading_mode = BaseMaterial3D.SHADING_MODE_UNSHADED
+		material.no_depth_test = true
+		material.albedo_color = Color(1.0, 0.85, 0.2) if mode == Mode.PAINT else Color(1.0, 0.3, 0.25)
+		_circle.material_override = material
+		_field.add_child(_circle, false, Node.INTERNAL_MODE_BACK)
+	var mesh: ImmediateMesh = _circle.mesh
+	mesh.clear_surfaces()
+	mesh.surface_begin(Mesh.PRIMITIVE_LINE_STRIP)
+	for i: int in CIRCLE_SEGMENTS + 1:
+		var angle: float = TAU * i / CIRCLE_SEGMENTS
+		mesh.surface_add_vertex(Vector3(cos(angle) * radius, 0.05, sin(angle) * radius))
+	mesh.surface_end()
+	_circle.global_position = hit
+
+
+func _remove_circle() -> void:
+	if _circle and is_instance_valid(_circle):
+		_circle.queue_free()
+	_circle = null
+
+
+func _spin_box(tooltip: String, low: float, high: float, step: float, value: float, suffix: String) -> SpinBox:
+	var box: SpinBox = SpinBox.new()
+	box.min_value = low
+	box.max_value = high
+	box.step = step
+	box.value = value
+	box.suffix = suffix
+	box.tooltip_text = tooltip
+	toolbar.add_child(box)
+	return box

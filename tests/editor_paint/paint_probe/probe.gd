@@ -1,0 +1,163 @@
+@tool
+extends EditorPlugin
+## Opens res://paint.tscn in the editor, selects its field and drives the addon's painter with
+## synthetic mouse events through a camera looking down: a stroke paints only within the brush,
+## Ctrl-drag erases, undo restores the file byte for byte and the plants, redo repeats, the file
+## reimports to the field shown, and a stroke on a missing file says so and changes nothing.
+## Prints "probe: ok" or the failures, then quits the editor.
+
+const MAP_PATH: String = "res://paint.field"
+const CELL: float = 0.5
+
+var _problems: PackedStringArray = []
+var _tree: SceneTree
+
+
+func _enter_tree() -> void:
+	if OS.get_environment("RUN_PROBE") == "1":  # not while tools/import_project.sh imports the project
+		_run.call_deferred()
+
+
+func _run() -> void:
+	_tree = EditorInterface.get_base_control().get_tree()
+	await _frames(60)
+	EditorInterface.open_scene_from_path("res://paint.tscn")
+	await _frames(30)
+	var root: Node = EditorInterface.get_edited_scene_root()
+	var field: SunflowerField = root.get_node("Field") as SunflowerField
+	EditorInterface.edit_node(field)
+	await _frames(5)
+	field.finish_build()
+	var painter: RefCounted = load("res://addons/sunflower_field/field_painter.gd").get("active")
+	_check(painter != null and painter.toolbar.visible, "the painter's toolbar shows for a selected field")
+	var camera: Camera3D = Camera3D.new()
+	camera.projection = Camera3D.PROJECTION_ORTHOGONAL
+	camera.size = 40.0
+	root.add_child(camera)
+	camera.global_transform = Transform3D(Basis.from_euler(Vector3(-PI / 2.0, 0.0, 0.0)), Vector3(10.0, 50.0, 7.5))
+	var original: PackedByteArray = FileAccess.get_file_as_bytes(MAP_PATH)
+	var plants_before: int = field.get_plant_count()
+	var cells_before: Dictionary = _cells(original)
+
+	# Paint a stroke in the empty east half: only the cells within the brush of the points visited.
+	painter.set_mode(1)  # Paint
+	painter.radius = 1.5
+	painter.density = 1.0
+	var points: Array[Vector3] = [Vector3(15.0, 0.0, 5.0), Vector3(15.5, 0.0, 7.0), Vector3(16.0, 0.0, 9.0)]
+	_drag(painter, camera, points, false)
+	await _frames(3)
+	var painted: PackedByteArray = FileAccess.get_file_as_bytes(MAP_PATH)
+	_check(painted != original, "the stroke wrote the file")
+	_check(painted.get_string_from_utf8().begins_with("# Painting test field"), "the comment line is kept")
+	var cells_after: Dictionary = _cells(painted)
+	var added: int = 0
+	for cell: Vector2i in cells_after:
+		if cells_before.has(cell):
+			continue
+		added += 1
+		_check(_near_any(cell, points, 1.5 + 0.01), "cell %s painted outside the brush" % cell)
+	for x: int in range(20, 40):
+		for y: int in 30:
+			var cell: Vector2i = Vector2i(x, y)
+			if _near_any(cell, points, 1.5 - 0.01):
+				_check(cells_after.has(cell), "cell %s within the brush not painted" % cell)
+	_check(added > 20, "the stroke painted the cells in reach (%d)" % added)
+	field.finish_build()
+	await _frames(2)
+	field.finish_build()
+	_check(field.get_plant_count() == plants_before + added, "the field shows the painted plants")
+	_check(field.map.text == painted, "the field's map is the reimported file")
+
+	# Undo restores the file byte for byte and the plants; redo paints again.
+	var undo_redo: EditorUndoRedoManager = EditorInterface.get_editor_undo_redo()
+	var history: UndoRedo = undo_redo.get_history_undo_redo(undo_redo.get_object_history_id(field))
+	history.undo()
+	await _frames(2)
+	field.finish_build()
+	_check(FileAccess.get_file_as_bytes(MAP_PATH) == original, "undo restores the file byte for byte")
+	_check(field.get_plant_count() == plants_before, "undo restores the plants")
+	history.redo()
+	await _frames(2)
+	field.finish_build()
+	_check(FileAccess.get_file_as_bytes(MAP_PATH) == painted, "redo writes the painted map again")
+	_check(field.get_plant_count() == plants_before + added, "redo shows the painted plants")
+
+	# Ctrl-drag erases the planted west half within the brush.
+	var erase_points: Array[Vector3] = [Vector3(5.0, 0.0, 7.5)]
+	_drag(painter, camera, erase_points, true)
+	await _frames(2)
+	var erased: Dictionary = _cells(FileAccess.get_file_as_bytes(MAP_PATH))
+	var removed: int = 0
+	for cell: Vector2i in cells_after:
+		if not erased.has(cell):
+			removed += 1
+			_check(_near_any(cell, erase_points, 1.51), "cell %s erased outside the brush" % cell)
+	_check(removed > 20, "Ctrl-drag erased the cells in reach (%d)" % removed)
+
+	# A map whose file is gone: a clear error, nothing written, no undo step.
+	var version: int = history.get_version()
+	var orphan: SunflowerFieldMap = SunflowerFieldMap.new()
+	orphan.source_path = "res://gone.field"
+	orphan.text = painted
+	field.map = orphan
+	_drag(painter, camera, points, false)
+	_check(str(painter.last_error).contains("res://gone.field"), "the error names the file: " + str(painter.last_error))
+	_check(not FileAccess.file_exists("res://gone.field"), "nothing written")
+	_check(history.get_version() == version, "no undo step")
+	camera.free()
+	print("probe: " + ("ok" if _problems.is_empty() else "; ".join(_problems)))
+	_tree.quit(0 if _problems.is_empty() else 1)
+
+
+## A left drag through [param points] (Ctrl held when [param ctrl]): press, moves, release.
+func _drag(painter: RefCounted, camera: Camera3D, points: Array[Vector3], ctrl: bool) -> void:
+	var press: InputEventMouseButton = InputEventMouseButton.new()
+	press.button_index = MOUSE_BUTTON_LEFT
+	press.pressed = true
+	press.ctrl_pressed = ctrl
+	press.position = camera.unproject_position(points[0])
+	painter.handle_input(camera, press)
+	for point: Vector3 in points.slice(1):
+		var motion: InputEventMouseMotion = InputEventMouseMotion.new()
+		motion.position = camera.unproject_position(point)
+		motion.button_mask = MOUSE_BUTTON_MASK_LEFT
+		motion.ctrl_pressed = ctrl
+		painter.handle_input(camera, motion)
+	var release: InputEventMouseButton = InputEventMouseButton.new()
+	release.button_index = MOUSE_BUTTON_LEFT
+	release.pressed = false
+	release.position = camera.unproject_position(points[-1])
+	painter.handle_input(camera, release)
+
+
+## The plant cells of a map's text (canonical or not: rows after the header, '*' only here).
+func _cells(bytes: PackedByteArray) -> Dictionary:
+	var cells: Dictionary = {}
+	var lines: PackedStringArray = bytes.get_string_from_utf8().split("\n")
+	var header: int = 0
+	while lines[header].begins_with("#"):
+		header += 1
+	for row: int in range(header + 1, lines.size()):
+		var line: String = lines[row]
+		for column: int in line.length():
+			if line[column] == "*":
+				cells[Vector2i(column, row - header - 1)] = true
+	return cells
+
+
+func _near_any(cell: Vector2i, points: Array[Vector3], reach: float) -> bool:
+	var centre: Vector2 = (Vector2(cell) + Vector2(0.5, 0.5)) * CELL
+	for point: Vector3 in points:
+		if centre.distance_to(Vector2(point.x, point.z)) <= reach:
+			return true
+	return false
+
+
+func _check(condition: bool, message: String) -> void:
+	if not condition and _problems.size() < 12:
+		_problems.append(message)
+
+
+func _frames(count: int) -> void:
+	for i: int in count:
+		await _tree.process_frame
