@@ -67,12 +67,15 @@ class Job:
 			error = ground.apply_height_map(simulation, cell_size)
 		if error.is_empty():
 			ground.prepare_rays(simulation)
+		if error.is_empty() and not ground.needs_rays():
+			simulation.compute_chunk_signatures()  # so the main thread compares chunks cheaply
 		usec += Time.get_ticks_usec() - start
 
 	## Lays the plants out on the ground the rays found.
 	func lay_out_on_rays() -> void:
 		var start: int = Time.get_ticks_usec()
 		error = ground.apply_rays(simulation)
+		simulation.compute_chunk_signatures()
 		usec += Time.get_ticks_usec() - start
 
 
@@ -81,6 +84,7 @@ var nodes: FieldNodes
 var job: Job
 var background: bool
 var _field: Node3D
+var _previous: FieldNodes
 var _phase: Phase = Phase.READ
 var _task: int = -1
 var _start_usec: int = Time.get_ticks_usec()
@@ -90,11 +94,15 @@ var _longest_step_ms: float = 0.0
 
 
 ## Starts reading [param build_job] on a worker thread when [param in_background], else at once.
-func _init(field: Node3D, impostors: Array[ImpostorSet], build_job: Job, in_background: bool) -> void:
+## Chunks that draw as [param previous]'s (the FieldNodes drawn now, or null) take its nodes.
+func _init(
+	field: Node3D, impostors: Array[ImpostorSet], build_job: Job, in_background: bool, previous: FieldNodes
+) -> void:
 	job = build_job
 	background = in_background
 	_field = field
 	nodes = FieldNodes.new(field, job.simulation, impostors)
+	_previous = previous
 	if background:
 		_task = WorkerThreadPool.add_task(job.run, true, "SunflowerField: " + job.source.get_file())
 	else:
@@ -143,6 +151,9 @@ func step(budget_usec: int, switch_distance: float, max_draw_distance: float, ex
 		if not job.error.is_empty():
 			return true
 		start = Time.get_ticks_usec()
+	if _previous:  # the layout is complete: match its chunks with the field drawn now, once
+		nodes.reuse(_previous)
+		_previous = null
 	var had_chunks: bool = nodes.get_chunk_progress() < 1.0
 	var done: bool = nodes.make_chunks(budget_usec, switch_distance, max_draw_distance)
 	_frames += 1
@@ -184,6 +195,8 @@ func get_stats() -> Dictionary:
 		"main_thread_ms": _main_thread_ms,
 		"worker_ms": job.usec / 1000.0,
 		"ground_ray_ms": job.ground.get_ray_ms(),
+		"chunks_made": nodes.chunks_made,
+		"chunks_kept": nodes.chunks_kept,
 		"cells_without_ground": job.simulation.get_cells_without_ground(),
 		"total_ms": (Time.get_ticks_usec() - _start_usec) / 1000.0,
 	}

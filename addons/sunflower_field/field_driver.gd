@@ -79,7 +79,7 @@ func rebuild(background: bool = false) -> void:
 		return
 	var job: FieldBuild.Job = FieldBuild.Job.for_field(_field, plants, native_simulation)
 	background = background and _field.background_build and field_map.text.size() >= BACKGROUND_BUILD_MIN_BYTES
-	build = FieldBuild.new(_field, impostor_sets, job, background)
+	build = FieldBuild.new(_field, impostor_sets, job, background, drawn)
 	if background or build.needs_frames():
 		building.append(_field)
 		_field.emit_signal(&"build_progress", 0.0)
@@ -142,6 +142,7 @@ func show(nodes: FieldNodes) -> void:
 	configure_threads()
 	FieldObserver.push(_field, _field.observer, _field.frustum_culling, drawn.simulation)
 	drawn.simulation.update(0.0)
+	drawn.simulation.show_static_chunks()  # chunks taken from the field before keep their state
 	drawn.show_filled_buckets()
 
 

@@ -12,6 +12,9 @@ const PartMeshes: GDScript = preload("part_meshes.gd")
 const PART_NAMES: PackedStringArray = PartMeshes.PART_NAMES
 
 var simulation: RefCounted
+## Chunk node pairs made, and taken over from the previous field, by this field's build.
+var chunks_made: int = 0
+var chunks_kept: int = 0
 var _owner: Node3D
 var _impostors: Array[ImpostorSet]  # per species
 var _chunk_nodes: Array[MultiMeshInstance3D] = []
@@ -19,6 +22,9 @@ var _dynamic_nodes: Array[MultiMeshInstance3D] = []
 var _dynamic_buckets: PackedInt32Array = []  # the native bucket each dynamic node draws
 var _shown_buckets: PackedByteArray = []  # the filled buckets the nodes' visibility follows
 var _object_nodes: Array[Node] = []
+## The field drawn before this one: chunks that draw the same here take its nodes and GPU buffers.
+var _previous: RefCounted
+var _previous_by_key: Dictionary = {}  # chunk key → the previous field's chunk
 
 
 ## Nodes of [param owner] for [param field_simulation], its far levels drawn with [param impostors]
@@ -29,8 +35,22 @@ func _init(owner: Node3D, field_simulation: RefCounted, impostors: Array[Imposto
 	_impostors = impostors
 
 
-## Makes hidden chunk nodes until all exist or the next pair would overrun [param budget_usec]
-## (negative: no limit; one pair is always made); true when every chunk has its pair.
+## Builds on [param previous] (the FieldNodes drawn now, or null): a chunk that lies where one of
+## its chunks lies and draws the same (equal key and signature) takes that chunk's nodes and
+## buffers instead of new ones, so a small change of a large map (a paint stroke, say) makes nodes
+## and uploads buffers only for the chunks it touched.
+func reuse(previous: RefCounted) -> void:
+	_previous = previous
+	if previous == null:
+		return
+	var old_simulation: RefCounted = previous.simulation
+	for chunk: int in old_simulation.get_chunk_count():
+		_previous_by_key[old_simulation.get_chunk_key(chunk)] = chunk
+
+
+## Makes hidden chunk nodes (or takes the previous field's, see [method reuse]) until all exist or
+## the next pair would overrun [param budget_usec] (negative: no limit; one pair is always made);
+## true when every chunk has its pair.
 func make_chunks(budget_usec: int, switch_distance: float, max_draw_distance: float) -> bool:
 	var start: int = Time.get_ticks_usec()
 	var chunk_count: int = simulation.get_chunk_count()
@@ -38,6 +58,9 @@ func make_chunks(budget_usec: int, switch_distance: float, max_draw_distance: fl
 	while _chunk_nodes.size() < 2 * chunk_count:
 		var pair_start: int = Time.get_ticks_usec()
 		var chunk: int = _chunk_nodes.size() / 2
+		if _take_previous(chunk):
+			continue
+		chunks_made += 1
 		var aabb: AABB = simulation.get_chunk_aabb(chunk)
 		var impostors: ImpostorSet = _impostors[simulation.get_chunk_species(chunk)]
 		var sprite: MultiMeshInstance3D = _make_node("ChunkSprites%d" % chunk, impostors.sprite_mesh(), aabb)
@@ -53,6 +76,37 @@ func make_chunks(budget_usec: int, switch_distance: float, max_draw_distance: fl
 		if budget_usec >= 0 and now - start + slowest >= budget_usec:
 			break
 	return _chunk_nodes.size() >= 2 * chunk_count
+
+
+## Takes the previous field's nodes for [param chunk] when they draw the same; true if it did.
+func _take_previous(chunk: int) -> bool:
+	var old: int = _previous_by_key.get(simulation.get_chunk_key(chunk), -1)
+	if old < 0 or _previous.simulation.get_chunk_signature(old) != simulation.get_chunk_signature(chunk):
+		return false
+	var pair: Array = _previous.give_chunk_nodes(old)
+	if pair.is_empty():
+		return false
+	_chunk_nodes.append_array(pair)
+	simulation.adopt_chunk_multimeshes(
+		chunk,
+		(pair[0] as MultiMeshInstance3D).multimesh.get_rid(),
+		(pair[1] as MultiMeshInstance3D).multimesh.get_rid()
+	)
+	chunks_kept += 1
+	return true
+
+
+## Hands [param chunk]'s node pair to a field built on this one (and forgets it); empty when it has
+## none (any more).
+func give_chunk_nodes(chunk: int) -> Array:
+	if 2 * chunk + 1 >= _chunk_nodes.size():
+		return []
+	var pair: Array = [_chunk_nodes[2 * chunk], _chunk_nodes[2 * chunk + 1]]
+	if not is_instance_valid(pair[0]) or not is_instance_valid(pair[1]):
+		return []
+	_chunk_nodes[2 * chunk] = null
+	_chunk_nodes[2 * chunk + 1] = null
+	return pair
 
 
 ## The share of chunk nodes made, 0 to 1.
@@ -83,8 +137,14 @@ func finish(species_meshes: Array, legend: Dictionary, cell_size: float, sway_ma
 		_add_dynamic(sprite, first + Native.constant(&"BUCKET_SPRITE"))
 		_add_dynamic(billboard, first + Native.constant(&"BUCKET_BILLBOARD"))
 	_place_objects(legend, cell_size)
-	for node: MultiMeshInstance3D in _chunk_nodes:
+	for i: int in _chunk_nodes.size():
+		var node: MultiMeshInstance3D = _chunk_nodes[i]
 		node.visible = true
+		# Nodes made while the old field's were still there, or taken from it, get their own names.
+		var wanted: String = ("ChunkSprites%d" if i % 2 == 0 else "ChunkBillboards%d") % (i / 2)
+		if node.name != wanted:
+			node.name = wanted
+	_previous = null  # its remaining nodes go with it
 
 
 ## Shows only the near buckets that hold plants after the simulation's last update: an empty
@@ -103,7 +163,8 @@ func show_filled_buckets() -> void:
 ## (0: never).
 func apply_ranges(switch_distance: float, max_draw_distance: float) -> void:
 	for i: int in range(0, _chunk_nodes.size() - 1, 2):
-		_set_chunk_ranges(_chunk_nodes[i], _chunk_nodes[i + 1], switch_distance, max_draw_distance)
+		if _chunk_nodes[i]:
+			_set_chunk_ranges(_chunk_nodes[i], _chunk_nodes[i + 1], switch_distance, max_draw_distance)
 
 
 ## Draws [param mesh] for [param species]' near plants' [param level] / [param part] (once the
@@ -119,7 +180,8 @@ func set_part_mesh(species: int, level: int, part: int, mesh: Mesh) -> void:
 func collect(nodes: Dictionary) -> void:
 	for list: Array in [_chunk_nodes, _dynamic_nodes, _object_nodes]:
 		for node: Node in list:
-			nodes[node] = true
+			if node:
+				nodes[node] = true
 
 
 ## Frees every node (the simulation forgets its MultiMeshes first).
@@ -127,9 +189,10 @@ func free_nodes() -> void:
 	simulation.release_multimeshes()
 	for nodes: Array in [_chunk_nodes, _dynamic_nodes, _object_nodes]:
 		for node: Node in nodes:
-			if is_instance_valid(node):
+			if node and is_instance_valid(node):
 				node.free()
 		nodes.clear()
+	_previous = null
 
 
 ## The legend's symbols as one string (each key one character other than '*', ' ' and '.'),

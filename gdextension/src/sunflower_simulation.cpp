@@ -50,6 +50,11 @@ void SunflowerSimulation::bind_methods() {
 	gdx::bind_method(CLASS, "set_bucket_multimesh", &SunflowerSimulation::set_bucket_multimesh, { "bucket", "multimesh" });
 	gdx::bind_method(CLASS, "set_chunk_multimeshes", &SunflowerSimulation::set_chunk_multimeshes, { "chunk", "sprite", "billboard" });
 	gdx::bind_method(CLASS, "release_multimeshes", &SunflowerSimulation::release_multimeshes);
+	gdx::bind_method(CLASS, "adopt_chunk_multimeshes", &SunflowerSimulation::adopt_chunk_multimeshes, { "chunk", "sprite", "billboard" });
+	gdx::bind_method(CLASS, "show_static_chunks", &SunflowerSimulation::show_static_chunks);
+	gdx::bind_method(CLASS, "get_chunk_key", &SunflowerSimulation::get_chunk_key, { "chunk" });
+	gdx::bind_method(CLASS, "get_chunk_signature", &SunflowerSimulation::get_chunk_signature, { "chunk" });
+	gdx::bind_method(CLASS, "compute_chunk_signatures", &SunflowerSimulation::compute_chunk_signatures);
 	gdx::bind_method(CLASS, "get_chunk_count", &SunflowerSimulation::get_chunk_count);
 	gdx::bind_method(CLASS, "get_chunk_aabb", &SunflowerSimulation::get_chunk_aabb, { "chunk" });
 	gdx::bind_method(CLASS, "update", &SunflowerSimulation::update, { "delta" });
@@ -336,6 +341,32 @@ void SunflowerSimulation::set_chunk_multimeshes(int64_t p_chunk, gdx::Rid p_spri
 	_chunks.resize(_sim.get_chunk_count());
 	_chunks[static_cast<size_t>(p_chunk)] = ChunkTarget{ p_sprite, p_billboard };
 	_upload_chunk(static_cast<uint32_t>(p_chunk));
+}
+
+void SunflowerSimulation::adopt_chunk_multimeshes(int64_t p_chunk, gdx::Rid p_sprite, gdx::Rid p_billboard) {
+	if (!_is_chunk(p_chunk) || !gdx::RenderingServer::ensure_loaded()) {
+		return;
+	}
+	_chunks.resize(_sim.get_chunk_count());
+	_chunks[static_cast<size_t>(p_chunk)] = ChunkTarget{ p_sprite, p_billboard }; // their data is this chunk's already
+}
+
+void SunflowerSimulation::show_static_chunks() {
+	for (uint32_t chunk = 0; chunk < _chunks.size(); ++chunk) {
+		_show_static_chunk(chunk);
+	}
+}
+
+int64_t SunflowerSimulation::get_chunk_key(int64_t p_chunk) const {
+	return _is_chunk(p_chunk) ? int64_t(_sim.get_chunk_key(uint32_t(p_chunk))) : -1;
+}
+
+int64_t SunflowerSimulation::get_chunk_signature(int64_t p_chunk) const {
+	return _is_chunk(p_chunk) ? int64_t(_sim.get_chunk_signature(uint32_t(p_chunk))) : 0;
+}
+
+void SunflowerSimulation::compute_chunk_signatures() {
+	_sim.compute_chunk_signatures();
 }
 
 void SunflowerSimulation::release_multimeshes() {

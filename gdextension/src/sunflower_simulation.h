@@ -50,6 +50,11 @@ public:
 
 	void set_bucket_multimesh(int64_t p_bucket, gdx::Rid p_multimesh);
 	void set_chunk_multimeshes(int64_t p_chunk, gdx::Rid p_sprite, gdx::Rid p_billboard);
+	void adopt_chunk_multimeshes(int64_t p_chunk, gdx::Rid p_sprite, gdx::Rid p_billboard);
+	void show_static_chunks();
+	int64_t get_chunk_key(int64_t p_chunk) const;
+	int64_t get_chunk_signature(int64_t p_chunk) const;
+	void compute_chunk_signatures();
 	void release_multimeshes();
 	int64_t get_chunk_count() const;
 	gdx::AABB get_chunk_aabb(int64_t p_chunk) const;

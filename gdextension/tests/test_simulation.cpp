@@ -2,6 +2,8 @@
 
 #include <doctest/doctest.h>
 
+#include <map>
+
 #include <glm/geometric.hpp>
 
 #include <numeric>
@@ -555,4 +557,32 @@ TEST_CASE("colour variety: plants are white without it; with it, seeded brightne
 	sim.write_chunk_instances(0, impostors.data());
 	const Plant &plant = sim.get_layout().plants[sim.get_layout().chunk_plants[0]];
 	CHECK(impostors[TRANSFORM_FLOATS + 1] == plant.color(params.varieties[0]).y);
+}
+
+TEST_CASE("painting changes only the painted cells' plants: every other plant keeps its place, yaw and size") {
+	FieldSimulation sim;
+	MapError error;
+	std::string text = "30 30\n";
+	for (int row = 0; row < 30; ++row) {
+		text += std::string(30, '*') + "\n";
+	}
+	REQUIRE(sim.load_map(text, U"", "paint", MapLimits{}, error));
+	LayoutParams params = sim.get_layout_params();
+	params.varieties[0].scale_min = 0.5f;
+	params.varieties[0].scale_max = 1.5f;
+	sim.set_layout_params(params);
+	std::map<std::pair<float, float>, std::pair<float, float>> before; // position → yaw, size
+	for (const Plant &plant : sim.get_layout().plants) {
+		before[{ plant.position.x, plant.position.y }] = { plant.yaw, plant.scale };
+	}
+	std::vector<int> changed;
+	sim.paint_map(glm::vec2(10.0f, 10.0f), 3.0f, CellContent{}, 1.0f, 1, changed);
+	REQUIRE(!changed.empty());
+	CHECK(sim.get_plant_count() == 900 - changed.size() / 2);
+	for (const Plant &plant : sim.get_layout().plants) {
+		const auto found = before.find({ plant.position.x, plant.position.y });
+		REQUIRE(found != before.end());
+		CHECK(found->second.first == plant.yaw);
+		CHECK(found->second.second == plant.scale);
+	}
 }

@@ -24,11 +24,16 @@ glm::vec4 Plant::color(const PlantVariety &p_variety) const {
 
 namespace {
 
+// The key of a cell's randomness: its place in the map, so painting one cell changes no other plant.
+uint64_t cell_key(const FieldMap &p_map, int p_column, int p_row) {
+	return uint64_t(p_row) * uint64_t(p_map.columns) + uint64_t(p_column);
+}
+
 // The root (x, z) of the plant of a map's plant cell, and its α: the thesis' rule, seeded per cell.
-glm::vec2 plant_root(const LayoutParams &p_params, uint64_t p_index, int p_column, int p_row, float &r_alpha) {
-	r_alpha = unit_float(hash_plant(p_params.seed, p_index, STREAM_ALPHA)) * p_params.jitter;
+glm::vec2 plant_root(const LayoutParams &p_params, uint64_t p_key, int p_column, int p_row, float &r_alpha) {
+	r_alpha = unit_float(hash_plant(p_params.seed, p_key, STREAM_ALPHA)) * p_params.jitter;
 	const float alpha_z = p_params.independent_jitter
-			? unit_float(hash_plant(p_params.seed, p_index, STREAM_ALPHA_Z)) * p_params.jitter
+			? unit_float(hash_plant(p_params.seed, p_key, STREAM_ALPHA_Z)) * p_params.jitter
 			: r_alpha;
 	return glm::vec2((float(p_column) + r_alpha) * p_params.cell_size, (float(p_row) + alpha_z) * p_params.cell_size);
 }
@@ -42,12 +47,11 @@ glm::vec2 object_centre(const LayoutParams &p_params, const MapObject &p_object)
 void ground_points(const FieldMap &p_map, const LayoutParams &p_params, std::vector<glm::vec2> &r_points) {
 	r_points.clear();
 	r_points.reserve(size_t(p_map.plant_count) + p_map.objects.size());
-	uint64_t index = 0;
 	float alpha = 0.0f;
 	for (int row = 0; row < p_map.rows; ++row) {
 		for (int column = 0; column < p_map.columns; ++column) {
 			if (p_map.has_plant(column, row)) {
-				r_points.push_back(plant_root(p_params, index++, column, row, alpha));
+				r_points.push_back(plant_root(p_params, cell_key(p_map, column, row), column, row, alpha));
 			}
 		}
 	}
@@ -89,7 +93,8 @@ void build_layout(const FieldMap &p_map, const LayoutParams &p_params, const Gro
 			const uint32_t species = std::min(uint32_t(p_map.species_at(column, row)), species_count - 1);
 			const PlantVariety &variety = p_params.varieties[species];
 			Plant plant;
-			plant.position = plant_root(p_params, index, column, row, plant.alpha);
+			const uint64_t key = cell_key(p_map, column, row);
+			plant.position = plant_root(p_params, key, column, row, plant.alpha);
 			plant.ground = ground_fits ? p_ground.height_at(uint32_t(index), plant.position) : NAN;
 			if (!std::isfinite(plant.ground)) {
 				++r_layout.cells_without_ground;
@@ -97,9 +102,9 @@ void build_layout(const FieldMap &p_map, const LayoutParams &p_params, const Gro
 				continue;
 			}
 			plant.lean = p_ground.lean_at(uint32_t(index), plant.position);
-			plant.yaw = (unit_float(hash_plant(p_params.seed, index, STREAM_YAW)) * 2.0f - 1.0f) * variety.yaw_range;
+			plant.yaw = (unit_float(hash_plant(p_params.seed, key, STREAM_YAW)) * 2.0f - 1.0f) * variety.yaw_range;
 			plant.scale = variety.scale_min +
-					(variety.scale_max - variety.scale_min) * unit_float(hash_plant(p_params.seed, index, STREAM_SCALE));
+					(variety.scale_max - variety.scale_min) * unit_float(hash_plant(p_params.seed, key, STREAM_SCALE));
 			const int cx = std::min(chunks_x - 1, static_cast<int>(plant.position.x / chunk_size));
 			const int cz = std::min(chunks_z - 1, static_cast<int>(plant.position.y / chunk_size));
 			plant.chunk = static_cast<uint32_t>(cz * chunks_x + cx) * species_count + species; // key for now

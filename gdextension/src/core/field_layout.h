@@ -101,7 +101,8 @@ struct FieldLayout {
 void ground_points(const FieldMap &p_map, const LayoutParams &p_params, std::vector<glm::vec2> &r_points);
 
 // Fills r_layout from p_map on p_ground. Deterministic: the same map, params, seed and ground give the
-// same layout; a plant's randomness follows its cell, so a hole elsewhere changes no other plant.
+// same layout; a plant's randomness follows its cell's place in the map, so a hole or a painted cell
+// elsewhere changes no other plant.
 void build_layout(const FieldMap &p_map, const LayoutParams &p_params, const Ground &p_ground, FieldLayout &r_layout);
 
 } // namespace sunflower

@@ -96,6 +96,7 @@ void FieldSimulation::set_shape(const PlantShape &p_shape, uint32_t p_species) {
 	shape.cull_radius = shape.cull_radius > 0.0f && std::isfinite(shape.cull_radius) ? shape.cull_radius : defaults.cull_radius;
 	shape.part_scale = shape.part_scale > 0.0f && std::isfinite(shape.part_scale) ? shape.part_scale : current.part_scale;
 	current = shape;
+	_chunk_signatures.clear(); // the impostors' scale may have changed
 	_lod_due = true;
 }
 
@@ -116,6 +117,7 @@ void FieldSimulation::_rebuild() {
 	_plant_wind.assign(plants, PlantWind{});
 	_pushed.clear(); // the slots pointed at the old field's plants
 	_chunk_active.assign(_layout.chunks.size(), 0);
+	_chunk_signatures.clear(); // the shape or variety may have changed too: computed anew
 	_visit_mark.assign(_layout.chunks.size(), 0);
 	_lod_pass = 0;
 	_active_chunks.clear();
@@ -482,6 +484,36 @@ void FieldSimulation::write_chunk_instances(uint32_t p_chunk, float *r_out) cons
 	const Chunk &chunk = _layout.chunks[p_chunk];
 	for (uint32_t k = 0; k < chunk.count; ++k) {
 		_write_impostor(r_out + size_t(k) * FLOATS_PER_INSTANCE, _layout.plants[_layout.chunk_plants[chunk.first + k]]);
+	}
+}
+
+uint64_t FieldSimulation::get_chunk_key(uint32_t p_chunk) const {
+	const Chunk &chunk = _layout.chunks[p_chunk];
+	const glm::vec2 centre = (chunk.min + chunk.max) * 0.5f;
+	const GridRange cell = _grid_range(centre, 0.0f);
+	return (uint64_t(cell.z0) * uint64_t(_layout.grid_x) + uint64_t(cell.x0)) * FieldMap::MAX_SPECIES + chunk.species;
+}
+
+uint64_t FieldSimulation::get_chunk_signature(uint32_t p_chunk) const {
+	if (p_chunk < _chunk_signatures.size() && _chunk_signatures[p_chunk] != 0) {
+		return _chunk_signatures[p_chunk];
+	}
+	const uint32_t count = _layout.chunks[p_chunk].count;
+	std::vector<float> instances(size_t(count) * FLOATS_PER_INSTANCE);
+	write_chunk_instances(p_chunk, instances.data());
+	// FNV-1a over the bytes of the instance data, never 0.
+	uint64_t hash = 1469598103934665603ull ^ count;
+	const uint8_t *bytes = reinterpret_cast<const uint8_t *>(instances.data());
+	for (size_t i = 0; i < instances.size() * sizeof(float); ++i) {
+		hash = (hash ^ bytes[i]) * 1099511628211ull;
+	}
+	return hash == 0 ? 1 : hash;
+}
+
+void FieldSimulation::compute_chunk_signatures() {
+	_chunk_signatures.assign(_layout.chunks.size(), 0);
+	for (uint32_t c = 0; c < _layout.chunks.size(); ++c) {
+		_chunk_signatures[c] = get_chunk_signature(c);
 	}
 }
 

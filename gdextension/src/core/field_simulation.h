@@ -151,8 +151,15 @@ public:
 	bool is_chunk_active(uint32_t p_chunk) const { return _chunk_active[p_chunk] != 0; }
 	// Chunks whose active flag changed in the last update (their static buffers must be shown/hidden).
 	const std::vector<uint32_t> &get_changed_chunks() const { return _changed_chunks; }
-	// The static impostor transforms of a chunk's plants: count × 12 floats into r_out.
+	// The static impostor instances of a chunk's plants: count × FLOATS_PER_INSTANCE floats into r_out.
 	void write_chunk_instances(uint32_t p_chunk, float *r_out) const;
+	// Where a chunk lies: grid cell × MAX_SPECIES + species (the same in any layout of the map's size).
+	uint64_t get_chunk_key(uint32_t p_chunk) const;
+	// A hash of a chunk's static instance data (what its impostor buffers hold): two chunks with equal
+	// keys and signatures draw the same, so a rebuilt field can keep the old one's GPU buffers.
+	// Computed for every chunk by compute_chunk_signatures() (a worker may call it), else on demand.
+	uint64_t get_chunk_signature(uint32_t p_chunk) const;
+	void compute_chunk_signatures();
 	// The distance at which a static chunk switches from sprite to billboard (engine visibility range).
 	float get_billboard_distance() const { return _lod.get_params().distances[3]; }
 
@@ -204,6 +211,7 @@ private:
 	std::vector<uint8_t> _plant_lod;
 	std::vector<PlantWind> _plant_wind;
 	std::vector<uint8_t> _chunk_active;
+	std::vector<uint64_t> _chunk_signatures; // 0: not computed
 	std::vector<uint32_t> _active_chunks;
 	std::vector<uint32_t> _previous_active;
 	std::vector<uint32_t> _changed_chunks;
