@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
-# Benchmarks (numbers, not pass/fail). Prints five tables:
+# Benchmarks (numbers, not pass/fail). Prints six tables:
 #   1. the C++ core alone: per-frame time and memory, 1M vs 4M plants;
 #   2. the engine: the demo's recording mode on the demo, large and million-plant fields;
 #   3. the thesis' experiment (Tables 3-5): a 1 500-plant field at distances 5 and 40 m, every plant
 #      as one representation, then LOD off / on / on + culling, ratios beside the thesis' ratios;
 #   4. baselines on one field and path: naive (every plant as the level-1 mesh) and Godot-native.
 #   5. ground placement: a million plants on a height map and on colliders (the build's figures).
+#   6. painting: a brush stroke on a million-plant field, main-thread time per frame, chunks rebuilt.
 # Results (JSON per run) go to build/bench/; BENCH_FRAMES and BENCH_RESOLUTION change the runs.
 set -euo pipefail
 repo=$(cd "$(dirname "$0")/.." && pwd)
@@ -64,3 +65,7 @@ echo "## 5. Ground placement in the engine (headless): a million plants on a 102
 "$repo/tools/import_project.sh" "$repo/tests/godot" >/dev/null
 timeout 600 "$godot" --headless --audio-driver Dummy --path "$repo/tests/godot" --script res://bench/ground_bench.gd 2>&1 | grep '^|' ||
   echo "bench: the ground benchmark failed" >&2
+echo
+echo "## 6. Painting a million-plant field: a brush stroke, one mouse move a frame (headless)"
+timeout 600 "$godot" --headless --audio-driver Dummy --path "$repo/tests/godot" --script res://bench/paint_bench.gd 2>&1 | grep '^|' ||
+  echo "bench: the painting benchmark failed" >&2

@@ -59,12 +59,15 @@ func make_chunks(budget_usec: int, switch_distance: float, max_draw_distance: fl
 		var pair_start: int = Time.get_ticks_usec()
 		var chunk: int = _chunk_nodes.size() / 2
 		if _take_previous(chunk):
+			if budget_usec >= 0 and Time.get_ticks_usec() - start + slowest >= budget_usec:
+				break
 			continue
 		chunks_made += 1
 		var aabb: AABB = simulation.get_chunk_aabb(chunk)
 		var impostors: ImpostorSet = _impostors[simulation.get_chunk_species(chunk)]
-		var sprite: MultiMeshInstance3D = _make_node("ChunkSprites%d" % chunk, impostors.sprite_mesh(), aabb)
-		var billboard: MultiMeshInstance3D = _make_node("ChunkBillboards%d" % chunk, impostors.billboard_mesh(), aabb)
+		var key: int = simulation.get_chunk_key(chunk)
+		var sprite: MultiMeshInstance3D = _make_node("ChunkSprites%d" % key, impostors.sprite_mesh(), aabb)
+		var billboard: MultiMeshInstance3D = _make_node("ChunkBillboards%d" % key, impostors.billboard_mesh(), aabb)
 		billboard.cast_shadow = GeometryInstance3D.SHADOW_CASTING_SETTING_OFF
 		sprite.visible = false  # shown when the whole field is ready
 		billboard.visible = false
@@ -90,7 +93,8 @@ func _take_previous(chunk: int) -> bool:
 	simulation.adopt_chunk_multimeshes(
 		chunk,
 		(pair[0] as MultiMeshInstance3D).multimesh.get_rid(),
-		(pair[1] as MultiMeshInstance3D).multimesh.get_rid()
+		(pair[1] as MultiMeshInstance3D).multimesh.get_rid(),
+		_previous.simulation.is_chunk_shown(old)
 	)
 	chunks_kept += 1
 	return true
@@ -140,10 +144,10 @@ func finish(species_meshes: Array, legend: Dictionary, cell_size: float, sway_ma
 	for i: int in _chunk_nodes.size():
 		var node: MultiMeshInstance3D = _chunk_nodes[i]
 		node.visible = true
-		# Nodes made while the old field's were still there, or taken from it, get their own names.
-		var wanted: String = ("ChunkSprites%d" if i % 2 == 0 else "ChunkBillboards%d") % (i / 2)
-		if node.name != wanted:
-			node.name = wanted
+		# Chunk nodes are named after the chunk's key (where it lies); one made while the old field's
+		# node of that key was still there had a generated name until now.
+		if str(node.name).begins_with("@"):
+			node.name = ("ChunkSprites%d" if i % 2 == 0 else "ChunkBillboards%d") % simulation.get_chunk_key(i / 2)
 	_previous = null  # its remaining nodes go with it
 
 

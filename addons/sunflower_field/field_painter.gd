@@ -38,6 +38,7 @@ var _original: PackedByteArray
 var _original_map: SunflowerFieldMap
 var _seed: int = 0
 var _last_preview_ms: int = 0
+var _preview_due: bool = false
 var _circle: MeshInstance3D
 var _buttons: Dictionary = {}
 var _symbols: OptionButton
@@ -120,6 +121,8 @@ func _on_motion(camera: Camera3D, motion: InputEventMouseMotion) -> bool:
 	_show_circle(hit)
 	if _stroke and hit != null and (motion.button_mask & MOUSE_BUTTON_MASK_LEFT) != 0:
 		_paint_at(hit)
+	elif _stroke:
+		_preview_if_due()
 	return _stroke != null
 
 
@@ -171,6 +174,7 @@ func _begin_stroke(erasing: bool) -> bool:
 	_stroke = Native.create_simulation()
 	if _stroke == null:
 		return false
+	_stroke.set_ground_heights(PackedFloat32Array(), PackedFloat32Array(), 0.0)  # a map only: no plants laid out
 	var legend: Dictionary = _field.legend
 	var message: String = _stroke.load_map(
 		field_map.text, path, FieldNodes.legend_symbols(legend), FieldNodes.plant_symbols(legend), 0
@@ -189,10 +193,17 @@ func _paint_at(world_point: Vector3) -> void:
 	var local: Vector3 = _field.to_local(world_point)
 	var cells: Vector2 = Vector2(local.x, local.z) / _field.cell_size
 	var painted: String = "" if _stroke.get_meta(&"erasing") else symbol
-	var changed: PackedInt32Array = _stroke.paint_map(cells, radius / _field.cell_size, painted, density, _seed)
-	if changed.is_empty() or Time.get_ticks_msec() - _last_preview_ms < PREVIEW_INTERVAL_MS:
-		return
-	_preview()
+	var changed: PackedInt32Array = _stroke.paint_map(cells, radius / _field.cell_size, painted, density, _seed, false)
+	_preview_due = _preview_due or not changed.is_empty()
+	_preview_if_due()
+
+
+## Shows the stroke so far once the last preview has been built (a large field builds over a few
+## frames; starting another would drop it) and the interval has passed.
+func _preview_if_due() -> void:
+	if _preview_due and not _field.is_building() and Time.get_ticks_msec() - _last_preview_ms >= PREVIEW_INTERVAL_MS:
+		_preview_due = false
+		_preview()
 
 
 ## Shows the stroke so far: the field draws a map made from the core's text of it.

@@ -16,7 +16,7 @@ void SunflowerSimulation::bind_methods() {
 	const char *CLASS = "SunflowerSimulation";
 	gdx::bind_method(CLASS, "load_map", &SunflowerSimulation::load_map, { "text", "source", "legend", "plant_symbols", "max_plants" });
 	gdx::bind_method(CLASS, "get_species_count", &SunflowerSimulation::get_species_count);
-	gdx::bind_method(CLASS, "paint_map", &SunflowerSimulation::paint_map, { "center", "radius", "symbol", "density", "seed" });
+	gdx::bind_method(CLASS, "paint_map", &SunflowerSimulation::paint_map, { "center", "radius", "symbol", "density", "seed", "relayout" });
 	gdx::bind_method(CLASS, "write_map", &SunflowerSimulation::write_map);
 	gdx::bind_method(CLASS, "clear", &SunflowerSimulation::clear);
 	gdx::bind_method(CLASS, "get_map_columns", &SunflowerSimulation::get_map_columns);
@@ -50,7 +50,9 @@ void SunflowerSimulation::bind_methods() {
 	gdx::bind_method(CLASS, "set_bucket_multimesh", &SunflowerSimulation::set_bucket_multimesh, { "bucket", "multimesh" });
 	gdx::bind_method(CLASS, "set_chunk_multimeshes", &SunflowerSimulation::set_chunk_multimeshes, { "chunk", "sprite", "billboard" });
 	gdx::bind_method(CLASS, "release_multimeshes", &SunflowerSimulation::release_multimeshes);
-	gdx::bind_method(CLASS, "adopt_chunk_multimeshes", &SunflowerSimulation::adopt_chunk_multimeshes, { "chunk", "sprite", "billboard" });
+	gdx::bind_method(CLASS, "adopt_chunk_multimeshes", &SunflowerSimulation::adopt_chunk_multimeshes,
+			{ "chunk", "sprite", "billboard", "shown" });
+	gdx::bind_method(CLASS, "is_chunk_shown", &SunflowerSimulation::is_chunk_shown, { "chunk" });
 	gdx::bind_method(CLASS, "show_static_chunks", &SunflowerSimulation::show_static_chunks);
 	gdx::bind_method(CLASS, "get_chunk_key", &SunflowerSimulation::get_chunk_key, { "chunk" });
 	gdx::bind_method(CLASS, "get_chunk_signature", &SunflowerSimulation::get_chunk_signature, { "chunk" });
@@ -199,7 +201,7 @@ gdx::PackedFloat32Array SunflowerSimulation::get_object_heights() const {
 }
 
 gdx::PackedInt32Array SunflowerSimulation::paint_map(gdx::Vector2 p_center, double p_radius, const gdx::String &p_symbol,
-		double p_density, int64_t p_seed) {
+		double p_density, int64_t p_seed, bool p_relayout) {
 	const std::u32string symbol = decode_utf8_text(p_symbol.utf8());
 	SF_FAIL_COND_V_MSG(symbol.size() > 1, gdx::PackedInt32Array(),
 			"paint_map: the symbol must be one character ('*', a legend symbol) or empty to erase; got \"" + p_symbol.utf8() +
@@ -216,8 +218,8 @@ gdx::PackedInt32Array SunflowerSimulation::paint_map(gdx::Vector2 p_center, doub
 		}
 	}
 	std::vector<int> changed;
-	_sim.paint_map(gdx::to_core(p_center), float(p_radius), content, float(p_density), uint64_t(p_seed), changed);
-	if (!changed.empty()) {
+	_sim.paint_map(gdx::to_core(p_center), float(p_radius), content, float(p_density), uint64_t(p_seed), p_relayout, changed);
+	if (p_relayout && !changed.empty()) {
 		release_multimeshes(); // the layout changed
 	}
 	gdx::PackedInt32Array out;
@@ -343,17 +345,23 @@ void SunflowerSimulation::set_chunk_multimeshes(int64_t p_chunk, gdx::Rid p_spri
 	_upload_chunk(static_cast<uint32_t>(p_chunk));
 }
 
-void SunflowerSimulation::adopt_chunk_multimeshes(int64_t p_chunk, gdx::Rid p_sprite, gdx::Rid p_billboard) {
+void SunflowerSimulation::adopt_chunk_multimeshes(int64_t p_chunk, gdx::Rid p_sprite, gdx::Rid p_billboard, bool p_shown) {
 	if (!_is_chunk(p_chunk) || !gdx::RenderingServer::ensure_loaded()) {
 		return;
 	}
 	_chunks.resize(_sim.get_chunk_count());
-	_chunks[static_cast<size_t>(p_chunk)] = ChunkTarget{ p_sprite, p_billboard }; // their data is this chunk's already
+	_chunks[static_cast<size_t>(p_chunk)] = ChunkTarget{ p_sprite, p_billboard, p_shown }; // their data is this chunk's already
+}
+
+bool SunflowerSimulation::is_chunk_shown(int64_t p_chunk) const {
+	return p_chunk >= 0 && size_t(p_chunk) < _chunks.size() && _chunks[size_t(p_chunk)].shown;
 }
 
 void SunflowerSimulation::show_static_chunks() {
 	for (uint32_t chunk = 0; chunk < _chunks.size(); ++chunk) {
-		_show_static_chunk(chunk);
+		if (_chunks[chunk].shown == _sim.is_chunk_active(chunk)) { // shown while active, or hidden while static
+			_show_static_chunk(chunk);
+		}
 	}
 }
 
@@ -405,6 +413,7 @@ void SunflowerSimulation::_upload_chunk(uint32_t p_chunk) {
 // the dynamic buckets.
 void SunflowerSimulation::_show_static_chunk(uint32_t p_chunk) {
 	const int64_t visible = _sim.is_chunk_active(p_chunk) ? 0 : -1;
+	_chunks[p_chunk].shown = visible != 0;
 	for (gdx::Rid multimesh : { _chunks[p_chunk].sprite, _chunks[p_chunk].billboard }) {
 		if (multimesh.is_valid()) {
 			gdx::RenderingServer::multimesh_set_visible_instances(multimesh, visible);

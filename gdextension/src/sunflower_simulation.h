@@ -15,7 +15,8 @@ public:
 	gdx::String load_map(const gdx::PackedByteArray &p_text, const gdx::String &p_source, const gdx::String &p_legend,
 			const gdx::String &p_plant_symbols, int64_t p_max_plants);
 	int64_t get_species_count() const;
-	gdx::PackedInt32Array paint_map(gdx::Vector2 p_center, double p_radius, const gdx::String &p_symbol, double p_density, int64_t p_seed);
+	gdx::PackedInt32Array paint_map(gdx::Vector2 p_center, double p_radius, const gdx::String &p_symbol, double p_density, int64_t p_seed,
+			bool p_relayout);
 	gdx::PackedByteArray write_map() const;
 	void clear();
 	int64_t get_map_columns() const;
@@ -50,7 +51,8 @@ public:
 
 	void set_bucket_multimesh(int64_t p_bucket, gdx::Rid p_multimesh);
 	void set_chunk_multimeshes(int64_t p_chunk, gdx::Rid p_sprite, gdx::Rid p_billboard);
-	void adopt_chunk_multimeshes(int64_t p_chunk, gdx::Rid p_sprite, gdx::Rid p_billboard);
+	void adopt_chunk_multimeshes(int64_t p_chunk, gdx::Rid p_sprite, gdx::Rid p_billboard, bool p_shown);
+	bool is_chunk_shown(int64_t p_chunk) const;
 	void show_static_chunks();
 	int64_t get_chunk_key(int64_t p_chunk) const;
 	int64_t get_chunk_signature(int64_t p_chunk) const;
@@ -101,6 +103,7 @@ private:
 	struct ChunkTarget {
 		gdx::Rid sprite;
 		gdx::Rid billboard;
+		bool shown = true; // whether its static impostors are drawn now (as last set)
 	};
 
 	sunflower::FieldSimulation _sim;

@@ -576,7 +576,7 @@ TEST_CASE("painting changes only the painted cells' plants: every other plant ke
 		before[{ plant.position.x, plant.position.y }] = { plant.yaw, plant.scale };
 	}
 	std::vector<int> changed;
-	sim.paint_map(glm::vec2(10.0f, 10.0f), 3.0f, CellContent{}, 1.0f, 1, changed);
+	sim.paint_map(glm::vec2(10.0f, 10.0f), 3.0f, CellContent{}, 1.0f, 1, true, changed);
 	REQUIRE(!changed.empty());
 	CHECK(sim.get_plant_count() == 900 - changed.size() / 2);
 	for (const Plant &plant : sim.get_layout().plants) {

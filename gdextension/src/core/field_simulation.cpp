@@ -33,10 +33,10 @@ bool FieldSimulation::load_map(const std::string &p_text, const std::u32string &
 }
 
 void FieldSimulation::paint_map(const glm::vec2 &p_center, float p_radius, const CellContent &p_content, float p_density,
-		uint64_t p_seed, std::vector<int> &r_changed) {
+		uint64_t p_seed, bool p_relayout, std::vector<int> &r_changed) {
 	const size_t before = r_changed.size();
 	paint_cells(_map, p_center.x, p_center.y, p_radius, p_content, p_density, p_seed, r_changed);
-	if (r_changed.size() != before) {
+	if (p_relayout && r_changed.size() != before) {
 		_rebuild();
 	}
 }

@@ -70,10 +70,11 @@ public:
 	const FieldMap &get_map() const { return _map; }
 	// The legend's plant symbols the map was read with (species 1, 2, …).
 	const std::u32string &get_plant_symbols() const { return _plant_symbols; }
-	// A brush stroke on the map (see paint_cells; p_center and p_radius in cells), then the layout
-	// rebuilt when anything changed; the changed cells are appended to r_changed.
+	// A brush stroke on the map (see paint_cells; p_center and p_radius in cells), then, when
+	// p_relayout, the layout rebuilt if anything changed; the changed cells are appended to r_changed.
+	// (A simulation that only edits a map, for a painter, skips the layout.)
 	void paint_map(const glm::vec2 &p_center, float p_radius, const CellContent &p_content, float p_density, uint64_t p_seed,
-			std::vector<int> &r_changed);
+			bool p_relayout, std::vector<int> &r_changed);
 
 	// Rebuilds the layout when the (sanitised) parameters differ from the current ones; returns
 	// whether it did.

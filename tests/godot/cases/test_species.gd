@@ -76,7 +76,7 @@ func test_a_legend_plant_is_a_species_with_its_own_buckets_impostors_and_counts(
 	for chunk: int in simulation.get_chunk_count():
 		var species: int = simulation.get_chunk_species(chunk)
 		types_seen[species] = true
-		var sprites: MultiMeshInstance3D = _node_named(field, "ChunkSprites%d" % chunk)
+		var sprites: MultiMeshInstance3D = _node_named(field, "ChunkSprites%d" % simulation.get_chunk_key(chunk))
 		var expected: float = 3.5 if species == 1 else 3.2
 		check_near(sprites.multimesh.mesh.get_aabb().size.y, expected, 0.2, "chunk %d's sprites" % chunk)
 	check_eq(types_seen.size(), 2, "chunks of both types")
