@@ -232,6 +232,70 @@ func _end_stroke(commit: bool) -> void:
 	_undo_redo.commit_action()
 
 
+## A new map for [param field]: [param columns] × [param rows] cells, every one a sunflower when
+## [param filled], saved as a new [code].field[/code] beside the edited scene and given to the field
+## as one undo/redo action. Returns the file's path, or "" (with an error).
+func new_map(field: SunflowerField, columns: int, rows: int, filled: bool) -> String:
+	var editor: RefCounted = Native.create_simulation()
+	if editor == null:
+		return ""
+	var lines: PackedStringArray = [
+		"# A field map made in the editor (see fields/FORMAT.md).", "%d %d" % [columns, rows]
+	]
+	for row: int in rows:
+		lines.append("*".repeat(columns) if filled else "")
+	var message: String = editor.load_map("\n".join(lines).to_utf8_buffer(), "new map", "", "", 0)
+	if not message.is_empty():
+		_fail("SunflowerField: cannot make a %d x %d map: %s" % [columns, rows, message])
+		return ""
+	var scene: Node = field.get_tree().edited_scene_root if field.is_inside_tree() else null
+	var folder: String = (
+		scene.scene_file_path.get_base_dir() if scene and not scene.scene_file_path.is_empty() else "res://"
+	)
+	var path: String = folder.path_join(str(field.name).to_snake_case() + ".field")
+	var serial: int = 2
+	while FileAccess.file_exists(path):
+		path = folder.path_join("%s_%d.field" % [str(field.name).to_snake_case(), serial])
+		serial += 1
+	var file: FileAccess = FileAccess.open(path, FileAccess.WRITE)
+	if file == null:
+		_fail("SunflowerField: cannot write %s (%s)" % [path, error_string(FileAccess.get_open_error())])
+		return ""
+	file.store_buffer(editor.write_map())
+	file.close()
+	var filesystem: EditorFileSystem = EditorInterface.get_resource_filesystem()
+	filesystem.update_file(path)
+	filesystem.reimport_files(PackedStringArray([path]))
+	var made: SunflowerFieldMap = ResourceLoader.load(path, "", ResourceLoader.CACHE_MODE_REPLACE) as SunflowerFieldMap
+	_undo_redo.create_action("New field map", UndoRedo.MERGE_DISABLE, field)
+	_undo_redo.add_do_property(field, &"map", made)
+	_undo_redo.add_undo_property(field, &"map", field.map)
+	_undo_redo.commit_action()
+	return path
+
+
+## Gives [param field]'s map [param columns] × [param rows] cells, keeping the cells both sizes share,
+## written back to its file as one undo/redo action. False (with an error) when it cannot.
+func resize_map(field: SunflowerField, columns: int, rows: int) -> bool:
+	var previous: SunflowerField = _field
+	_field = field
+	var began: bool = _begin_stroke(false)
+	_field = previous
+	if not began:
+		return false
+	var editor: RefCounted = _stroke
+	_stroke = null
+	if not editor.resize_map(columns, rows):
+		return _fail("SunflowerField: cannot resize the map to %d x %d" % [columns, rows])
+	var resized: PackedByteArray = editor.write_map()
+	if resized != _original:
+		_undo_redo.create_action("Resize field map", UndoRedo.MERGE_DISABLE, field)
+		_undo_redo.add_do_method(self, &"write_map", field, _original_map.source_path, resized)
+		_undo_redo.add_undo_method(self, &"write_map", field, _original_map.source_path, _original)
+		_undo_redo.commit_action()
+	return true
+
+
 ## Writes [param bytes] to the map file [param path], reimports it and gives [param field] the
 ## imported map. On failure (a read-only or vanished file) says so and the field shows the file.
 func write_map(field: SunflowerField, path: String, bytes: PackedByteArray) -> void:

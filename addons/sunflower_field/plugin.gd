@@ -12,6 +12,7 @@ var _importer: EditorImportPlugin
 var _progress: Control
 var _inspector: EditorInspectorPlugin
 var _painter: RefCounted
+var _map_inspector: EditorInspectorPlugin
 
 
 func _enter_tree() -> void:
@@ -25,6 +26,8 @@ func _enter_tree() -> void:
 	add_inspector_plugin(_inspector)
 	_painter = preload("field_painter.gd").new(get_undo_redo())
 	add_control_to_container(CONTAINER_SPATIAL_EDITOR_MENU, _painter.toolbar)
+	_map_inspector = preload("map_inspector.gd").new(_painter)
+	add_inspector_plugin(_map_inspector)
 
 
 func _exit_tree() -> void:
@@ -35,6 +38,8 @@ func _exit_tree() -> void:
 	_progress = null
 	remove_inspector_plugin(_inspector)
 	_inspector = null
+	remove_inspector_plugin(_map_inspector)
+	_map_inspector = null
 	_painter.edit(null)
 	remove_control_from_container(CONTAINER_SPATIAL_EDITOR_MENU, _painter.toolbar)
 	_painter.toolbar.queue_free()

@@ -18,6 +18,7 @@ void SunflowerSimulation::bind_methods() {
 	gdx::bind_method(CLASS, "get_species_count", &SunflowerSimulation::get_species_count);
 	gdx::bind_method(CLASS, "paint_map", &SunflowerSimulation::paint_map, { "center", "radius", "symbol", "density", "seed", "relayout" });
 	gdx::bind_method(CLASS, "write_map", &SunflowerSimulation::write_map);
+	gdx::bind_method(CLASS, "resize_map", &SunflowerSimulation::resize_map, { "columns", "rows" });
 	gdx::bind_method(CLASS, "clear", &SunflowerSimulation::clear);
 	gdx::bind_method(CLASS, "get_map_columns", &SunflowerSimulation::get_map_columns);
 	gdx::bind_method(CLASS, "get_map_rows", &SunflowerSimulation::get_map_rows);
@@ -225,6 +226,20 @@ gdx::PackedInt32Array SunflowerSimulation::paint_map(gdx::Vector2 p_center, doub
 	gdx::PackedInt32Array out;
 	out.assign(changed.data(), changed.size());
 	return out;
+}
+
+bool SunflowerSimulation::resize_map(int64_t p_columns, int64_t p_rows) {
+	const MapLimits limits;
+	SF_FAIL_COND_V_MSG(p_columns < 1 || p_rows < 1 || p_columns > limits.max_side || p_rows > limits.max_side ||
+					p_columns * p_rows > limits.max_cells,
+			false,
+			"resize_map: " + std::to_string(p_columns) + " x " + std::to_string(p_rows) + " is not a map size (1 to " +
+					std::to_string(limits.max_side) + " a side, at most " + std::to_string(limits.max_cells) + " cells)");
+	FieldMap map = _sim.get_map();
+	resize_field_map(map, int(p_columns), int(p_rows), limits);
+	_sim.replace_map(std::move(map));
+	release_multimeshes(); // the layout changed
+	return true;
 }
 
 gdx::PackedByteArray SunflowerSimulation::write_map() const {

@@ -18,6 +18,7 @@ public:
 	gdx::PackedInt32Array paint_map(gdx::Vector2 p_center, double p_radius, const gdx::String &p_symbol, double p_density, int64_t p_seed,
 			bool p_relayout);
 	gdx::PackedByteArray write_map() const;
+	bool resize_map(int64_t p_columns, int64_t p_rows);
 	void clear();
 	int64_t get_map_columns() const;
 	int64_t get_map_rows() const;

@@ -122,3 +122,22 @@ TEST_CASE("a brush stroke changes the cells within its radius only, seeded by de
 	paint_cells(map, NAN, 3.0f, 3.0f, sunflower, 1.0f, 7, changed);
 	CHECK(changed.empty());
 }
+
+TEST_CASE("resizing keeps the cells both sizes share and cuts or adds the rest") {
+	FieldMap map = parse(CANONICAL, U"Sö", U"m");
+	const int64_t plants = map.plant_count;
+	REQUIRE(resize_field_map(map, 10, 7, MapLimits{}));
+	CHECK(map.columns == 10);
+	CHECK(map.rows == 7);
+	CHECK(map.plant_count == plants);
+	CHECK(write_field_map(map, U"m") == "# A test field.\n#   indented comment\n\n10 7\n***  ***\n*m*S\n\n  **ö**\nmmmm\n\n\n");
+	REQUIRE(resize_field_map(map, 3, 2, MapLimits{}));
+	CHECK(write_field_map(map, U"m") == "# A test field.\n#   indented comment\n\n3 2\n***\n*m*\n");
+	CHECK(map.plant_count == 6);
+	CHECK(map.objects.empty()); // the stone at column 3 was cut off
+	CHECK_FALSE(resize_field_map(map, 0, 5, MapLimits{}));
+	MapLimits small;
+	small.max_cells = 100;
+	CHECK_FALSE(resize_field_map(map, 20, 20, small));
+	CHECK(map.columns == 3); // unchanged
+}

@@ -99,6 +99,11 @@ bool set_cell(FieldMap &r_map, int p_column, int p_row, const CellContent &p_con
 void paint_cells(FieldMap &r_map, float p_center_x, float p_center_y, float p_radius, const CellContent &p_content,
 		float p_density, uint64_t p_seed, std::vector<int> &r_changed);
 
+// Gives the map p_columns × p_rows cells (each at least 1): cells and objects inside both sizes
+// stay where they are, the rest is cut off or added empty. Returns false (and leaves the map) for a
+// size out of p_limits.
+bool resize_field_map(FieldMap &r_map, int p_columns, int p_rows, const MapLimits &p_limits);
+
 // The same with '*' as the only plant.
 bool parse_field_map(std::string_view p_text, std::u32string_view p_legend, const std::string &p_source,
 		const MapLimits &p_limits, FieldMap &r_map, MapError &r_error);

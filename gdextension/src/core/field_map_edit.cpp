@@ -123,6 +123,30 @@ bool set_cell(FieldMap &r_map, int p_column, int p_row, const CellContent &p_con
 	return true;
 }
 
+bool resize_field_map(FieldMap &r_map, int p_columns, int p_rows, const MapLimits &p_limits) {
+	if (p_columns < 1 || p_rows < 1 || p_columns > p_limits.max_side || p_rows > p_limits.max_side ||
+			int64_t(p_columns) * int64_t(p_rows) > p_limits.max_cells) {
+		return false;
+	}
+	std::vector<uint8_t> plants(size_t(p_columns) * size_t(p_rows), 0);
+	int64_t count = 0;
+	for (int row = 0; row < std::min(p_rows, r_map.rows); ++row) {
+		for (int column = 0; column < std::min(p_columns, r_map.columns); ++column) {
+			const uint8_t plant = r_map.plants[cell_index(r_map, column, row)];
+			plants[size_t(row) * size_t(p_columns) + size_t(column)] = plant;
+			count += plant != 0 ? 1 : 0;
+		}
+	}
+	r_map.objects.erase(std::remove_if(r_map.objects.begin(), r_map.objects.end(),
+								[&](const MapObject &p_object) { return p_object.column >= p_columns || p_object.row >= p_rows; }),
+			r_map.objects.end());
+	r_map.plants = std::move(plants);
+	r_map.columns = p_columns;
+	r_map.rows = p_rows;
+	r_map.plant_count = count;
+	return true;
+}
+
 void paint_cells(FieldMap &r_map, float p_center_x, float p_center_y, float p_radius, const CellContent &p_content,
 		float p_density, uint64_t p_seed, std::vector<int> &r_changed) {
 	if (!(p_radius >= 0.0f) || !std::isfinite(p_radius) || !std::isfinite(p_center_x) || !std::isfinite(p_center_y)) {

@@ -41,6 +41,11 @@ void FieldSimulation::paint_map(const glm::vec2 &p_center, float p_radius, const
 	}
 }
 
+void FieldSimulation::replace_map(FieldMap p_map) {
+	_map = std::move(p_map);
+	_rebuild();
+}
+
 void FieldSimulation::clear() {
 	_map = FieldMap{};
 	_rebuild();

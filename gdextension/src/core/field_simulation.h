@@ -67,6 +67,8 @@ public:
 	bool load_map(const std::string &p_text, const std::u32string &p_legend, const std::u32string &p_plant_symbols,
 			const std::string &p_source, const MapLimits &p_limits, MapError &r_error);
 	void clear();
+	// Replaces the map (one already read, e.g. edited) and rebuilds the layout.
+	void replace_map(FieldMap p_map);
 	const FieldMap &get_map() const { return _map; }
 	// The legend's plant symbols the map was read with (species 1, 2, …).
 	const std::u32string &get_plant_symbols() const { return _plant_symbols; }

@@ -104,6 +104,28 @@ func _run() -> void:
 	_check(str(painter.last_error).contains("res://gone.field"), "the error names the file: " + str(painter.last_error))
 	_check(not FileAccess.file_exists("res://gone.field"), "nothing written")
 	_check(history.get_version() == version, "no undo step")
+
+	# New map: an empty 30 x 20 map saved beside the scene, given to the field; undo gives the old.
+	field.map = load(MAP_PATH)
+	var made: String = painter.new_map(field, 30, 20, false)
+	_check(made == "res://field.field" and FileAccess.file_exists(made), "a new map beside the scene: " + made)
+	field.finish_build()
+	_check(field.map.source_path == made and field.get_plant_count() == 0, "the field has the new, empty map")
+	_check(field.get_simulation().get_map_columns() == 30, "30 columns")
+	history.undo()
+	field.finish_build()
+	_check(field.map.source_path == MAP_PATH, "undo gives the field its map back")
+	# Resize: 50 x 25 keeps the cells both sizes share (the first 25 rows); undo restores the bytes.
+	var before_resize: PackedByteArray = FileAccess.get_file_as_bytes(MAP_PATH)
+	var kept: int = 0
+	for cell: Vector2i in _cells(before_resize):
+		kept += 1 if cell.y < 25 else 0
+	_check(painter.resize_map(field, 50, 25), "resized")
+	field.finish_build()
+	_check(FileAccess.get_file_as_string(MAP_PATH).contains("\n50 25\n"), "the header says 50 25")
+	_check(field.get_plant_count() == kept, "the shared cells kept (%d of %d)" % [field.get_plant_count(), kept])
+	history.undo()
+	_check(FileAccess.get_file_as_bytes(MAP_PATH) == before_resize, "undo restores the map before the resize")
 	camera.free()
 	print("probe: " + ("ok" if _problems.is_empty() else "; ".join(_problems)))
 	_tree.quit(0 if _problems.is_empty() else 1)

@@ -1,0 +1,62 @@
+@tool
+extends EditorInspectorPlugin
+## The map buttons at the top of a [SunflowerField]'s inspector: "New map…" (columns × rows, filled
+## or empty, saved as a new .field beside the scene) and "Resize map…" (keeps the cells both sizes
+## share), each one undo/redo action through the painter.
+
+var _painter: RefCounted
+
+
+func _init(painter: RefCounted) -> void:
+	_painter = painter
+
+
+func _can_handle(object: Object) -> bool:
+	return object is SunflowerField
+
+
+func _parse_begin(object: Object) -> void:
+	var field: SunflowerField = object as SunflowerField
+	var row: HBoxContainer = HBoxContainer.new()
+	for entry: Array in [["New map…", false], ["Resize map…", true]]:
+		var button: Button = Button.new()
+		button.text = entry[0]
+		button.size_flags_horizontal = Control.SIZE_EXPAND_FILL
+		button.pressed.connect(_ask_size.bind(field, entry[1]))
+		row.add_child(button)
+	add_custom_control(row)
+
+
+## A dialog asking for columns and rows (and, for a new map, whether it starts planted).
+func _ask_size(field: SunflowerField, resizing: bool) -> void:
+	var dialog: ConfirmationDialog = ConfirmationDialog.new()
+	dialog.title = "Resize the field map" if resizing else "New field map"
+	var box: VBoxContainer = VBoxContainer.new()
+	var columns: SpinBox = _size_box(box, "Columns", field.map.columns if resizing and field.map else 40)
+	var rows: SpinBox = _size_box(box, "Rows", field.map.rows if resizing and field.map else 30)
+	var filled: CheckBox = CheckBox.new()
+	filled.text = "Every cell a sunflower"
+	filled.visible = not resizing
+	box.add_child(filled)
+	dialog.add_child(box)
+	dialog.confirmed.connect(
+		func() -> void:
+			if resizing:
+				_painter.resize_map(field, int(columns.value), int(rows.value))
+			else:
+				_painter.new_map(field, int(columns.value), int(rows.value), filled.button_pressed)
+			dialog.queue_free()
+	)
+	dialog.canceled.connect(dialog.queue_free)
+	EditorInterface.get_base_control().add_child(dialog)
+	dialog.popup_centered()
+
+
+func _size_box(parent: VBoxContainer, label: String, value: int) -> SpinBox:
+	var box: SpinBox = SpinBox.new()
+	box.prefix = label
+	box.min_value = 1
+	box.max_value = 100000
+	box.value = maxi(value, 1)
+	parent.add_child(box)
+	return box
