@@ -150,8 +150,39 @@ func ground_point(camera: Camera3D, screen_point: Vector2) -> Variant:
 		var hit: Dictionary = _field.get_world_3d().direct_space_state.intersect_ray(query)
 		if not hit.is_empty():
 			return hit["position"]
+	if _field.ground_source == SunflowerField.GroundSource.HEIGHT_MAP and _field.get_plant_count() > 0:
+		return _height_map_point(from, direction)
 	var plane: Plane = Plane(_field.global_basis.y.normalized(), _field.global_position)
 	return plane.intersects_ray(from, direction)
+
+
+## Where a ray meets the field's height map: marched in half-metre steps in the field's space, then
+## bisected; null when it meets none within 2 km.
+func _height_map_point(from: Vector3, direction: Vector3) -> Variant:
+	var simulation: RefCounted = _field.get_simulation()
+	var origin: Vector3 = _field.to_local(from)
+	var along: Vector3 = (_field.global_transform.affine_inverse().basis * direction).normalized()
+	var above: Callable = func(t: float) -> float:
+		var at: Vector3 = origin + along * t
+		return at.y - simulation.get_ground_height(Vector2(at.x, at.z))
+	var previous: float = 0.0
+	var t: float = 0.5
+	while t < 2000.0:
+		var height: float = above.call(t)
+		if not is_nan(height) and height <= 0.0:
+			var low: float = previous
+			var high: float = t
+			for i: int in 20:
+				var middle: float = (low + high) * 0.5
+				var h: float = above.call(middle)
+				if is_nan(h) or h > 0.0:
+					low = middle
+				else:
+					high = middle
+			return _field.to_global(origin + along * high)
+		previous = t
+		t += 0.5
+	return null
 
 
 func _begin_stroke(erasing: bool) -> bool:

@@ -52,13 +52,15 @@ func _handles(object: Object) -> bool:
 
 
 func _edit(object: Object) -> void:
-	_painter.edit(object as SunflowerField)
+	if _painter:  # the editor may still call in while it quits
+		_painter.edit(object as SunflowerField)
 
 
 func _make_visible(visible: bool) -> void:
-	if not visible:
+	if _painter and not visible:
 		_painter.edit(null)
 
 
 func _forward_3d_gui_input(camera: Camera3D, event: InputEvent) -> int:
-	return AFTER_GUI_INPUT_STOP if _painter.handle_input(camera, event) else AFTER_GUI_INPUT_PASS
+	var used: bool = _painter != null and _painter.handle_input(camera, event)
+	return AFTER_GUI_INPUT_STOP if used else AFTER_GUI_INPUT_PASS

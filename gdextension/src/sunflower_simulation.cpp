@@ -30,6 +30,7 @@ void SunflowerSimulation::bind_methods() {
 	gdx::bind_method(CLASS, "set_ground_heights", &SunflowerSimulation::set_ground_heights, { "heights", "normals", "tilt" });
 	gdx::bind_method(CLASS, "get_ground_points", &SunflowerSimulation::get_ground_points);
 	gdx::bind_method(CLASS, "get_cells_without_ground", &SunflowerSimulation::get_cells_without_ground);
+	gdx::bind_method(CLASS, "get_ground_height", &SunflowerSimulation::get_ground_height, { "point" });
 	gdx::bind_method(CLASS, "get_object_heights", &SunflowerSimulation::get_object_heights);
 	gdx::bind_method(CLASS, "set_plant_height", &SunflowerSimulation::set_plant_height, { "species", "metres" });
 	gdx::bind_method(CLASS, "set_plant_form", &SunflowerSimulation::set_plant_form,
@@ -188,6 +189,14 @@ gdx::PackedFloat32Array SunflowerSimulation::get_ground_points() const {
 	gdx::PackedFloat32Array out;
 	out.assign(reinterpret_cast<const float *>(points.data()), points.size() * 2);
 	return out;
+}
+
+double SunflowerSimulation::get_ground_height(gdx::Vector2 p_point) const {
+	const Ground &ground = _sim.get_ground();
+	if (ground.kind == Ground::FLAT) {
+		return 0.0;
+	}
+	return ground.kind == Ground::GRID ? double(ground.grid.sample(gdx::to_core(p_point))) : double(NAN);
 }
 
 int64_t SunflowerSimulation::get_cells_without_ground() const {

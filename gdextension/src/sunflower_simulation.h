@@ -31,6 +31,7 @@ public:
 	gdx::String set_ground_heights(const gdx::PackedFloat32Array &p_heights, const gdx::PackedFloat32Array &p_normals, double p_tilt);
 	gdx::PackedFloat32Array get_ground_points() const;
 	int64_t get_cells_without_ground() const;
+	double get_ground_height(gdx::Vector2 p_point) const;
 	gdx::PackedFloat32Array get_object_heights() const;
 	void set_plant_height(int64_t p_species, double p_metres);
 	void set_plant_form(int64_t p_species, gdx::Vector3 p_part_lengths, double p_middle_variation, double p_height_units,

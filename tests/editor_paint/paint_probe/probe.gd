@@ -127,8 +127,33 @@ func _run() -> void:
 	history.undo()
 	_check(FileAccess.get_file_as_bytes(MAP_PATH) == before_resize, "undo restores the map before the resize")
 	camera.free()
+	# With PROBE_SHOT set (a run under Xvfb): a picture of the editor with the brush over the field.
+	var shot: String = OS.get_environment("PROBE_SHOT")
+	if not shot.is_empty():
+		await _picture(painter, field, shot)
 	print("probe: " + ("ok" if _problems.is_empty() else "; ".join(_problems)))
 	_tree.quit(0 if _problems.is_empty() else 1)
+
+
+## The editor as a user sees it while painting: the brush (moved over the field through the
+## editor's own camera) over the field, saved to [param path].
+func _picture(painter: RefCounted, field: SunflowerField, path: String) -> void:
+	# A miniature of the painted field in front of the editor's default view (a few metres from the
+	# origin), so the picture shows the field, the painted strip and the brush.
+	field.map = load(MAP_PATH)
+	field.cell_size = 0.12
+	field.plant_height = 0.45
+	field.position = Vector3(-2.4, 0.0, -1.8)
+	field.finish_build()
+	painter.radius = 0.35
+	var viewport: SubViewport = EditorInterface.get_editor_viewport_3d(0)
+	var eye: Camera3D = viewport.get_camera_3d()
+	for i: int in 30:
+		var motion: InputEventMouseMotion = InputEventMouseMotion.new()
+		motion.position = eye.unproject_position(field.to_global(Vector3(3.0, 0.0, 1.3)))
+		painter.handle_input(eye, motion)
+		await _tree.process_frame
+	EditorInterface.get_base_control().get_viewport().get_texture().get_image().save_png(path)
 
 
 ## A left drag through [param points] (Ctrl held when [param ctrl]): press, moves, release.

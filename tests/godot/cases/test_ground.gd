@@ -229,3 +229,23 @@ func test_collider_rays_keep_frames_within_the_build_budget() -> void:
 		)
 	)
 	check(stats.frames > 2, "the rays were spread over frames")
+
+
+func test_the_painters_brush_sits_on_the_height_map() -> void:
+	var field: SunflowerField = _field(SunflowerField.GroundSource.HEIGHT_MAP)
+	field.finish_build()
+	var painter: RefCounted = load("res://addons/sunflower_field/field_painter.gd").new(null)
+	painter.edit(field)
+	var camera: Camera3D = Camera3D.new()
+	tree.root.add_child(camera)
+	camera.look_at_from_position(Vector3(4.0, 25.0, 30.0), Vector3(10.0, 0.0, 10.0))
+	var worst: float = 0.0
+	for target: Vector3 in [Vector3(5.0, 0.0, 5.0), Vector3(12.0, 0.0, 8.0), Vector3(17.0, 0.0, 14.0)]:
+		target.y = _image_height(target.x, target.z)
+		var hit: Variant = painter.ground_point(camera, camera.unproject_position(target))
+		if not check(hit != null, "the brush finds the ground under %s" % target):
+			continue
+		worst = maxf(worst, (hit as Vector3).distance_to(target))
+	check(worst < 0.05, "the brush is where the ray meets the hills (worst %.3f m)" % worst)
+	painter.release()
+	camera.free()
