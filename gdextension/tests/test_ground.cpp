@@ -26,8 +26,9 @@ std::string full_text(int p_columns, int p_rows) {
 	return text;
 }
 
-// Rolling hills over [origin, origin + size], sampled on a width × depth lattice.
-HeightGrid hills(int p_width, int p_depth, glm::vec2 p_origin, glm::vec2 p_size) {
+// A width × depth lattice over [origin, origin + size] with heights from p_height(x, z) (metres).
+template <typename Height>
+HeightGrid lattice(int p_width, int p_depth, glm::vec2 p_origin, glm::vec2 p_size, Height p_height) {
 	HeightGrid grid;
 	grid.width = p_width;
 	grid.depth = p_depth;
@@ -35,27 +36,23 @@ HeightGrid hills(int p_width, int p_depth, glm::vec2 p_origin, glm::vec2 p_size)
 	grid.size = p_size;
 	for (int z = 0; z < p_depth; ++z) {
 		for (int x = 0; x < p_width; ++x) {
-			grid.heights.push_back(2.0f * std::sin(0.3f * float(x)) * std::cos(0.2f * float(z)) + 0.1f * float(x));
+			const glm::vec2 at = p_origin + p_size * glm::vec2(float(x) / float(p_width - 1), float(z) / float(p_depth - 1));
+			grid.heights.push_back(p_height(x, z, at));
 		}
 	}
 	return grid;
 }
 
-// A tilted plane h = 0.5·x − 0.25·z + 3, sampled on a lattice (bilinear reproduces it exactly).
+// Rolling hills, by sample index.
+HeightGrid hills(int p_width, int p_depth, glm::vec2 p_origin, glm::vec2 p_size) {
+	return lattice(p_width, p_depth, p_origin, p_size, [](int x, int z, glm::vec2) {
+		return 2.0f * std::sin(0.3f * float(x)) * std::cos(0.2f * float(z)) + 0.1f * float(x);
+	});
+}
+
+// A tilted plane h = 0.5·x − 0.25·z + 3 (bilinear reproduces it exactly).
 HeightGrid plane(int p_width, int p_depth, glm::vec2 p_origin, glm::vec2 p_size) {
-	HeightGrid grid;
-	grid.width = p_width;
-	grid.depth = p_depth;
-	grid.origin = p_origin;
-	grid.size = p_size;
-	for (int z = 0; z < p_depth; ++z) {
-		for (int x = 0; x < p_width; ++x) {
-			const float px = p_origin.x + p_size.x * float(x) / float(p_width - 1);
-			const float pz = p_origin.y + p_size.y * float(z) / float(p_depth - 1);
-			grid.heights.push_back(0.5f * px - 0.25f * pz + 3.0f);
-		}
-	}
-	return grid;
+	return lattice(p_width, p_depth, p_origin, p_size, [](int, int, glm::vec2 p) { return 0.5f * p.x - 0.25f * p.y + 3.0f; });
 }
 
 } // namespace

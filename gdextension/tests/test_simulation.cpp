@@ -515,11 +515,7 @@ TEST_CASE("several species: each has its own chunks, form, variety and buckets; 
 TEST_CASE("colour variety: plants are white without it; with it, seeded brightness and tint within the ranges") {
 	FieldSimulation sim;
 	MapError error;
-	std::string text = "20 20\n";
-	for (int row = 0; row < 20; ++row) {
-		text += std::string(20, '*') + "\n";
-	}
-	REQUIRE(sim.load_map(text, U"", "colour", MapLimits{}, error));
+	REQUIRE(sim.load_map(rect_map(20, 20), U"", "colour", MapLimits{}, error));
 	LodParams lod;
 	lod.force_level = LOD_MESH_1;
 	sim.set_lod(lod);
@@ -562,11 +558,7 @@ TEST_CASE("colour variety: plants are white without it; with it, seeded brightne
 TEST_CASE("painting changes only the painted cells' plants: every other plant keeps its place, yaw and size") {
 	FieldSimulation sim;
 	MapError error;
-	std::string text = "30 30\n";
-	for (int row = 0; row < 30; ++row) {
-		text += std::string(30, '*') + "\n";
-	}
-	REQUIRE(sim.load_map(text, U"", "paint", MapLimits{}, error));
+	REQUIRE(sim.load_map(rect_map(30, 30), U"", "paint", MapLimits{}, error));
 	LayoutParams params = sim.get_layout_params();
 	params.varieties[0].scale_min = 0.5f;
 	params.varieties[0].scale_max = 1.5f;
