@@ -77,6 +77,13 @@ static var _default: FieldPlant
 		sprite_lean = value if is_finite(value) else sprite_lean
 		emit_changed()
 
+## How stiff the plant is against the wind's stiffnesses ([member SunflowerWind.stiffness_middle],
+## [member SunflowerWind.stiffness_bottom]): 2 bends half as far as the sunflower, 0.5 twice as far.
+@export_range(0.05, 20.0, 0.01) var stiffness: float = 1.0:
+	set(value):
+		stiffness = Native.accept("FieldPlant.stiffness", value, stiffness)
+		emit_changed()
+
 @export_group("Variety")
 ## The middle part is stretched to (1 + α × this) of its length, α ∈ [0, 0.5) per plant (the
 ## thesis' s' = s + α/10).
@@ -175,6 +182,7 @@ func layout_key() -> Array:
 		part_lengths,
 		height_units,
 		cull_radius_units,
+		stiffness,
 		impostor_width,
 		sprite_lean,
 		middle_variation,
@@ -208,7 +216,7 @@ func bake_impostors(host: Node, folder: String = "", base_name: String = "") -> 
 
 ## Hands the plant's form, height and variety to a native simulation, as [param species].
 func apply_to(simulation: RefCounted, species: int = 0) -> void:
-	simulation.set_plant_form(species, part_lengths, middle_variation, height_units, cull_radius_units)
+	simulation.set_plant_form(species, part_lengths, middle_variation, height_units, cull_radius_units, stiffness)
 	simulation.set_plant_height(species, height)
 	simulation.set_plant_variation(species, yaw_range, scale_min, scale_max, brightness_variation, tint_variation)
 

@@ -34,7 +34,7 @@ void SunflowerSimulation::bind_methods() {
 	gdx::bind_method(CLASS, "get_object_heights", &SunflowerSimulation::get_object_heights);
 	gdx::bind_method(CLASS, "set_plant_height", &SunflowerSimulation::set_plant_height, { "species", "metres" });
 	gdx::bind_method(CLASS, "set_plant_form", &SunflowerSimulation::set_plant_form,
-			{ "species", "part_lengths", "middle_variation", "height_units", "cull_radius_units" });
+			{ "species", "part_lengths", "middle_variation", "height_units", "cull_radius_units", "stiffness" });
 	gdx::bind_method(CLASS, "set_plant_variation", &SunflowerSimulation::set_plant_variation,
 			{ "species", "yaw_range", "scale_min", "scale_max", "brightness", "tint" });
 	gdx::bind_method(CLASS, "set_wind", &SunflowerSimulation::set_wind,
@@ -275,7 +275,7 @@ void SunflowerSimulation::set_plant_height(int64_t p_species, double p_metres) {
 }
 
 void SunflowerSimulation::set_plant_form(int64_t p_species, gdx::Vector3 p_part_lengths, double p_middle_variation,
-		double p_height_units, double p_cull_radius_units) {
+		double p_height_units, double p_cull_radius_units, double p_stiffness) {
 	if (!_is_species(p_species)) {
 		return;
 	}
@@ -286,6 +286,7 @@ void SunflowerSimulation::set_plant_form(int64_t p_species, gdx::Vector3 p_part_
 	shape.middle_variation = float(p_middle_variation);
 	shape.height = float(p_height_units);
 	shape.cull_radius = float(p_cull_radius_units);
+	shape.stiffness = float(p_stiffness);
 	_sim.set_shape(shape, species);
 	_sim.set_plant_height(metres, species);
 }

@@ -35,7 +35,7 @@ public:
 	gdx::PackedFloat32Array get_object_heights() const;
 	void set_plant_height(int64_t p_species, double p_metres);
 	void set_plant_form(int64_t p_species, gdx::Vector3 p_part_lengths, double p_middle_variation, double p_height_units,
-			double p_cull_radius_units);
+			double p_cull_radius_units, double p_stiffness);
 	void set_plant_variation(int64_t p_species, double p_yaw_range, double p_scale_min, double p_scale_max, double p_brightness,
 			double p_tint);
 	void set_wind(int64_t p_model, double p_power, gdx::Vector2 p_direction, double p_stiffness_middle, double p_stiffness_bottom,

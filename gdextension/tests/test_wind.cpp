@@ -320,3 +320,18 @@ TEST_CASE("natural wind: gusts arrive downwind later in proportion to the distan
 	}
 	CHECK(best_lag == doctest::Approx(3.0 * 60.0).epsilon(0.02)); // 12 m at 4 m/s: 3 s
 }
+
+TEST_CASE("a plant type's stiffness scales how far the wind bends it") {
+	Plant plant;
+	PartTransforms soft;
+	PartTransforms stiff;
+	PlantShape shape = unit_shape();
+	const WindModel wind = make_wind(1.0f, { 1, 0 });
+	wind.part_transforms(plant, 0.6f, shape, soft);
+	shape.stiffness = 2.0f;
+	wind.part_transforms(plant, 0.6f, shape, stiff);
+	// The bottom part's tilt from upright halves (small angles: its up axis' horizontal part).
+	const float soft_angle = std::acos(glm::normalize(soft.basis[0][1]).y);
+	const float stiff_angle = std::acos(glm::normalize(stiff.basis[0][1]).y);
+	CHECK(stiff_angle == doctest::Approx(soft_angle * 0.5f).epsilon(1e-4));
+}

@@ -97,6 +97,7 @@ void FieldSimulation::set_shape(const PlantShape &p_shape, uint32_t p_species) {
 		}
 	}
 	shape.middle_variation = sanitize(param::PLANT_MIDDLE_VARIATION, shape.middle_variation, current.middle_variation);
+	shape.stiffness = sanitize(param::PLANT_STIFFNESS, shape.stiffness, current.stiffness);
 	shape.height = shape.height > 0.0f && std::isfinite(shape.height) ? shape.height : defaults.height;
 	shape.cull_radius = shape.cull_radius > 0.0f && std::isfinite(shape.cull_radius) ? shape.cull_radius : defaults.cull_radius;
 	shape.part_scale = shape.part_scale > 0.0f && std::isfinite(shape.part_scale) ? shape.part_scale : current.part_scale;

@@ -28,6 +28,9 @@ struct PlantShape {
 	float middle_variation = MIDDLE_VARIATION;
 	float height = HEIGHT; // model units
 	float cull_radius = CULL_RADIUS; // model units
+	// How stiff the plant is against the wind's stiffnesses (SunflowerWind's d1, d2): 2 bends half as
+	// far as the sunflower, 0.5 twice as far.
+	float stiffness = float(param::PLANT_STIFFNESS.default_value);
 	// Metres per model unit: a plant `plant_height` metres tall from its root to the top of its
 	// parts is drawn at plant_height / parts_height().
 	float part_scale = float(param::PLANT_HEIGHT.default_value) / (PART_LENGTHS.x + PART_LENGTHS.y + PART_LENGTHS.z);
@@ -35,7 +38,8 @@ struct PlantShape {
 	float parts_height() const { return part_lengths.x + part_lengths.y + part_lengths.z; }
 	bool operator==(const PlantShape &p_other) const {
 		return part_lengths == p_other.part_lengths && middle_variation == p_other.middle_variation &&
-				height == p_other.height && cull_radius == p_other.cull_radius && part_scale == p_other.part_scale;
+				height == p_other.height && cull_radius == p_other.cull_radius && part_scale == p_other.part_scale &&
+				stiffness == p_other.stiffness;
 	}
 };
 

@@ -234,8 +234,9 @@ void WindModel::part_transforms(const Plant &p_plant, const glm::vec2 &p_bend, c
 	// The plant rotates about the horizontal axis across its lean: (w_x, w_z) = (lean.z, −lean.x).
 	const float size = glm::length(p_bend);
 	const glm::vec2 axis = size > 1e-9f ? glm::vec2(p_bend.y, -p_bend.x) / size : glm::vec2(0.0f, -1.0f);
-	const glm::mat3 bottom_tilt = rotation_about_horizontal(axis, size / _params.d2);
-	const glm::mat3 upper_tilt = rotation_about_horizontal(axis, size / _params.d1);
+	// The plant type's stiffness scales the wind's (thesis: d1, d2): a stiffer plant bends less.
+	const glm::mat3 bottom_tilt = rotation_about_horizontal(axis, size / (_params.d2 * p_shape.stiffness));
+	const glm::mat3 upper_tilt = rotation_about_horizontal(axis, size / (_params.d1 * p_shape.stiffness));
 	const float middle_height = 1.0f + p_plant.alpha * p_shape.middle_variation; // thesis: s' = s + α/10
 	const float scale = p_shape.part_scale * p_plant.scale;
 
