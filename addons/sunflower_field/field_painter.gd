@@ -70,8 +70,14 @@ func _init(undo_redo: EditorUndoRedoManager) -> void:
 	toolbar.visible = false
 
 
-## Lets go of the editor (the plugin leaves): no painter is active any more.
+## Lets go of the editor (the plugin leaves): frees the toolbar; no painter is active any more.
 func release() -> void:
+	edit(null)
+	if is_instance_valid(toolbar):
+		if toolbar.is_inside_tree():
+			toolbar.queue_free()
+		else:
+			toolbar.free()
 	if active == self:
 		active = null
 

@@ -40,9 +40,7 @@ func _exit_tree() -> void:
 	_inspector = null
 	remove_inspector_plugin(_map_inspector)
 	_map_inspector = null
-	_painter.edit(null)
 	remove_control_from_container(CONTAINER_SPATIAL_EDITOR_MENU, _painter.toolbar)
-	_painter.toolbar.queue_free()
 	_painter.release()
 	_painter = null
 
