@@ -10,6 +10,7 @@ const FieldInteraction: GDScript = preload("field_interaction.gd")
 const FieldNodes: GDScript = preload("field_nodes.gd")
 const FieldObserver: GDScript = preload("field_observer.gd")
 const ImpostorSet: GDScript = preload("impostor_set.gd")
+const PartMeshes: GDScript = preload("part_meshes.gd")
 ## Maps of at least this many bytes (about as many cells) build in the background when the field's
 ## background_build is on; smaller ones take a few milliseconds and build at once.
 const BACKGROUND_BUILD_MIN_BYTES: int = 65536
@@ -188,8 +189,8 @@ func configure_plants(species_plants: Array) -> bool:
 		impostor_sets[species].configure(plants[species])
 		key.append(plants[species].layout_key())
 		if drawn:
-			for level: int in 3:
-				for part: int in 3:
+			for level: int in PartMeshes.LEVELS:
+				for part: int in PartMeshes.PART_NAMES.size():
 					drawn.set_part_mesh(species, level, part, plants[species].mesh_drawn(level, part))
 	var changed: bool = key != _layout_key and not _layout_key.is_empty()
 	_layout_key = key

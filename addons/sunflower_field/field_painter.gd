@@ -34,6 +34,7 @@ var last_error: String = ""
 var _undo_redo: EditorUndoRedoManager
 var _field: SunflowerField
 var _stroke: RefCounted  # the native simulation holding the map while a stroke paints it
+var _erasing: bool = false  # the stroke erases (Erase mode, or Ctrl held when it began)
 var _original: PackedByteArray
 var _original_map: SunflowerFieldMap
 var _seed: int = 0
@@ -192,44 +193,56 @@ func _height_map_point(from: Vector3, direction: Vector3) -> Variant:
 
 
 func _begin_stroke(erasing: bool) -> bool:
+	_stroke = _open_map(_field)
+	if _stroke == null:
+		return false
+	_erasing = erasing
+	_seed += 1
+	return true
+
+
+## A map-only native simulation holding [param field]'s map, which must be a writable .field file
+## in the project; remembers the map and its bytes as they were. Null (with an error) otherwise.
+func _open_map(field: SunflowerField) -> RefCounted:
 	last_error = ""
-	var field_map: SunflowerFieldMap = _field.map
+	var field_map: SunflowerFieldMap = field.map
 	if field_map == null:
-		return _fail("SunflowerField painter: the field has no map to paint; give it one (a .field file)")
+		_fail("SunflowerField painter: the field has no map to paint; give it one (a .field file)")
+		return null
 	var path: String = field_map.source_path
 	if not path.begins_with("res://") or not FileAccess.file_exists(path):
-		return _fail("SunflowerField painter: %s is not a .field file in the project; nothing to write back" % path)
+		_fail("SunflowerField painter: %s is not a .field file in the project; nothing to write back" % path)
+		return null
 	var writable: FileAccess = FileAccess.open(path, FileAccess.READ_WRITE)
 	if writable == null:
-		return _fail(
+		_fail(
 			(
 				"SunflowerField painter: %s cannot be written (%s); the map stays as it is"
 				% [path, error_string(FileAccess.get_open_error())]
 			)
 		)
+		return null
 	writable.close()
-	_stroke = Native.create_simulation()
-	if _stroke == null:
-		return false
-	_stroke.set_ground_heights(PackedFloat32Array(), PackedFloat32Array(), 0.0)  # a map only: no plants laid out
-	var legend: Dictionary = _field.legend
-	var message: String = _stroke.load_map(
+	var editor: RefCounted = Native.create_simulation()
+	if editor == null:
+		return null
+	editor.set_ground_heights(PackedFloat32Array(), PackedFloat32Array(), 0.0)  # a map only: no plants laid out
+	var legend: Dictionary = field.legend
+	var message: String = editor.load_map(
 		field_map.text, path, FieldNodes.legend_symbols(legend), FieldNodes.plant_symbols(legend), 0
 	)
 	if not message.is_empty():
-		_stroke = null
-		return _fail("SunflowerField painter: the map cannot be painted: " + message)
+		_fail("SunflowerField painter: the map cannot be painted: " + message)
+		return null
 	_original = field_map.text
 	_original_map = field_map
-	_seed += 1
-	_stroke.set_meta(&"erasing", erasing)
-	return true
+	return editor
 
 
 func _paint_at(world_point: Vector3) -> void:
 	var local: Vector3 = _field.to_local(world_point)
 	var cells: Vector2 = Vector2(local.x, local.z) / _field.cell_size
-	var painted: String = "" if _stroke.get_meta(&"erasing") else symbol
+	var painted: String = "" if _erasing else symbol
 	var changed: PackedInt32Array = _stroke.paint_map(cells, radius / _field.cell_size, painted, density, _seed, false)
 	_preview_due = _preview_due or not changed.is_empty()
 	_preview_if_due()
@@ -300,10 +313,7 @@ func new_map(field: SunflowerField, columns: int, rows: int, filled: bool) -> St
 		return ""
 	file.store_buffer(editor.write_map())
 	file.close()
-	var filesystem: EditorFileSystem = EditorInterface.get_resource_filesystem()
-	filesystem.update_file(path)
-	filesystem.reimport_files(PackedStringArray([path]))
-	var made: SunflowerFieldMap = ResourceLoader.load(path, "", ResourceLoader.CACHE_MODE_REPLACE) as SunflowerFieldMap
+	var made: SunflowerFieldMap = _reimported(path)
 	_undo_redo.create_action("New field map", UndoRedo.MERGE_DISABLE, field)
 	_undo_redo.add_do_property(field, &"map", made)
 	_undo_redo.add_undo_property(field, &"map", field.map)
@@ -314,14 +324,9 @@ func new_map(field: SunflowerField, columns: int, rows: int, filled: bool) -> St
 ## Gives [param field]'s map [param columns] × [param rows] cells, keeping the cells both sizes share,
 ## written back to its file as one undo/redo action. False (with an error) when it cannot.
 func resize_map(field: SunflowerField, columns: int, rows: int) -> bool:
-	var previous: SunflowerField = _field
-	_field = field
-	var began: bool = _begin_stroke(false)
-	_field = previous
-	if not began:
+	var editor: RefCounted = _open_map(field)
+	if editor == null:
 		return false
-	var editor: RefCounted = _stroke
-	_stroke = null
 	if not editor.resize_map(columns, rows):
 		return _fail("SunflowerField: cannot resize the map to %d x %d" % [columns, rows])
 	var resized: PackedByteArray = editor.write_map()
@@ -349,10 +354,15 @@ func write_map(field: SunflowerField, path: String, bytes: PackedByteArray) -> v
 	file.store_buffer(bytes)
 	file.close()
 	_allow_legend_symbols(path, FieldNodes.legend_symbols(field.legend) + FieldNodes.plant_symbols(field.legend))
+	field.map = _reimported(path)
+
+
+## The map file [param path] imported anew (just written), as the resource fields load.
+func _reimported(path: String) -> SunflowerFieldMap:
 	var filesystem: EditorFileSystem = EditorInterface.get_resource_filesystem()
 	filesystem.update_file(path)
 	filesystem.reimport_files(PackedStringArray([path]))
-	field.map = ResourceLoader.load(path, "", ResourceLoader.CACHE_MODE_REPLACE) as SunflowerFieldMap
+	return ResourceLoader.load(path, "", ResourceLoader.CACHE_MODE_REPLACE) as SunflowerFieldMap
 
 
 ## The import settings of a map file allow the symbols painted into it.

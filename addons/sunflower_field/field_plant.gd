@@ -160,7 +160,7 @@ func mesh_drawn(level: int, part: int) -> Mesh:
 ## Every part's mesh as drawn, by [code]level × 3 + part[/code].
 func meshes_drawn() -> Array[Mesh]:
 	var meshes: Array[Mesh] = []
-	for level: int in 3:
+	for level: int in PartMeshes.LEVELS:
 		for part: int in PartMeshes.PART_NAMES.size():
 			meshes.append(mesh_drawn(level, part))
 	return meshes

@@ -169,7 +169,7 @@ float FieldSimulation::_chunk_distance_sq(uint32_t p_chunk) const {
 
 float FieldSimulation::_plant_distance_sq(const Plant &p_plant) const {
 	// From the observer's eye to the plant's middle: on the ground this is the thesis' distance.
-	const PlantShape &shape = _shapes[_layout.chunks[p_plant.chunk].species];
+	const PlantShape &shape = _shapes[_species_of(p_plant)];
 	const glm::vec3 d = _observer - (p_plant.root() + glm::vec3(0.0f, 0.5f * shape.height * shape.part_scale * p_plant.scale, 0.0f));
 	return glm::dot(d, d);
 }
@@ -432,7 +432,7 @@ void FieldSimulation::_update_pushes(float p_delta) {
 		for (uint32_t index : _near) {
 			const Plant &plant = _layout.plants[index];
 			const float above_root = pusher.position.y - plant.ground;
-			const PlantShape &shape = _shapes[_layout.chunks[plant.chunk].species];
+			const PlantShape &shape = _shapes[_species_of(plant)];
 			if (above_root - pusher.radius > shape.height * shape.part_scale * plant.scale || above_root + pusher.radius < 0.0f) {
 				continue; // flying over the plant, or under its ground
 			}
@@ -478,12 +478,12 @@ void FieldSimulation::_update_pushes(float p_delta) {
 }
 
 void FieldSimulation::_write_impostor(float *r_out, const Plant &p_plant) const {
-	const float scale = _shapes[_layout.chunks[p_plant.chunk].species].part_scale * p_plant.scale;
+	const float scale = _shapes[_species_of(p_plant)].part_scale * p_plant.scale;
 	const float c = std::cos(p_plant.yaw) * scale;
 	const float s = std::sin(p_plant.yaw) * scale;
 	const glm::mat3 basis(glm::vec3(c, 0.0f, -s), glm::vec3(0.0f, scale, 0.0f), glm::vec3(s, 0.0f, c));
 	write_instance(r_out, p_plant.lean == glm::vec2(0.0f) ? basis : lean_rotation(p_plant.lean) * basis, p_plant.root(),
-			p_plant.color(_layout_params.varieties[_layout.chunks[p_plant.chunk].species]));
+			p_plant.color(_layout_params.varieties[_species_of(p_plant)]));
 }
 
 void FieldSimulation::write_chunk_instances(uint32_t p_chunk, float *r_out) const {
@@ -585,7 +585,7 @@ void FieldSimulation::get_plant_parts(uint32_t p_plant, PartTransforms &r_parts)
 	if (_chunk_active[plant.chunk] && _plant_lod[p_plant] < LOD_SPRITE) {
 		bend = _plant_bend(p_plant, plant, _wind.get_effective_power() > 0.0f);
 	}
-	_wind.part_transforms(plant, bend, _shapes[_layout.chunks[plant.chunk].species], r_parts);
+	_wind.part_transforms(plant, bend, _shapes[_species_of(plant)], r_parts);
 }
 
 } // namespace sunflower

@@ -196,6 +196,8 @@ private:
 	uint8_t _static_chunk_lod(uint32_t p_chunk) const;
 	float _chunk_distance_sq(uint32_t p_chunk) const;
 	float _plant_distance_sq(const Plant &p_plant) const;
+	// The species of a plant: its chunk's (a chunk holds one species).
+	uint32_t _species_of(const Plant &p_plant) const { return _layout.chunks[p_plant.chunk].species; }
 	void _write_impostor(float *r_out, const Plant &p_plant) const;
 	// Moves the plants of active chunks [p_first, p_last) and writes the visible ones into r_buckets.
 	void _move_chunks(size_t p_first, size_t p_last, float p_delta, BucketSet &r_buckets);
