@@ -1,8 +1,7 @@
 extends SceneTree
-## Renders a plant's sprite and billboard textures with the addon's baker
-## (addons/sunflower_field/impostor_baker.gd, the editor's "Bake impostors"), into the given folder
-## as <name>_front.png and <name>_side.png: the built-in sunflower ("sunflower"), or the plant
-## resource given with its name.
+## Renders a plant's impostor atlases with the addon's baker (addons/sunflower_field/impostor_baker.gd,
+## the editor's "Bake impostors"), into the given folder as <name>_views.png and <name>_normals.png:
+## the built-in sunflower ("sunflower"), or the plant resource given with its name.
 ##
 ## Needs a real renderer (not --headless): xvfb-run godot --path <project with the addon> \
 ##     --script assets/bake_impostors.gd -- <output folder> [<plant .tres> <name>]
@@ -25,6 +24,6 @@ func _bake(out_dir: String, plant_path: String, base_name: String) -> void:
 		return
 	var plant: FieldPlant = source.duplicate() as FieldPlant
 	var result: Error = await plant.bake_impostors(root, out_dir, base_name)
-	for view: String in ["front", "side"]:
-		print("%s: %s %s" % [view, out_dir.path_join("%s_%s.png" % [base_name, view]), error_string(result)])
+	for kind: String in FieldPlant.IMPOSTOR_TEXTURES:
+		print("%s: %s %s" % [kind, out_dir.path_join("%s_%s.png" % [base_name, kind]), error_string(result)])
 	quit(0 if result == OK else 1)

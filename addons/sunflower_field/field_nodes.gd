@@ -66,9 +66,8 @@ func make_chunks(budget_usec: int, switch_distance: float, max_draw_distance: fl
 		var aabb: AABB = simulation.get_chunk_aabb(chunk)
 		var impostors: ImpostorSet = _impostors[simulation.get_chunk_species(chunk)]
 		var key: int = simulation.get_chunk_key(chunk)
-		var sprite: MultiMeshInstance3D = _make_node("ChunkSprites%d" % key, impostors.sprite_mesh(), aabb)
-		var billboard: MultiMeshInstance3D = _make_node("ChunkBillboards%d" % key, impostors.billboard_mesh(), aabb)
-		billboard.cast_shadow = GeometryInstance3D.SHADOW_CASTING_SETTING_OFF
+		var sprite: MultiMeshInstance3D = _make_node("ChunkSprites%d" % key, impostors.mesh(), aabb)
+		var billboard: MultiMeshInstance3D = _make_node("ChunkBillboards%d" % key, impostors.mesh(), aabb)
 		sprite.visible = false  # shown when the whole field is ready
 		billboard.visible = false
 		_chunk_nodes.append_array([sprite, billboard])
@@ -133,11 +132,8 @@ func finish(species_meshes: Array, legend: Dictionary, cell_size: float, sway_ma
 				var node_name: String = "%sMesh%d%s" % [prefix, level + 1, PART_NAMES[part].capitalize()]
 				var node: MultiMeshInstance3D = _make_node(node_name, meshes[level * PART_NAMES.size() + part], aabb)
 				_add_dynamic(node, first + Native.mesh_bucket(level, part))
-		var sprite: MultiMeshInstance3D = _make_node(prefix + "Sprites", _impostors[species].sprite_mesh(), aabb)
-		var billboard: MultiMeshInstance3D = _make_node(
-			prefix + "Billboards", _impostors[species].billboard_mesh(), aabb
-		)
-		billboard.cast_shadow = GeometryInstance3D.SHADOW_CASTING_SETTING_OFF
+		var sprite: MultiMeshInstance3D = _make_node(prefix + "Sprites", _impostors[species].mesh(), aabb)
+		var billboard: MultiMeshInstance3D = _make_node(prefix + "Billboards", _impostors[species].mesh(), aabb)
 		_add_dynamic(sprite, first + Native.constant(&"BUCKET_SPRITE"))
 		_add_dynamic(billboard, first + Native.constant(&"BUCKET_BILLBOARD"))
 	_place_objects(legend, cell_size)

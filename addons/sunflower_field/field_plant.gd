@@ -8,14 +8,21 @@ extends Resource
 ## Parts are modelled with their root at the origin and their height along +y; a plant stands as
 ## bottom, middle and head, each starting at the previous one's tip ([member part_lengths] model
 ## units up it). The whole plant is [member height] metres from the root to the top of its parts.
-## The impostor quads frame [member impostor_width] × [member height_units] model units, and the
-## textures are rendered from the level-1 parts in that frame (the editor's "Bake impostors").
+## The far levels draw a multi-view impostor: the level-1 parts rendered from [constant ATLAS_VIEWS]
+## directions (around the plant, and from the side up to straight above) into [member impostor_views]
+## and [member impostor_normals] (the editor's "Bake impostors"); each view frames the cylinder
+## [member impostor_width] wide and [member height_units] tall that holds the plant.
 ## The built-in sunflower is [method default_plant]; [code]null[/code] mesh or texture slots use it.
 
 const Native: GDScript = preload("native.gd")
 const DEFAULT_PATH: String = "res://addons/sunflower_field/plants/sunflower.tres"
 const PartMeshes: GDScript = preload("part_meshes.gd")
 const ImpostorBaker: GDScript = preload("impostor_baker.gd")
+## The impostor atlases' views: columns around the plant (the first from its front, +z, turning
+## towards +x), rows of elevation from the side (0°, top row) to straight above (90°, bottom row).
+const ATLAS_VIEWS: Vector2i = Vector2i(12, 4)
+## The impostor textures, as [method texture_drawn] names them.
+const IMPOSTOR_TEXTURES: PackedStringArray = ["views", "normals"]
 
 static var _default: FieldPlant
 
@@ -66,15 +73,11 @@ static var _default: FieldPlant
 	set(value):
 		cull_radius_units = _positive(value, cull_radius_units)
 		emit_changed()
-## The impostor quads' width, model units.
+## The width of the upright cylinder about the stem that holds the plant (twice its farthest reach
+## from the stem), model units: what the impostor views frame.
 @export_range(0.01, 100.0, 0.01, "or_greater") var impostor_width: float = 1.6:
 	set(value):
 		impostor_width = _positive(value, impostor_width)
-		emit_changed()
-## How far the sprite's top edge leans forward (a nodding head), model units.
-@export_range(-10.0, 10.0, 0.01) var sprite_lean: float = 0.12:
-	set(value):
-		sprite_lean = value if is_finite(value) else sprite_lean
 		emit_changed()
 
 ## How stiff the plant is against the wind's stiffnesses ([member SunflowerWind.stiffness_middle],
@@ -122,20 +125,16 @@ static var _default: FieldPlant
 		emit_changed()
 
 @export_group("Impostors")
-## The sprite's front quad (the plant seen from +z), with alpha.
-@export var front_texture: Texture2D:
+## The far levels' views of the plant (colour and alpha), an atlas of [constant ATLAS_VIEWS] squares.
+@export var impostor_views: Texture2D:
 	set(value):
-		front_texture = value
+		impostor_views = value
 		emit_changed()
-## The sprite's side quad (seen from +x), with alpha.
-@export var side_texture: Texture2D:
+## The plant's normals in the same views, in the plant's own frame (x, y, z as red, green, blue,
+## 0–1 for −1–1): the far levels are lit through them like the meshes.
+@export var impostor_normals: Texture2D:
 	set(value):
-		side_texture = value
-		emit_changed()
-## The billboard (turned to the observer), with alpha.
-@export var billboard_texture: Texture2D:
-	set(value):
-		billboard_texture = value
+		impostor_normals = value
 		emit_changed()
 
 
@@ -166,13 +165,22 @@ func meshes_drawn() -> Array[Mesh]:
 	return meshes
 
 
-## The texture an impostor shows ("front", "side" or "billboard"): its own, else the built-in
-## sunflower's when this plant uses the sunflower's level-1 meshes, else none.
+## The impostor texture drawn ("views" or "normals"): its own, else the built-in sunflower's when
+## this plant uses the sunflower's level-1 meshes, else none.
 func texture_drawn(kind: String) -> Texture2D:
-	var own: Texture2D = get(kind + "_texture")
+	var own: Texture2D = get("impostor_" + kind)
 	if own or self == default_plant():
 		return own
-	return default_plant().get(kind + "_texture") if mesh_level_1.all(func(m: Mesh) -> bool: return m == null) else null
+	return (
+		default_plant().get("impostor_" + kind) if mesh_level_1.all(func(m: Mesh) -> bool: return m == null) else null
+	)
+
+
+## The square every impostor view frames and the height of its centre above the root, model units:
+## the [member impostor_width] × [member height_units] cylinder fits it from every elevation
+## (its outline seen at elevation e is w wide and h·cos e + w·sin e tall, at most √(h² + w²)).
+func impostor_frame() -> Vector2:
+	return Vector2(sqrt(height_units * height_units + impostor_width * impostor_width), height_units * 0.5)
 
 
 ## What the layout and the impostor quads depend on: a change of any of these rebuilds the field.
@@ -184,7 +192,6 @@ func layout_key() -> Array:
 		cull_radius_units,
 		stiffness,
 		impostor_width,
-		sprite_lean,
 		middle_variation,
 		yaw_range,
 		scale_min,

@@ -1,23 +1,37 @@
 @tool
 extends RefCounted
-## Bakes a [FieldPlant]'s impostor textures: renders its level-1 parts, stacked as the plant stands,
-## from the front (+z) and the side (+x), orthographic, on a transparent background, framed exactly
-## like the impostor quads ([member FieldPlant.impostor_width] × [member FieldPlant.height_units]
-## model units). Materials are drawn unshaded (albedo only): the field's lights shade the impostors
-## once, like the meshes. The front view is also the billboard's. Needs a renderer (not
-## [code]--headless[/code]); the work takes a few frames, so [method bake] is awaited.
+## Bakes a [FieldPlant]'s multi-view impostor: renders its level-1 parts, stacked as the plant
+## stands, from [constant FieldPlant.ATLAS_VIEWS] directions (around it, and from the side up to
+## straight above), orthographic, on a transparent background, each view framing the square of
+## [method FieldPlant.impostor_frame] about the plant's middle, into two atlases: the colours
+## (materials drawn unshaded, albedo only: the field's lights shade the impostors once, like the
+## meshes) and the normals in the plant's own frame. All views render at once: one copy of the plant
+## per view, turned so that a single camera sees it from that view's direction. Needs a renderer
+## (not [code]--headless[/code]); the work takes a few frames, so [method bake] is awaited.
 
-const PIXELS_PER_UNIT: float = 150.0
-const VIEWS: PackedStringArray = ["front", "side"]
-## Rendered frames before a view is read back (the first ones may not have the meshes yet).
+## Pixels per view square.
+const CELL_PIXELS: int = 128
+## Rendered frames before a pass is read back (the first ones may not have the meshes yet).
 const SETTLE_FRAMES: int = 3
+## Draws the plant's normals in its own frame as colours (0–1 for −1–1); the viewport converts
+## what it draws to sRGB, so the shader hands it the linear value that converts to the code.
+const NORMALS_SHADER: String = """
+shader_type spatial;
+render_mode unshaded, cull_disabled;
+void fragment() {
+	vec3 world = (INV_VIEW_MATRIX * vec4(NORMAL, 0.0)).xyz;
+	vec3 code = normalize(transpose(mat3(MODEL_MATRIX)) * world) * 0.5 + 0.5;
+	vec3 low = step(code, vec3(0.04045));
+	ALBEDO = mix(pow((code + 0.055) / 1.055, vec3(2.4)), code / 12.92, low);
+}
+"""
 
 
-## Renders [param plant]'s front and side textures in a viewport under [param host] (any node in a
-## tree that draws: the editor's base control, the field), saves them as
-## [code]<folder>/<base_name>_front.png[/code] and [code]_side.png[/code] (default: beside the plant's
-## resource file, named after it), and gives them to the plant (reimported in the editor; loaded
-## from the files elsewhere). Returns OK, or an error after pushing what went wrong.
+## Renders [param plant]'s impostor atlases in a viewport under [param host] (any node in a tree
+## that draws: the editor's base control, the field), saves them as
+## [code]<folder>/<base_name>_views.png[/code] and [code]_normals.png[/code] (default: beside the
+## plant's resource file, named after it), and gives them to the plant (reimported in the editor;
+## loaded from the files elsewhere). Returns OK, or an error after pushing what went wrong.
 static func bake(plant: FieldPlant, host: Node, folder: String = "", base_name: String = "") -> Error:
 	if plant == null or host == null or not host.is_inside_tree():
 		push_error("Bake impostors: needs a plant and a node in the scene tree to render under")
@@ -39,44 +53,58 @@ static func bake(plant: FieldPlant, host: Node, folder: String = "", base_name: 
 		return made
 	var viewport: SubViewport = _stage(plant)
 	host.add_child(viewport)
-	var paths: PackedStringArray = []
 	var images: Array[Image] = []
-	var camera: Camera3D = viewport.get_node("Camera")
-	var middle: float = plant.height_units * 0.5
-	for view: String in VIEWS:
-		var eye: Vector3 = Vector3(0.0, middle, 50.0) if view == "front" else Vector3(50.0, middle, 0.0)
-		camera.look_at_from_position(eye, Vector3(0.0, middle, 0.0))
-		viewport.render_target_update_mode = SubViewport.UPDATE_ALWAYS
+	for kind: String in FieldPlant.IMPOSTOR_TEXTURES:
+		if kind == "normals":
+			var normals: ShaderMaterial = ShaderMaterial.new()
+			normals.shader = Shader.new()
+			normals.shader.code = NORMALS_SHADER
+			for instance: Node in viewport.find_children("*", "MeshInstance3D", true, false):
+				(instance as MeshInstance3D).material_override = normals
 		for i: int in SETTLE_FRAMES:
 			await RenderingServer.frame_post_draw
 		var image: Image = viewport.get_texture().get_image()
 		if image == null or image.is_empty():
 			viewport.queue_free()
-			push_error("Bake impostors: the %s view rendered nothing (no renderer?)" % view)
+			push_error("Bake impostors: the %s rendered nothing (no renderer?)" % kind)
 			return ERR_CANT_CREATE
 		image.convert(Image.FORMAT_RGBA8)
-		bleed_colours(image)
-		var path: String = folder.path_join("%s_%s.png" % [base_name, view])
-		var saved: Error = image.save_png(path)
+		# Colours of covered pixels bleed into their transparent neighbours, so filtering and
+		# mipmaps do not pull dark fringes into the alpha-tested edges.
+		image.fix_alpha_edges()
+		images.append(image)
+	viewport.queue_free()
+	var paths: PackedStringArray = []
+	for i: int in images.size():
+		var path: String = folder.path_join("%s_%s.png" % [base_name, FieldPlant.IMPOSTOR_TEXTURES[i]])
+		var saved: Error = images[i].save_png(path)
 		if saved != OK:
-			viewport.queue_free()
 			push_error("Bake impostors: cannot write %s (%s)" % [path, error_string(saved)])
 			return saved
 		paths.append(path)
-		images.append(image)
-	viewport.queue_free()
 	_give_textures(plant, paths, images)
 	return OK
 
 
-## A world of its own with the plant's level-1 parts, unshaded, an orthographic camera framing the
-## impostor rectangle, and a transparent background.
+## The direction view (column, row) of the atlas sees the plant from, and the image's right and up,
+## in the plant's frame: as shaders/impostor.gdshader turns its quad.
+static func view_basis(column: int, row: int) -> Basis:
+	var azimuth: float = TAU * column / FieldPlant.ATLAS_VIEWS.x
+	var elevation: float = 0.5 * PI * row / (FieldPlant.ATLAS_VIEWS.y - 1)
+	var right: Vector3 = Vector3(cos(azimuth), 0.0, -sin(azimuth))
+	var back: Vector3 = Vector3(sin(azimuth) * cos(elevation), sin(elevation), cos(azimuth) * cos(elevation))
+	return Basis(right, back.cross(right), back)
+
+
+## A world of its own with one copy of the plant's level-1 parts per view, each turned so that an
+## orthographic camera looking down −z sees it from its view's direction in its square, and a
+## transparent background.
 static func _stage(plant: FieldPlant) -> SubViewport:
+	var views: Vector2i = FieldPlant.ATLAS_VIEWS
+	var frame: Vector2 = plant.impostor_frame()
 	var viewport: SubViewport = SubViewport.new()
 	viewport.name = "ImpostorBaker"
-	viewport.size = Vector2i(
-		maxi(8, roundi(plant.impostor_width * PIXELS_PER_UNIT)), maxi(8, roundi(plant.height_units * PIXELS_PER_UNIT))
-	)
+	viewport.size = views * CELL_PIXELS
 	viewport.transparent_bg = true
 	viewport.msaa_3d = Viewport.MSAA_4X
 	viewport.own_world_3d = true
@@ -88,19 +116,28 @@ static func _stage(plant: FieldPlant) -> SubViewport:
 	world.environment = environment
 	viewport.add_child(world)
 	var lengths: Array[float] = [plant.part_lengths.x, plant.part_lengths.y, plant.part_lengths.z]
-	var y: float = 0.0
-	for part: int in lengths.size():
-		var instance: MeshInstance3D = MeshInstance3D.new()
-		instance.mesh = plant.mesh_drawn(0, part)
-		instance.position.y = y
-		viewport.add_child(instance)
-		y += lengths[part]
+	for row: int in views.y:
+		for column: int in views.x:
+			# The view's basis maps image axes to the plant's; its inverse turns the plant to the camera.
+			var turn: Basis = view_basis(column, row).transposed()
+			var square_centre: Vector3 = Vector3((column + 0.5) * frame.x, -(row + 0.5) * frame.x, 0.0)
+			var copy: Node3D = Node3D.new()
+			copy.transform = Transform3D(turn, square_centre - turn * Vector3(0.0, frame.y, 0.0))
+			viewport.add_child(copy)
+			var y: float = 0.0
+			for part: int in lengths.size():
+				var instance: MeshInstance3D = MeshInstance3D.new()
+				instance.mesh = plant.mesh_drawn(0, part)
+				instance.position.y = y
+				copy.add_child(instance)
+				y += lengths[part]
 	var camera: Camera3D = Camera3D.new()
 	camera.name = "Camera"
 	camera.projection = Camera3D.PROJECTION_ORTHOGONAL
-	camera.size = plant.height_units
+	camera.size = views.y * frame.x
 	camera.keep_aspect = Camera3D.KEEP_HEIGHT
-	camera.far = 200.0
+	camera.position = Vector3(views.x * frame.x * 0.5, -views.y * frame.x * 0.5, 4.0 * frame.x)
+	camera.far = 8.0 * frame.x
 	viewport.add_child(camera)
 	return viewport
 
@@ -112,44 +149,34 @@ static func _give_textures(plant: FieldPlant, paths: PackedStringArray, images: 
 	var in_project: bool = Engine.is_editor_hint() and paths[0].begins_with("res://")
 	if in_project:
 		var filesystem: EditorFileSystem = EditorInterface.get_resource_filesystem()
-		filesystem.update_file(paths[0])
-		filesystem.update_file(paths[1])
+		for path: String in paths:
+			filesystem.update_file(path)
+		_write_import_settings(paths)
 		filesystem.reimport_files(paths)
 		for path: String in paths:
 			textures.append(ResourceLoader.load(path, "Texture2D", ResourceLoader.CACHE_MODE_REPLACE) as Texture2D)
 	else:
 		for image: Image in images:
+			image.generate_mipmaps()
 			var texture: ImageTexture = ImageTexture.create_from_image(image)
 			texture.resource_name = plant.name
 			textures.append(texture)
-	plant.front_texture = textures[0]
-	plant.side_texture = textures[1]
-	plant.billboard_texture = textures[0]
+	plant.impostor_views = textures[0]
+	plant.impostor_normals = textures[1]
 	if in_project and plant.resource_path.begins_with("res://") and not plant.resource_path.contains("::"):
 		ResourceSaver.save(plant)
 
 
-## Copies colours of opaque pixels into their transparent neighbours, so filtering and mipmaps do
-## not pull dark fringes into the alpha-tested edges.
-static func bleed_colours(image: Image) -> void:
-	var width: int = image.get_width()
-	var height: int = image.get_height()
-	for pass_index: int in 6:
-		var source: Image = image.duplicate()
-		for py: int in height:
-			for px: int in width:
-				if source.get_pixel(px, py).a > 0.02:
-					continue
-				var sum: Color = Color(0, 0, 0, 0)
-				var count: int = 0
-				for offset: Vector2i in [Vector2i(1, 0), Vector2i(-1, 0), Vector2i(0, 1), Vector2i(0, -1)]:
-					var q: Vector2i = Vector2i(px, py) + offset
-					if q.x < 0 or q.y < 0 or q.x >= width or q.y >= height:
-						continue
-					var c: Color = source.get_pixel(q.x, q.y)
-					if c.a > 0.02 or (pass_index > 0 and c.r + c.g + c.b > 0.0):
-						sum += Color(c.r, c.g, c.b, 0.0)
-						count += 1
-				if count > 0:
-					var keep_alpha: float = source.get_pixel(px, py).a
-					image.set_pixel(px, py, Color(sum.r / count, sum.g / count, sum.b / count, keep_alpha))
+## The atlases import losslessly with mipmaps (the shader keeps alpha coverage across them), and
+## the normals as plain data (no sRGB, no normal-map compression).
+static func _write_import_settings(paths: PackedStringArray) -> void:
+	for path: String in paths:
+		var settings: ConfigFile = ConfigFile.new()
+		settings.load(path + ".import")  # kept where it exists
+		settings.set_value("remap", "importer", "texture")
+		settings.set_value("remap", "type", "CompressedTexture2D")
+		settings.set_value("params", "compress/mode", 0)
+		settings.set_value("params", "mipmaps/generate", true)
+		settings.set_value("params", "process/fix_alpha_border", true)
+		settings.set_value("params", "detect_3d/compress_to", 0)
+		settings.save(path + ".import")

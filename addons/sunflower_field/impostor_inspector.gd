@@ -31,6 +31,6 @@ func _bake(object: Object, button: Button) -> void:
 		button.disabled = false
 		button.text = "Bake impostors"
 	if result == OK:
-		print("Bake impostors: %s's textures are %s" % [plant.name, plant.front_texture.resource_path])
+		print("Bake impostors: %s's textures are %s" % [plant.name, plant.impostor_views.resource_path])
 		if plant.resource_path.contains("::") or plant.resource_path.is_empty():
 			EditorInterface.mark_scene_as_unsaved()

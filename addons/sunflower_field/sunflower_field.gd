@@ -350,24 +350,19 @@ var plant_height: float:
 		return _plant().height
 	set(value):
 		_own_plant().height = value
-## Texture of the sprite's front quad: the [member plant]'s (setting it gives the field its own copy).
-var sprite_front_texture: Texture2D:
+## The far levels' views of the plant: the [member plant]'s [member FieldPlant.impostor_views]
+## (setting it gives the field its own copy of the plant).
+var impostor_views: Texture2D:
 	get:
-		return _plant().texture_drawn("front")
+		return _plant().texture_drawn("views")
 	set(value):
-		_own_plant().front_texture = value
-## Texture of the sprite's side quad: the [member plant]'s.
-var sprite_side_texture: Texture2D:
+		_own_plant().impostor_views = value
+## The far levels' normals: the [member plant]'s [member FieldPlant.impostor_normals].
+var impostor_normals: Texture2D:
 	get:
-		return _plant().texture_drawn("side")
+		return _plant().texture_drawn("normals")
 	set(value):
-		_own_plant().side_texture = value
-## Texture of the billboard: the [member plant]'s.
-var billboard_texture: Texture2D:
-	get:
-		return _plant().texture_drawn("billboard")
-	set(value):
-		_own_plant().billboard_texture = value
+		_own_plant().impostor_normals = value
 
 var _driver: FieldDriver = FieldDriver.new(self)
 var _empty_simulation: RefCounted

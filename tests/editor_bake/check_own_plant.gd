@@ -20,9 +20,9 @@ func _check() -> void:
 	var plant: Resource = field.get("plant")
 	if plant == null or plant.resource_path != "res://my_plant.tres":
 		problems.append("the field does not grow my_plant.tres")
-	var front: Texture2D = field.get("sprite_front_texture")
-	if front == null or front.resource_path != "res://my_plant_front.png":
-		problems.append("the field's sprites do not show the baked texture: %s" % front)
+	var views: Texture2D = field.get("impostor_views")
+	if views == null or views.resource_path != "res://my_plant_views.png":
+		problems.append("the field's impostors do not show the baked atlas: %s" % views)
 	var plants: int = field.call("get_plant_count")
 	var highest: float = -INF
 	for i: int in plants:

@@ -31,20 +31,23 @@ func _run() -> void:
 		button.pressed.emit()
 		for i: int in 600:
 			await tree.process_frame
-			if plant.front_texture != null and button.text == "Bake impostors":
+			if plant.impostor_views != null and button.text == "Bake impostors":
 				break
-		for view: String in ["front", "side"]:
-			var path: String = "res://my_plant_%s.png" % view
+		for kind: String in ["views", "normals"]:
+			var path: String = "res://my_plant_%s.png" % kind
 			if not FileAccess.file_exists(path):
 				problems.append("%s was not written" % path)
-		if plant.front_texture == null or plant.front_texture.resource_path != "res://my_plant_front.png":
-			problems.append("the plant's front texture is not the imported file: %s" % plant.front_texture)
+		var views: Texture2D = plant.impostor_views
+		if views == null or views.resource_path != "res://my_plant_views.png":
+			problems.append("the plant's views atlas is not the imported file: %s" % views)
 		var saved: String = FileAccess.get_file_as_string(PLANT_PATH)
-		if not saved.contains("my_plant_front.png"):
-			problems.append("the plant file does not name its new textures")
-		var image: Image = plant.front_texture.get_image() if plant.front_texture else null
+		if not saved.contains("my_plant_views.png") or not saved.contains("my_plant_normals.png"):
+			problems.append("the plant file does not name its new atlases")
+		var image: Image = views.get_image() if views else null
 		if image == null or image.is_empty() or image.detect_alpha() == Image.ALPHA_NONE:
-			problems.append("the front texture is empty or has no transparent background")
+			problems.append("the views atlas is empty or has no transparent background")
+		elif not image.has_mipmaps():
+			problems.append("the views atlas was imported without mipmaps")
 	print("probe: " + ("ok" if problems.is_empty() else "; ".join(problems)))
 	tree.quit(0 if problems.is_empty() else 1)
 

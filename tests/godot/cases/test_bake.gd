@@ -1,8 +1,9 @@
 extends TestCase
-## Impostors baked in the engine: a plant of glTF parts gets front and side textures that are not
-## empty and have the parts' colours; a field growing it draws them; the built-in sunflower baked
-## again matches the textures the addon ships.
+## Impostors baked in the engine: a plant of glTF parts gets view and normal atlases whose views show
+## the parts' colours where they stand and whose normals point the way the faces seen do; a field
+## growing it draws them; the built-in sunflower baked again matches the atlases the addon ships.
 
+const ImpostorBaker: GDScript = preload("res://addons/sunflower_field/impostor_baker.gd")
 const FOLDER: String = "user://bake_test"
 const RED: Color = Color(0.85, 0.1, 0.1)
 const GREEN: Color = Color(0.1, 0.6, 0.15)
@@ -63,6 +64,18 @@ func _coverage(image: Image) -> Array:
 	return [share, sum / maxf(opaque, 1.0)]
 
 
+## One view's square of an atlas (column around the plant, row of elevation).
+func _view(atlas: Image, column: int, row: int) -> Image:
+	var cell: int = atlas.get_height() / FieldPlant.ATLAS_VIEWS.y
+	return atlas.get_region(Rect2i(column * cell, row * cell, cell, cell))
+
+
+## The plant-frame normal coded in a pixel of the normal atlas.
+func _normal(normals: Image, point: Vector2i) -> Vector3:
+	var c: Color = normals.get_pixelv(point)
+	return Vector3(c.r, c.g, c.b) * 2.0 - Vector3.ONE
+
+
 func test_a_gltf_plant_gets_impostors_in_its_own_colours() -> void:
 	DirAccess.make_dir_recursive_absolute(FOLDER)
 	var stalk: Mesh = _gltf_part(GREEN, Vector3(0.15, 1.0, 0.15), "stalk.gltf")
@@ -75,29 +88,49 @@ func test_a_gltf_plant_gets_impostors_in_its_own_colours() -> void:
 	plant.height_units = 3.0
 	var result: Error = await plant.bake_impostors(tree.root, FOLDER, "red_plant")
 	check_eq(result, OK, "baked")
-	for view: String in ["front", "side"]:
-		check(FileAccess.file_exists(FOLDER.path_join("red_plant_%s.png" % view)), "%s texture written" % view)
-	if not check(plant.front_texture != null and plant.side_texture != null, "the plant has its textures"):
+	for kind: String in FieldPlant.IMPOSTOR_TEXTURES:
+		check(FileAccess.file_exists(FOLDER.path_join("red_plant_%s.png" % kind)), "%s atlas written" % kind)
+	if not check(plant.impostor_views != null and plant.impostor_normals != null, "the plant has its atlases"):
 		return
-	check(plant.billboard_texture == plant.front_texture, "the billboard shows the front")
-	for texture: Texture2D in [plant.front_texture, plant.side_texture]:
-		var image: Image = texture.get_image()
-		var measured: Array = _coverage(image)
-		var share: float = measured[0]
-		var colour: Color = measured[1]
-		# The head is 0.9 of the 1.6 wide frame and one of 3 units tall; the stalks thin.
-		check(share > 0.12 and share < 0.5, "the plant covers part of the frame (%.2f)" % share)
-		check(colour.r > colour.g * 1.5 and colour.r > colour.b * 1.5, "mostly the head's red: %s" % colour)
-		# The head's rows are red, the stalk's rows green: the parts stacked as the plant stands.
-		var top: Color = image.get_pixel(image.get_width() / 2, image.get_height() / 6)
-		var low: Color = image.get_pixel(image.get_width() / 2, image.get_height() * 5 / 6)
-		check(top.r > 0.6 and top.g < 0.3, "the head at the top is red: %s" % top)
-		check(low.g > low.r and low.a > 0.5, "the stalk below is green: %s" % low)
-	# A field growing the plant draws the baked textures.
+	var views: Image = plant.impostor_views.get_image()
+	var normals: Image = plant.impostor_normals.get_image()
+	views.clear_mipmaps()
+	normals.clear_mipmaps()
+	check_eq(views.get_size(), FieldPlant.ATLAS_VIEWS * ImpostorBaker.CELL_PIXELS, "one square per view")
+	var cell: int = ImpostorBaker.CELL_PIXELS
+	var frame: Vector2 = plant.impostor_frame()
+	var pixels_per_unit: float = cell / frame.x
+	for column: int in [0, 3, 7]:  # from the side, three directions around
+		var side: Image = _view(views, column, 0)
+		var measured: Array = _coverage(side)
+		# The head is 0.9 wide and one of 3 units tall in a √(3² + 1.6²)-unit square; the stalks thin.
+		check(measured[0] > 0.04 and measured[0] < 0.25, "view %d covers part of its square (%.2f)" % [column, measured[0]])
+		check((measured[1] as Color).r > (measured[1] as Color).g * 1.5, "mostly the head's red: %s" % measured[1])
+		# The head's rows are red, the stalk's green: the parts stacked as the plant stands.
+		var top: Color = side.get_pixel(cell / 2, roundi(cell / 2 - 1.0 * pixels_per_unit))
+		var low: Color = side.get_pixel(cell / 2, roundi(cell / 2 + 1.0 * pixels_per_unit))
+		check(top.r > 0.6 and top.g < 0.3, "view %d: the head at the top is red: %s" % [column, top])
+		check(low.g > low.r and low.a > 0.5, "view %d: the stalk below is green: %s" % [column, low])
+	# From straight above only the head's top shows: red in the middle, facing up; from the front,
+	# the head's front face faces +z, from the right side (a quarter turn) +x.
+	var above: Image = _view(views, 0, FieldPlant.ATLAS_VIEWS.y - 1)
+	check(above.get_pixel(cell / 2, cell / 2).r > 0.6, "from above, the head: %s" % above.get_pixel(cell / 2, cell / 2))
+	var head_point: Vector2i = Vector2i(cell / 2, roundi(cell / 2 - 1.0 * pixels_per_unit))
+	var quarter: int = FieldPlant.ATLAS_VIEWS.x / 4
+	var expected: Array = [
+		[Vector2i(0, FieldPlant.ATLAS_VIEWS.y - 1), Vector2i(cell / 2, cell / 2), Vector3.UP],
+		[Vector2i(0, 0), head_point, Vector3.BACK],
+		[Vector2i(quarter, 0), head_point, Vector3.RIGHT],
+	]
+	for case: Array in expected:
+		var at: Vector2i = (case[0] as Vector2i) * cell + (case[1] as Vector2i)
+		var normal: Vector3 = _normal(normals, at)
+		check(normal.dot(case[2]) > 0.95, "view %s: the head's normal %s points %s" % [case[0], normal, case[2]])
+	# A field growing the plant draws the baked atlases.
 	var field: SunflowerField = SunflowerField.new()
 	field.plant = plant
 	tree.root.add_child(field)
-	check(field.sprite_front_texture == plant.front_texture, "the field draws them")
+	check(field.impostor_views == plant.impostor_views, "the field draws them")
 	field.free()
 
 
@@ -105,12 +138,14 @@ func test_the_built_in_sunflower_baked_again_matches_the_shipped_textures() -> v
 	var plant: FieldPlant = FieldPlant.default_plant().duplicate() as FieldPlant
 	var result: Error = await plant.bake_impostors(tree.root, FOLDER, "sunflower_again")
 	check_eq(result, OK)
-	for view: String in ["front", "side"]:
-		var shipped: Image = (FieldPlant.default_plant().get(view + "_texture") as Texture2D).get_image()
-		var baked: Image = (plant.get(view + "_texture") as Texture2D).get_image()
+	for kind: String in FieldPlant.IMPOSTOR_TEXTURES:
+		var shipped: Image = (FieldPlant.default_plant().get("impostor_" + kind) as Texture2D).get_image()
+		var baked: Image = (plant.get("impostor_" + kind) as Texture2D).get_image()
 		shipped.decompress()
+		shipped.clear_mipmaps()
+		baked.clear_mipmaps()
 		shipped.convert(Image.FORMAT_RGBA8)
-		check_eq(baked.get_size(), shipped.get_size(), "%s: the same frame" % view)
+		check_eq(baked.get_size(), shipped.get_size(), "%s: the same frame" % kind)
 		if baked.get_size() != shipped.get_size():
 			continue
 		var differ: int = 0
@@ -123,5 +158,5 @@ func test_the_built_in_sunflower_baked_again_matches_the_shipped_textures() -> v
 				if (a.a > 0.5) != (b.a > 0.5) or (a.a > 0.5 and absf(a.get_luminance() - b.get_luminance()) > 0.15):
 					differ += 1
 		var share: float = float(differ) / total
-		print("     bake: %s differs from the shipped texture in %.1f %% of pixels" % [view, share * 100.0])
-		check(share < 0.03, "%s: the baker reproduces the shipped texture (%.1f %% differ)" % [view, share * 100.0])
+		print("     bake: %s differs from the shipped atlas in %.1f %% of pixels" % [kind, share * 100.0])
+		check(share < 0.03, "%s: the baker reproduces the shipped atlas (%.1f %% differ)" % [kind, share * 100.0])

@@ -48,7 +48,7 @@ func test_the_built_in_sunflower_is_the_default_and_stays_shared_unchanged() -> 
 	var second: SunflowerField = _field()
 	check(first.plant == null, "no plant set: the built-in one is grown")
 	check(_drawn_mesh(first, 0, 2) == default_plant.get_part_mesh(0, 2), "the sunflower's head is drawn")
-	check(first.sprite_front_texture == default_plant.front_texture, "and its impostor textures")
+	check(first.impostor_views == default_plant.impostor_views, "and its impostor textures")
 	var box: BoxMesh = BoxMesh.new()
 	first.set_part_mesh(0, 2, box)
 	check(first.plant != null and first.plant != default_plant, "set_part_mesh gives the field its own plant")
@@ -84,10 +84,10 @@ func test_a_plants_form_and_height_shape_the_plants_drawn() -> void:
 	# Without meshes of its own, the plant is drawn with the sunflower's parts and impostors; with
 	# its own level-1 parts but no textures (not baked yet), its impostors are untextured, and it says so.
 	check(_drawn_mesh(field, 0, 0) == FieldPlant.default_plant().get_part_mesh(0, 0))
-	check(field.sprite_front_texture == FieldPlant.default_plant().front_texture)
+	check(field.impostor_views == FieldPlant.default_plant().impostor_views)
 	take_warnings()
 	plant.set_part_mesh(0, 1, BoxMesh.new())
-	check(field.sprite_front_texture == null, "no sunflower texture on a plant of other parts")
+	check(field.impostor_views == null, "no sunflower texture on a plant of other parts")
 	check(warned("drawn untextured"), "a plant of its own parts without textures warns")
 
 

@@ -119,9 +119,9 @@ func test_bad_values_are_rejected_or_clamped_with_a_warning() -> void:
 	field.set("part_meshes/mesh_1/head", Texture2D.new())
 	check(warned("is not a Mesh"), "a non-mesh part warns")
 	check(field.get_part_mesh(0, SunflowerField.Part.HEAD) is ArrayMesh, "the default part is used")
-	field.sprite_front_texture = null
+	field.impostor_views = null
 	field.advance(0.016)
-	check(warned("no front texture"), "a missing texture warns")
+	check(warned("no impostor views texture"), "a missing texture warns")
 	field.wind_power = 5.0
 	for i: int in 5:
 		field.advance(0.016)

@@ -66,10 +66,17 @@ func test_a_legend_plant_is_a_species_with_its_own_buckets_impostors_and_counts(
 	check(_node_named(field, "Plant1Mesh1Head").multimesh.mesh == box, "drawn with its own parts")
 	check(_node_named(field, "Mesh1Head").multimesh.mesh != box, "the sunflower keeps its own")
 	# The far impostors of the second type are framed for it: 3.5 model units tall.
-	var maize_quad: float = _node_named(field, "Plant1Billboards").multimesh.mesh.get_aabb().size.y
-	var sunflower_quad: float = _node_named(field, "Billboards").multimesh.mesh.get_aabb().size.y
-	check_near(maize_quad, 3.5, 1e-3, "the second type's billboard quad")
-	check_near(sunflower_quad, 3.2, 1e-3, "the sunflower's billboard quad")
+	var maize_quad: Mesh = _node_named(field, "Plant1Billboards").multimesh.mesh
+	var sunflower_quad: Mesh = _node_named(field, "Billboards").multimesh.mesh
+	var frames: Array[float] = [
+		sqrt(3.2 * 3.2 + types[0].impostor_width * types[0].impostor_width),
+		sqrt(3.5 * 3.5 + types[1].impostor_width * types[1].impostor_width),
+	]
+	var framed: Array[float] = []
+	for quad: Mesh in [sunflower_quad, maize_quad]:
+		framed.append((quad.surface_get_material(0) as ShaderMaterial).get_shader_parameter("frame_size"))
+	check_near(framed[1], frames[1], 1e-3, "the second type's impostor frame")
+	check_near(framed[0], frames[0], 1e-3, "the sunflower's impostor frame")
 	# Chunks hold one type each, with that type's impostor quads.
 	var simulation: RefCounted = field.get_simulation()
 	var types_seen: Dictionary = {}
@@ -77,8 +84,8 @@ func test_a_legend_plant_is_a_species_with_its_own_buckets_impostors_and_counts(
 		var species: int = simulation.get_chunk_species(chunk)
 		types_seen[species] = true
 		var sprites: MultiMeshInstance3D = _node_named(field, "ChunkSprites%d" % simulation.get_chunk_key(chunk))
-		var expected: float = 3.5 if species == 1 else 3.2
-		check_near(sprites.multimesh.mesh.get_aabb().size.y, expected, 0.2, "chunk %d's sprites" % chunk)
+		var expected: Mesh = maize_quad if species == 1 else sunflower_quad
+		check(sprites.multimesh.mesh == expected, "chunk %d's sprites draw its type's impostor" % chunk)
 	check_eq(types_seen.size(), 2, "chunks of both types")
 	# Per-type counts add up to the field's; each type's plants are as tall as it says.
 	var by_species: Array[PackedInt32Array] = field.get_lod_counts_by_species()
