@@ -164,6 +164,9 @@ func update_field(delta: float) -> void:
 	native_simulation.set_pushers(interaction.gather_pushers(_field.pusher_group, _field.pusher_radius))
 	native_simulation.update(delta)
 	drawn.show_filled_buckets()
+	var wind_state: PackedFloat32Array = native_simulation.get_wind_state()
+	for impostors: ImpostorSet in impostor_sets:
+		impostors.sway(wind_state, _field.wind, _field.global_transform)
 	if not Engine.is_editor_hint():
 		# A stalk: the bottom and middle parts, two of the plant's three part heights.
 		var height: float = plants[0].height

@@ -9,6 +9,8 @@ const SHADER: Shader = preload("shaders/impostor.gdshader")
 
 var material: ShaderMaterial = ShaderMaterial.new()
 var _quad: ArrayMesh
+var _stiffness: float = 1.0  # the plant type's
+var _field_transform: Transform3D = Transform3D.IDENTITY
 var _frame: Vector2 = Vector2.ZERO  # the views' square and its centre's height (model units)
 
 
@@ -22,6 +24,11 @@ func _init() -> void:
 func configure(plant: Resource) -> void:
 	for kind: String in FieldPlant.IMPOSTOR_TEXTURES:
 		set_texture(kind, plant.texture_drawn(kind))
+	_stiffness = plant.stiffness
+	# Model units of the bottom part, and of the middle and head above it (how the wind bends them).
+	material.set_shader_parameter(
+		"part_reach", Vector2(plant.part_lengths.x, plant.part_lengths.y + plant.part_lengths.z)
+	)
 	var frame: Vector2 = plant.impostor_frame()
 	material.set_shader_parameter("frame_size", frame.x)
 	material.set_shader_parameter("frame_centre", frame.y)
@@ -50,6 +57,19 @@ func set_texture(kind: String, texture: Texture2D) -> void:
 ## [code]thinning_start[/code], [code]thinning_min_density[/code]).
 func set_shared(parameter: StringName, value: Variant) -> void:
 	material.set_shader_parameter(parameter, value)
+
+
+## Sways the far plants this frame: the field-wide wind [param state] (the simulation's
+## [code]get_wind_state()[/code]), the [param wind]'s stiffnesses and the field's
+## [param field_transform] (the wind is computed in the field's own frame, as the core does).
+func sway(state: PackedFloat32Array, wind: SunflowerWind, field_transform: Transform3D) -> void:
+	material.set_shader_parameter("wind_state_a", Vector4(state[0], state[1], state[2], state[3]))
+	material.set_shader_parameter("wind_state_b", Vector4(state[4], state[5], state[6], state[7]))
+	material.set_shader_parameter("bend_stiffness", Vector2(wind.stiffness_bottom, wind.stiffness_middle) * _stiffness)
+	if field_transform != _field_transform:
+		_field_transform = field_transform
+		material.set_shader_parameter("world_from_field", Projection(field_transform))
+		material.set_shader_parameter("field_from_world", Projection(field_transform.affine_inverse()))
 
 
 ## A unit square the shader turns to the observer and scales to the frame. (What it shows lies in

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <iterator>
 
 using namespace sunflower;
 
@@ -32,6 +33,7 @@ void SunflowerSimulation::bind_methods() {
 	gdx::bind_method(CLASS, "get_cells_without_ground", &SunflowerSimulation::get_cells_without_ground);
 	gdx::bind_method(CLASS, "get_ground_height", &SunflowerSimulation::get_ground_height, { "point" });
 	gdx::bind_method(CLASS, "get_object_heights", &SunflowerSimulation::get_object_heights);
+	gdx::bind_method(CLASS, "get_wind_state", &SunflowerSimulation::get_wind_state);
 	gdx::bind_method(CLASS, "set_plant_height", &SunflowerSimulation::set_plant_height, { "species", "metres" });
 	gdx::bind_method(CLASS, "set_plant_form", &SunflowerSimulation::set_plant_form,
 			{ "species", "part_lengths", "middle_variation", "height_units", "cull_radius_units", "stiffness" });
@@ -207,6 +209,15 @@ gdx::PackedFloat32Array SunflowerSimulation::get_object_heights() const {
 	const std::vector<float> &heights = _sim.get_layout().object_ground;
 	gdx::PackedFloat32Array out;
 	out.assign(heights.data(), heights.size());
+	return out;
+}
+
+gdx::PackedFloat32Array SunflowerSimulation::get_wind_state() const {
+	const WindModel::ShaderState state = _sim.get_wind().shader_state();
+	const float values[] = { state.lean.x, state.lean.y, state.amplitude, state.bend_limit, state.gust_share,
+		state.gust_scroll, state.sway, state.moving };
+	gdx::PackedFloat32Array out;
+	out.assign(values, std::size(values));
 	return out;
 }
 

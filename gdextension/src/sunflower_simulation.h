@@ -33,6 +33,7 @@ public:
 	int64_t get_cells_without_ground() const;
 	double get_ground_height(gdx::Vector2 p_point) const;
 	gdx::PackedFloat32Array get_object_heights() const;
+	gdx::PackedFloat32Array get_wind_state() const;
 	void set_plant_height(int64_t p_species, double p_metres);
 	void set_plant_form(int64_t p_species, gdx::Vector3 p_part_lengths, double p_middle_variation, double p_height_units,
 			double p_cull_radius_units, double p_stiffness);

@@ -230,8 +230,7 @@ TEST_CASE("natural wind: the mean lean grows with power and saturates smoothly")
 	float previous = 0.0f;
 	for (float power : { 0.5f, 1.0f, 3.0f, 10.0f, 100.0f }) {
 		WindModel wind = natural_wind(power);
-		PlantWind still; // sin φ = 0: the mean alone (no gust drawn at the origin cell? it adds ≥ 0)
-		still.phase = 0.0f;
+		PlantWind still; // the plant at the origin, at Φ = 0: the same sway phase at every power
 		const float lean = glm::length(wind.bend_vector(still, { 0.0f, 0.0f }));
 		CHECK(lean > previous);
 		CHECK(lean < wind.get_bend_limit());
@@ -239,7 +238,7 @@ TEST_CASE("natural wind: the mean lean grows with power and saturates smoothly")
 	}
 }
 
-TEST_CASE("natural wind: no frame-to-frame jump beyond what the smooth motion allows, through b flips and power and direction changes") {
+TEST_CASE("natural wind: no frame-to-frame jump beyond what the smooth motion allows, through power and direction changes") {
 	// The bound, from the model's rates at the largest power used (10): the sway 0.35·A·sin φ with φ
 	// at up to 1.15·ω; gusts 0.5·share·A·g with g's slope at most 1.5 per cell (smoothstep) on both
 	// axes, scrolling at c = p m/s over 8 m cells; A's change with the eased power (dA/dp ≤ h); the
@@ -260,7 +259,7 @@ TEST_CASE("natural wind: no frame-to-frame jump beyond what the smooth motion al
 		WindParams params;
 		params.model = p_model;
 		params.power = 1.0f;
-		params.flip_interval = 0.3f; // many flips
+		params.flip_interval = 0.3f; // many flips (the thesis model's)
 		WindModel wind;
 		wind.configure(params);
 		std::vector<PlantWind> plants(30);
@@ -294,6 +293,38 @@ TEST_CASE("natural wind: no frame-to-frame jump beyond what the smooth motion al
 	INFO("largest per-frame change: natural ", natural, ", bound ", bound);
 	CHECK(natural <= bound);
 	CHECK(largest_jump(WIND_THESIS) > bound); // the thesis' flips, power and direction steps jump
+}
+
+TEST_CASE("natural wind: a plant's sway is a function of its place and the field's phase, seamless where the phase wraps") {
+	WindModel wind = natural_wind(1.0f); // ω = π: Φ wraps at 2π × 64 after 128 s
+	PlantWind fresh;
+	PlantWind old;
+	old.phase = 2.0f; // per-plant state the natural model does not use
+	old.direction = -1;
+	const glm::vec2 place{ 12.34f, -5.67f };
+	// Plants at other places sway at other phases and paces.
+	WindModel later = wind;
+	later.advance(0.5f);
+	std::vector<float> paces;
+	for (int i = 0; i < 40; ++i) {
+		const glm::vec2 other{ float(i) * 0.37f, float(i % 7) * 1.1f };
+		paces.push_back(std::remainder(later.sway_phase(other) - wind.sway_phase(other), TAU) / (PI * 0.5f));
+	}
+	const auto [slowest, fastest] = std::minmax_element(paces.begin(), paces.end());
+	CHECK(*slowest >= 54.0f / 64.0f - 1e-3f);
+	CHECK(*fastest <= 74.0f / 64.0f + 1e-3f);
+	CHECK(*fastest - *slowest > 0.1f);
+	const float dt = 1.0f / 60.0f;
+	float largest_step = 0.0f;
+	for (int frame = 0; frame < 60 * 140; ++frame) {
+		const float before = wind.sway_phase(place);
+		wind.advance(dt);
+		CHECK(wind.bend_vector(fresh, place) == wind.bend_vector(old, place));
+		largest_step = std::max(largest_step, std::abs(std::remainder(wind.sway_phase(place) - before, TAU)));
+	}
+	// Through the wrap at 128 s the phase moves by pace·ω·dt a frame, never more.
+	CHECK(largest_step <= 74.0f / 64.0f * PI * dt * 1.001f);
+	CHECK(largest_step >= 54.0f / 64.0f * PI * dt * 0.999f);
 }
 
 TEST_CASE("natural wind: gusts arrive downwind later in proportion to the distance") {

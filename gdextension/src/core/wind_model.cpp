@@ -24,12 +24,22 @@ glm::mat3 rotation_about_horizontal(const glm::vec2 &p_axis, float p_angle) {
 			glm::vec3(t * x * z, -s * x, c + t * z * z)); // image of +z
 }
 
-// Natural wind's per-plant hash: cheap, as it runs for every near plant every frame. Its low 16 bits
-// stagger the plant's redraws of b, its high 16 bits set its pace.
-uint32_t natural_hash(uint64_t p_seed, uint32_t p_plant) {
-	const uint32_t h = (p_plant ^ uint32_t(p_seed)) * 0x9e3779b1u;
-	return h ^ (h >> 16);
+// Natural wind's per-plant hash, of where the plant stands (a 1/64 m grid): cheap, as it runs for
+// every near plant every frame, and in 32-bit integer steps the impostor shader repeats exactly.
+// Its low 16 bits set the plant's phase offset, its high 16 bits its pace.
+uint32_t natural_hash(const glm::vec2 &p_position) {
+	const uint32_t x = uint32_t(int32_t(std::floor(p_position.x * 64.0f)));
+	const uint32_t z = uint32_t(int32_t(std::floor(p_position.y * 64.0f)));
+	uint32_t h = x * 0x8da6b343u ^ z * 0xd8163841u;
+	h ^= h >> 16;
+	h *= 0x7feb352du;
+	h ^= h >> 15;
+	return h;
 }
+
+// The natural sway's pace steps: m / PACE_STEPS for m in [PACE_LOW, PACE_LOW + PACE_SPAN).
+constexpr uint32_t PACE_LOW = 54;
+constexpr uint32_t PACE_SPAN = 21;
 
 // A smooth saturation like tanh, cheaper: the Padé form x(27 + x²)/(27 + 9x²), which reaches ±1 at
 // |x| = 3 with zero slope, and ±1 beyond. Monotone, odd, slope 1 at 0.
@@ -108,6 +118,7 @@ void WindModel::advance(float p_delta) {
 	_lean = std::abs(turn) <= turn_step ? target
 										: glm::vec2(std::cos(now + std::copysign(turn_step, turn)), std::sin(now + std::copysign(turn_step, turn)));
 	_derive();
+	_sway = std::fmod(_sway + double(_rate) * double(p_delta), double(TAU) * PACE_STEPS);
 	// Gusts travel with the wind (p_w ≈ m/s). Kept in cells, wrapped every 2^16 cells (524 km) so a
 	// float keeps its precision; the lattice hash repeats there too, so the wrap is seamless.
 	_gust_scroll_cells = float(std::fmod(double(_gust_scroll_cells) + double(_power) * double(p_delta) / double(GUST_CELL), 65536.0));
@@ -152,29 +163,44 @@ glm::vec2 WindModel::bend_vector(const PlantWind &p_wind, const glm::vec2 &p_pos
 		return glm::vec2(0.0f);
 	}
 	const float gust = _params.gust_share * 0.5f * _amplitude * gust_strength(p_position);
-	const float lean = 0.55f * _amplitude + 0.35f * _amplitude * std::sin(p_wind.phase) + gust;
+	const float lean = 0.55f * _amplitude + 0.35f * _amplitude * std::sin(sway_phase(p_position)) + gust;
 	return _bend_limit * soft_clip(lean / _bend_limit) * _lean;
 }
 
+float WindModel::sway_phase(const glm::vec2 &p_position) const {
+	const uint32_t h = natural_hash(p_position);
+	const float offset = float(h & 0xFFFFu) * (TAU / 65536.0f);
+	const float pace = float(PACE_LOW + (h >> 16) % PACE_SPAN);
+	// φ₀ + (m / PACE_STEPS)·Φ, wrapped: m·(Φ / PACE_STEPS) is exact to float precision at any Φ.
+	return offset + float(std::fmod(double(pace) * _sway / PACE_STEPS, double(TAU)));
+}
+
+WindModel::ShaderState WindModel::shader_state() const {
+	ShaderState state;
+	state.lean = _lean;
+	state.amplitude = _amplitude;
+	state.bend_limit = _bend_limit;
+	state.gust_share = _params.gust_share;
+	state.gust_scroll = _gust_scroll_cells;
+	state.sway = float(_sway);
+	state.moving = _params.model == WIND_NATURAL ? 1.0f : 0.0f;
+	return state;
+}
+
 float WindModel::flip_offset(uint64_t p_seed, uint32_t p_plant) const {
-	if (_params.model == WIND_NATURAL) {
-		return float(natural_hash(p_seed, p_plant) & 0xFFFFu) * (1.0f / 65536.0f) * _params.flip_interval;
-	}
 	return unit_float(hash_plant(p_seed, p_plant, STREAM_FLIP_OFFSET)) * _params.flip_interval;
 }
 
 void WindModel::init_plant(PlantWind &r_wind, uint64_t p_seed, uint32_t p_plant, double p_time) const {
 	r_wind.phase = unit_float(hash_plant(p_seed, p_plant, STREAM_PHASE)) * TAU;
 	r_wind.direction = (hash_plant(p_seed, p_plant, STREAM_DIRECTION) & 1u) ? int8_t(1) : int8_t(-1);
-	r_wind.eased = int8_t(127 * r_wind.direction);
 	const double since = p_time - double(flip_offset(p_seed, p_plant));
 	r_wind.next_flip = since < 0.0 ? 0u : static_cast<uint32_t>(std::floor(since / _params.flip_interval)) + 1u;
 }
 
 void WindModel::advance_plant(PlantWind &r_wind, uint64_t p_seed, uint32_t p_plant, double p_time, float p_delta) const {
 	if (_params.model == WIND_NATURAL) {
-		_advance_natural(r_wind, p_seed, p_plant, p_time, p_delta);
-		return;
+		return; // natural sway is a function of the plant's place and the field's phase
 	}
 	const double offset = double(flip_offset(p_seed, p_plant));
 	while (offset + double(r_wind.next_flip) * double(_params.flip_interval) <= p_time) {
@@ -190,29 +216,6 @@ void WindModel::advance_plant(PlantWind &r_wind, uint64_t p_seed, uint32_t p_pla
 	}
 	phase = std::fmod(phase, TAU);
 	r_wind.phase = phase;
-}
-
-void WindModel::_advance_natural(PlantWind &r_wind, uint64_t p_seed, uint32_t p_plant, double p_time, float p_delta) const {
-	// One cheap hash per plant and frame gives its pace and the stagger of its redraws of b (as
-	// flip_offset()); the full hash decides a redraw only when one is due (every flip_interval).
-	const uint32_t h = natural_hash(p_seed, p_plant);
-	const double offset = double(h & 0xFFFFu) * (1.0 / 65536.0) * double(_params.flip_interval);
-	while (offset + double(r_wind.next_flip) * double(_params.flip_interval) <= p_time) {
-		if (unit_float(hash_plant(p_seed, p_plant, STREAM_FLIP, r_wind.next_flip)) < _params.flip_chance) {
-			r_wind.direction = int8_t(-r_wind.direction);
-		}
-		++r_wind.next_flip;
-	}
-	// b turns the sway round over EASE_SECONDS instead of at once.
-	const int step = std::max(1, int(127.0f * p_delta / EASE_SECONDS + 0.5f));
-	const int target = 127 * r_wind.direction;
-	const int eased = r_wind.eased < target ? std::min(target, r_wind.eased + step) : std::max(target, r_wind.eased - step);
-	r_wind.eased = int8_t(eased);
-	// Each plant sways at its own pace, 0.85–1.15 times ω.
-	const float pace = 0.85f + 0.3f * float(h >> 16) * (1.0f / 65536.0f);
-	float phase = r_wind.phase + float(eased) / 127.0f * _rate * pace * p_delta;
-	phase = std::fmod(phase, TAU);
-	r_wind.phase = phase < 0.0f ? phase + TAU : phase;
 }
 
 float WindModel::bend(const PlantWind &p_wind, float p_downwind, float p_gust_phase) const {

@@ -11,10 +11,13 @@
 // NATURAL (the default, for games): the plant leans downwind by a mean that grows with the power,
 // sways about it, and gusts roll over the field. With A = L·(1 − e^(−p·h/L)) (L the bend that tilts
 // the plant by max_bend): lean = 0.55·A + 0.35·A·sin φ + gust_share·0.5·A·g(s − c·t, q), smoothly
-// saturated as L·soft_clip(lean/L) (a tanh-like curve), so it never pins at the limit. g is a smooth noise of gust strength
-// in [0, 1] over the field (8 m cells), scrolling downwind at the wind's speed c = p_w m/s; φ runs
-// at ω(p_w) times a per-plant factor, and a redrawn b turns it round over half a second instead of
-// at once. Power and direction changes ease in at a steady rate over half a second. The lean never goes upwind.
+// saturated as L·soft_clip(lean/L) (a tanh-like curve), so it never pins at the limit. g is a smooth
+// noise of gust strength in [0, 1] over the field (8 m cells), scrolling downwind at the wind's
+// speed c = p_w m/s. φ = φ₀ + pace·Φ: Φ is the field's sway phase, advancing at ω(p_w); φ₀ and the
+// pace (0.84–1.16) come from a hash of where the plant stands, so a plant's sway is a function of
+// its place and the field's state alone: the impostor shader (shaders/impostor.gdshader) computes the
+// same bend for far plants, with no per-plant data. Power and direction changes ease in at a steady
+// rate over half a second. The lean never goes upwind. (b is the thesis model's alone.)
 //
 // Both: the bottom part tilts p/d2 and the middle part p/d1 (eq. 4), about the horizontal axis
 // across the lean; the head sits rigidly on the middle. A bend is a vector on the ground (x, z):
@@ -54,7 +57,6 @@ struct WindParams {
 struct PlantWind {
 	float phase = 0.0f; // φ ∈ [0, 2π)
 	int8_t direction = 1; // b
-	int8_t eased = 127; // natural model: b eased towards ±1, as 127ths
 	uint16_t push_slot = 0; // FieldSimulation: 1 + the plant's slot among pushed plants, 0 if none
 	uint32_t next_flip = 0; // index k of the next redraw at t = offset + k·flip_interval
 };
@@ -89,6 +91,22 @@ public:
 	float get_bend_limit() const { return _bend_limit; }
 	// Natural wind: the gust strength in [0, 1] at a point now (0 for the thesis model).
 	float gust_strength(const glm::vec2 &p_position) const;
+	// Natural wind: the sway phase φ of a plant standing at p_position now.
+	float sway_phase(const glm::vec2 &p_position) const;
+	// Natural wind: the field-wide state the impostor shader computes every far plant's bend from
+	// (shaders/impostor.gdshader mirrors bend_vector() and sway_phase() on it).
+	struct ShaderState {
+		glm::vec2 lean; // the lean direction now
+		float amplitude; // A
+		float bend_limit; // L
+		float gust_share;
+		float gust_scroll; // gust cells scrolled downwind
+		float sway; // Φ, wrapped at 2π × PACE_STEPS
+		float moving; // 1 for natural wind, 0 for the thesis' (whose far plants stand still)
+	};
+	ShaderState shader_state() const;
+	// The pace of the sway is m / PACE_STEPS for a whole m: Φ can wrap at 2π × PACE_STEPS unseen.
+	static constexpr int PACE_STEPS = 64;
 	// The bend of a plant now, as a vector on the ground (x, z), in either model.
 	glm::vec2 bend_vector(const PlantWind &p_wind, const glm::vec2 &p_position) const;
 
@@ -111,7 +129,6 @@ public:
 
 private:
 	void _derive();
-	void _advance_natural(PlantWind &r_wind, uint64_t p_seed, uint32_t p_plant, double p_time, float p_delta) const;
 
 	WindParams _params;
 	float _rate = 0.0f; // ω at the power felt now
@@ -123,6 +140,7 @@ private:
 	float _amplitude = 0.0f; // natural: A for the power felt now
 	float _gust_phase = 0.0f; // thesis: Ψ
 	float _gust_scroll_cells = 0.0f; // natural: gust cells the pattern has moved downwind (mod 2^16)
+	double _sway = 0.0; // natural: Φ, wrapped at 2π × PACE_STEPS
 	bool _advanced = false; // natural wind eases changes only once it moves
 };
 

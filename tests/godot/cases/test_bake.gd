@@ -104,7 +104,10 @@ func test_a_gltf_plant_gets_impostors_in_its_own_colours() -> void:
 		var side: Image = _view(views, column, 0)
 		var measured: Array = _coverage(side)
 		# The head is 0.9 wide and one of 3 units tall in a √(3² + 1.6²)-unit square; the stalks thin.
-		check(measured[0] > 0.04 and measured[0] < 0.25, "view %d covers part of its square (%.2f)" % [column, measured[0]])
+		check(
+			measured[0] > 0.04 and measured[0] < 0.25,
+			"view %d covers part of its square (%.2f)" % [column, measured[0]]
+		)
 		check((measured[1] as Color).r > (measured[1] as Color).g * 1.5, "mostly the head's red: %s" % measured[1])
 		# The head's rows are red, the stalk's green: the parts stacked as the plant stands.
 		var top: Color = side.get_pixel(cell / 2, roundi(cell / 2 - 1.0 * pixels_per_unit))

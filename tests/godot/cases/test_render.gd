@@ -155,6 +155,67 @@ func test_empty_near_buckets_are_not_drawn() -> void:
 	check(field_calls <= 2 * chunks, "only the chunks draw: %d calls for %d chunks" % [field_calls, chunks])
 
 
+func test_far_plants_sway_as_the_near_ones_do() -> void:
+	# One sunflower side on to a strong wind (blowing to +x), seen from its front: its head where mesh 3
+	# draws it and where its impostor does at the same instant, and where the impostor is in calm air.
+	var one: SunflowerFieldMap = SunflowerFieldMap.new()
+	one.source_path = "user://one_plant.field"
+	one.text = "1 1\n*\n".to_utf8_buffer()
+	var field: SunflowerField = SunflowerField.new()
+	scene.add_child(field)
+	field.map = one
+	field.wind_power = 5.0
+	field.force_lod = 2  # mesh 3
+	field.finish_build()
+	var root: Vector3 = field.get_plant_info(0)["position"]
+	var camera: Camera3D = Camera3D.new()
+	scene.add_child(camera)
+	camera.look_at_from_position(root + Vector3(0.0, 1.3, 6.0), root + Vector3(0.0, 1.3, 0.0))
+	camera.make_current()
+	var heads: Array[Vector2] = []
+	for level: int in [2, 3, 4]:  # mesh 3, sprite, billboard: the same instant of the wind
+		if level == 2:
+			await frames(40)
+			field.set_process(false)
+		field.force_lod = level
+		field.advance(0.0)
+		await frames(3)
+		heads.append(_yellow_centre(tree.root.get_viewport().get_texture().get_image()))
+	field.wind_power = 0.0
+	field.set_process(true)
+	await frames(60)  # the wind eases down in half a second
+	field.set_process(false)
+	await frames(3)
+	var calm: Vector2 = _yellow_centre(tree.root.get_viewport().get_texture().get_image())
+	field.set_process(true)
+	# 6 m away, 360 rows over 75°: a pixel is 1.6 cm.
+	var metres_per_pixel: float = 2.0 * 6.0 * tan(deg_to_rad(camera.fov * 0.5)) / 360.0
+	var bent: float = (heads[0].x - calm.x) * metres_per_pixel
+	var sprite_off: float = heads[1].distance_to(heads[0]) * metres_per_pixel
+	var billboard_off: float = heads[2].distance_to(heads[0]) * metres_per_pixel
+	print(
+		(
+			"     head bent %.3f m by the wind; impostor head off the mesh's by %.3f m (sprite), %.3f m (billboard)"
+			% [bent, sprite_off, billboard_off]
+		)
+	)
+	check(bent > 0.15, "the wind bends the plant downwind (%.3f m)" % bent)
+	check(sprite_off < 0.05, "the sprite's head is where the mesh's is (%.3f m off)" % sprite_off)
+	check(billboard_off < 0.05, "the billboard's head is where the mesh's is (%.3f m off)" % billboard_off)
+
+
+## The mean position of the petal-yellow pixels.
+func _yellow_centre(image: Image) -> Vector2:
+	var sum: Vector2 = Vector2.ZERO
+	var count: int = 0
+	for y: int in image.get_height():
+		for x: int in image.get_width():
+			if _is_yellow(image.get_pixel(x, y)):
+				sum += Vector2(x, y)
+				count += 1
+	return sum / maxf(count, 1.0)
+
+
 ## A calm field from [param map_path] in the scene, seen by a current camera at [param eye]
 ## looking at [param target].
 func _still_field(map_path: String, eye: Vector3, target: Vector3) -> SunflowerField:
