@@ -131,11 +131,9 @@ func _init() -> void:
 	_petal_tip = PETALS[variant][1]
 	var prefix: String = "sunflower" if variant.is_empty() else variant + "_sunflower"
 	DirAccess.make_dir_recursive_absolute(out_dir)
-	var material: StandardMaterial3D = StandardMaterial3D.new()
-	material.vertex_color_use_as_albedo = true
-	material.vertex_color_is_srgb = true  # the colours above are picked in sRGB
-	material.cull_mode = BaseMaterial3D.CULL_DISABLED
-	material.roughness = 0.85
+	# Vertex colours (picked in sRGB) as albedo, both faces, and the cross-fade into the impostor.
+	var material: ShaderMaterial = ShaderMaterial.new()
+	material.shader = load("res://addons/sunflower_field/shaders/plant_parts.gdshader")
 	material.resource_name = "sunflower_parts"
 	var failed: bool = false
 	for level: int in LEVELS.size():

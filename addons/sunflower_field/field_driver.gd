@@ -217,7 +217,9 @@ func configure_wind() -> void:
 ## Hands the field's levels of detail to the simulation drawn.
 func configure_lod() -> void:
 	if drawn:
-		drawn.simulation.set_lod(_field.lod_distances, _field.lod_hysteresis, _field.lod_interval, _field.force_lod)
+		drawn.simulation.set_lod(
+			_field.lod_distances, _field.lod_hysteresis, _field.lod_fade, _field.lod_interval, _field.force_lod
+		)
 
 
 ## Hands the field's push settings to the simulation drawn.

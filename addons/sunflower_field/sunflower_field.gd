@@ -242,6 +242,17 @@ const PartMeshes: GDScript = preload("part_meshes.gd")
 		if value != lod_hysteresis:
 			lod_hysteresis = value
 			_driver.configure_lod()
+## Metres over which a plant leaving mesh 3 dithers into its impostor (both drawn, complementary
+## screen-door patterns), ending at the sprite switch less [member lod_hysteresis]: no plant pops
+## from mesh to impostor. Plant materials fade when they dither by the instance colour's alpha, as
+## the addon's [code]shaders/plant_parts.gdshader[/code] does (the built-in plants use it); other
+## materials switch at once. 0 turns the fade off.
+@export_range(0.0, 10.0, 0.1, "or_greater", "suffix:m") var lod_fade: float = 3.0:
+	set(value):
+		value = Native.accept("SunflowerField.lod_fade", value, lod_fade)
+		if value != lod_fade:
+			lod_fade = value
+			_driver.configure_lod()
 ## Seconds between LOD updates (thesis: 0.25 s). Plants move every frame regardless.
 @export_range(0.0, 2.0, 0.01, "or_greater", "suffix:s") var lod_interval: float = 0.25:
 	set(value):

@@ -42,7 +42,7 @@ void SunflowerSimulation::bind_methods() {
 	gdx::bind_method(CLASS, "set_wind", &SunflowerSimulation::set_wind,
 			{ "model", "power", "direction", "stiffness_middle", "stiffness_bottom", "bend_per_power", "max_bend", "flip_interval",
 					"flip_chance", "gust_speed", "gust_share" });
-	gdx::bind_method(CLASS, "set_lod", &SunflowerSimulation::set_lod, { "distances", "hysteresis", "interval", "force_level" });
+	gdx::bind_method(CLASS, "set_lod", &SunflowerSimulation::set_lod, { "distances", "hysteresis", "fade", "interval", "force_level" });
 	gdx::bind_method(CLASS, "set_observer", &SunflowerSimulation::set_observer, { "position", "frustum" });
 	gdx::bind_method(CLASS, "set_worker_threads", &SunflowerSimulation::set_worker_threads, { "threads" });
 	gdx::bind_method(CLASS, "get_worker_threads", &SunflowerSimulation::get_worker_threads);
@@ -337,13 +337,14 @@ void SunflowerSimulation::set_wind(int64_t p_model, double p_power, gdx::Vector2
 	_sim.set_wind(params); // the core applies the param:: rules
 }
 
-void SunflowerSimulation::set_lod(const gdx::PackedFloat32Array &p_distances, double p_hysteresis, double p_interval,
+void SunflowerSimulation::set_lod(const gdx::PackedFloat32Array &p_distances, double p_hysteresis, double p_fade, double p_interval,
 		int64_t p_force_level) {
 	const std::string problem = sunflower::check_lod_distances(p_distances.data(), size_t(p_distances.size()));
 	SF_FAIL_COND_MSG(!problem.empty(), "set_lod: " + problem);
 	LodParams params;
 	std::copy_n(p_distances.data(), 4, params.distances.begin());
 	params.hysteresis = float(p_hysteresis);
+	params.fade = float(p_fade);
 	params.interval = float(p_interval);
 	params.force_level = int(std::clamp<int64_t>(p_force_level, INT32_MIN, INT32_MAX)); // the core clamps
 	_sim.set_lod(params);

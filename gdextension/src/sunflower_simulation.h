@@ -42,7 +42,7 @@ public:
 	void set_wind(int64_t p_model, double p_power, gdx::Vector2 p_direction, double p_stiffness_middle, double p_stiffness_bottom,
 			double p_bend_per_power, double p_max_bend, double p_flip_interval, double p_flip_chance, double p_gust_speed,
 			double p_gust_share);
-	void set_lod(const gdx::PackedFloat32Array &p_distances, double p_hysteresis, double p_interval, int64_t p_force_level);
+	void set_lod(const gdx::PackedFloat32Array &p_distances, double p_hysteresis, double p_fade, double p_interval, int64_t p_force_level);
 	void set_observer(gdx::Vector3 p_position, const gdx::PackedFloat32Array &p_frustum);
 	void set_worker_threads(int64_t p_threads);
 	void set_pushers(const gdx::PackedFloat32Array &p_pushers);

@@ -32,17 +32,45 @@ int64_t total(const std::array<int64_t, LOD_COUNT> &p_counts) {
 	return std::accumulate(p_counts.begin(), p_counts.end(), int64_t(0));
 }
 
-// Plants drawn by the dynamic buckets plus the plants of static chunks: with no frustum, every
-// plant must be drawn exactly once.
+// Plants drawn by the dynamic buckets plus the plants of static chunks: with no frustum, every plant
+// must be drawn exactly once, or, in the mesh 3 → impostor cross-fade, twice: as mesh 3 and as an
+// impostor whose shares (the instance colours' alpha, the patterns each level's shader keeps) add
+// up to one. Returns the plants drawn.
 int64_t drawn(const FieldSimulation &p_sim) {
-	int64_t count = 0;
+	struct Drawn {
+		float share = 0.0f;
+		int representations = 0;
+		bool mesh_3 = false;
+	};
+	std::map<std::pair<float, float>, Drawn> plants; // by root (x, z)
+	auto add = [&](const InstanceBuffer &p_bucket, bool p_may_fade, bool p_mesh_3) {
+		for (uint32_t i = 0; i < p_bucket.get_count(); ++i) {
+			const float *instance = p_bucket.get_data() + size_t(i) * FLOATS_PER_INSTANCE;
+			Drawn &plant = plants[{ instance[3], instance[11] }];
+			plant.share += instance[15];
+			plant.representations += 1;
+			plant.mesh_3 = plant.mesh_3 || p_mesh_3;
+			if (!p_may_fade) {
+				CHECK(instance[15] == 1.0f);
+			}
+		}
+	};
 	for (uint32_t level = 0; level < LOD_MESH_COUNT; ++level) {
 		const uint32_t bottom = p_sim.get_bucket(mesh_bucket(level, 0)).get_count();
 		CHECK(p_sim.get_bucket(mesh_bucket(level, 1)).get_count() == bottom);
 		CHECK(p_sim.get_bucket(mesh_bucket(level, 2)).get_count() == bottom);
-		count += bottom;
+		add(p_sim.get_bucket(mesh_bucket(level, 0)), level == LOD_MESH_3, level == LOD_MESH_3);
 	}
-	count += p_sim.get_bucket(BUCKET_SPRITE).get_count() + p_sim.get_bucket(BUCKET_BILLBOARD).get_count();
+	add(p_sim.get_bucket(BUCKET_SPRITE), true, false);
+	add(p_sim.get_bucket(BUCKET_BILLBOARD), false, false);
+	for (const auto &[root, plant] : plants) {
+		CHECK(plant.share == doctest::Approx(1.0f).epsilon(1e-5));
+		CHECK(plant.representations <= 2);
+		if (plant.representations == 2) {
+			CHECK(plant.mesh_3); // the only pair: mesh 3 and its impostor
+		}
+	}
+	int64_t count = int64_t(plants.size());
 	for (uint32_t c = 0; c < p_sim.get_chunk_count(); ++c) {
 		if (!p_sim.is_chunk_active(c)) {
 			count += p_sim.get_layout().chunks[c].count;
@@ -64,10 +92,12 @@ TEST_CASE("every plant is drawn exactly once along a path, and LOD counts follow
 		CHECK(drawn(sim) == 24000);
 		const auto counts = sim.get_lod_counts();
 		CHECK(total(counts) == 24000);
-		// With no frustum, the mesh buckets hold exactly the plants counted at mesh levels.
-		for (uint32_t level = 0; level < LOD_MESH_COUNT; ++level) {
+		// With no frustum, the mesh buckets hold exactly the plants counted at mesh levels (mesh 3 but
+		// those wholly faded into their impostors).
+		for (uint32_t level = 0; level < LOD_MESH_3; ++level) {
 			CHECK(sim.get_bucket(mesh_bucket(level, 0)).get_count() == counts[level]);
 		}
+		CHECK(sim.get_bucket(mesh_bucket(LOD_MESH_3, 0)).get_count() <= counts[LOD_MESH_3]);
 	}
 	sim.set_observer({ 50.0f, 1.7f, 30.0f });
 	sim.request_lod_update();
@@ -365,6 +395,69 @@ TEST_CASE("pushers: a body above the plants pushes nothing; a push never bends a
 		const float tilt = std::acos(glm::normalize(parts.basis[1][1]).y) + 0.0f;
 		CHECK(tilt <= sim.get_wind().get_params().max_bend * 1.001f);
 	}
+}
+
+TEST_CASE("mesh 3 dithers into its impostor over the fade metres before the sprite switch, the same whichever level a plant is at") {
+	FieldSimulation sim;
+	load(sim, rect_map(120, 120)); // 60 × 60 m
+	LodParams lod; // switches at 6, 10, 20, 25 m, hysteresis 0.5 m, fade 3 m: from 16.5 to 19.5 m
+	lod.interval = 0.0f;
+	sim.set_lod(lod);
+	const glm::vec3 eye{ 30.0f, 1.7f, 30.0f };
+	sim.set_observer(eye);
+	const float middle = 0.5f * PlantShape::HEIGHT * float(param::PLANT_HEIGHT.default_value) / 3.0f;
+	auto impostor_shares = [&]() {
+		std::map<std::pair<float, float>, float> shares;
+		const InstanceBuffer &sprites = sim.get_bucket(BUCKET_SPRITE);
+		for (uint32_t i = 0; i < sprites.get_count(); ++i) {
+			const float *instance = sprites.get_data() + size_t(i) * FLOATS_PER_INSTANCE;
+			shares[{ instance[3], instance[11] }] = instance[15];
+		}
+		const InstanceBuffer &meshes = sim.get_bucket(mesh_bucket(LOD_MESH_3, 0));
+		for (uint32_t i = 0; i < meshes.get_count(); ++i) {
+			const float *instance = meshes.get_data() + size_t(i) * FLOATS_PER_INSTANCE;
+			shares.emplace(std::make_pair(instance[3], instance[11]), 0.0f); // mesh 3 alone: no impostor
+		}
+		return shares;
+	};
+	int in_band = 0;
+	int switching = 0;
+	// Walk out and back in: plants near 20 m are at mesh 3 on one way and sprites on the other.
+	for (float step : { 0.0f, 0.6f, 1.2f, 0.6f, 0.0f }) {
+		sim.set_observer(eye + glm::vec3(step, 0.0f, 0.0f));
+		for (int i = 0; i < 10; ++i) { // chunks turn active a budget's worth per update
+			sim.request_lod_update();
+			sim.update(0.016f);
+		}
+		const auto shares = impostor_shares();
+		for (uint32_t i = 0; i < sim.get_plant_count(); ++i) {
+			const Plant &plant = sim.get_layout().plants[i];
+			const float distance = glm::length(eye + glm::vec3(step, 0.0f, 0.0f) - (plant.root() + glm::vec3(0.0f, middle, 0.0f)));
+			if (distance < 12.0f || distance > 22.0f) {
+				continue;
+			}
+			const auto found = shares.find({ plant.root().x, plant.root().z });
+			const float expected = std::clamp((distance - 16.5f) / 3.0f, 0.0f, 1.0f);
+			CAPTURE(distance);
+			// Not in a near bucket: in a static chunk, drawn as a whole impostor.
+			const bool as_expected = found == shares.end() ? !sim.is_chunk_active(plant.chunk) && expected == 1.0f
+														   : found->second == doctest::Approx(expected).epsilon(1e-3);
+			CHECK(as_expected);
+			in_band += expected > 0.0f && expected < 1.0f ? 1 : 0;
+			switching += distance > 19.5f && distance < 20.5f ? 1 : 0;
+		}
+		CHECK(drawn(sim) == sim.get_plant_count());
+	}
+	CHECK(in_band > 500);
+	CHECK(switching > 100);
+	lod.fade = 0.0f; // no fade: mesh 3 wholly up to its switch
+	sim.set_lod(lod);
+	sim.request_lod_update();
+	sim.update(0.016f);
+	for (const auto &[root, share] : impostor_shares()) {
+		CHECK((share == 0.0f || share == 1.0f));
+	}
+	CHECK(drawn(sim) == sim.get_plant_count());
 }
 
 TEST_CASE("a jump of the observer re-selects at once, nearest chunks first, within the activation budget") {

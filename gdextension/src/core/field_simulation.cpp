@@ -335,6 +335,7 @@ void FieldSimulation::_move_chunks(size_t p_first, size_t p_last, float p_delta,
 		bucket.clear();
 	}
 	const bool moving = _wind.get_effective_power() > 0.0f;
+	const bool fading = _lod.get_params().force_level < 0 && _lod.get_params().fade > 0.0f;
 	PartTransforms parts;
 	for (size_t a = p_first; a < p_last; ++a) {
 		const Chunk &chunk = _layout.chunks[_active_chunks[a]];
@@ -361,8 +362,18 @@ void FieldSimulation::_move_chunks(size_t p_first, size_t p_last, float p_delta,
 			if (!visible) {
 				continue;
 			}
+			// Mesh 3 near the sprite switch dithers into the impostor: both drawn, the impostor's
+			// share in its colour's alpha, the mesh's in the rest (complementary screen-door patterns).
+			const float share = lod == LOD_MESH_3 && fading ? _lod.impostor_share(_plant_distance_sq(plant)) : 0.0f;
+			if (share > 0.0f) {
+				_write_impostor(buckets[BUCKET_SPRITE].push(), plant, share);
+				if (share >= 1.0f) {
+					continue;
+				}
+			}
 			_wind.part_transforms(plant, _plant_bend(index, plant, moving), shape, parts);
-			const glm::vec4 color = plant.color(variety);
+			glm::vec4 color = plant.color(variety);
+			color.w = 1.0f - share;
 			for (uint32_t part = 0; part < PART_COUNT; ++part) {
 				write_instance(buckets[mesh_bucket(lod, part)].push(), parts.basis[part], parts.origin[part], color);
 			}
@@ -477,13 +488,14 @@ void FieldSimulation::_update_pushes(float p_delta) {
 	}
 }
 
-void FieldSimulation::_write_impostor(float *r_out, const Plant &p_plant) const {
+void FieldSimulation::_write_impostor(float *r_out, const Plant &p_plant, float p_share) const {
 	const float scale = _shapes[_species_of(p_plant)].part_scale * p_plant.scale;
 	const float c = std::cos(p_plant.yaw) * scale;
 	const float s = std::sin(p_plant.yaw) * scale;
 	const glm::mat3 basis(glm::vec3(c, 0.0f, -s), glm::vec3(0.0f, scale, 0.0f), glm::vec3(s, 0.0f, c));
-	write_instance(r_out, p_plant.lean == glm::vec2(0.0f) ? basis : lean_rotation(p_plant.lean) * basis, p_plant.root(),
-			p_plant.color(_layout_params.varieties[_species_of(p_plant)]));
+	glm::vec4 color = p_plant.color(_layout_params.varieties[_species_of(p_plant)]);
+	color.w = p_share;
+	write_instance(r_out, p_plant.lean == glm::vec2(0.0f) ? basis : lean_rotation(p_plant.lean) * basis, p_plant.root(), color);
 }
 
 void FieldSimulation::write_chunk_instances(uint32_t p_chunk, float *r_out) const {

@@ -1,6 +1,7 @@
 #include "lod_selector.h"
 
 #include <algorithm>
+#include <limits>
 
 namespace sunflower {
 
@@ -12,6 +13,7 @@ void LodSelector::configure(const LodParams &p_params) {
 	}
 	_params.hysteresis = sanitize(param::LOD_HYSTERESIS, p_params.hysteresis, previous.hysteresis);
 	_params.interval = sanitize(param::LOD_INTERVAL, p_params.interval, previous.interval);
+	_params.fade = sanitize(param::LOD_FADE, p_params.fade, previous.fade);
 	_params.force_level = int(sanitize(param::FORCE_LOD, double(p_params.force_level), double(previous.force_level)));
 	for (size_t i = 0; i < 4; ++i) {
 		const float d = _params.distances[i];
@@ -20,6 +22,9 @@ void LodSelector::configure(const LodParams &p_params) {
 		_coarser_sq[i] = (d + _params.hysteresis) * (d + _params.hysteresis);
 		_finer_sq[i] = finer * finer;
 	}
+	const float fade_end = std::max(0.0f, _params.distances[2] - _params.hysteresis);
+	_fade_start = std::max(0.0f, fade_end - _params.fade);
+	_fade_start_sq = _params.fade > 0.0f ? _fade_start * _fade_start : std::numeric_limits<float>::infinity();
 }
 
 uint8_t LodSelector::select(float p_distance_sq) const {

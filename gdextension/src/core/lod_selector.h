@@ -3,7 +3,9 @@
 // with a hysteresis margin on every threshold so plants near a threshold do not flicker.
 #include "parameters.h"
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 
 namespace sunflower {
@@ -24,6 +26,7 @@ struct LodParams {
 	// Metres: switch to less detail this much later, to more detail this much earlier.
 	float hysteresis = float(param::LOD_HYSTERESIS.default_value);
 	float interval = float(param::LOD_INTERVAL.default_value); // seconds between LOD updates (thesis 3.3.2)
+	float fade = float(param::LOD_FADE.default_value); // metres of mesh 3 → impostor cross-fade
 	// 0–4: draw every plant in this representation (benchmarks, debugging); -1: by distance.
 	int force_level = int(param::FORCE_LOD.default_value);
 };
@@ -39,12 +42,23 @@ public:
 	uint8_t select(float p_distance_sq) const;
 	// The level for a plant that was at p_current: hysteresis applies.
 	uint8_t update(uint8_t p_current, float p_distance_sq) const;
+	// How much of a mesh-3 plant at squared distance p_distance_sq its impostor draws, 0–1: the
+	// cross-fade runs over `fade` metres up to the mesh 3 → sprite switch less the hysteresis, so a
+	// plant on either side of the switch looks the same whichever level it is at.
+	float impostor_share(float p_distance_sq) const {
+		if (p_distance_sq <= _fade_start_sq) {
+			return 0.0f;
+		}
+		return std::min(1.0f, (std::sqrt(p_distance_sq) - _fade_start) / _params.fade);
+	}
 
 private:
 	LodParams _params;
 	std::array<float, 4> _plain_sq{};
 	std::array<float, 4> _coarser_sq{}; // (d + margin)²: leave level i for i + 1 beyond this
 	std::array<float, 4> _finer_sq{}; // (d - margin)²: leave level i + 1 for i below this
+	float _fade_start = 0.0f; // metres: mesh 3 starts to dither into its impostor here
+	float _fade_start_sq = 0.0f; // infinite without a fade
 };
 
 } // namespace sunflower

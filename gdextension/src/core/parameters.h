@@ -69,6 +69,9 @@ inline constexpr ParameterSpec MAX_PLANTS{ "SunflowerField.max_plants", 4'000'00
 // Levels of detail (thesis 3.2–3.3: 0.25 s between updates; the hysteresis is this addon's).
 inline constexpr ParameterSpec LOD_HYSTERESIS{ "SunflowerField.lod_hysteresis", 0.5, 0.0, NO_MAX, ParameterSpec::CLAMP, 0.5 };
 inline constexpr ParameterSpec LOD_INTERVAL{ "SunflowerField.lod_interval", 0.25, 0.0, NO_MAX, ParameterSpec::CLAMP, 0.25 };
+// Metres over which a plant leaving mesh 3 dithers into its impostor, ending where the sprite takes
+// over however the plant last switched (the switch distance less the hysteresis); 0: no fade.
+inline constexpr ParameterSpec LOD_FADE{ "SunflowerField.lod_fade", 3.0, 0.0, NO_MAX, ParameterSpec::CLAMP, 3.0 };
 inline constexpr ParameterSpec FORCE_LOD{ "SunflowerField.force_lod", -1.0, -1.0, 4.0, ParameterSpec::CLAMP, -1.0 };
 
 // Drawing (applied by the engine side: shader parameters and visibility ranges).
@@ -97,10 +100,10 @@ inline constexpr ParameterSpec GROUND_TILT{ "SunflowerField.ground_tilt", 0.0, 0
 inline constexpr ParameterSpec GROUND_RAY_ABOVE{ "SunflowerField.ground_ray_above", 100.0, 0.0, NO_MAX, ParameterSpec::CLAMP, 100.0 };
 inline constexpr ParameterSpec GROUND_RAY_BELOW{ "SunflowerField.ground_ray_below", 100.0, 0.0, NO_MAX, ParameterSpec::CLAMP, 100.0 };
 
-inline constexpr std::array<const ParameterSpec *, 38> ALL{ { &WIND_MODEL, &WIND_POWER, &WIND_INCREMENT, &WIND_STIFFNESS_MIDDLE,
+inline constexpr std::array<const ParameterSpec *, 39> ALL{ { &WIND_MODEL, &WIND_POWER, &WIND_INCREMENT, &WIND_STIFFNESS_MIDDLE,
 		&WIND_STIFFNESS_BOTTOM, &WIND_BEND_PER_POWER, &WIND_MAX_BEND, &WIND_FLIP_INTERVAL, &WIND_FLIP_CHANCE,
 		&WIND_GUST_SPEED, &WIND_GUST_SHARE, &CELL_SIZE, &PLANT_HEIGHT, &CHUNK_SIZE, &MAX_PLANTS, &LOD_HYSTERESIS,
-		&LOD_INTERVAL, &FORCE_LOD, &ALPHA_SCISSOR, &THINNING_DISTANCE, &THINNING_MIN_DENSITY, &MAX_DRAW_DISTANCE,
+		&LOD_INTERVAL, &LOD_FADE, &FORCE_LOD, &ALPHA_SCISSOR, &THINNING_DISTANCE, &THINNING_MIN_DENSITY, &MAX_DRAW_DISTANCE,
 		&BUILD_BUDGET_MS, &WORKER_THREADS, &PUSH_STRENGTH, &PUSH_RECOVERY, &PUSHER_RADIUS,
 		&COLLISION_REACH, &GROUND_TILT, &GROUND_RAY_ABOVE, &GROUND_RAY_BELOW, &PLANT_YAW_RANGE, &PLANT_SCALE_MIN, &PLANT_SCALE_MAX,
 		&PLANT_MIDDLE_VARIATION, &PLANT_BRIGHTNESS_VARIATION, &PLANT_TINT_VARIATION, &PLANT_STIFFNESS } };

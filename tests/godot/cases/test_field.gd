@@ -133,7 +133,9 @@ func test_wind_moves_the_plants_and_calm_keeps_them_upright() -> void:
 
 func test_every_plant_is_drawn_exactly_once_along_a_camera_path() -> void:
 	# Reconstruct, from the RenderingServer's buffers and the visibility ranges, where each plant
-	# is drawn; a plain Node3D observer has no frustum, so every plant must appear exactly once.
+	# is drawn; a plain Node3D observer has no frustum, so every plant must appear exactly once, or, in
+	# the mesh 3 → impostor cross-fade, as mesh 3 and as an impostor whose shares (the instance
+	# colours' alpha) add up to one.
 	var positions: Dictionary = {}
 	for i: int in field.get_plant_count():
 		positions[_key(field.get_plant_info(i)["position"])] = i
@@ -149,11 +151,16 @@ func test_every_plant_is_drawn_exactly_once_along_a_camera_path() -> void:
 		Vector3(30, 30, 10),
 		Vector3(10, 60, 7),
 	]
+	var crossfades: int = 0
 	for stop: Vector3 in path:
 		observer.position = stop
 		field.advance(0.3)
 		var drawn: PackedInt32Array = PackedInt32Array()
 		drawn.resize(field.get_plant_count())
+		var shares: PackedFloat32Array = PackedFloat32Array()
+		shares.resize(field.get_plant_count())
+		var fading: PackedInt32Array = PackedInt32Array()  # representations drawn in a cross-fade
+		fading.resize(field.get_plant_count())
 		for node: MultiMeshInstance3D in _field_nodes():
 			var rid: RID = node.multimesh.get_rid()
 			var visible: int = RenderingServer.multimesh_get_visible_instances(rid)
@@ -167,15 +174,25 @@ func test_every_plant_is_drawn_exactly_once_along_a_camera_path() -> void:
 				var root: Vector3 = Vector3(buffer[k * STRIDE + 3], buffer[k * STRIDE + 7], buffer[k * STRIDE + 11])
 				var index: int = positions.get(_key(root), -1)
 				if check(index >= 0, "%s instance %d at %s is no plant" % [node.name, k, root]):
+					var share: float = buffer[k * STRIDE + 15]
 					drawn[index] += 1
+					shares[index] += share
+					var may_fade: bool = node.name.ends_with("Mesh3Bottom") or node.name.ends_with("Sprites")
+					fading[index] += 1 if may_fade and share < 1.0 else 0
 		var wrong: int = 0
+		var crossfading: int = 0
 		for i: int in drawn.size():
-			if drawn[i] != 1:
+			var once: bool = drawn[i] == 1 and is_equal_approx(shares[i], 1.0)
+			var complementary: bool = drawn[i] == 2 and fading[i] == 2 and absf(shares[i] - 1.0) < 1e-4
+			crossfading += 1 if complementary else 0
+			if not once and not complementary:
 				wrong += 1
 				if wrong <= 3:
-					check_eq(drawn[i], 1, "from %s plant %d is drawn %d times" % [stop, i, drawn[i]])
-		check_eq(wrong, 0, "from %s plants not drawn exactly once" % stop)
+					check(false, "from %s plant %d is drawn %d times, shares %.4f" % [stop, i, drawn[i], shares[i]])
+		check_eq(wrong, 0, "from %s plants not drawn once (or twice complementarily)" % stop)
+		crossfades += crossfading
 		check_eq(_sum(field.get_lod_counts()), field.get_plant_count(), "LOD counts from %s" % stop)
+	check(crossfades > 0, "some plants were in the cross-fade along the path")
 
 
 func test_a_bad_map_keeps_the_field_and_reports_file_line_column() -> void:
