@@ -1,37 +1,32 @@
 #!/usr/bin/env bash
-# The far levels against the full-mesh picture: renders five views of a 60 × 60 m field three times
-# each (automatic LOD; every plant as mesh 1; the impostors alone, as a mask) with the demo's
-# recording mode under Xvfb (Forward+ on Vulkan lavapipe), in calm air, and prints per view the SSIM
-# to the full-mesh picture, the mean difference and the impostor region's brightness relative to it
-# (tools/measure_lod.py). Pictures go to build/measure/ (look at them side by side).
+# The far levels against the full-mesh picture, every view and every switch: runs the engine test
+# tests/godot/cases/test_fidelity.gd with FIDELITY_FULL=1 under Xvfb (Forward+ on Vulkan lavapipe,
+# 640 × 360). Per view (head height inside, 5 m and 40 m outside, 25 m up at 45°, 60 m straight
+# down) it prints the SSIM and mean difference to the same view with every plant as mesh 1 and the
+# impostor region's share and brightness relative to it; per switch distance, the pop ratio of a
+# 2 cm-a-frame walk across it. The test command runs the same test on three views and one switch.
+# Pictures: tests/artifacts/fidelity/<view>.{auto,mesh1,mask}.png, and side by side in
+# tests/artifacts/fidelity/<view>.pair.png (automatic LOD left, every plant as mesh 1 right).
 set -euo pipefail
 repo=$(cd "$(dirname "$0")/.." && pwd)
 "$repo/tools/build.sh" >/dev/null
 godot=$("$repo/tools/find_godot.sh")
-out="$repo/build/measure"
-mkdir -p "$out"
-"$repo/tools/make_field.py" 120 120 "$out/field60.field" >/dev/null
-# eye x y z, target x y z: head height inside, 5 m outside, 40 m outside, 25 m up at 45°, 60 m straight down
-declare -A views=(
-  [inside]="30 1.7 45 30 1.4 20"
-  [outside5]="30 1.7 65 30 1.0 30"
-  [outside40]="30 1.7 100 30 1.0 30"
-  [above45]="30 25 55 30 0 30"
-  [down60]="30 60 30.01 30 0 30"
-)
-names=(inside outside5 outside40 above45 down60)
-for view in "${names[@]}"; do
-  printf '%s\n%s\n' "${views[$view]}" "${views[$view]}" >"$out/$view.path"
-  for mode in auto mesh1 mask; do
-    extra=()
-    [[ $mode == mesh1 ]] && extra=(--force-lod 0)
-    [[ $mode == mask ]] && extra=(--impostor-mask)
-    timeout 900 xvfb-run -a -s "-screen 0 1280x720x24" "$godot" --audio-driver Dummy --resolution 640x360 \
-      --path "$repo/demo_project" -- --map "$out/field60.field" --frames 6 --path "$out/$view.path" --wind 0 --no-hud \
-      --screenshot "$out/$view.$mode.png" "${extra[@]}" >"$out/$view.$mode.log" 2>&1 ||
-      { echo "measure: $view/$mode failed; see $out/$view.$mode.log" >&2; exit 1; }
-    printf '.' >&2
-  done
-done
-echo >&2
-"$repo/.cache/venv/bin/python" "$repo/tools/measure_lod.py" "$out" "${names[@]}"
+"$repo/tools/import_project.sh" "$repo/tests/godot" >/dev/null
+log="$repo/tests/artifacts/fidelity.log"
+mkdir -p "$repo/tests/artifacts"
+FIDELITY_FULL=1 timeout 3600 xvfb-run -a -s "-screen 0 1280x720x24" "$godot" --rendering-driver vulkan \
+  --audio-driver Dummy --resolution 640x360 --path "$repo/tests/godot" --script res://runner/run_tests.gd \
+  -- test_fidelity >"$log" 2>&1 || true
+grep -E '^(ok|FAIL) |^     |^godot:' "$log"
+"$repo/.cache/venv/bin/python" - "$repo/tests/artifacts/fidelity" <<'PY'
+import pathlib, sys
+from PIL import Image
+folder = pathlib.Path(sys.argv[1])
+for auto in sorted(folder.glob("*.auto.png")):
+    full = auto.with_name(auto.name.replace(".auto.", ".mesh1."))
+    a, b = Image.open(auto), Image.open(full)
+    pair = Image.new("RGB", (a.width + b.width + 8, a.height), "white")
+    pair.paste(a, (0, 0))
+    pair.paste(b, (a.width + 8, 0))
+    pair.save(auto.with_name(auto.name.replace(".auto.", ".pair.")))
+PY

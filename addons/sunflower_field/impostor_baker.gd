@@ -157,6 +157,7 @@ static func _give_textures(plant: FieldPlant, paths: PackedStringArray, images: 
 			textures.append(ResourceLoader.load(path, "Texture2D", ResourceLoader.CACHE_MODE_REPLACE) as Texture2D)
 	else:
 		for image: Image in images:
+			image.premultiply_alpha()
 			image.generate_mipmaps()
 			var texture: ImageTexture = ImageTexture.create_from_image(image)
 			texture.resource_name = plant.name
@@ -167,8 +168,9 @@ static func _give_textures(plant: FieldPlant, paths: PackedStringArray, images: 
 		ResourceSaver.save(plant)
 
 
-## The atlases import losslessly with mipmaps (the shader keeps alpha coverage across them), and
-## the normals as plain data (no sRGB, no normal-map compression).
+## The atlases import losslessly, premultiplied by coverage and with mipmaps (the shader divides the
+## coverage out and keeps it across the mipmaps), the normals as plain data (no normal-map
+## compression).
 static func _write_import_settings(paths: PackedStringArray) -> void:
 	for path: String in paths:
 		var settings: ConfigFile = ConfigFile.new()
@@ -178,5 +180,6 @@ static func _write_import_settings(paths: PackedStringArray) -> void:
 		settings.set_value("params", "compress/mode", 0)
 		settings.set_value("params", "mipmaps/generate", true)
 		settings.set_value("params", "process/fix_alpha_border", true)
+		settings.set_value("params", "process/premult_alpha", true)
 		settings.set_value("params", "detect_3d/compress_to", 0)
 		settings.save(path + ".import")

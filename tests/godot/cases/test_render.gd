@@ -2,37 +2,14 @@ extends TestCase
 ## Renders the demo field from a fixed viewpoint with the real renderer (run under Xvfb), saves
 ## the screenshot to tests/artifacts/, and checks that sunflower colours are where the field is.
 
+const Stage: GDScript = preload("res://runner/stage.gd")
 const SHOT: String = "render_demo_field.png"
 
 var scene: Node3D
 
 
 func before_each() -> void:
-	scene = Node3D.new()
-	tree.root.add_child(scene)
-	var environment: Environment = Environment.new()
-	environment.background_mode = Environment.BG_SKY
-	var sky: Sky = Sky.new()
-	sky.sky_material = ProceduralSkyMaterial.new()
-	environment.sky = sky
-	environment.ambient_light_source = Environment.AMBIENT_SOURCE_SKY
-	environment.tonemap_mode = Environment.TONE_MAPPER_FILMIC
-	var world: WorldEnvironment = WorldEnvironment.new()
-	world.environment = environment
-	scene.add_child(world)
-	var sun: DirectionalLight3D = DirectionalLight3D.new()
-	sun.rotation_degrees = Vector3(-40.0, 25.0, 0.0)  # from the south-east, behind the camera
-	sun.shadow_enabled = true
-	scene.add_child(sun)
-	var ground: MeshInstance3D = MeshInstance3D.new()
-	var plane: PlaneMesh = PlaneMesh.new()
-	plane.size = Vector2(200.0, 200.0)
-	var soil: StandardMaterial3D = StandardMaterial3D.new()
-	soil.albedo_color = Color(0.36, 0.27, 0.17)
-	plane.material = soil
-	ground.mesh = plane
-	ground.position = Vector3(10.0, 0.0, 7.5)
-	scene.add_child(ground)
+	scene = Stage.new(tree.root).root
 
 
 func after_each() -> void:

@@ -1,0 +1,125 @@
+extends RefCounted
+## Picture metrics for comparing renders: luminance, structural similarity (SSIM), the largest
+## local change between two frames, and a region's mean brightness. Pictures are luminance arrays
+## (Rec. 709 weights on the sRGB values, 0–1) of one width and height.
+
+## SSIM's constants (K1 = 0.01, K2 = 0.03 for a range of 1) and its window, pixels.
+const C1: float = 0.0001
+const C2: float = 0.0009
+const WINDOW: int = 7
+
+var width: int
+var height: int
+
+
+func _init(picture_width: int, picture_height: int) -> void:
+	width = picture_width
+	height = picture_height
+
+
+## The luminance of every pixel of [param image], row by row.
+func luminance(image: Image) -> PackedFloat32Array:
+	var rgb: Image = image.duplicate() as Image
+	rgb.convert(Image.FORMAT_RGB8)
+	var bytes: PackedByteArray = rgb.get_data()
+	var out: PackedFloat32Array = PackedFloat32Array()
+	out.resize(width * height)
+	for i: int in out.size():
+		out[i] = (0.2126 * bytes[3 * i] + 0.7152 * bytes[3 * i + 1] + 0.0722 * bytes[3 * i + 2]) / 255.0
+	return out
+
+
+## The mean structural similarity of [param a] and [param b] over every 7 × 7 window.
+func ssim(a: PackedFloat32Array, b: PackedFloat32Array) -> float:
+	var aa: PackedFloat32Array = PackedFloat32Array()
+	var bb: PackedFloat32Array = PackedFloat32Array()
+	var ab: PackedFloat32Array = PackedFloat32Array()
+	aa.resize(a.size())
+	bb.resize(a.size())
+	ab.resize(a.size())
+	for i: int in a.size():
+		aa[i] = a[i] * a[i]
+		bb[i] = b[i] * b[i]
+		ab[i] = a[i] * b[i]
+	var sum_a: PackedFloat64Array = _integral(a)
+	var sum_b: PackedFloat64Array = _integral(b)
+	var sum_aa: PackedFloat64Array = _integral(aa)
+	var sum_bb: PackedFloat64Array = _integral(bb)
+	var sum_ab: PackedFloat64Array = _integral(ab)
+	var n: float = WINDOW * WINDOW
+	var total: float = 0.0
+	var windows: int = 0
+	for y: int in height - WINDOW + 1:
+		for x: int in width - WINDOW + 1:
+			var mean_a: float = _window_sum(sum_a, x, y) / n
+			var mean_b: float = _window_sum(sum_b, x, y) / n
+			var var_a: float = _window_sum(sum_aa, x, y) / n - mean_a * mean_a
+			var var_b: float = _window_sum(sum_bb, x, y) / n - mean_b * mean_b
+			var covariance: float = _window_sum(sum_ab, x, y) / n - mean_a * mean_b
+			total += (
+				((2.0 * mean_a * mean_b + C1) * (2.0 * covariance + C2))
+				/ ((mean_a * mean_a + mean_b * mean_b + C1) * (var_a + var_b + C2))
+			)
+			windows += 1
+	return total / maxf(windows, 1.0)
+
+
+## The mean absolute difference of two pictures.
+func mean_difference(a: PackedFloat32Array, b: PackedFloat32Array) -> float:
+	var sum: float = 0.0
+	for i: int in a.size():
+		sum += absf(a[i] - b[i])
+	return sum / maxf(a.size(), 1.0)
+
+
+## The largest mean absolute change over any [param block] × [param block] tile between two frames.
+func largest_block_change(a: PackedFloat32Array, b: PackedFloat32Array, block: int = 16) -> float:
+	var largest: float = 0.0
+	for y0: int in range(0, height - block + 1, block):
+		for x0: int in range(0, width - block + 1, block):
+			var sum: float = 0.0
+			for y: int in range(y0, y0 + block):
+				var row: int = y * width
+				for x: int in range(x0, x0 + block):
+					sum += absf(a[row + x] - b[row + x])
+			largest = maxf(largest, sum / (block * block))
+	return largest
+
+
+## The pixels of [param mask] brighter than 0.02 (a picture of the region on black).
+func region(mask: PackedFloat32Array) -> PackedByteArray:
+	var out: PackedByteArray = PackedByteArray()
+	out.resize(mask.size())
+	for i: int in mask.size():
+		out[i] = 1 if mask[i] > 0.02 else 0
+	return out
+
+
+## The mean of [param picture] over [param inside] (a region); NAN when it is empty.
+func mean_in(picture: PackedFloat32Array, inside: PackedByteArray) -> float:
+	var sum: float = 0.0
+	var count: int = 0
+	for i: int in picture.size():
+		if inside[i]:
+			sum += picture[i]
+			count += 1
+	return sum / count if count > 0 else NAN
+
+
+func _integral(values: PackedFloat32Array) -> PackedFloat64Array:
+	var stride: int = width + 1
+	var out: PackedFloat64Array = PackedFloat64Array()
+	out.resize(stride * (height + 1))
+	for y: int in height:
+		var row: float = 0.0
+		for x: int in width:
+			row += values[y * width + x]
+			out[(y + 1) * stride + x + 1] = out[y * stride + x + 1] + row
+	return out
+
+
+func _window_sum(integral: PackedFloat64Array, x: int, y: int) -> float:
+	var stride: int = width + 1
+	var top: int = y * stride
+	var bottom: int = (y + WINDOW) * stride
+	return integral[bottom + x + WINDOW] - integral[top + x + WINDOW] - integral[bottom + x] + integral[top + x]

@@ -1,0 +1,37 @@
+extends RefCounted
+## The scene the render tests and measurements draw fields in: a procedural sky that lights the
+## scene, filmic tone mapping, a sun with shadows from the south-east (behind a camera looking
+## north) and a plane of soil.
+
+var root: Node3D
+var environment: Environment
+var ground: MeshInstance3D
+
+
+## Builds the stage under [param parent]; the ground is [param size] metres square about [param centre].
+func _init(parent: Node, size: float = 200.0, centre: Vector3 = Vector3(10.0, 0.0, 7.5)) -> void:
+	root = Node3D.new()
+	parent.add_child(root)
+	environment = Environment.new()
+	environment.background_mode = Environment.BG_SKY
+	var sky: Sky = Sky.new()
+	sky.sky_material = ProceduralSkyMaterial.new()
+	environment.sky = sky
+	environment.ambient_light_source = Environment.AMBIENT_SOURCE_SKY
+	environment.tonemap_mode = Environment.TONE_MAPPER_FILMIC
+	var world: WorldEnvironment = WorldEnvironment.new()
+	world.environment = environment
+	root.add_child(world)
+	var sun: DirectionalLight3D = DirectionalLight3D.new()
+	sun.rotation_degrees = Vector3(-40.0, 25.0, 0.0)
+	sun.shadow_enabled = true
+	root.add_child(sun)
+	ground = MeshInstance3D.new()
+	var plane: PlaneMesh = PlaneMesh.new()
+	plane.size = Vector2(size, size)
+	var soil: StandardMaterial3D = StandardMaterial3D.new()
+	soil.albedo_color = Color(0.36, 0.27, 0.17)
+	plane.material = soil
+	ground.mesh = plane
+	ground.position = centre
+	root.add_child(ground)
