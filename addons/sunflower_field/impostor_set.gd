@@ -11,7 +11,6 @@ var material: ShaderMaterial = ShaderMaterial.new()
 var _quad: ArrayMesh
 var _stiffness: float = 1.0  # the plant type's
 var _field_transform: Transform3D = Transform3D.IDENTITY
-var _frame: Vector2 = Vector2.ZERO  # the views' square and its centre's height (model units)
 
 
 func _init() -> void:
@@ -19,8 +18,7 @@ func _init() -> void:
 	material.set_shader_parameter("atlas_views", FieldPlant.ATLAS_VIEWS)
 
 
-## Frames the quad and shows the views as [param plant] (a FieldPlant) says; the mesh is made anew
-## when the frame changed (nodes made before keep theirs).
+## Frames the quad and shows the views as [param plant] (a FieldPlant) says.
 func configure(plant: Resource) -> void:
 	for kind: String in FieldPlant.IMPOSTOR_TEXTURES:
 		set_texture(kind, plant.texture_drawn(kind))
@@ -32,9 +30,6 @@ func configure(plant: Resource) -> void:
 	var frame: Vector2 = plant.impostor_frame()
 	material.set_shader_parameter("frame_size", frame.x)
 	material.set_shader_parameter("frame_centre", frame.y)
-	if frame != _frame:
-		_frame = frame
-		_quad = null
 
 
 ## Shows [param texture] as the impostor's [param kind] ("views" or "normals"); null draws it

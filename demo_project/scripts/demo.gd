@@ -15,7 +15,6 @@ extends Node3D
 ##   --baseline native        draw the field the Godot-native way instead (benchmark baseline)
 ##   --wind P                 the wind power (0: calm)
 ##   --no-hud                 hide the heads-up display (pictures for measurements)
-##   --impostor-mask          draw only the impostors, on black (the impostor region of a view)
 
 const MAP_NAMES: PackedStringArray = [
 	"Demo field (40 x 30)", "Large field (400 x 300)", "Hills (240 x 240, on a terrain)"
@@ -47,7 +46,6 @@ var _stats_timer: float = 0.0
 var _exit_code: int = 0
 var _build_ms: float = 0.0
 var _baseline: String = ""
-var _impostor_mask: bool = false
 
 @onready var _field: SunflowerField = $Field
 @onready var _camera: FlyCamera = $Camera
@@ -92,9 +90,6 @@ func _ready() -> void:
 			"--no-hud":
 				_hud.visible = false
 				i -= 1
-			"--impostor-mask":
-				_mask_impostors()
-				i -= 1
 			_:
 				_hud.show_message("unknown argument '%s' (see demo.gd for the options)" % args[i])
 				i -= 1
@@ -115,34 +110,13 @@ func _ready() -> void:
 		_start_recording(path_file)
 
 
-## Draws the impostors alone on black: the mesh parts in unshaded black (so they still hide what
-## is behind them), no ground, a black background. The picture's non-black pixels are where the
-## view shows sprites and billboards.
-func _mask_impostors() -> void:
-	var black: StandardMaterial3D = StandardMaterial3D.new()
-	black.shading_mode = BaseMaterial3D.SHADING_MODE_UNSHADED
-	black.albedo_color = Color.BLACK
-	black.cull_mode = BaseMaterial3D.CULL_DISABLED  # leaves are seen from both sides
-	for level: int in SunflowerSimulation.MESH_LEVEL_COUNT:
-		for part: int in SunflowerSimulation.PART_COUNT:
-			var mesh: ArrayMesh = _field.get_part_mesh(level, part).duplicate() as ArrayMesh
-			for surface: int in mesh.get_surface_count():
-				mesh.surface_set_material(surface, black)
-			_field.set_part_mesh(level, part, mesh)
-	_impostor_mask = true
-	_ground.visible = false
-	var environment: Environment = ($WorldEnvironment as WorldEnvironment).environment
-	environment.background_mode = Environment.BG_COLOR
-	environment.background_color = Color.BLACK
-
-
 ## Loads a map; an imported res:// map is used as a resource, any other path is read directly.
 ## A large map builds in the background while the current field stays (see [member
 ## SunflowerField.background_build]).
 func load_map(path: String) -> void:
 	var hilly: bool = path.get_file() == HILLS_MAP
 	_hills.set_enabled(hilly)
-	_ground.visible = not hilly and not _impostor_mask
+	_ground.visible = not hilly
 	_field.ground_source = SunflowerField.GroundSource.COLLIDERS if hilly else SunflowerField.GroundSource.FLAT
 	var imported: Resource = load(path) if path.begins_with("res://") and ResourceLoader.exists(path) else null
 	if imported is SunflowerFieldMap:
