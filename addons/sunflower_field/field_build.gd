@@ -119,7 +119,7 @@ func needs_frames() -> bool:
 ## collider rays (which miss none of [param exclude]: the field's own stalks), then makes chunk nodes
 ## until the budget is spent (negative: until done). True when the pending field is complete or the
 ## map failed ([method get_error]).
-func step(budget_usec: int, switch_distance: float, max_draw_distance: float, exclude: Array[RID]) -> bool:
+func step(budget_usec: int, max_draw_distance: float, exclude: Array[RID]) -> bool:
 	var start: int = Time.get_ticks_usec()
 	if _task >= 0:
 		if budget_usec >= 0 and not WorkerThreadPool.is_task_completed(_task):
@@ -155,7 +155,7 @@ func step(budget_usec: int, switch_distance: float, max_draw_distance: float, ex
 		nodes.reuse(_previous)
 		_previous = null
 	var had_chunks: bool = nodes.get_chunk_progress() < 1.0
-	var done: bool = nodes.make_chunks(budget_usec, switch_distance, max_draw_distance)
+	var done: bool = nodes.make_chunks(budget_usec, max_draw_distance)
 	_frames += 1
 	add_main_thread_time(start)
 	# The swap that follows (the near nodes, the legend's scenes, the first update) gets a frame of

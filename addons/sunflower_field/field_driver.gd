@@ -92,7 +92,7 @@ func rebuild(background: bool = false) -> void:
 ## puts the new field in place of the old.
 func step_build(budget_usec: int) -> void:
 	var stalks: Array[RID] = interaction.get_body_rids()
-	if not build.step(budget_usec, _field.lod_distances[3], _field.max_draw_distance, stalks):
+	if not build.step(budget_usec, _field.max_draw_distance, stalks):
 		if build.get_progress() > 0.0:  # not while the worker reads the map
 			_field.emit_signal(&"build_progress", build.get_progress())
 		return
@@ -234,11 +234,11 @@ func configure_threads() -> void:
 		drawn.simulation.set_worker_threads(_field.worker_threads)
 
 
-## Sets the chunks' sprite → billboard switch and draw distance, on the field drawn and one being built.
+## Sets the chunks' draw distance, on the field drawn and one being built.
 func apply_ranges() -> void:
 	for nodes: FieldNodes in [drawn, build.nodes if build else null]:
 		if nodes:
-			nodes.apply_ranges(_field.lod_distances[3], _field.max_draw_distance)
+			nodes.apply_ranges(_field.max_draw_distance)
 
 
 ## Frees internal children that belong to no field of this node: copies that duplicate() made of

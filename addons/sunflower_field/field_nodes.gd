@@ -1,9 +1,11 @@
 @tool
 extends RefCounted
-## The internal nodes that draw one field (one native simulation): per chunk a static sprite and
-## billboard MultiMeshInstance3D whose visibility ranges swap them, the dynamic bucket nodes of the
-## near plants, and the scenes the legend places. The only script that makes MultiMeshes or sets
-## visibility ranges. Chunk nodes can be made a few at a time, hidden, and shown at once.
+## The internal nodes that draw one field (one native simulation): per chunk one static
+## MultiMeshInstance3D of its plants' impostors (sprite and billboard draw the same multi-view
+## impostor, so one GPU copy of a far plant serves both; its visibility range ends at the field's
+## draw distance), the dynamic bucket nodes of the near plants, and the scenes the legend places.
+## The only script that makes MultiMeshes or sets visibility ranges. Chunk nodes can be made a few
+## at a time, hidden, and shown at once.
 
 const Native: GDScript = preload("native.gd")
 const ImpostorSet: GDScript = preload("impostor_set.gd")
@@ -12,7 +14,7 @@ const PartMeshes: GDScript = preload("part_meshes.gd")
 const PART_NAMES: PackedStringArray = PartMeshes.PART_NAMES
 
 var simulation: RefCounted
-## Chunk node pairs made, and taken over from the previous field, by this field's build.
+## Chunk nodes made, and taken over from the previous field, by this field's build.
 var chunks_made: int = 0
 var chunks_kept: int = 0
 var _owner: Node3D
@@ -49,15 +51,15 @@ func reuse(previous: RefCounted) -> void:
 
 
 ## Makes hidden chunk nodes (or takes the previous field's, see [method reuse]) until all exist or
-## the next pair would overrun [param budget_usec] (negative: no limit; one pair is always made);
-## true when every chunk has its pair.
-func make_chunks(budget_usec: int, switch_distance: float, max_draw_distance: float) -> bool:
+## the next would overrun [param budget_usec] (negative: no limit; one node is always made); true
+## when every chunk has its node.
+func make_chunks(budget_usec: int, max_draw_distance: float) -> bool:
 	var start: int = Time.get_ticks_usec()
 	var chunk_count: int = simulation.get_chunk_count()
-	var slowest: int = 0  # the longest a pair took in this step, to stop before the budget is overrun
-	while _chunk_nodes.size() < 2 * chunk_count:
-		var pair_start: int = Time.get_ticks_usec()
-		var chunk: int = _chunk_nodes.size() / 2
+	var slowest: int = 0  # the longest a node took in this step, to stop before the budget is overrun
+	while _chunk_nodes.size() < chunk_count:
+		var node_start: int = Time.get_ticks_usec()
+		var chunk: int = _chunk_nodes.size()
 		if _take_previous(chunk):
 			if budget_usec >= 0 and Time.get_ticks_usec() - start + slowest >= budget_usec:
 				break
@@ -65,56 +67,47 @@ func make_chunks(budget_usec: int, switch_distance: float, max_draw_distance: fl
 		chunks_made += 1
 		var aabb: AABB = simulation.get_chunk_aabb(chunk)
 		var impostors: ImpostorSet = _impostors[simulation.get_chunk_species(chunk)]
-		var key: int = simulation.get_chunk_key(chunk)
-		var sprite: MultiMeshInstance3D = _make_node("ChunkSprites%d" % key, impostors.mesh(), aabb)
-		var billboard: MultiMeshInstance3D = _make_node("ChunkBillboards%d" % key, impostors.mesh(), aabb)
-		sprite.visible = false  # shown when the whole field is ready
-		billboard.visible = false
-		_chunk_nodes.append_array([sprite, billboard])
-		_set_chunk_ranges(sprite, billboard, switch_distance, max_draw_distance)
-		simulation.set_chunk_multimeshes(chunk, sprite.multimesh.get_rid(), billboard.multimesh.get_rid())
+		var node: MultiMeshInstance3D = _make_node(
+			"ChunkImpostors%d" % simulation.get_chunk_key(chunk), impostors.mesh(), aabb
+		)
+		node.visible = false  # shown when the whole field is ready
+		node.visibility_range_end = max_draw_distance
+		_chunk_nodes.append(node)
+		simulation.set_chunk_multimeshes(chunk, node.multimesh.get_rid(), RID())
 		var now: int = Time.get_ticks_usec()
-		slowest = maxi(slowest, now - pair_start)
+		slowest = maxi(slowest, now - node_start)
 		if budget_usec >= 0 and now - start + slowest >= budget_usec:
 			break
-	return _chunk_nodes.size() >= 2 * chunk_count
+	return _chunk_nodes.size() >= chunk_count
 
 
-## Takes the previous field's nodes for [param chunk] when they draw the same; true if it did.
+## Takes the previous field's node for [param chunk] when it draws the same; true if it did.
 func _take_previous(chunk: int) -> bool:
 	var old: int = _previous_by_key.get(simulation.get_chunk_key(chunk), -1)
 	if old < 0 or _previous.simulation.get_chunk_signature(old) != simulation.get_chunk_signature(chunk):
 		return false
-	var pair: Array = _previous.give_chunk_nodes(old)
-	if pair.is_empty():
+	var node: MultiMeshInstance3D = _previous.give_chunk_node(old)
+	if node == null:
 		return false
-	_chunk_nodes.append_array(pair)
-	simulation.adopt_chunk_multimeshes(
-		chunk,
-		(pair[0] as MultiMeshInstance3D).multimesh.get_rid(),
-		(pair[1] as MultiMeshInstance3D).multimesh.get_rid(),
-		_previous.simulation.is_chunk_shown(old)
-	)
+	_chunk_nodes.append(node)
+	simulation.adopt_chunk_multimeshes(chunk, node.multimesh.get_rid(), RID(), _previous.simulation.is_chunk_shown(old))
 	chunks_kept += 1
 	return true
 
 
-## Hands [param chunk]'s node pair to a field built on this one (and forgets it); empty when it has
-## none (any more).
-func give_chunk_nodes(chunk: int) -> Array:
-	if 2 * chunk + 1 >= _chunk_nodes.size():
-		return []
-	var pair: Array = [_chunk_nodes[2 * chunk], _chunk_nodes[2 * chunk + 1]]
-	if not is_instance_valid(pair[0]) or not is_instance_valid(pair[1]):
-		return []
-	_chunk_nodes[2 * chunk] = null
-	_chunk_nodes[2 * chunk + 1] = null
-	return pair
+## Hands [param chunk]'s node to a field built on this one (and forgets it); null when it has none
+## (any more).
+func give_chunk_node(chunk: int) -> MultiMeshInstance3D:
+	if chunk >= _chunk_nodes.size() or not is_instance_valid(_chunk_nodes[chunk]):
+		return null
+	var node: MultiMeshInstance3D = _chunk_nodes[chunk]
+	_chunk_nodes[chunk] = null
+	return node
 
 
 ## The share of chunk nodes made, 0 to 1.
 func get_chunk_progress() -> float:
-	return _chunk_nodes.size() / maxf(2.0 * simulation.get_chunk_count(), 1.0)
+	return _chunk_nodes.size() / maxf(simulation.get_chunk_count(), 1.0)
 
 
 ## Completes the field: the near plants' bucket nodes and the legend's scenes, then shows it all.
@@ -137,13 +130,13 @@ func finish(species_meshes: Array, legend: Dictionary, cell_size: float, sway_ma
 		_add_dynamic(sprite, first + Native.constant(&"BUCKET_SPRITE"))
 		_add_dynamic(billboard, first + Native.constant(&"BUCKET_BILLBOARD"))
 	_place_objects(legend, cell_size)
-	for i: int in _chunk_nodes.size():
-		var node: MultiMeshInstance3D = _chunk_nodes[i]
+	for chunk: int in _chunk_nodes.size():
+		var node: MultiMeshInstance3D = _chunk_nodes[chunk]
 		node.visible = true
 		# Chunk nodes are named after the chunk's key (where it lies); one made while the old field's
 		# node of that key was still there had a generated name until now.
 		if str(node.name).begins_with("@"):
-			node.name = ("ChunkSprites%d" if i % 2 == 0 else "ChunkBillboards%d") % simulation.get_chunk_key(i / 2)
+			node.name = "ChunkImpostors%d" % simulation.get_chunk_key(chunk)
 	_previous = null  # its remaining nodes go with it
 
 
@@ -159,12 +152,11 @@ func show_filled_buckets() -> void:
 		_dynamic_nodes[i].visible = bucket < filled.size() and filled[bucket] != 0
 
 
-## Sets the switch distance between each chunk's sprite and billboard, and where billboards end
-## (0: never).
-func apply_ranges(switch_distance: float, max_draw_distance: float) -> void:
-	for i: int in range(0, _chunk_nodes.size() - 1, 2):
-		if _chunk_nodes[i]:
-			_set_chunk_ranges(_chunk_nodes[i], _chunk_nodes[i + 1], switch_distance, max_draw_distance)
+## Sets where the chunks' impostors end (0: never).
+func apply_ranges(max_draw_distance: float) -> void:
+	for node: MultiMeshInstance3D in _chunk_nodes:
+		if node:
+			node.visibility_range_end = max_draw_distance
 
 
 ## Draws [param mesh] for [param species]' near plants' [param level] / [param part] (once the
@@ -256,14 +248,6 @@ func _make_node(node_name: String, mesh: Mesh, aabb: AABB) -> MultiMeshInstance3
 	node.custom_aabb = aabb
 	_owner.add_child(node, false, Node.INTERNAL_MODE_BACK)
 	return node
-
-
-static func _set_chunk_ranges(
-	sprite: MultiMeshInstance3D, billboard: MultiMeshInstance3D, switch_distance: float, max_draw_distance: float
-) -> void:
-	sprite.visibility_range_end = switch_distance
-	billboard.visibility_range_begin = switch_distance
-	billboard.visibility_range_end = max_draw_distance
 
 
 func _field_aabb() -> AABB:

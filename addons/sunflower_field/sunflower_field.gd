@@ -234,7 +234,6 @@ const PartMeshes: GDScript = preload("part_meshes.gd")
 		if value != lod_distances:
 			lod_distances = value
 			_driver.configure_lod()
-			_driver.apply_ranges()
 ## Hysteresis on every switch: less detail this much later, more detail this much earlier.
 @export_range(0.0, 5.0, 0.05, "or_greater", "suffix:m") var lod_hysteresis: float = 0.5:
 	set(value):

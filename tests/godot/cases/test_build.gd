@@ -69,7 +69,7 @@ func test_a_large_map_builds_over_frames_while_the_old_field_is_drawn() -> void:
 	check(frames_seen >= 3, "the build spread over several frames (%d)" % frames_seen)
 	check_eq(built, [360000] as Array[int], "one field_built, with the new plant count")
 	check_eq(field.get_plant_count(), 360000, "the new field is counted")
-	var expected_nodes: int = SunflowerSimulation.BUCKET_COUNT + 2 * field.get_simulation().get_chunk_count()
+	var expected_nodes: int = SunflowerSimulation.BUCKET_COUNT + field.get_simulation().get_chunk_count()
 	check_eq(field.get_child_count(true) - field.get_child_count(false), expected_nodes, "only the new nodes remain")
 	check(progress.size() >= 3, "progress reported while building (%d times)" % progress.size())
 	var monotonic: bool = true
@@ -164,14 +164,9 @@ func test_parameter_changes_during_a_build_reach_the_new_field() -> void:
 	var ends: Dictionary = {}
 	for node: Node in field.get_children(true):
 		var instance: MultiMeshInstance3D = node as MultiMeshInstance3D
-		if instance and instance.name.begins_with("ChunkBillboards"):
+		if instance and instance.name.begins_with("ChunkImpostors"):
 			ends[Vector2(instance.visibility_range_begin, instance.visibility_range_end)] = true
-	check_eq(ends.keys(), [Vector2(30.0, 123.0)], "every chunk's billboard range follows the changes")
-	var sprite_ends: Dictionary = {}
-	for node: Node in field.get_children(true):
-		if node is MultiMeshInstance3D and node.name.begins_with("ChunkSprites"):
-			sprite_ends[(node as MultiMeshInstance3D).visibility_range_end] = true
-	check_eq(sprite_ends.keys(), [30.0], "every chunk's sprite range follows the changes")
+	check_eq(ends.keys(), [Vector2(0.0, 123.0)], "every chunk's range follows the draw distance set during the build")
 	check_eq(field.get_simulation().get_lod_counts().size(), 5, "the new simulation answers")
 	# Wind set during the build moves the new field's plants (drawn as meshes to see them sway).
 	field.force_lod = SunflowerField.Lod.MESH_1
@@ -205,7 +200,7 @@ func test_a_small_change_of_a_large_map_makes_nodes_only_for_the_chunks_it_touch
 	# Every plant is still in exactly one far buffer: the kept ones hold what the new field says.
 	var instances: int = 0
 	for node: Node in field.get_children(true):
-		if node.name.begins_with("ChunkBillboards"):
+		if node.name.begins_with("ChunkImpostors"):
 			var buffer: PackedFloat32Array = RenderingServer.multimesh_get_buffer(
 				(node as MultiMeshInstance3D).multimesh.get_rid()
 			)

@@ -84,11 +84,11 @@ func test_thinning_keeps_the_same_plants_whatever_their_order_in_a_buffer() -> v
 	await frames(6)
 	field.set_process(false)  # no updates: the buffers stay as this test leaves them
 	var before: Image = tree.root.get_viewport().get_texture().get_image()
-	# Reverse the order of the instances in every visible chunk's billboard buffer (as the near
+	# Reverse the order of the instances in every visible chunk's impostor buffer (as the near
 	# buckets reorder theirs when plants come and go): the same plants must stay drawn.
 	var reversed: int = 0
 	for node: Node in field.get_children(true):
-		if node.name.begins_with("ChunkBillboards"):
+		if node.name.begins_with("ChunkImpostors"):
 			var rid: RID = (node as MultiMeshInstance3D).multimesh.get_rid()
 			var buffer: PackedFloat32Array = RenderingServer.multimesh_get_buffer(rid)
 			var stride: int = SunflowerSimulation.FLOATS_PER_INSTANCE
@@ -126,7 +126,7 @@ func test_empty_near_buckets_are_not_drawn() -> void:
 	field.visible = true
 	var chunks: int = 0
 	for node: Node in field.get_children(true):
-		chunks += 1 if node.name.begins_with("ChunkBillboards") else 0
+		chunks += 1 if node.name.begins_with("ChunkImpostors") else 0
 	var field_calls: int = with_field - without
 	print("     draw calls of the field: %d, for %d chunks (the sun's shadow pass included)" % [field_calls, chunks])
 	check(field_calls <= 2 * chunks, "only the chunks draw: %d calls for %d chunks" % [field_calls, chunks])

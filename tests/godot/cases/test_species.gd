@@ -83,7 +83,7 @@ func test_a_legend_plant_is_a_species_with_its_own_buckets_impostors_and_counts(
 	for chunk: int in simulation.get_chunk_count():
 		var species: int = simulation.get_chunk_species(chunk)
 		types_seen[species] = true
-		var sprites: MultiMeshInstance3D = _node_named(field, "ChunkSprites%d" % simulation.get_chunk_key(chunk))
+		var sprites: MultiMeshInstance3D = _node_named(field, "ChunkImpostors%d" % simulation.get_chunk_key(chunk))
 		var expected: Mesh = maize_quad if species == 1 else sunflower_quad
 		check(sprites.multimesh.mesh == expected, "chunk %d's sprites draw its type's impostor" % chunk)
 	check_eq(types_seen.size(), 2, "chunks of both types")
