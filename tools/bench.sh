@@ -7,6 +7,7 @@
 #   4. baselines on one field and path: naive (every plant as the level-1 mesh) and Godot-native.
 #   5. ground placement: a million plants on a height map and on colliders (the build's figures).
 #   6. painting: a brush stroke on a million-plant field, main-thread time per frame, chunks rebuilt.
+#   7. GPU memory: the render buffers a million far plants take (the renderer's own count).
 # Results (JSON per run) go to build/bench/; BENCH_FRAMES and BENCH_RESOLUTION change the runs.
 set -euo pipefail
 repo=$(cd "$(dirname "$0")/.." && pwd)
@@ -69,3 +70,8 @@ echo
 echo "## 6. Painting a million-plant field: a brush stroke, one mouse move a frame (headless)"
 timeout 600 "$godot" --headless --audio-driver Dummy --path "$repo/tests/godot" --script res://bench/paint_bench.gd 2>&1 | grep '^|' ||
   echo "bench: the painting benchmark failed" >&2
+echo
+echo "## 7. GPU memory: a million far plants' render buffers (Forward+ on Vulkan lavapipe under Xvfb)"
+timeout 600 xvfb-run -a -s "-screen 0 1280x720x24" "$godot" --rendering-driver vulkan --audio-driver Dummy \
+  --resolution "$resolution" --path "$repo/tests/godot" --script res://bench/gpu_memory_bench.gd 2>&1 | grep '^|' ||
+  echo "bench: the GPU memory benchmark failed" >&2
