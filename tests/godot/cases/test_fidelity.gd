@@ -93,7 +93,9 @@ func test_far_levels_look_like_the_full_mesh_picture() -> void:
 
 func test_no_pops_where_plants_switch_level() -> void:
 	var distances: PackedFloat32Array = field.lod_distances
-	for switch: int in range(distances.size()) if full else QUICK_SWITCHES:
+	# Sprite and billboard draw the same impostor (one buffer per far chunk), so the last distance is
+	# no switch on screen: the walks cross the three where the representation changes.
+	for switch: int in range(3) if full else QUICK_SWITCHES:
 		var changes: Array[PackedFloat32Array] = await _walk_across(distances[switch])
 		var at_switches: float = _largest(changes[0])
 		var elsewhere: float = _largest(changes[1])
