@@ -2,13 +2,16 @@
 // Everything that happens to a field after its map is read: layout, per-plant wind, LOD buckets and
 // the MultiMesh instance buffers, per frame. Plain C++17 + GLM: no engine types.
 //
-// Representation rule (every plant is drawn in exactly one representation):
+// Representation rule (every plant is drawn in exactly one representation, or in the mesh 3 →
+// impostor cross-fade in two, with complementary shares):
 // - the field is cut into square chunks. A chunk near the observer is *active*: each of its plants
 //   has its own LOD (with hysteresis) and is written, swaying, into the dynamic buckets
 //   (mesh level × part, sprite, billboard), frustum-culled;
-// - every other chunk is *static*: its plants are in the chunk's own sprite and billboard buffers,
-//   written once, and the engine's visibility ranges pick sprite or billboard by the distance from the
-//   camera to the chunk's bounding-box centre. An active chunk's static buffers are hidden.
+// - every other chunk is *static*: its plants are in the chunk's own impostor buffer, written once
+//   (the addon draws sprites and billboards as one multi-view impostor; a second buffer, if given,
+//   holds the same instances and the engine's visibility ranges pick between them). Counts report
+//   a static plant as sprite or billboard by the distance from the camera to the chunk's
+//   bounding-box centre. An active chunk's static buffers are hidden.
 #include "field_layout.h"
 #include "field_map.h"
 #include "frustum.h"
