@@ -167,6 +167,8 @@ func update_field(delta: float) -> void:
 	var wind_state: PackedFloat32Array = native_simulation.get_wind_state()
 	for impostors: ImpostorSet in impostor_sets:
 		impostors.sway(wind_state, _field.wind, _field.global_transform)
+		if observer:
+			impostors.set_shared(&"observer_position", observer.global_position)
 	if not Engine.is_editor_hint():
 		# A stalk: the bottom and middle parts, two of the plant's three part heights.
 		var height: float = plants[0].height
@@ -234,8 +236,11 @@ func configure_threads() -> void:
 		drawn.simulation.set_worker_threads(_field.worker_threads)
 
 
-## Sets the chunks' draw distance, on the field drawn and one being built.
+## Sets the draw distance: the impostors' per-plant fade, and the chunks' visibility ranges on the
+## field drawn and one being built.
 func apply_ranges() -> void:
+	set_impostor_shared(&"draw_distance", _field.max_draw_distance)
+	set_impostor_shared(&"draw_fade", maxf(2.0, 0.1 * _field.max_draw_distance))
 	for nodes: FieldNodes in [drawn, build.nodes if build else null]:
 		if nodes:
 			nodes.apply_ranges(_field.max_draw_distance)

@@ -71,7 +71,7 @@ func make_chunks(budget_usec: int, max_draw_distance: float) -> bool:
 			"ChunkImpostors%d" % simulation.get_chunk_key(chunk), impostors.mesh(), aabb
 		)
 		node.visible = false  # shown when the whole field is ready
-		node.visibility_range_end = max_draw_distance
+		_set_range(node, max_draw_distance)
 		_chunk_nodes.append(node)
 		simulation.set_chunk_multimeshes(chunk, node.multimesh.get_rid(), RID())
 		var now: int = Time.get_ticks_usec()
@@ -156,7 +156,7 @@ func show_filled_buckets() -> void:
 func apply_ranges(max_draw_distance: float) -> void:
 	for node: MultiMeshInstance3D in _chunk_nodes:
 		if node:
-			node.visibility_range_end = max_draw_distance
+			_set_range(node, max_draw_distance)
 
 
 ## Draws [param mesh] for [param species]' near plants' [param level] / [param part] (once the
@@ -248,6 +248,14 @@ func _make_node(node_name: String, mesh: Mesh, aabb: AABB) -> MultiMeshInstance3
 	node.custom_aabb = aabb
 	_owner.add_child(node, false, Node.INTERNAL_MODE_BACK)
 	return node
+
+
+## A chunk is hidden once its nearest plant may be past [param max_draw_distance] (the engine
+## measures to the box's centre); its plants fade out one by one before that (the impostor shader).
+static func _set_range(node: MultiMeshInstance3D, max_draw_distance: float) -> void:
+	node.visibility_range_end = (
+		max_draw_distance + 0.5 * node.custom_aabb.size.length() if max_draw_distance > 0.0 else 0.0
+	)
 
 
 func _field_aabb() -> AABB:

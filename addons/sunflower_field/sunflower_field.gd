@@ -280,7 +280,8 @@ const PartMeshes: GDScript = preload("part_meshes.gd")
 	set(value):
 		thinning_min_density = Native.accept("SunflowerField.thinning_min_density", value, thinning_min_density)
 		_driver.set_impostor_shared(&"thinning_min_density", thinning_min_density)
-## Billboards beyond this distance are not drawn (0: no limit).
+## Plants beyond this distance are not drawn (0: no limit); each dithers out over the last tenth
+## of it (at least 2 m) by its own distance, so no chunk of plants vanishes at once.
 @export_range(0.0, 10000.0, 1.0, "or_greater", "suffix:m") var max_draw_distance: float = 0.0:
 	set(value):
 		value = Native.accept("SunflowerField.max_draw_distance", value, max_draw_distance)
