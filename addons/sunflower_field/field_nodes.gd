@@ -67,13 +67,11 @@ func make_chunks(budget_usec: int, max_draw_distance: float) -> bool:
 		chunks_made += 1
 		var aabb: AABB = simulation.get_chunk_aabb(chunk)
 		var impostors: ImpostorSet = _impostors[simulation.get_chunk_species(chunk)]
-		var node: MultiMeshInstance3D = _make_node(
-			"ChunkImpostors%d" % simulation.get_chunk_key(chunk), impostors.mesh(), aabb
-		)
+		var node: MultiMeshInstance3D = _make_node(_chunk_node_name(chunk), impostors.mesh(), aabb)
 		node.visible = false  # shown when the whole field is ready
 		_set_range(node, max_draw_distance)
 		_chunk_nodes.append(node)
-		simulation.set_chunk_multimeshes(chunk, node.multimesh.get_rid(), RID())
+		simulation.set_chunk_multimesh(chunk, node.multimesh.get_rid())
 		var now: int = Time.get_ticks_usec()
 		slowest = maxi(slowest, now - node_start)
 		if budget_usec >= 0 and now - start + slowest >= budget_usec:
@@ -90,7 +88,7 @@ func _take_previous(chunk: int) -> bool:
 	if node == null:
 		return false
 	_chunk_nodes.append(node)
-	simulation.adopt_chunk_multimeshes(chunk, node.multimesh.get_rid(), RID(), _previous.simulation.is_chunk_shown(old))
+	simulation.adopt_chunk_multimesh(chunk, node.multimesh.get_rid(), _previous.simulation.is_chunk_shown(old))
 	chunks_kept += 1
 	return true
 
@@ -136,7 +134,7 @@ func finish(species_meshes: Array, legend: Dictionary, cell_size: float, sway_ma
 		# Chunk nodes are named after the chunk's key (where it lies); one made while the old field's
 		# node of that key was still there had a generated name until now.
 		if str(node.name).begins_with("@"):
-			node.name = "ChunkImpostors%d" % simulation.get_chunk_key(chunk)
+			node.name = _chunk_node_name(chunk)
 	_previous = null  # its remaining nodes go with it
 
 
@@ -248,6 +246,11 @@ func _make_node(node_name: String, mesh: Mesh, aabb: AABB) -> MultiMeshInstance3
 	node.custom_aabb = aabb
 	_owner.add_child(node, false, Node.INTERNAL_MODE_BACK)
 	return node
+
+
+## A chunk's node is named after the chunk's key (where it lies).
+func _chunk_node_name(chunk: int) -> String:
+	return "ChunkImpostors%d" % simulation.get_chunk_key(chunk)
 
 
 ## A chunk is hidden once its nearest plant may be past [param max_draw_distance] (the engine

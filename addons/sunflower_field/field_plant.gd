@@ -183,7 +183,8 @@ func impostor_frame() -> Vector2:
 	return Vector2(sqrt(height_units * height_units + impostor_width * impostor_width), height_units * 0.5)
 
 
-## What the layout and the impostor quads depend on: a change of any of these rebuilds the field.
+## What the layout depends on: a change of any of these rebuilds the field (the impostor frame and
+## textures are the impostor material's, set without a rebuild).
 func layout_key() -> Array:
 	return [
 		height,
@@ -191,7 +192,6 @@ func layout_key() -> Array:
 		height_units,
 		cull_radius_units,
 		stiffness,
-		impostor_width,
 		middle_variation,
 		yaw_range,
 		scale_min,

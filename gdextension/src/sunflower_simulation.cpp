@@ -52,10 +52,9 @@ void SunflowerSimulation::bind_methods() {
 	gdx::bind_method(CLASS, "get_plants_near", &SunflowerSimulation::get_plants_near, { "position", "radius" });
 	gdx::bind_method(CLASS, "get_last_task_count", &SunflowerSimulation::get_last_task_count);
 	gdx::bind_method(CLASS, "set_bucket_multimesh", &SunflowerSimulation::set_bucket_multimesh, { "bucket", "multimesh" });
-	gdx::bind_method(CLASS, "set_chunk_multimeshes", &SunflowerSimulation::set_chunk_multimeshes, { "chunk", "sprite", "billboard" });
+	gdx::bind_method(CLASS, "set_chunk_multimesh", &SunflowerSimulation::set_chunk_multimesh, { "chunk", "multimesh" });
 	gdx::bind_method(CLASS, "release_multimeshes", &SunflowerSimulation::release_multimeshes);
-	gdx::bind_method(CLASS, "adopt_chunk_multimeshes", &SunflowerSimulation::adopt_chunk_multimeshes,
-			{ "chunk", "sprite", "billboard", "shown" });
+	gdx::bind_method(CLASS, "adopt_chunk_multimesh", &SunflowerSimulation::adopt_chunk_multimesh, { "chunk", "multimesh", "shown" });
 	gdx::bind_method(CLASS, "is_chunk_shown", &SunflowerSimulation::is_chunk_shown, { "chunk" });
 	gdx::bind_method(CLASS, "show_static_chunks", &SunflowerSimulation::show_static_chunks);
 	gdx::bind_method(CLASS, "get_chunk_key", &SunflowerSimulation::get_chunk_key, { "chunk" });
@@ -373,21 +372,21 @@ void SunflowerSimulation::set_bucket_multimesh(int64_t p_bucket, gdx::Rid p_mult
 	target.last_count = 0;
 }
 
-void SunflowerSimulation::set_chunk_multimeshes(int64_t p_chunk, gdx::Rid p_sprite, gdx::Rid p_billboard) {
+void SunflowerSimulation::set_chunk_multimesh(int64_t p_chunk, gdx::Rid p_multimesh) {
 	if (!_is_chunk(p_chunk) || !gdx::RenderingServer::ensure_loaded()) {
 		return;
 	}
 	_chunks.resize(_sim.get_chunk_count());
-	_chunks[static_cast<size_t>(p_chunk)] = ChunkTarget{ p_sprite, p_billboard };
+	_chunks[static_cast<size_t>(p_chunk)] = ChunkTarget{ p_multimesh };
 	_upload_chunk(static_cast<uint32_t>(p_chunk));
 }
 
-void SunflowerSimulation::adopt_chunk_multimeshes(int64_t p_chunk, gdx::Rid p_sprite, gdx::Rid p_billboard, bool p_shown) {
+void SunflowerSimulation::adopt_chunk_multimesh(int64_t p_chunk, gdx::Rid p_multimesh, bool p_shown) {
 	if (!_is_chunk(p_chunk) || !gdx::RenderingServer::ensure_loaded()) {
 		return;
 	}
 	_chunks.resize(_sim.get_chunk_count());
-	_chunks[static_cast<size_t>(p_chunk)] = ChunkTarget{ p_sprite, p_billboard, p_shown }; // their data is this chunk's already
+	_chunks[static_cast<size_t>(p_chunk)] = ChunkTarget{ p_multimesh, p_shown }; // its data is this chunk's already
 }
 
 bool SunflowerSimulation::is_chunk_shown(int64_t p_chunk) const {
@@ -437,11 +436,9 @@ void SunflowerSimulation::_upload_chunk(uint32_t p_chunk) {
 	gdx::PackedFloat32Array buffer;
 	buffer.resize(int64_t(count) * FLOATS_PER_INSTANCE);
 	_sim.write_chunk_instances(p_chunk, buffer.data());
-	for (gdx::Rid multimesh : { target.sprite, target.billboard }) {
-		if (multimesh.is_valid()) {
-			gdx::RenderingServer::multimesh_allocate_data(multimesh, count);
-			gdx::RenderingServer::multimesh_set_buffer(multimesh, buffer);
-		}
+	if (target.multimesh.is_valid()) {
+		gdx::RenderingServer::multimesh_allocate_data(target.multimesh, count);
+		gdx::RenderingServer::multimesh_set_buffer(target.multimesh, buffer);
 	}
 	_show_static_chunk(p_chunk);
 }
@@ -451,10 +448,8 @@ void SunflowerSimulation::_upload_chunk(uint32_t p_chunk) {
 void SunflowerSimulation::_show_static_chunk(uint32_t p_chunk) {
 	const int64_t visible = _sim.is_chunk_active(p_chunk) ? 0 : -1;
 	_chunks[p_chunk].shown = visible != 0;
-	for (gdx::Rid multimesh : { _chunks[p_chunk].sprite, _chunks[p_chunk].billboard }) {
-		if (multimesh.is_valid()) {
-			gdx::RenderingServer::multimesh_set_visible_instances(multimesh, visible);
-		}
+	if (_chunks[p_chunk].multimesh.is_valid()) {
+		gdx::RenderingServer::multimesh_set_visible_instances(_chunks[p_chunk].multimesh, visible);
 	}
 }
 

@@ -53,8 +53,8 @@ public:
 	int64_t get_last_task_count() const;
 
 	void set_bucket_multimesh(int64_t p_bucket, gdx::Rid p_multimesh);
-	void set_chunk_multimeshes(int64_t p_chunk, gdx::Rid p_sprite, gdx::Rid p_billboard);
-	void adopt_chunk_multimeshes(int64_t p_chunk, gdx::Rid p_sprite, gdx::Rid p_billboard, bool p_shown);
+	void set_chunk_multimesh(int64_t p_chunk, gdx::Rid p_multimesh);
+	void adopt_chunk_multimesh(int64_t p_chunk, gdx::Rid p_multimesh, bool p_shown);
 	bool is_chunk_shown(int64_t p_chunk) const;
 	void show_static_chunks();
 	int64_t get_chunk_key(int64_t p_chunk) const;
@@ -104,8 +104,7 @@ private:
 		uint32_t last_count = 0;
 	};
 	struct ChunkTarget {
-		gdx::Rid sprite;
-		gdx::Rid billboard;
+		gdx::Rid multimesh; // the chunk's impostors (sprite and billboard are one multi-view impostor)
 		bool shown = true; // whether its static impostors are drawn now (as last set)
 	};
 

@@ -8,10 +8,9 @@
 //   has its own LOD (with hysteresis) and is written, swaying, into the dynamic buckets
 //   (mesh level × part, sprite, billboard), frustum-culled;
 // - every other chunk is *static*: its plants are in the chunk's own impostor buffer, written once
-//   (the addon draws sprites and billboards as one multi-view impostor; a second buffer, if given,
-//   holds the same instances and the engine's visibility ranges pick between them). Counts report
-//   a static plant as sprite or billboard by the distance from the camera to the chunk's
-//   bounding-box centre. An active chunk's static buffers are hidden.
+//   (sprites and billboards are one multi-view impostor). Counts report a static plant as sprite or
+//   billboard by the distance from the camera to the chunk's bounding-box centre. An active chunk's
+//   static buffer is hidden.
 #include "field_layout.h"
 #include "field_map.h"
 #include "frustum.h"
