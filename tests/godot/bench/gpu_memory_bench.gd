@@ -4,6 +4,7 @@ extends SceneTree
 ## million-plant field (1000 x 1000 cells) is built and drawn from far away (every plant in a
 ## static chunk), and per plant.
 
+const Maps: GDScript = preload("res://runner/maps.gd")
 const SIDE: int = 1000
 
 
@@ -19,15 +20,9 @@ func _run() -> void:
 	for i: int in 10:
 		await process_frame
 	var before: int = RenderingServer.get_rendering_info(RenderingServer.RENDERING_INFO_BUFFER_MEM_USED)
-	var lines: PackedStringArray = ["%d %d" % [SIDE, SIDE]]
-	for row: int in SIDE:
-		lines.append("*".repeat(SIDE))
-	var field_map: SunflowerFieldMap = SunflowerFieldMap.new()
-	field_map.source_path = "user://million.field"
-	field_map.text = "\n".join(lines).to_utf8_buffer()
 	var field: SunflowerField = SunflowerField.new()
 	root.add_child(field)
-	field.map = field_map
+	field.map = Maps.filled(SIDE, SIDE, "user://million.field")
 	field.finish_build()
 	for i: int in 10:
 		await process_frame

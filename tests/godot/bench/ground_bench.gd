@@ -3,6 +3,7 @@ extends SceneTree
 ## (1000 x 1000 cells, 500 x 500 m) on a 1025 x 1025 hilly terrain, built once on its height map and
 ## once on its collision, with the default 8 ms build budget. Prints the build figures of each.
 
+const Maps: GDScript = preload("res://runner/maps.gd")
 const SIDE: int = 1025
 
 
@@ -24,12 +25,7 @@ func _run() -> void:
 	terrain.position = Vector3(250.0, 0.0, 250.0)
 	terrain.add_child(collision)
 	root.add_child(terrain)
-	var lines: PackedStringArray = ["1000 1000"]
-	for row: int in 1000:
-		lines.append("*".repeat(1000))
-	var field_map: SunflowerFieldMap = SunflowerFieldMap.new()
-	field_map.source_path = "user://million.field"
-	field_map.text = "\n".join(lines).to_utf8_buffer()
+	var field_map: SunflowerFieldMap = Maps.filled(1000, 1000, "user://million.field")
 	print("| ground | plants | worker ms | rays ms (main thread) | frames | longest step ms | total ms |")
 	print("|---|---|---|---|---|---|---|")
 	for source: SunflowerField.GroundSource in [

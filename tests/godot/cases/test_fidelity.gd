@@ -10,6 +10,7 @@ extends TestCase
 
 const Stage: GDScript = preload("res://runner/stage.gd")
 const Picture: GDScript = preload("res://runner/picture.gd")
+const Maps: GDScript = preload("res://runner/maps.gd")
 const FIELD_CELLS: int = 120  # 0.5 m cells: 60 × 60 m
 ## Eye and target of each view: head height inside, 5 m and 40 m outside, 25 m up at 45°, 60 m down.
 const VIEWS: Dictionary = {
@@ -34,15 +35,9 @@ var full: bool = OS.get_environment("FIDELITY_FULL") == "1"
 
 func before_each() -> void:
 	stage = Stage.new(tree.root, 400.0, Vector3(30.0, 0.0, 30.0))
-	var lines: PackedStringArray = ["%d %d" % [FIELD_CELLS, FIELD_CELLS]]
-	for row: int in FIELD_CELLS:
-		lines.append("*".repeat(FIELD_CELLS))
-	var field_map: SunflowerFieldMap = SunflowerFieldMap.new()
-	field_map.source_path = "user://fidelity.field"
-	field_map.text = "\n".join(lines).to_utf8_buffer()
 	field = SunflowerField.new()
 	stage.root.add_child(field)
-	field.map = field_map
+	field.map = Maps.filled(FIELD_CELLS, FIELD_CELLS, "user://fidelity.field")
 	field.wind_power = 0.0
 	field.finish_build()
 	field.set_process(false)  # the test advances it, a 60th of a second a frame
