@@ -147,6 +147,12 @@ func show(nodes: FieldNodes) -> void:
 	drawn.show_filled_buckets()
 
 
+## Places the far impostors where the field node stands now (their records are in its frame).
+func place_impostors() -> void:
+	for impostors: ImpostorSet in impostor_sets:
+		impostors.place(_field.global_transform)
+
+
 ## Says that a map cannot be used, as an error, a signal and a configuration warning.
 func report_map_error(message: String) -> void:
 	last_error = message

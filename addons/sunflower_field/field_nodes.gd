@@ -67,7 +67,7 @@ func make_chunks(budget_usec: int, max_draw_distance: float) -> bool:
 		chunks_made += 1
 		var aabb: AABB = simulation.get_chunk_aabb(chunk)
 		var impostors: ImpostorSet = _impostors[simulation.get_chunk_species(chunk)]
-		var node: MultiMeshInstance3D = _make_node(_chunk_node_name(chunk), impostors.mesh(), aabb)
+		var node: MultiMeshInstance3D = _make_node(_chunk_node_name(chunk), impostors.mesh(true), aabb, true)
 		node.visible = false  # shown when the whole field is ready
 		_set_range(node, max_draw_distance)
 		_chunk_nodes.append(node)
@@ -234,10 +234,12 @@ func _add_dynamic(node: MultiMeshInstance3D, bucket: int) -> void:
 	_dynamic_buckets.append(bucket)
 
 
-func _make_node(node_name: String, mesh: Mesh, aabb: AABB) -> MultiMeshInstance3D:
+## A MultiMesh node for the native buffers: 3D transforms and colours, or when [param compact] the
+## static chunks' 8-float records (2D transforms without colours; the impostor shader decodes them).
+func _make_node(node_name: String, mesh: Mesh, aabb: AABB, compact: bool = false) -> MultiMeshInstance3D:
 	var multimesh: MultiMesh = MultiMesh.new()
-	multimesh.transform_format = MultiMesh.TRANSFORM_3D
-	multimesh.use_colors = true  # the native buffers hold a colour per instance
+	multimesh.transform_format = MultiMesh.TRANSFORM_2D if compact else MultiMesh.TRANSFORM_3D
+	multimesh.use_colors = not compact
 	multimesh.mesh = mesh
 	multimesh.custom_aabb = aabb
 	var node: MultiMeshInstance3D = MultiMeshInstance3D.new()

@@ -4,18 +4,25 @@ extends RefCounted
 ## the plant type says; made once per field and shared by the field drawn and one being built.
 ## Sprites and billboards draw the same quad (shaders/impostor.gdshader): the plant seen from the
 ## observer's direction, blended from the plant's baked views, shaded through its baked normals.
+## The static chunks draw it from their compact instance records, through a twin of the material
+## that decodes them ([code]packed_instances[/code]); every parameter is set on both.
 
 const SHADER: Shader = preload("shaders/impostor.gdshader")
 
+## The material of the near buckets' impostors (3D transforms and colours).
 var material: ShaderMaterial = ShaderMaterial.new()
-var _quad: ArrayMesh
+## The material of the static chunks' impostors (compact records).
+var packed_material: ShaderMaterial = ShaderMaterial.new()
+var _quads: Array[ArrayMesh] = [null, null]  # [near, packed]
 var _stiffness: float = 1.0  # the plant type's
 var _field_transform: Transform3D = Transform3D.IDENTITY
 
 
 func _init() -> void:
 	material.shader = SHADER
-	material.set_shader_parameter("atlas_views", FieldPlant.ATLAS_VIEWS)
+	packed_material.shader = SHADER
+	packed_material.set_shader_parameter("packed_instances", true)
+	_set_both("atlas_views", FieldPlant.ATLAS_VIEWS)
 
 
 ## Frames the quad and shows the views as [param plant] (a FieldPlant) says.
@@ -24,12 +31,10 @@ func configure(plant: Resource) -> void:
 		set_texture(kind, plant.texture_drawn(kind))
 	_stiffness = plant.stiffness
 	# Model units of the bottom part, and of the middle and head above it (how the wind bends them).
-	material.set_shader_parameter(
-		"part_reach", Vector2(plant.part_lengths.x, plant.part_lengths.y + plant.part_lengths.z)
-	)
+	_set_both("part_reach", Vector2(plant.part_lengths.x, plant.part_lengths.y + plant.part_lengths.z))
 	var frame: Vector2 = plant.impostor_frame()
-	material.set_shader_parameter("frame_size", frame.x)
-	material.set_shader_parameter("frame_centre", frame.y)
+	_set_both("frame_size", frame.x)
+	_set_both("frame_centre", frame.y)
 
 
 ## Shows [param texture] as the impostor's [param kind] ("views" or "normals"); null draws it
@@ -45,33 +50,41 @@ func set_texture(kind: String, texture: Texture2D) -> void:
 				% kind
 			)
 		)
-	material.set_shader_parameter(parameter, texture)
+	_set_both(parameter, texture)
 
 
 ## Sets a shader parameter of the impostor material ([code]alpha_scissor[/code],
 ## [code]thinning_start[/code], [code]thinning_min_density[/code]).
 func set_shared(parameter: StringName, value: Variant) -> void:
-	material.set_shader_parameter(parameter, value)
+	_set_both(parameter, value)
 
 
 ## Sways the far plants this frame: the field-wide wind [param state] (the simulation's
 ## [code]get_wind_state()[/code]), the [param wind]'s stiffnesses and the field's
 ## [param field_transform] (the wind is computed in the field's own frame, as the core does).
 func sway(state: PackedFloat32Array, wind: SunflowerWind, field_transform: Transform3D) -> void:
-	material.set_shader_parameter("wind_state_a", Vector4(state[0], state[1], state[2], state[3]))
-	material.set_shader_parameter("wind_state_b", Vector4(state[4], state[5], state[6], state[7]))
-	material.set_shader_parameter("bend_stiffness", Vector2(wind.stiffness_bottom, wind.stiffness_middle) * _stiffness)
+	_set_both("wind_state_a", Vector4(state[0], state[1], state[2], state[3]))
+	_set_both("wind_state_b", Vector4(state[4], state[5], state[6], state[7]))
+	_set_both("bend_stiffness", Vector2(wind.stiffness_bottom, wind.stiffness_middle) * _stiffness)
+	place(field_transform)
+
+
+## Places the impostors with the field node's [param field_transform] (the static chunks' records
+## are in the field's frame, as is the wind). Call it whenever the field moves.
+func place(field_transform: Transform3D) -> void:
 	if field_transform != _field_transform:
 		_field_transform = field_transform
-		material.set_shader_parameter("world_from_field", Projection(field_transform))
-		material.set_shader_parameter("field_from_world", Projection(field_transform.affine_inverse()))
+		_set_both("world_from_field", Projection(field_transform))
+		_set_both("field_from_world", Projection(field_transform.affine_inverse()))
 
 
-## A unit square the shader turns to the observer and scales to the frame. (What it shows lies in
-## the plant's cylinder, inside the cull radius the chunks' bounds are made from.)
-func mesh() -> ArrayMesh:
-	if _quad == null:
-		_quad = ArrayMesh.new()
+## A unit square the shader turns to the observer and scales to the frame, with [member material],
+## or with [member packed_material] when [param packed] (for the static chunks). (What it shows lies
+## in the plant's cylinder, inside the cull radius the chunks' bounds are made from.)
+func mesh(packed: bool = false) -> ArrayMesh:
+	var index: int = 1 if packed else 0
+	if _quads[index] == null:
+		var quad: ArrayMesh = ArrayMesh.new()
 		var arrays: Array = []
 		arrays.resize(Mesh.ARRAY_MAX)
 		arrays[Mesh.ARRAY_VERTEX] = PackedVector3Array(
@@ -80,6 +93,12 @@ func mesh() -> ArrayMesh:
 		arrays[Mesh.ARRAY_NORMAL] = PackedVector3Array([Vector3.BACK, Vector3.BACK, Vector3.BACK, Vector3.BACK])
 		arrays[Mesh.ARRAY_TEX_UV] = PackedVector2Array([Vector2(0, 1), Vector2(1, 1), Vector2(1, 0), Vector2(0, 0)])
 		arrays[Mesh.ARRAY_INDEX] = PackedInt32Array([0, 2, 1, 0, 3, 2])
-		_quad.add_surface_from_arrays(Mesh.PRIMITIVE_TRIANGLES, arrays)
-		_quad.surface_set_material(0, material)
-	return _quad
+		quad.add_surface_from_arrays(Mesh.PRIMITIVE_TRIANGLES, arrays)
+		quad.surface_set_material(0, packed_material if packed else material)
+		_quads[index] = quad
+	return _quads[index]
+
+
+func _set_both(parameter: StringName, value: Variant) -> void:
+	material.set_shader_parameter(parameter, value)
+	packed_material.set_shader_parameter(parameter, value)

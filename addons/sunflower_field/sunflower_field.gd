@@ -385,6 +385,7 @@ func _init() -> void:
 	_driver.set_impostor_shared(&"alpha_scissor", alpha_scissor)
 	_driver.set_impostor_shared(&"thinning_start", thinning_distance)
 	_driver.set_impostor_shared(&"thinning_min_density", thinning_min_density)
+	set_notify_transform(true)  # the far impostors are placed through the field's transform
 
 
 func _ready() -> void:
@@ -400,6 +401,8 @@ func _notification(what: int) -> void:
 		_driver.interaction.free_colliders()
 	elif what == NOTIFICATION_EXIT_TREE:
 		_driver.interaction.free_colliders()  # they stand in this world's physics space
+	elif what == NOTIFICATION_TRANSFORM_CHANGED or what == NOTIFICATION_ENTER_TREE:
+		_driver.place_impostors()
 
 
 func _process(delta: float) -> void:

@@ -93,6 +93,7 @@ void SunflowerSimulation::bind_methods() {
 	gdx::bind_integer_constant(CLASS, "", "BUCKET_COUNT", BUCKET_COUNT);
 	gdx::bind_integer_constant(CLASS, "", "MAX_SPECIES", FieldMap::MAX_SPECIES);
 	gdx::bind_integer_constant(CLASS, "", "FLOATS_PER_INSTANCE", FLOATS_PER_INSTANCE);
+	gdx::bind_integer_constant(CLASS, "", "FAR_FLOATS_PER_INSTANCE", FAR_FLOATS_PER_INSTANCE);
 	gdx::bind_integer_constant(CLASS, "", "PARALLEL_MIN_PLANTS", FieldSimulation::PARALLEL_MIN_PLANTS);
 	gdx::bind_integer_constant(CLASS, "", "MAX_AUTO_THREADS", param::MAX_AUTO_THREADS);
 	gdx::bind_integer_constant(CLASS, "", "MAX_THREADS", param::MAX_THREADS);
@@ -434,10 +435,10 @@ void SunflowerSimulation::_upload_chunk(uint32_t p_chunk) {
 	const ChunkTarget &target = _chunks[p_chunk];
 	const uint32_t count = _sim.get_layout().chunks[p_chunk].count;
 	gdx::PackedFloat32Array buffer;
-	buffer.resize(int64_t(count) * FLOATS_PER_INSTANCE);
+	buffer.resize(int64_t(count) * FAR_FLOATS_PER_INSTANCE);
 	_sim.write_chunk_instances(p_chunk, buffer.data());
 	if (target.multimesh.is_valid()) {
-		gdx::RenderingServer::multimesh_allocate_data(target.multimesh, count);
+		gdx::RenderingServer::multimesh_allocate_data(target.multimesh, count, gdx::RenderingServer::COMPACT);
 		gdx::RenderingServer::multimesh_set_buffer(target.multimesh, buffer);
 	}
 	_show_static_chunk(p_chunk);

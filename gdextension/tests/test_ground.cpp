@@ -5,6 +5,7 @@
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace sunflower;
@@ -204,11 +205,11 @@ TEST_CASE("on ground: parts, impostors and bounds stand on the roots; tilt leans
 		}
 	}
 	PartTransforms parts;
-	std::vector<float> impostors(size_t(sim.get_layout().chunks[0].count) * FLOATS_PER_INSTANCE);
+	std::vector<float> impostors(size_t(sim.get_layout().chunks[0].count) * FAR_FLOATS_PER_INSTANCE);
 	sim.write_chunk_instances(0, impostors.data());
 	const Plant &first = sim.get_layout().plants[sim.get_layout().chunk_plants[0]];
-	CHECK(impostors[7] == doctest::Approx(first.ground)); // the origin's y (row 1, column 3)
-	CHECK(impostors[5] == doctest::Approx(sim.get_shape().part_scale)); // upright: +y stays +y
+	CHECK(read_far_instance(impostors.data()).root.y == first.ground);
+	CHECK(read_far_instance(impostors.data()).lean == glm::vec2(0.0f)); // upright
 	sim.get_plant_parts(sim.get_layout().chunk_plants[0], parts);
 	CHECK(parts.origin[0].y == doctest::Approx(first.ground));
 	CHECK(glm::distance(parts.origin[0], first.root()) < 1e-5f);
@@ -222,8 +223,13 @@ TEST_CASE("on ground: parts, impostors and bounds stand on the roots; tilt leans
 	CHECK(glm::distance(glm::normalize(parts.basis[2][1]), normal) < 1e-4f);
 	CHECK(glm::distance(parts.origin[0], sim.get_layout().plants[7].root()) < 1e-5f);
 	sim.write_chunk_instances(0, impostors.data());
-	const glm::vec3 impostor_up(impostors[1], impostors[5], impostors[9]);
-	CHECK(glm::distance(glm::normalize(impostor_up), normal) < 1e-4f);
+	const uint32_t tilted = sim.get_layout().plants[7].chunk == 0 ? 7 : 0;
+	const auto &order = sim.get_layout().chunk_plants;
+	const size_t slot = size_t(std::find(order.begin(), order.end(), tilted) - order.begin());
+	REQUIRE(slot < sim.get_layout().chunks[0].count);
+	// The record keeps the lean in 1/127 steps: the up axis within half a step of the normal's.
+	const glm::vec3 impostor_up = lean_rotation(read_far_instance(impostors.data() + slot * FAR_FLOATS_PER_INSTANCE).lean)[1];
+	CHECK(glm::distance(impostor_up, normal) < 0.5f / 127.0f * std::sqrt(2.0f) + 1e-4f);
 	// Half tilted: between upright and the normal.
 	ground.tilt = 0.5f;
 	sim.set_ground(ground);

@@ -3,6 +3,10 @@
 #include "lod_selector.h"
 
 #include <doctest/doctest.h>
+#include <glm/mat4x4.hpp>
+#include <glm/matrix.hpp>
+
+#include <cmath>
 
 using namespace sunflower;
 
@@ -65,6 +69,42 @@ TEST_CASE("instance layout: 16 floats, the 3×4 matrix row by row, then the colo
 	for (int i = 0; i < 16; ++i) {
 		CHECK(out[i] == expected[i]);
 	}
+}
+
+TEST_CASE("far records: 8 floats that read back to the plant, its lean and colour in their steps") {
+	FarInstance plant;
+	plant.root = glm::vec3(123.25f, -4.5f, 987.75f);
+	plant.yaw = 2.5f;
+	plant.scale = 1.3f;
+	plant.lean = glm::vec2(0.3f, -0.6f);
+	plant.colour = glm::vec3(1.0f, 0.8f, 1.25f);
+	float out[FAR_FLOATS_PER_INSTANCE];
+	static_assert(FAR_FLOATS_PER_INSTANCE == 8, "one MultiMesh 2D transform");
+	write_far_instance(out, plant);
+	const FarInstance back = read_far_instance(out);
+	CHECK(back.root == plant.root);
+	CHECK(back.scale == doctest::Approx(plant.scale));
+	CHECK(back.yaw == doctest::Approx(plant.yaw));
+	CHECK(std::abs(back.lean.x - plant.lean.x) <= 0.5f / 127.0f);
+	CHECK(std::abs(back.lean.y - plant.lean.y) <= 0.5f / 127.0f);
+	CHECK(back.colour.x == 1.0f); // white stays white
+	CHECK(std::abs(back.colour.y - 0.8f) <= 0.5f / 64.0f);
+	CHECK(back.colour.z == 1.25f);
+	// The steps survive a transform and its inverse, as the shader meets them: the record as a 2D
+	// instance (rows 0 and 1; row 2 is (0, 0, 1, 0)), times a turned, scaled, moved node, undone.
+	const glm::mat4 record(glm::vec4(out[0], out[4], 0, 0), glm::vec4(out[1], out[5], 0, 0), glm::vec4(out[2], out[6], 1, 0),
+			glm::vec4(out[3], out[7], 0, 1));
+	glm::mat4 node(1.0f);
+	node[0] = glm::vec4(0.6f * 3.0f, 0.0f, -0.8f * 3.0f, 0.0f);
+	node[2] = glm::vec4(0.8f * 3.0f, 0.0f, 0.6f * 3.0f, 0.0f);
+	node[1] = glm::vec4(0.0f, 3.0f, 0.0f, 0.0f);
+	node[3] = glm::vec4(5000.0f, 20.0f, -3000.0f, 1.0f);
+	const glm::mat4 seen = glm::inverse(node) * (node * record);
+	float again[FAR_FLOATS_PER_INSTANCE] = { seen[0].x, seen[1].x, seen[2].x, seen[3].x, seen[0].y, seen[1].y, seen[2].y, seen[3].y };
+	const FarInstance through = read_far_instance(again);
+	CHECK(through.lean == back.lean);
+	CHECK(through.colour == back.colour);
+	CHECK(glm::distance(through.root, plant.root) < 1e-3f);
 }
 
 TEST_CASE("instance buffers grow geometrically and keep their storage once warm") {

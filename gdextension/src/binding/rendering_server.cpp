@@ -45,11 +45,12 @@ void RenderingServer::unload() {
 	methods = Methods{};
 }
 
-void RenderingServer::multimesh_allocate_data(Rid p_multimesh, int64_t p_instances) {
-	const int64_t transform_3d = 1; // RenderingServer.MULTIMESH_TRANSFORM_3D
-	const GDExtensionBool yes = 1; // colours: the core writes one per instance (instance_buffer.h)
+void RenderingServer::multimesh_allocate_data(Rid p_multimesh, int64_t p_instances, Format p_format) {
+	// RenderingServer.MULTIMESH_TRANSFORM_2D is 0, MULTIMESH_TRANSFORM_3D 1.
+	const int64_t transform = p_format == COMPACT ? 0 : 1;
+	const GDExtensionBool colours = p_format == COMPACT ? 0 : 1;
 	const GDExtensionBool no = 0;
-	call(methods.allocate_data, { &p_multimesh, &p_instances, &transform_3d, &yes, &no, &no });
+	call(methods.allocate_data, { &p_multimesh, &p_instances, &transform, &colours, &no, &no });
 }
 
 void RenderingServer::multimesh_set_buffer(Rid p_multimesh, const PackedFloat32Array &p_buffer) {

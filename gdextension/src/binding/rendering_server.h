@@ -10,7 +10,13 @@ public:
 	static bool ensure_loaded();
 	static void unload();
 
-	static void multimesh_allocate_data(Rid p_multimesh, int64_t p_instances);
+	// The instance formats the core writes (instance_buffer.h): 3D transforms with colours (the
+	// dynamic buckets), or the compact far record as 2D transforms without colours (static chunks).
+	enum Format {
+		TRANSFORM_AND_COLOUR,
+		COMPACT,
+	};
+	static void multimesh_allocate_data(Rid p_multimesh, int64_t p_instances, Format p_format = TRANSFORM_AND_COLOUR);
 	static void multimesh_set_buffer(Rid p_multimesh, const PackedFloat32Array &p_buffer);
 	static void multimesh_set_visible_instances(Rid p_multimesh, int64_t p_visible);
 };

@@ -500,8 +500,17 @@ void FieldSimulation::_write_impostor(float *r_out, const Plant &p_plant, float 
 
 void FieldSimulation::write_chunk_instances(uint32_t p_chunk, float *r_out) const {
 	const Chunk &chunk = _layout.chunks[p_chunk];
+	const PlantVariety &variety = _layout_params.varieties[chunk.species];
+	const float part_scale = _shapes[chunk.species].part_scale;
 	for (uint32_t k = 0; k < chunk.count; ++k) {
-		_write_impostor(r_out + size_t(k) * FLOATS_PER_INSTANCE, _layout.plants[_layout.chunk_plants[chunk.first + k]]);
+		const Plant &plant = _layout.plants[_layout.chunk_plants[chunk.first + k]];
+		FarInstance instance;
+		instance.root = plant.root();
+		instance.yaw = plant.yaw;
+		instance.scale = part_scale * plant.scale;
+		instance.lean = plant.lean;
+		instance.colour = glm::vec3(plant.color(variety));
+		write_far_instance(r_out + size_t(k) * FAR_FLOATS_PER_INSTANCE, instance);
 	}
 }
 
@@ -517,7 +526,7 @@ uint64_t FieldSimulation::get_chunk_signature(uint32_t p_chunk) const {
 		return _chunk_signatures[p_chunk];
 	}
 	const uint32_t count = _layout.chunks[p_chunk].count;
-	std::vector<float> instances(size_t(count) * FLOATS_PER_INSTANCE);
+	std::vector<float> instances(size_t(count) * FAR_FLOATS_PER_INSTANCE);
 	write_chunk_instances(p_chunk, instances.data());
 	// FNV-1a over the bytes of the instance data, never 0.
 	uint64_t hash = 1469598103934665603ull ^ count;

@@ -156,7 +156,8 @@ public:
 	bool is_chunk_active(uint32_t p_chunk) const { return _chunk_active[p_chunk] != 0; }
 	// Chunks whose active flag changed in the last update (their static buffers must be shown/hidden).
 	const std::vector<uint32_t> &get_changed_chunks() const { return _changed_chunks; }
-	// The static impostor instances of a chunk's plants: count × FLOATS_PER_INSTANCE floats into r_out.
+	// The static impostor instances of a chunk's plants, compact (FarInstance): count ×
+	// FAR_FLOATS_PER_INSTANCE floats into r_out.
 	void write_chunk_instances(uint32_t p_chunk, float *r_out) const;
 	// Where a chunk lies: grid cell × MAX_SPECIES + species (the same in any layout of the map's size).
 	uint64_t get_chunk_key(uint32_t p_chunk) const;

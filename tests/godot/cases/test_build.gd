@@ -216,5 +216,5 @@ func test_a_small_change_of_a_large_map_makes_nodes_only_for_the_chunks_it_touch
 			var buffer: PackedFloat32Array = RenderingServer.multimesh_get_buffer(
 				(node as MultiMeshInstance3D).multimesh.get_rid()
 			)
-			instances += buffer.size() / SunflowerSimulation.FLOATS_PER_INSTANCE
+			instances += buffer.size() / SunflowerSimulation.FAR_FLOATS_PER_INSTANCE
 	check_eq(instances, field.get_plant_count(), "far buffers hold every plant once")

@@ -170,11 +170,12 @@ func test_every_plant_is_drawn_exactly_once_along_a_camera_path() -> void:
 			if node.name.contains("Middle") or node.name.contains("Head"):
 				continue  # one part per plant: the bottom part's origin is the plant's root
 			var buffer: PackedFloat32Array = RenderingServer.multimesh_get_buffer(rid)
+			var compact: bool = node.name.begins_with("ChunkImpostors")  # 8-float records, whole plants
 			for k: int in instances:
-				var root: Vector3 = Vector3(buffer[k * STRIDE + 3], buffer[k * STRIDE + 7], buffer[k * STRIDE + 11])
+				var root: Vector3 = _root(buffer, k, compact)
 				var index: int = positions.get(_key(root), -1)
 				if check(index >= 0, "%s instance %d at %s is no plant" % [node.name, k, root]):
-					var share: float = buffer[k * STRIDE + 15]
+					var share: float = 1.0 if compact else buffer[k * STRIDE + 15]
 					drawn[index] += 1
 					shares[index] += share
 					var may_fade: bool = node.name.ends_with("Mesh3Bottom") or node.name.ends_with("Sprites")
@@ -232,6 +233,15 @@ func _sum(values: PackedInt32Array) -> int:
 	for v: int in values:
 		total += v
 	return total
+
+
+## The root of instance [param k] of a buffer: a 3D transform's origin, or a static chunk's compact
+## record's (instance_buffer.h: floats 3, 7 and 2 of 8).
+func _root(buffer: PackedFloat32Array, k: int, compact: bool) -> Vector3:
+	if compact:
+		var far: int = SunflowerSimulation.FAR_FLOATS_PER_INSTANCE
+		return Vector3(buffer[k * far + 3], buffer[k * far + 7], buffer[k * far + 2])
+	return Vector3(buffer[k * STRIDE + 3], buffer[k * STRIDE + 7], buffer[k * STRIDE + 11])
 
 
 func _key(v: Vector3) -> Vector2i:

@@ -2,6 +2,7 @@ extends TestCase
 ## Renders the demo field from a fixed viewpoint with the real renderer (run under Xvfb), saves
 ## the screenshot to tests/artifacts/, and checks that sunflower colours are where the field is.
 
+const Picture: GDScript = preload("res://runner/picture.gd")
 const Stage: GDScript = preload("res://runner/stage.gd")
 const SHOT: String = "render_demo_field.png"
 
@@ -91,7 +92,7 @@ func test_thinning_keeps_the_same_plants_whatever_their_order_in_a_buffer() -> v
 		if node.name.begins_with("ChunkImpostors"):
 			var rid: RID = (node as MultiMeshInstance3D).multimesh.get_rid()
 			var buffer: PackedFloat32Array = RenderingServer.multimesh_get_buffer(rid)
-			var stride: int = SunflowerSimulation.FLOATS_PER_INSTANCE
+			var stride: int = SunflowerSimulation.FAR_FLOATS_PER_INSTANCE
 			var count: int = buffer.size() / stride
 			var flipped: PackedFloat32Array = PackedFloat32Array()
 			flipped.resize(buffer.size())
@@ -167,6 +168,30 @@ func test_far_plants_sway_as_the_near_ones_do() -> void:
 	check(bent.x > 0.15, "the wind bends the plant downwind (%.3f m)" % bent.x)
 	check(sprite_off < 0.05, "the sprite's head moves as the mesh's (%.3f m off)" % sprite_off)
 	check(billboard_off < 0.05, "the billboard's head moves as the mesh's (%.3f m off)" % billboard_off)
+
+
+func test_far_impostors_stand_where_their_plants_do_on_a_moved_and_turned_field() -> void:
+	# The static chunks' compact records are in the field's frame; the shader undoes the node's
+	# transform to read them. Moving and turning the whole stage (ground, sun, field, camera) must
+	# leave the picture as it was.
+	var field: SunflowerField = _still_field(
+		"res://fields/large.field", Vector3(100.0, 25.0, 190.0), Vector3(100.0, 0.0, 60.0)
+	)
+	await frames(6)
+	var counts: PackedInt32Array = field.get_lod_counts()
+	check(counts[3] + counts[4] > counts[0] + counts[1] + counts[2], "mostly far plants in view: %s" % counts)
+	var picture: Picture = Picture.new(640, 360)
+	var still: PackedFloat32Array = picture.luminance(tree.root.get_viewport().get_texture().get_image())
+	var moved: Transform3D = Transform3D(Basis(Vector3.UP, 0.6), Vector3(-230.0, 4.0, 170.0))
+	scene.transform = moved  # the camera is on the stage too
+	field.advance(0.0)
+	await frames(6)
+	var image: Image = tree.root.get_viewport().get_texture().get_image()
+	image.save_png(_artifact_path("render_moved_field.png"))
+	var after: PackedFloat32Array = picture.luminance(image)
+	var similarity: float = picture.ssim(still, after)
+	print("     moved and turned field: SSIM %.4f to the picture before" % similarity)
+	check(similarity > 0.97, "the far field looks the same moved and turned (SSIM %.4f)" % similarity)
 
 
 ## Lets the field run [param settle] frames, stops it, and finds its head as mesh 3, sprite and

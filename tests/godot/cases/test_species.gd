@@ -83,9 +83,15 @@ func test_a_legend_plant_is_a_species_with_its_own_buckets_impostors_and_counts(
 	for chunk: int in simulation.get_chunk_count():
 		var species: int = simulation.get_chunk_species(chunk)
 		types_seen[species] = true
-		var sprites: MultiMeshInstance3D = _node_named(field, "ChunkImpostors%d" % simulation.get_chunk_key(chunk))
-		var expected: Mesh = maize_quad if species == 1 else sunflower_quad
-		check(sprites.multimesh.mesh == expected, "chunk %d's sprites draw its type's impostor" % chunk)
+		var impostors: MultiMeshInstance3D = _node_named(field, "ChunkImpostors%d" % simulation.get_chunk_key(chunk))
+		var material: ShaderMaterial = impostors.multimesh.mesh.surface_get_material(0) as ShaderMaterial
+		check(
+			(
+				material.get_shader_parameter("packed_instances") == true
+				and is_equal_approx(material.get_shader_parameter("frame_size"), framed[species])
+			),
+			"chunk %d draws its type's impostor from compact records" % chunk
+		)
 	check_eq(types_seen.size(), 2, "chunks of both types")
 	# Per-type counts add up to the field's; each type's plants are as tall as it says.
 	var by_species: Array[PackedInt32Array] = field.get_lod_counts_by_species()
