@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Benchmarks (numbers, not pass/fail). Prints six tables:
+# Benchmarks (numbers, not pass/fail). Prints eight tables:
 #   1. the C++ core alone: per-frame time and memory, 1M vs 4M plants;
 #   2. the engine: the demo's recording mode on the demo, large and million-plant fields;
 #   3. the thesis' experiment (Tables 3-5): a 1 500-plant field at distances 5 and 40 m, every plant
@@ -8,6 +8,8 @@
 #   5. ground placement: a million plants on a height map and on colliders (the build's figures).
 #   6. painting: a brush stroke on a million-plant field, main-thread time per frame, chunks rebuilt.
 #   7. GPU memory: the render buffers a million far plants take (the renderer's own count).
+#   8. The GPU side: draw calls, objects, primitives and render-buffer memory per view, against the
+#      Godot-native way, on the demo, large, million and 4-million-plant fields.
 # Results (JSON per run) go to build/bench/; BENCH_FRAMES and BENCH_RESOLUTION change the runs.
 set -euo pipefail
 repo=$(cd "$(dirname "$0")/.." && pwd)
@@ -59,6 +61,17 @@ done
 run baseline_ours --map res://fields/demo.field
 run baseline_naive --map res://fields/demo.field --force-lod 0 --culling off
 run baseline_native --map res://fields/demo.field --baseline native
+# The GPU side: still views of four fields, drawn by the addon and the Godot-native way, both cut
+# off at 100 m (the native way's visibility range).
+"$repo/tools/make_field.py" 2000 2000 "$out/fields/4m.field" >/dev/null
+for field in demo:res://fields/demo.field large:res://fields/large.field million:"$out/fields/million.field" 4m:"$out/fields/4m.field"; do
+  for view in inside outside40 above45 down60; do
+    # The counts do not depend on the picture's size: a small one keeps software rendering short.
+    frames=3 resolution=160x90 run "gpu_${field%%:*}_${view}_ours" --map "${field#*:}" --view "$view" --draw-distance 100 --no-hud
+    frames=3 resolution=160x90 run "gpu_${field%%:*}_${view}_native" --map "${field#*:}" --view "$view" --draw-distance 100 \
+      --baseline native --no-hud
+  done
+done
 echo >&2
 python3 "$repo/tools/bench_tables.py" "$out/runs"
 echo

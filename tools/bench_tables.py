@@ -74,6 +74,35 @@ def main(folder):
         print(f"| {label} | {fps(s):.2f} | {s['frame_ms']['median']:.1f} / {s['frame_ms']['p99']:.1f} | "
               f"{ours['frame_ms']['median'] / s['frame_ms']['median']:.2f} |")
 
+    print("\n## 8. The GPU side: still views, the renderer's own counts (median of the recorded frames)\n")
+    print("Both drawings are cut off at 100 m. Primitives: the engine counts a MultiMesh whose mesh has automatic")
+    print("LODs (the native way's) as one instance of the chosen LOD, so its figure is low; ours has no such meshes.")
+    print("Memory: render buffers the drawing added (ours: after the field's first frame; native: after its build).\n")
+    print("| field | view | draw calls ours / native (ratio) | objects ours / native | primitives ours / native (as counted) |")
+    print("|---|---|---|---|---|")
+    memory = {}
+    for field in ("demo", "large", "million", "4m"):
+        for view in ("inside", "outside40", "above45", "down60"):
+            ours = load(folder, f"gpu_{field}_{view}_ours")
+            native = load(folder, f"gpu_{field}_{view}_native")
+            if not ours or not native or "draw_calls" not in ours:
+                print(f"| {field} | {view} | run failed | | |")
+                continue
+            dc = (ours["draw_calls"]["median"], native["draw_calls"]["median"])
+            ob = (ours["objects"]["median"], native["objects"]["median"])
+            pr = (ours["primitives"]["median"], native["primitives"]["median"])
+            ratio = dc[0] / dc[1] if dc[1] else float("nan")
+            print(f"| {field} ({ours['plants']:,} plants) | {view} | {dc[0]:.0f} / {dc[1]:.0f} ({ratio:.2f}) | {ob[0]:.0f} / {ob[1]:.0f} | "
+                  f"{pr[0]:,.0f} / {pr[1]:,.0f} |")
+            mem = native.get("buffer_memory_bytes", {})
+            if field not in memory and {"before", "field", "baseline"} <= mem.keys():
+                memory[field] = (ours["plants"], mem["field"] - mem["before"], mem["baseline"] - mem["field"])
+    print("\n| field | plants | render buffers ours | native | ours per plant | native per plant |")
+    print("|---|---|---|---|---|---|")
+    for field, (plants, ours_bytes, native_bytes) in memory.items():
+        print(f"| {field} | {plants:,} | {ours_bytes / 1048576:.1f} MB | {native_bytes / 1048576:.1f} MB | "
+              f"{ours_bytes / max(plants, 1):.1f} B | {native_bytes / max(plants, 1):.1f} B |")
+
 
 if __name__ == "__main__":
     main(sys.argv[1])

@@ -29,6 +29,35 @@ static func built_in(size: Vector2, ground: Callable = Callable()) -> CameraPath
 	return path
 
 
+## A still camera at one of the fixed views the GPU-side benchmark compares, over a field of
+## [param size] metres (x, z): "inside" (head height in the middle, looking north), "outside40"
+## (head height 40 m south of the field, looking at its middle), "above45" (25 m up, looking down
+## at 45° to the middle) or "down60" (60 m straight down on the middle). Null for another name.
+static func view(view_name: String, size: Vector2) -> CameraPath:
+	var middle: Vector3 = Vector3(0.5 * size.x, 0.0, 0.5 * size.y)
+	var eye: Vector3
+	var target: Vector3
+	match view_name:
+		"inside":
+			eye = middle + Vector3(0.0, 1.7, 0.0)
+			target = middle + Vector3(0.0, 1.7, -10.0)
+		"outside40":
+			eye = Vector3(middle.x, 1.7, size.y + 40.0)
+			target = middle + Vector3(0.0, 1.0, 0.0)
+		"above45":
+			eye = middle + Vector3(0.0, 25.0, 25.0)
+			target = middle
+		"down60":
+			eye = middle + Vector3(0.0, 60.0, 0.0)
+			target = middle + Vector3(0.0, 0.0, -0.01)  # not straight along the up axis
+		_:
+			return null
+	var path: CameraPath = CameraPath.new()
+	path.add(eye, target)
+	path.add(eye, target)
+	return path
+
+
 ## Reads a waypoint file; returns null and fills [param r_error] on a bad line.
 static func from_file(file_path: String, r_error: Array[String]) -> CameraPath:
 	var text: String = FileAccess.get_file_as_string(file_path)

@@ -7,6 +7,8 @@ extends Node3D
 ##   --part LEVEL,PART,PATH   replace a part with a glTF mesh (level 1-3, part bottom/middle/head)
 ##   --frames N               recording mode: fly the scripted path for N frames, then quit
 ##   --path FILE              the recording path (lines "x y z tx ty tz"); default: a built-in flight
+##   --view NAME              record from a still view instead: inside, outside40, above45, down60
+##   --draw-distance M        the field's max_draw_distance (and the native baseline's cut-off)
 ##   --screenshot PATH        save the last frame (recording mode; 60 frames if --frames is not given)
 ##   --screenshot-every K     also save every K-th frame, as PATH with the frame number
 ##   --stats PATH             write frame times, LOD counts and the renderer as JSON
@@ -46,6 +48,13 @@ var _stats_timer: float = 0.0
 var _exit_code: int = 0
 var _build_ms: float = 0.0
 var _baseline: String = ""
+var _view: String = ""
+var _draw_distance: float = NativeBaseline.CUT_OFF
+## The renderer's own counts per recorded frame (draw calls, objects, primitives: Arrays, which
+## are shared by reference), and its render buffer memory before the map, after the field and after
+## the baseline.
+var _rendering: Dictionary = {"draw_calls": [], "objects": [], "primitives": []}
+var _buffer_memory: Dictionary = {}
 
 @onready var _field: SunflowerField = $Field
 @onready var _camera: FlyCamera = $Camera
@@ -73,6 +82,11 @@ func _ready() -> void:
 				_frames_total = value.to_int()
 			"--path":
 				path_file = value
+			"--view":
+				_view = value
+			"--draw-distance":
+				_draw_distance = value.to_float()
+				_field.max_draw_distance = _draw_distance
 			"--screenshot":
 				_screenshot = value
 			"--screenshot-every":
@@ -96,12 +110,20 @@ func _ready() -> void:
 		i += 2
 	if _frames_total < 0 and not (_screenshot.is_empty() and _stats_path.is_empty()):
 		_frames_total = 60
+	if not _stats_path.is_empty():
+		for frame: int in 3:  # the scene without a field, drawn: what the renderer holds anyway
+			await get_tree().process_frame
+		_buffer_memory["before"] = RenderingServer.get_rendering_info(RenderingServer.RENDERING_INFO_BUFFER_MEM_USED)
 	var build_start: int = Time.get_ticks_usec()
 	load_map(_map_path)
 	while _field.is_building():  # a large map builds in the background; the HUD shows its progress
 		await get_tree().process_frame
+	await get_tree().process_frame  # the field's first frame: its buffers are allocated
+	_buffer_memory["field"] = RenderingServer.get_rendering_info(RenderingServer.RENDERING_INFO_BUFFER_MEM_USED)
 	if _baseline == "native":
 		_build_native_baseline()
+		await get_tree().process_frame
+		_buffer_memory["baseline"] = RenderingServer.get_rendering_info(RenderingServer.RENDERING_INFO_BUFFER_MEM_USED)
 	_build_ms = (Time.get_ticks_usec() - build_start) / 1000.0
 	print("demo: %s built in %.0f ms; %s" % [_map_path, _build_ms, _field.get_build_stats()])
 	for argument: String in parts:
@@ -319,7 +341,7 @@ func _build_native_baseline() -> void:
 	var baseline: NativeBaseline = NativeBaseline.new()
 	baseline.name = "NativeBaseline"
 	add_child(baseline)
-	var plants: int = baseline.build(_field.map, _field)
+	var plants: int = baseline.build(_field.map, _field, _draw_distance)
 	_field.visible = false
 	_field.process_mode = Node.PROCESS_MODE_DISABLED
 	_hud.show_message("baseline: %d plants as Godot-native chunked MultiMeshes with automatic mesh LOD" % plants)
@@ -340,6 +362,12 @@ func _start_recording(path_file: String) -> void:
 			_hud.show_message(errors[0])
 			_exit_code = 1
 			_camera_path = CameraPath.built_in(size, _camera.ground_below)
+	if not _view.is_empty():
+		_camera_path = CameraPath.view(_view, size)
+		if _camera_path == null:
+			_hud.show_message("unknown view '%s' (inside, outside40, above45, down60)" % _view)
+			_exit_code = 1
+			_camera_path = CameraPath.built_in(size, _camera.ground_below)
 	_camera.manual = false
 	_last_ticks = Time.get_ticks_usec()
 
@@ -353,6 +381,16 @@ func _record_frame() -> void:
 		var counts: PackedInt32Array = _field.get_lod_counts()
 		for lod: int in 5:
 			_lod_sums[lod] += counts[lod]
+		# The frame drawn last (all viewports).
+		(_rendering["draw_calls"] as Array).append(
+			RenderingServer.get_rendering_info(RenderingServer.RENDERING_INFO_TOTAL_DRAW_CALLS_IN_FRAME)
+		)
+		(_rendering["objects"] as Array).append(
+			RenderingServer.get_rendering_info(RenderingServer.RENDERING_INFO_TOTAL_OBJECTS_IN_FRAME)
+		)
+		(_rendering["primitives"] as Array).append(
+			RenderingServer.get_rendering_info(RenderingServer.RENDERING_INFO_TOTAL_PRIMITIVES_IN_FRAME)
+		)
 	_last_ticks = now
 	_camera.transform = _camera_path.sample(float(_frame) / maxf(_frames_total - 1, 1))
 	if _screenshot_every > 0 and _frame % _screenshot_every == 0 and not _screenshot.is_empty() and _frame > 0:
@@ -420,6 +458,12 @@ func _write_stats() -> void:
 		"frame_times_ms": Array(_frame_times),
 		"native_update_times_ms": Array(_update_times),
 		"lod_counts_final": Array(_field.get_lod_counts()),
+		"view": _view,
+		"draw_distance": _field.max_draw_distance,
+		"draw_calls": _summary(PackedFloat32Array(_rendering["draw_calls"])),
+		"objects": _summary(PackedFloat32Array(_rendering["objects"])),
+		"primitives": _summary(PackedFloat32Array(_rendering["primitives"])),
+		"buffer_memory_bytes": _buffer_memory,
 		"lod_counts_mean": mean_counts,
 		"engine": Engine.get_version_info()["string"],
 		"renderer": RenderingServer.get_current_rendering_method(),

@@ -7,12 +7,13 @@ extends Node3D
 
 ## Side of the chunks, metres.
 const CHUNK_SIZE: float = 16.0
-## Chunks farther than this are not drawn.
+## Chunks farther than this are not drawn, unless the build is given another cut-off.
 const CUT_OFF: float = 100.0
 
 
-## Builds the baseline for [param field_map]; returns the number of plants.
-func build(field_map: SunflowerFieldMap, field: SunflowerField) -> int:
+## Builds the baseline for [param field_map]; chunks are not drawn past [param cut_off] metres (0:
+## always drawn). Returns the number of plants.
+func build(field_map: SunflowerFieldMap, field: SunflowerField, cut_off: float = CUT_OFF) -> int:
 	var simulation: SunflowerSimulation = SunflowerSimulation.new()
 	var error: String = simulation.load_map(field_map.text, field_map.source_path, "", "", 0)
 	if not error.is_empty():
@@ -40,7 +41,7 @@ func build(field_map: SunflowerFieldMap, field: SunflowerField) -> int:
 			multimesh.set_instance_transform(k, Transform3D(Basis.from_scale(Vector3.ONE * scale_factor), origin))
 		var node: MultiMeshInstance3D = MultiMeshInstance3D.new()
 		node.multimesh = multimesh
-		node.visibility_range_end = CUT_OFF
+		node.visibility_range_end = cut_off
 		add_child(node)
 	return simulation.get_plant_count()
 
