@@ -116,7 +116,7 @@ func needs_frames() -> bool:
 
 
 ## One step: waits for the worker (unless [param budget_usec] ≥ 0 and it is still running), casts
-## collider rays (which miss none of [param exclude]: the field's own stalks), then makes chunk nodes
+## collider rays (which miss none of [param exclude]: the field's own stalks), then makes tile nodes
 ## until the budget is spent (negative: until done). True when the pending field is complete or the
 ## map failed ([method get_error]).
 func step(budget_usec: int, max_draw_distance: float, exclude: Array[RID]) -> bool:
@@ -151,16 +151,16 @@ func step(budget_usec: int, max_draw_distance: float, exclude: Array[RID]) -> bo
 		if not job.error.is_empty():
 			return true
 		start = Time.get_ticks_usec()
-	if _previous:  # the layout is complete: match its chunks with the field drawn now, once
+	if _previous:  # the layout is complete: match its tiles with the field drawn now, once
 		nodes.reuse(_previous)
 		_previous = null
-	var had_chunks: bool = nodes.get_chunk_progress() < 1.0
-	var done: bool = nodes.make_chunks(budget_usec, max_draw_distance)
+	var had_tiles: bool = nodes.get_tile_progress() < 1.0
+	var done: bool = nodes.make_tiles(budget_usec, max_draw_distance)
 	_frames += 1
 	add_main_thread_time(start)
 	# The swap that follows (the near nodes, the legend's scenes, the first update) gets a frame of
-	# its own when this step made chunk nodes within a budget.
-	return done and not (had_chunks and budget_usec >= 0)
+	# its own when this step made tile nodes within a budget.
+	return done and not (had_tiles and budget_usec >= 0)
 
 
 ## The map's error ("file:line:column: …"), or empty.
@@ -176,7 +176,7 @@ func get_progress() -> float:
 		return 0.0 if _task >= 0 else 0.1
 	if _phase == Phase.RAYS:
 		return 0.1 + rays * job.ground.get_ray_progress()
-	return 0.1 + rays + (0.9 - rays) * (0.0 if _task >= 0 else nodes.get_chunk_progress())
+	return 0.1 + rays + (0.9 - rays) * (0.0 if _task >= 0 else nodes.get_tile_progress())
 
 
 ## Counts main-thread time spent on this build since [param start_usec].
@@ -195,8 +195,8 @@ func get_stats() -> Dictionary:
 		"main_thread_ms": _main_thread_ms,
 		"worker_ms": job.usec / 1000.0,
 		"ground_ray_ms": job.ground.get_ray_ms(),
-		"chunks_made": nodes.chunks_made,
-		"chunks_kept": nodes.chunks_kept,
+		"tiles_made": nodes.tiles_made,
+		"tiles_kept": nodes.tiles_kept,
 		"cells_without_ground": job.simulation.get_cells_without_ground(),
 		"total_ms": (Time.get_ticks_usec() - _start_usec) / 1000.0,
 	}

@@ -143,8 +143,8 @@ func show(nodes: FieldNodes) -> void:
 	configure_threads()
 	FieldObserver.push(_field, _field.observer, _field.frustum_culling, drawn.simulation)
 	drawn.simulation.update(0.0)
-	drawn.simulation.show_static_chunks()  # chunks taken from the field before keep their state
 	drawn.show_filled_buckets()
+	drawn.update_masks()
 
 
 ## Places the far impostors where the field node stands now (their records are in its frame).
@@ -170,6 +170,7 @@ func update_field(delta: float) -> void:
 	native_simulation.set_pushers(interaction.gather_pushers(_field.pusher_group, _field.pusher_radius))
 	native_simulation.update(delta)
 	drawn.show_filled_buckets()
+	drawn.update_masks()
 	var wind_state: PackedFloat32Array = native_simulation.get_wind_state()
 	for impostors: ImpostorSet in impostor_sets:
 		impostors.sway(wind_state, _field.wind, _field.global_transform)

@@ -1,11 +1,12 @@
 @tool
 extends RefCounted
-## The internal nodes that draw one field (one native simulation): per chunk one static
-## MultiMeshInstance3D of its plants' impostors (sprite and billboard draw the same multi-view
-## impostor, so one GPU copy of a far plant serves both; its visibility range ends at the field's
-## draw distance), the dynamic bucket nodes of the near plants, and the scenes the legend places.
-## The only script that makes MultiMeshes or sets visibility ranges. Chunk nodes can be made a few
-## at a time, hidden, and shown at once.
+## The internal nodes that draw one field (one native simulation): per far tile (4 × 4 chunks of
+## one species) one static MultiMeshInstance3D of its plants' impostors (sprite and billboard draw
+## the same multi-view impostor, so one GPU copy of a far plant serves both; its visibility range
+## ends at the field's draw distance), the dynamic bucket nodes of the near plants, and the scenes
+## the legend places; and per species the active-chunk mask that keeps the tiles from drawing the
+## plants the near buckets draw. The only script that makes MultiMeshes or sets visibility ranges.
+## Tile nodes can be made a few at a time, hidden, and shown at once.
 
 const Native: GDScript = preload("native.gd")
 const ImpostorSet: GDScript = preload("impostor_set.gd")
@@ -14,19 +15,21 @@ const PartMeshes: GDScript = preload("part_meshes.gd")
 const PART_NAMES: PackedStringArray = PartMeshes.PART_NAMES
 
 var simulation: RefCounted
-## Chunk nodes made, and taken over from the previous field, by this field's build.
-var chunks_made: int = 0
-var chunks_kept: int = 0
+## Tile nodes made, and taken over from the previous field, by this field's build.
+var tiles_made: int = 0
+var tiles_kept: int = 0
 var _owner: Node3D
 var _impostors: Array[ImpostorSet]  # per species
-var _chunk_nodes: Array[MultiMeshInstance3D] = []
+var _tile_nodes: Array[MultiMeshInstance3D] = []
 var _dynamic_nodes: Array[MultiMeshInstance3D] = []
 var _dynamic_buckets: PackedInt32Array = []  # the native bucket each dynamic node draws
 var _shown_buckets: PackedByteArray = []  # the filled buckets the nodes' visibility follows
 var _object_nodes: Array[Node] = []
-## The field drawn before this one: chunks that draw the same here take its nodes and GPU buffers.
+var _masks: Array[ImageTexture] = []  # per species: which chunk cells the near buckets draw
+var _mask_version: int = -1  # the simulation's mask version the textures show
+## The field drawn before this one: tiles that draw the same here take its nodes and GPU buffers.
 var _previous: RefCounted
-var _previous_by_key: Dictionary = {}  # chunk key → the previous field's chunk
+var _previous_by_key: Dictionary = {}  # tile key → the previous field's tile
 
 
 ## Nodes of [param owner] for [param field_simulation], its far levels drawn with [param impostors]
@@ -37,75 +40,75 @@ func _init(owner: Node3D, field_simulation: RefCounted, impostors: Array[Imposto
 	_impostors = impostors
 
 
-## Builds on [param previous] (the FieldNodes drawn now, or null): a chunk that lies where one of
-## its chunks lies and draws the same (equal key and signature) takes that chunk's nodes and
-## buffers instead of new ones, so a small change of a large map (a paint stroke, say) makes nodes
-## and uploads buffers only for the chunks it touched.
+## Builds on [param previous] (the FieldNodes drawn now, or null): a tile that lies where one of
+## its tiles lies and draws the same (equal key and signature) takes that tile's node and buffer
+## instead of new ones, so a small change of a large map (a paint stroke, say) makes nodes and
+## uploads buffers only for the tiles it touched.
 func reuse(previous: RefCounted) -> void:
 	_previous = previous
 	if previous == null:
 		return
 	var old_simulation: RefCounted = previous.simulation
-	for chunk: int in old_simulation.get_chunk_count():
-		_previous_by_key[old_simulation.get_chunk_key(chunk)] = chunk
+	for tile: int in old_simulation.get_tile_count():
+		_previous_by_key[old_simulation.get_tile_key(tile)] = tile
 
 
-## Makes hidden chunk nodes (or takes the previous field's, see [method reuse]) until all exist or
+## Makes hidden tile nodes (or takes the previous field's, see [method reuse]) until all exist or
 ## the next would overrun [param budget_usec] (negative: no limit; one node is always made); true
-## when every chunk has its node.
-func make_chunks(budget_usec: int, max_draw_distance: float) -> bool:
+## when every tile has its node.
+func make_tiles(budget_usec: int, max_draw_distance: float) -> bool:
 	var start: int = Time.get_ticks_usec()
-	var chunk_count: int = simulation.get_chunk_count()
+	var tile_count: int = simulation.get_tile_count()
 	var slowest: int = 0  # the longest a node took in this step, to stop before the budget is overrun
-	while _chunk_nodes.size() < chunk_count:
+	while _tile_nodes.size() < tile_count:
 		var node_start: int = Time.get_ticks_usec()
-		var chunk: int = _chunk_nodes.size()
-		if _take_previous(chunk):
+		var tile: int = _tile_nodes.size()
+		if _take_previous(tile):
 			if budget_usec >= 0 and Time.get_ticks_usec() - start + slowest >= budget_usec:
 				break
 			continue
-		chunks_made += 1
-		var aabb: AABB = simulation.get_chunk_aabb(chunk)
-		var impostors: ImpostorSet = _impostors[simulation.get_chunk_species(chunk)]
-		var node: MultiMeshInstance3D = _make_node(_chunk_node_name(chunk), impostors.mesh(true), aabb, true)
+		tiles_made += 1
+		var aabb: AABB = simulation.get_tile_aabb(tile)
+		var impostors: ImpostorSet = _impostors[simulation.get_tile_species(tile)]
+		var node: MultiMeshInstance3D = _make_node(_tile_node_name(tile), impostors.mesh(true), aabb, true)
 		node.visible = false  # shown when the whole field is ready
 		_set_range(node, max_draw_distance)
-		_chunk_nodes.append(node)
-		simulation.set_chunk_multimesh(chunk, node.multimesh.get_rid())
+		_tile_nodes.append(node)
+		simulation.set_tile_multimesh(tile, node.multimesh.get_rid())
 		var now: int = Time.get_ticks_usec()
 		slowest = maxi(slowest, now - node_start)
 		if budget_usec >= 0 and now - start + slowest >= budget_usec:
 			break
-	return _chunk_nodes.size() >= chunk_count
+	return _tile_nodes.size() >= tile_count
 
 
-## Takes the previous field's node for [param chunk] when it draws the same; true if it did.
-func _take_previous(chunk: int) -> bool:
-	var old: int = _previous_by_key.get(simulation.get_chunk_key(chunk), -1)
-	if old < 0 or _previous.simulation.get_chunk_signature(old) != simulation.get_chunk_signature(chunk):
+## Takes the previous field's node for [param tile] when it draws the same; true if it did.
+func _take_previous(tile: int) -> bool:
+	var old: int = _previous_by_key.get(simulation.get_tile_key(tile), -1)
+	if old < 0 or _previous.simulation.get_tile_signature(old) != simulation.get_tile_signature(tile):
 		return false
-	var node: MultiMeshInstance3D = _previous.give_chunk_node(old)
+	var node: MultiMeshInstance3D = _previous.give_tile_node(old)
 	if node == null:
 		return false
-	_chunk_nodes.append(node)
-	simulation.adopt_chunk_multimesh(chunk, node.multimesh.get_rid(), _previous.simulation.is_chunk_shown(old))
-	chunks_kept += 1
+	_tile_nodes.append(node)
+	simulation.adopt_tile_multimesh(tile, node.multimesh.get_rid())
+	tiles_kept += 1
 	return true
 
 
-## Hands [param chunk]'s node to a field built on this one (and forgets it); null when it has none
+## Hands [param tile]'s node to a field built on this one (and forgets it); null when it has none
 ## (any more).
-func give_chunk_node(chunk: int) -> MultiMeshInstance3D:
-	if chunk >= _chunk_nodes.size() or not is_instance_valid(_chunk_nodes[chunk]):
+func give_tile_node(tile: int) -> MultiMeshInstance3D:
+	if tile >= _tile_nodes.size() or not is_instance_valid(_tile_nodes[tile]):
 		return null
-	var node: MultiMeshInstance3D = _chunk_nodes[chunk]
-	_chunk_nodes[chunk] = null
+	var node: MultiMeshInstance3D = _tile_nodes[tile]
+	_tile_nodes[tile] = null
 	return node
 
 
-## The share of chunk nodes made, 0 to 1.
-func get_chunk_progress() -> float:
-	return _chunk_nodes.size() / maxf(simulation.get_chunk_count(), 1.0)
+## The share of tile nodes made, 0 to 1.
+func get_tile_progress() -> float:
+	return _tile_nodes.size() / maxf(simulation.get_tile_count(), 1.0)
 
 
 ## Completes the field: the near plants' bucket nodes and the legend's scenes, then shows it all.
@@ -128,14 +131,41 @@ func finish(species_meshes: Array, legend: Dictionary, cell_size: float, sway_ma
 		_add_dynamic(sprite, first + Native.constant(&"BUCKET_SPRITE"))
 		_add_dynamic(billboard, first + Native.constant(&"BUCKET_BILLBOARD"))
 	_place_objects(legend, cell_size)
-	for chunk: int in _chunk_nodes.size():
-		var node: MultiMeshInstance3D = _chunk_nodes[chunk]
+	for tile: int in _tile_nodes.size():
+		var node: MultiMeshInstance3D = _tile_nodes[tile]
 		node.visible = true
-		# Chunk nodes are named after the chunk's key (where it lies); one made while the old field's
+		# Tile nodes are named after the tile's key (where it lies); one made while the old field's
 		# node of that key was still there had a generated name until now.
 		if str(node.name).begins_with("@"):
-			node.name = _chunk_node_name(chunk)
+			node.name = _tile_node_name(tile)
 	_previous = null  # its remaining nodes go with it
+	update_masks()
+
+
+## Tells the tiles which chunks the near buckets draw now (after the simulation's update): one mask
+## texture per species, a byte per chunk cell, given to that species' impostor material; and hides
+## the tiles whose chunks are all drawn near (an instance the shader skips still costs a draw call).
+func update_masks() -> void:
+	var version: int = simulation.get_mask_version()
+	if version == _mask_version:
+		return
+	_mask_version = version
+	var drawn: PackedByteArray = simulation.get_tiles_drawn()
+	for tile: int in mini(_tile_nodes.size(), drawn.size()):
+		if _tile_nodes[tile]:
+			_tile_nodes[tile].visible = drawn[tile] != 0
+	var grid: PackedInt32Array = simulation.get_chunk_grid()
+	for species: int in simulation.get_species_count():
+		var image: Image = Image.create_from_data(
+			grid[0], grid[1], false, Image.FORMAT_R8, simulation.get_active_mask(species)
+		)
+		if species >= _masks.size():
+			_masks.append(ImageTexture.create_from_image(image))
+		elif _masks[species].get_size() != Vector2(grid[0], grid[1]):
+			_masks[species].set_image(image)
+		else:
+			_masks[species].update(image)
+		_impostors[species].set_active_chunks(_masks[species], grid[0])
 
 
 ## Shows only the near buckets that hold plants after the simulation's last update: an empty
@@ -150,9 +180,9 @@ func show_filled_buckets() -> void:
 		_dynamic_nodes[i].visible = bucket < filled.size() and filled[bucket] != 0
 
 
-## Sets where the chunks' impostors end (0: never).
+## Sets where the tiles' impostors end (0: never).
 func apply_ranges(max_draw_distance: float) -> void:
-	for node: MultiMeshInstance3D in _chunk_nodes:
+	for node: MultiMeshInstance3D in _tile_nodes:
 		if node:
 			_set_range(node, max_draw_distance)
 
@@ -168,7 +198,7 @@ func set_part_mesh(species: int, level: int, part: int, mesh: Mesh) -> void:
 
 ## Adds every node of this field to [param nodes] (as keys), to tell them from foreign children.
 func collect(nodes: Dictionary) -> void:
-	for list: Array in [_chunk_nodes, _dynamic_nodes, _object_nodes]:
+	for list: Array in [_tile_nodes, _dynamic_nodes, _object_nodes]:
 		for node: Node in list:
 			if node:
 				nodes[node] = true
@@ -177,7 +207,7 @@ func collect(nodes: Dictionary) -> void:
 ## Frees every node (the simulation forgets its MultiMeshes first).
 func free_nodes() -> void:
 	simulation.release_multimeshes()
-	for nodes: Array in [_chunk_nodes, _dynamic_nodes, _object_nodes]:
+	for nodes: Array in [_tile_nodes, _dynamic_nodes, _object_nodes]:
 		for node: Node in nodes:
 			if node and is_instance_valid(node):
 				node.free()
@@ -235,7 +265,7 @@ func _add_dynamic(node: MultiMeshInstance3D, bucket: int) -> void:
 
 
 ## A MultiMesh node for the native buffers: 3D transforms and colours, or when [param compact] the
-## static chunks' 8-float records (2D transforms without colours; the impostor shader decodes them).
+## far tiles' 8-float records (2D transforms without colours; the impostor shader decodes them).
 func _make_node(node_name: String, mesh: Mesh, aabb: AABB, compact: bool = false) -> MultiMeshInstance3D:
 	var multimesh: MultiMesh = MultiMesh.new()
 	multimesh.transform_format = MultiMesh.TRANSFORM_2D if compact else MultiMesh.TRANSFORM_3D
@@ -250,12 +280,12 @@ func _make_node(node_name: String, mesh: Mesh, aabb: AABB, compact: bool = false
 	return node
 
 
-## A chunk's node is named after the chunk's key (where it lies).
-func _chunk_node_name(chunk: int) -> String:
-	return "ChunkImpostors%d" % simulation.get_chunk_key(chunk)
+## A tile's node is named after the tile's key (where it lies).
+func _tile_node_name(tile: int) -> String:
+	return "FarTile%d" % simulation.get_tile_key(tile)
 
 
-## A chunk is hidden once its nearest plant may be past [param max_draw_distance] (the engine
+## A tile is hidden once its nearest plant may be past [param max_draw_distance] (the engine
 ## measures to the box's centre); its plants fade out one by one before that (the impostor shader).
 static func _set_range(node: MultiMeshInstance3D, max_draw_distance: float) -> void:
 	node.visibility_range_end = (

@@ -4,14 +4,14 @@ extends RefCounted
 ## the plant type says; made once per field and shared by the field drawn and one being built.
 ## Sprites and billboards draw the same quad (shaders/impostor.gdshader): the plant seen from the
 ## observer's direction, blended from the plant's baked views, shaded through its baked normals.
-## The static chunks draw it from their compact instance records, through a twin of the material
-## that decodes them ([code]packed_instances[/code]); every parameter is set on both.
+## The far tiles draw it from their compact instance records, through a twin of the material that
+## decodes them ([code]packed_instances[/code]); every parameter is set on both.
 
 const SHADER: Shader = preload("shaders/impostor.gdshader")
 
 ## The material of the near buckets' impostors (3D transforms and colours).
 var material: ShaderMaterial = ShaderMaterial.new()
-## The material of the static chunks' impostors (compact records).
+## The material of the far tiles' impostors (compact records).
 var packed_material: ShaderMaterial = ShaderMaterial.new()
 var _quads: Array[ArrayMesh] = [null, null]  # [near, packed]
 var _stiffness: float = 1.0  # the plant type's
@@ -69,7 +69,14 @@ func sway(state: PackedFloat32Array, wind: SunflowerWind, field_transform: Trans
 	place(field_transform)
 
 
-## Places the impostors with the field node's [param field_transform] (the static chunks' records
+## Hides the far tiles' plants in the chunks the near buckets draw: [param mask] holds a byte per
+## chunk cell (rows of [param grid_width]), non-zero where the chunk is active.
+func set_active_chunks(mask: Texture2D, grid_width: int) -> void:
+	packed_material.set_shader_parameter("active_chunks", mask)
+	packed_material.set_shader_parameter("chunk_grid_width", grid_width)
+
+
+## Places the impostors with the field node's [param field_transform] (the far tiles' records
 ## are in the field's frame, as is the wind). Call it whenever the field moves.
 func place(field_transform: Transform3D) -> void:
 	if field_transform != _field_transform:
@@ -79,7 +86,7 @@ func place(field_transform: Transform3D) -> void:
 
 
 ## A unit square the shader turns to the observer and scales to the frame, with [member material],
-## or with [member packed_material] when [param packed] (for the static chunks). (What it shows lies
+## or with [member packed_material] when [param packed] (for the far tiles). (What it shows lies
 ## in the plant's cylinder, inside the cull radius the chunks' bounds are made from.)
 func mesh(packed: bool = false) -> ArrayMesh:
 	var index: int = 1 if packed else 0

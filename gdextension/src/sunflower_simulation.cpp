@@ -52,11 +52,20 @@ void SunflowerSimulation::bind_methods() {
 	gdx::bind_method(CLASS, "get_plants_near", &SunflowerSimulation::get_plants_near, { "position", "radius" });
 	gdx::bind_method(CLASS, "get_last_task_count", &SunflowerSimulation::get_last_task_count);
 	gdx::bind_method(CLASS, "set_bucket_multimesh", &SunflowerSimulation::set_bucket_multimesh, { "bucket", "multimesh" });
-	gdx::bind_method(CLASS, "set_chunk_multimesh", &SunflowerSimulation::set_chunk_multimesh, { "chunk", "multimesh" });
+	gdx::bind_method(CLASS, "set_tile_multimesh", &SunflowerSimulation::set_tile_multimesh, { "tile", "multimesh" });
 	gdx::bind_method(CLASS, "release_multimeshes", &SunflowerSimulation::release_multimeshes);
-	gdx::bind_method(CLASS, "adopt_chunk_multimesh", &SunflowerSimulation::adopt_chunk_multimesh, { "chunk", "multimesh", "shown" });
-	gdx::bind_method(CLASS, "is_chunk_shown", &SunflowerSimulation::is_chunk_shown, { "chunk" });
-	gdx::bind_method(CLASS, "show_static_chunks", &SunflowerSimulation::show_static_chunks);
+	gdx::bind_method(CLASS, "adopt_tile_multimesh", &SunflowerSimulation::adopt_tile_multimesh, { "tile", "multimesh" });
+	gdx::bind_method(CLASS, "get_tile_count", &SunflowerSimulation::get_tile_count);
+	gdx::bind_method(CLASS, "get_tile_aabb", &SunflowerSimulation::get_tile_aabb, { "tile" });
+	gdx::bind_method(CLASS, "get_tile_key", &SunflowerSimulation::get_tile_key, { "tile" });
+	gdx::bind_method(CLASS, "get_tile_signature", &SunflowerSimulation::get_tile_signature, { "tile" });
+	gdx::bind_method(CLASS, "get_tile_species", &SunflowerSimulation::get_tile_species, { "tile" });
+	gdx::bind_method(CLASS, "get_tile_plant_count", &SunflowerSimulation::get_tile_plant_count, { "tile" });
+	gdx::bind_method(CLASS, "get_active_mask", &SunflowerSimulation::get_active_mask, { "species" });
+	gdx::bind_method(CLASS, "get_mask_version", &SunflowerSimulation::get_mask_version);
+	gdx::bind_method(CLASS, "get_tiles_drawn", &SunflowerSimulation::get_tiles_drawn);
+	gdx::bind_method(CLASS, "get_chunk_grid", &SunflowerSimulation::get_chunk_grid);
+	gdx::bind_method(CLASS, "get_chunk_cell", &SunflowerSimulation::get_chunk_cell, { "chunk" });
 	gdx::bind_method(CLASS, "get_chunk_key", &SunflowerSimulation::get_chunk_key, { "chunk" });
 	gdx::bind_method(CLASS, "get_chunk_signature", &SunflowerSimulation::get_chunk_signature, { "chunk" });
 	gdx::bind_method(CLASS, "compute_chunk_signatures", &SunflowerSimulation::compute_chunk_signatures);
@@ -373,33 +382,85 @@ void SunflowerSimulation::set_bucket_multimesh(int64_t p_bucket, gdx::Rid p_mult
 	target.last_count = 0;
 }
 
-void SunflowerSimulation::set_chunk_multimesh(int64_t p_chunk, gdx::Rid p_multimesh) {
-	if (!_is_chunk(p_chunk) || !gdx::RenderingServer::ensure_loaded()) {
+void SunflowerSimulation::set_tile_multimesh(int64_t p_tile, gdx::Rid p_multimesh) {
+	if (!_is_tile(p_tile) || !gdx::RenderingServer::ensure_loaded()) {
 		return;
 	}
-	_chunks.resize(_sim.get_chunk_count());
-	_chunks[static_cast<size_t>(p_chunk)] = ChunkTarget{ p_multimesh };
-	_upload_chunk(static_cast<uint32_t>(p_chunk));
+	_tiles.resize(_sim.get_tile_count());
+	_tiles[static_cast<size_t>(p_tile)] = p_multimesh;
+	_upload_tile(static_cast<uint32_t>(p_tile));
 }
 
-void SunflowerSimulation::adopt_chunk_multimesh(int64_t p_chunk, gdx::Rid p_multimesh, bool p_shown) {
-	if (!_is_chunk(p_chunk) || !gdx::RenderingServer::ensure_loaded()) {
+void SunflowerSimulation::adopt_tile_multimesh(int64_t p_tile, gdx::Rid p_multimesh) {
+	if (!_is_tile(p_tile)) {
 		return;
 	}
-	_chunks.resize(_sim.get_chunk_count());
-	_chunks[static_cast<size_t>(p_chunk)] = ChunkTarget{ p_multimesh, p_shown }; // its data is this chunk's already
+	_tiles.resize(_sim.get_tile_count());
+	_tiles[static_cast<size_t>(p_tile)] = p_multimesh; // its data is this tile's already
 }
 
-bool SunflowerSimulation::is_chunk_shown(int64_t p_chunk) const {
-	return p_chunk >= 0 && size_t(p_chunk) < _chunks.size() && _chunks[size_t(p_chunk)].shown;
+int64_t SunflowerSimulation::get_tile_count() const {
+	return _sim.get_tile_count();
 }
 
-void SunflowerSimulation::show_static_chunks() {
-	for (uint32_t chunk = 0; chunk < _chunks.size(); ++chunk) {
-		if (_chunks[chunk].shown == _sim.is_chunk_active(chunk)) { // shown while active, or hidden while static
-			_show_static_chunk(chunk);
-		}
+gdx::AABB SunflowerSimulation::get_tile_aabb(int64_t p_tile) const {
+	if (!_is_tile(p_tile)) {
+		return gdx::AABB{};
 	}
+	const ChunkBounds bounds = _sim.get_tile_bounds(static_cast<uint32_t>(p_tile));
+	return gdx::to_godot_aabb(bounds.min, bounds.max);
+}
+
+int64_t SunflowerSimulation::get_tile_key(int64_t p_tile) const {
+	return _is_tile(p_tile) ? int64_t(_sim.get_tile(uint32_t(p_tile)).key) : -1;
+}
+
+int64_t SunflowerSimulation::get_tile_signature(int64_t p_tile) const {
+	return _is_tile(p_tile) ? int64_t(_sim.get_tile_signature(uint32_t(p_tile))) : 0;
+}
+
+int64_t SunflowerSimulation::get_tile_species(int64_t p_tile) const {
+	return _is_tile(p_tile) ? int64_t(_sim.get_tile(uint32_t(p_tile)).species) : -1;
+}
+
+int64_t SunflowerSimulation::get_tile_plant_count(int64_t p_tile) const {
+	return _is_tile(p_tile) ? int64_t(_sim.get_tile(uint32_t(p_tile)).plants) : 0;
+}
+
+gdx::PackedByteArray SunflowerSimulation::get_active_mask(int64_t p_species) const {
+	gdx::PackedByteArray out;
+	if (!_is_species(p_species)) {
+		return out;
+	}
+	const FieldLayout &layout = _sim.get_layout();
+	out.resize(int64_t(layout.grid_x) * layout.grid_z);
+	_sim.write_active_mask(uint32_t(p_species), out.data());
+	return out;
+}
+
+gdx::PackedByteArray SunflowerSimulation::get_tiles_drawn() const {
+	gdx::PackedByteArray out;
+	out.resize(_sim.get_tile_count());
+	for (uint32_t tile = 0; tile < _sim.get_tile_count(); ++tile) {
+		out.data()[tile] = _sim.is_tile_drawn(tile) ? 1 : 0;
+	}
+	return out;
+}
+
+int64_t SunflowerSimulation::get_mask_version() const {
+	return _sim.get_mask_version();
+}
+
+gdx::PackedInt32Array SunflowerSimulation::get_chunk_grid() const {
+	gdx::PackedInt32Array out;
+	out.resize(2);
+	out.data()[0] = _sim.get_layout().grid_x;
+	out.data()[1] = _sim.get_layout().grid_z;
+	return out;
+}
+
+int64_t SunflowerSimulation::get_chunk_cell(int64_t p_chunk) const {
+	return _is_chunk(p_chunk) ? int64_t(_sim.get_chunk_cell(uint32_t(p_chunk))) : -1;
 }
 
 int64_t SunflowerSimulation::get_chunk_key(int64_t p_chunk) const {
@@ -416,7 +477,7 @@ void SunflowerSimulation::compute_chunk_signatures() {
 
 void SunflowerSimulation::release_multimeshes() {
 	_buckets.assign(_sim.get_bucket_count(), BucketTarget{});
-	_chunks.clear();
+	_tiles.clear();
 }
 
 int64_t SunflowerSimulation::get_chunk_count() const {
@@ -431,26 +492,14 @@ gdx::AABB SunflowerSimulation::get_chunk_aabb(int64_t p_chunk) const {
 	return gdx::to_godot_aabb(bounds.min, bounds.max);
 }
 
-void SunflowerSimulation::_upload_chunk(uint32_t p_chunk) {
-	const ChunkTarget &target = _chunks[p_chunk];
-	const uint32_t count = _sim.get_layout().chunks[p_chunk].count;
+void SunflowerSimulation::_upload_tile(uint32_t p_tile) {
+	const uint32_t count = _sim.get_tile(p_tile).plants;
 	gdx::PackedFloat32Array buffer;
 	buffer.resize(int64_t(count) * FAR_FLOATS_PER_INSTANCE);
-	_sim.write_chunk_instances(p_chunk, buffer.data());
-	if (target.multimesh.is_valid()) {
-		gdx::RenderingServer::multimesh_allocate_data(target.multimesh, count, gdx::RenderingServer::COMPACT);
-		gdx::RenderingServer::multimesh_set_buffer(target.multimesh, buffer);
-	}
-	_show_static_chunk(p_chunk);
-}
-
-// A chunk's static pair is drawn (all instances) unless the chunk is active, when its plants are in
-// the dynamic buckets.
-void SunflowerSimulation::_show_static_chunk(uint32_t p_chunk) {
-	const int64_t visible = _sim.is_chunk_active(p_chunk) ? 0 : -1;
-	_chunks[p_chunk].shown = visible != 0;
-	if (_chunks[p_chunk].multimesh.is_valid()) {
-		gdx::RenderingServer::multimesh_set_visible_instances(_chunks[p_chunk].multimesh, visible);
+	_sim.write_tile_instances(p_tile, buffer.data());
+	if (_tiles[p_tile].is_valid()) {
+		gdx::RenderingServer::multimesh_allocate_data(_tiles[p_tile], count, gdx::RenderingServer::COMPACT);
+		gdx::RenderingServer::multimesh_set_buffer(_tiles[p_tile], buffer);
 	}
 }
 
@@ -480,11 +529,6 @@ void SunflowerSimulation::update(double p_delta) {
 	for (uint32_t b = 0; b < _buckets.size(); ++b) {
 		_push_bucket(b);
 	}
-	for (uint32_t chunk : _sim.get_changed_chunks()) {
-		if (chunk < _chunks.size()) { // chunks of a field still being built have no multimeshes yet
-			_show_static_chunk(chunk);
-		}
-	}
 	_last_update_usec = std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::steady_clock::now() - start).count();
 }
 
@@ -492,6 +536,13 @@ bool SunflowerSimulation::_is_plant(int64_t p_plant) const {
 	SF_FAIL_COND_V_MSG(p_plant < 0 || p_plant >= int64_t(_sim.get_plant_count()), false,
 			"plant index " + std::to_string(p_plant) + " is out of range (the field has " +
 					std::to_string(_sim.get_plant_count()) + " plants)");
+	return true;
+}
+
+bool SunflowerSimulation::_is_tile(int64_t p_tile) const {
+	SF_FAIL_COND_V_MSG(p_tile < 0 || p_tile >= int64_t(_sim.get_tile_count()), false,
+			"tile " + std::to_string(p_tile) + " is out of range (the field has " + std::to_string(_sim.get_tile_count()) +
+					" tiles)");
 	return true;
 }
 

@@ -53,12 +53,21 @@ public:
 	int64_t get_last_task_count() const;
 
 	void set_bucket_multimesh(int64_t p_bucket, gdx::Rid p_multimesh);
-	void set_chunk_multimesh(int64_t p_chunk, gdx::Rid p_multimesh);
-	void adopt_chunk_multimesh(int64_t p_chunk, gdx::Rid p_multimesh, bool p_shown);
-	bool is_chunk_shown(int64_t p_chunk) const;
-	void show_static_chunks();
+	void set_tile_multimesh(int64_t p_tile, gdx::Rid p_multimesh);
+	void adopt_tile_multimesh(int64_t p_tile, gdx::Rid p_multimesh);
+	int64_t get_tile_count() const;
+	gdx::AABB get_tile_aabb(int64_t p_tile) const;
+	int64_t get_tile_key(int64_t p_tile) const;
+	int64_t get_tile_signature(int64_t p_tile) const;
+	int64_t get_tile_species(int64_t p_tile) const;
+	int64_t get_tile_plant_count(int64_t p_tile) const;
+	gdx::PackedByteArray get_active_mask(int64_t p_species) const;
+	gdx::PackedByteArray get_tiles_drawn() const;
+	int64_t get_mask_version() const;
+	gdx::PackedInt32Array get_chunk_grid() const;
 	int64_t get_chunk_key(int64_t p_chunk) const;
 	int64_t get_chunk_signature(int64_t p_chunk) const;
+	int64_t get_chunk_cell(int64_t p_chunk) const;
 	void compute_chunk_signatures();
 	void release_multimeshes();
 	int64_t get_chunk_count() const;
@@ -92,10 +101,10 @@ public:
 private:
 	bool _is_plant(int64_t p_plant) const;
 	bool _is_chunk(int64_t p_chunk) const;
+	bool _is_tile(int64_t p_tile) const;
 	bool _is_species(int64_t p_species) const;
 	void _push_bucket(uint32_t p_bucket);
-	void _upload_chunk(uint32_t p_chunk);
-	void _show_static_chunk(uint32_t p_chunk);
+	void _upload_tile(uint32_t p_tile);
 
 	struct BucketTarget {
 		gdx::Rid multimesh;
@@ -103,14 +112,10 @@ private:
 		uint32_t allocated = 0;
 		uint32_t last_count = 0;
 	};
-	struct ChunkTarget {
-		gdx::Rid multimesh; // the chunk's impostors (sprite and billboard are one multi-view impostor)
-		bool shown = true; // whether its static impostors are drawn now (as last set)
-	};
 
 	sunflower::FieldSimulation _sim;
 	std::vector<BucketTarget> _buckets; // BUCKET_COUNT per species of the map
-	std::vector<ChunkTarget> _chunks;
+	std::vector<gdx::Rid> _tiles; // each tile's impostors (sprite and billboard are one multi-view impostor)
 	std::vector<sunflower::Pusher> _pushers; // reused between frames
 	int64_t _last_update_usec = 0;
 };

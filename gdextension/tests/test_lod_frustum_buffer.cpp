@@ -71,13 +71,14 @@ TEST_CASE("instance layout: 16 floats, the 3×4 matrix row by row, then the colo
 	}
 }
 
-TEST_CASE("far records: 8 floats that read back to the plant, its lean and colour in their steps") {
+TEST_CASE("far records: 8 floats that read back to the plant, its lean and tone in their steps and its chunk's cell") {
 	FarInstance plant;
 	plant.root = glm::vec3(123.25f, -4.5f, 987.75f);
 	plant.yaw = 2.5f;
 	plant.scale = 1.3f;
 	plant.lean = glm::vec2(0.3f, -0.6f);
-	plant.colour = glm::vec3(1.0f, 0.8f, 1.25f);
+	plant.tone = glm::vec2(1.13f, -0.2f);
+	plant.cell = 65535;
 	float out[FAR_FLOATS_PER_INSTANCE];
 	static_assert(FAR_FLOATS_PER_INSTANCE == 8, "one MultiMesh 2D transform");
 	write_far_instance(out, plant);
@@ -87,11 +88,16 @@ TEST_CASE("far records: 8 floats that read back to the plant, its lean and colou
 	CHECK(back.yaw == doctest::Approx(plant.yaw));
 	CHECK(std::abs(back.lean.x - plant.lean.x) <= 0.5f / 127.0f);
 	CHECK(std::abs(back.lean.y - plant.lean.y) <= 0.5f / 127.0f);
-	CHECK(back.colour.x == 1.0f); // white stays white
-	CHECK(std::abs(back.colour.y - 0.8f) <= 0.5f / 64.0f);
-	CHECK(back.colour.z == 1.25f);
+	CHECK(std::abs(back.tone.x - plant.tone.x) <= 0.5f / 128.0f);
+	CHECK(std::abs(back.tone.y - plant.tone.y) <= 0.5f / 127.0f);
+	CHECK(back.cell == 65535u);
+	FarInstance plain;
+	write_far_instance(out, plain);
+	CHECK(read_far_instance(out).tone == glm::vec2(1.0f, 0.0f)); // as modelled stays exact
+	CHECK(read_far_instance(out).lean == glm::vec2(0.0f));
 	// The steps survive a transform and its inverse, as the shader meets them: the record as a 2D
 	// instance (rows 0 and 1; row 2 is (0, 0, 1, 0)), times a turned, scaled, moved node, undone.
+	write_far_instance(out, plant);
 	const glm::mat4 record(glm::vec4(out[0], out[4], 0, 0), glm::vec4(out[1], out[5], 0, 0), glm::vec4(out[2], out[6], 1, 0),
 			glm::vec4(out[3], out[7], 0, 1));
 	glm::mat4 node(1.0f);
@@ -103,7 +109,8 @@ TEST_CASE("far records: 8 floats that read back to the plant, its lean and colou
 	float again[FAR_FLOATS_PER_INSTANCE] = { seen[0].x, seen[1].x, seen[2].x, seen[3].x, seen[0].y, seen[1].y, seen[2].y, seen[3].y };
 	const FarInstance through = read_far_instance(again);
 	CHECK(through.lean == back.lean);
-	CHECK(through.colour == back.colour);
+	CHECK(through.tone == back.tone);
+	CHECK(through.cell == back.cell);
 	CHECK(glm::distance(through.root, plant.root) < 1e-3f);
 }
 

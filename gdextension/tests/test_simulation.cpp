@@ -2,6 +2,7 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <map>
 
 #include <glm/geometric.hpp>
@@ -32,10 +33,11 @@ int64_t total(const std::array<int64_t, LOD_COUNT> &p_counts) {
 	return std::accumulate(p_counts.begin(), p_counts.end(), int64_t(0));
 }
 
-// Plants drawn by the dynamic buckets plus the plants of static chunks: with no frustum, every plant
-// must be drawn exactly once, or, in the mesh 3 → impostor cross-fade, twice: as mesh 3 and as an
-// impostor whose shares (the instance colours' alpha, the patterns each level's shader keeps) add
-// up to one. Returns the plants drawn.
+// Plants drawn by the dynamic buckets plus the tiles' records the impostor shader keeps (those whose
+// chunk cell the active mask leaves 0): with no frustum, every plant must be drawn exactly once, or,
+// in the mesh 3 → impostor cross-fade, twice: as mesh 3 and as an impostor whose shares (the
+// instance colours' alpha, the patterns each level's shader keeps) add up to one. Returns the
+// plants drawn.
 int64_t drawn(const FieldSimulation &p_sim) {
 	struct Drawn {
 		float share = 0.0f;
@@ -63,6 +65,22 @@ int64_t drawn(const FieldSimulation &p_sim) {
 	}
 	add(p_sim.get_bucket(BUCKET_SPRITE), true, false);
 	add(p_sim.get_bucket(BUCKET_BILLBOARD), false, false);
+	const FieldLayout &layout = p_sim.get_layout();
+	std::vector<uint8_t> mask(size_t(layout.grid_x) * size_t(layout.grid_z));
+	p_sim.write_active_mask(0, mask.data());
+	for (uint32_t t = 0; t < p_sim.get_tile_count(); ++t) {
+		std::vector<float> records(size_t(p_sim.get_tile(t).plants) * FAR_FLOATS_PER_INSTANCE);
+		p_sim.write_tile_instances(t, records.data());
+		for (size_t k = 0; k < p_sim.get_tile(t).plants; ++k) {
+			const FarInstance record = read_far_instance(records.data() + k * FAR_FLOATS_PER_INSTANCE);
+			REQUIRE(record.cell < mask.size());
+			if (mask[record.cell] == 0) {
+				Drawn &plant = plants[{ record.root.x, record.root.z }];
+				plant.share += 1.0f;
+				plant.representations += 1;
+			}
+		}
+	}
 	for (const auto &[root, plant] : plants) {
 		CHECK(plant.share == doctest::Approx(1.0f).epsilon(1e-5));
 		CHECK(plant.representations <= 2);
@@ -70,13 +88,7 @@ int64_t drawn(const FieldSimulation &p_sim) {
 			CHECK(plant.mesh_3); // the only pair: mesh 3 and its impostor
 		}
 	}
-	int64_t count = int64_t(plants.size());
-	for (uint32_t c = 0; c < p_sim.get_chunk_count(); ++c) {
-		if (!p_sim.is_chunk_active(c)) {
-			count += p_sim.get_layout().chunks[c].count;
-		}
-	}
-	return count;
+	return int64_t(plants.size());
 }
 
 } // namespace
@@ -113,6 +125,112 @@ TEST_CASE("every plant is drawn exactly once along a path, and LOD counts follow
 	counts = sim.get_lod_counts();
 	CHECK(counts[LOD_BILLBOARD] == 24000);
 	CHECK(sim.get_bucket(mesh_bucket(0, 0)).get_count() == 0);
+}
+
+TEST_CASE("far tiles: every chunk in one tile of its species, at most 4 × 4 cells; records carry their chunk's cell") {
+	FieldSimulation sim;
+	MapError error;
+	std::string text = "90 70\n";
+	for (int r = 0; r < 70; ++r) {
+		std::string row;
+		for (int c = 0; c < 90; ++c) {
+			row += (c / 7 + r / 5) % 3 == 0 ? 'm' : '*';
+		}
+		text += row + "\n";
+	}
+	REQUIRE(sim.load_map(text, U"m", U"m", "tiles", MapLimits{}, error));
+	LayoutParams params;
+	params.chunk_size = 4.0f; // 45 × 35 m: 12 × 9 chunk cells
+	sim.set_layout_params(params);
+	const FieldLayout &layout = sim.get_layout();
+	REQUIRE(layout.grid_x == 12);
+	std::vector<int> tile_of(sim.get_chunk_count(), -1);
+	uint32_t plants = 0;
+	for (uint32_t t = 0; t < sim.get_tile_count(); ++t) {
+		const FieldSimulation::Tile &tile = sim.get_tile(t);
+		plants += tile.plants;
+		uint32_t in_chunks = 0;
+		int x0 = 1 << 30, x1 = -1, z0 = 1 << 30, z1 = -1;
+		for (uint32_t k = 0; k < tile.count; ++k) {
+			const uint32_t chunk = sim.get_tile_chunk(t, k);
+			CHECK(tile_of[chunk] == -1);
+			tile_of[chunk] = int(t);
+			CHECK(layout.chunks[chunk].species == tile.species);
+			in_chunks += layout.chunks[chunk].count;
+			const int x = int(sim.get_chunk_cell(chunk)) % layout.grid_x;
+			const int z = int(sim.get_chunk_cell(chunk)) / layout.grid_x;
+			x0 = std::min(x0, x), x1 = std::max(x1, x), z0 = std::min(z0, z), z1 = std::max(z1, z);
+		}
+		CHECK(in_chunks == tile.plants);
+		CHECK(x0 / 4 == x1 / 4); // one 4 × 4 square of cells
+		CHECK(z0 / 4 == z1 / 4);
+		// The records are the tile's chunks' plants, each with its chunk's cell and within its bounds.
+		std::vector<float> records(size_t(tile.plants) * FAR_FLOATS_PER_INSTANCE);
+		sim.write_tile_instances(t, records.data());
+		const ChunkBounds bounds = sim.get_tile_bounds(t);
+		size_t k = 0;
+		for (uint32_t c = 0; c < tile.count; ++c) {
+			const uint32_t chunk = sim.get_tile_chunk(t, c);
+			for (uint32_t p = 0; p < layout.chunks[chunk].count; ++p, ++k) {
+				const FarInstance record = read_far_instance(records.data() + k * FAR_FLOATS_PER_INSTANCE);
+				const Plant &plant = layout.plants[layout.chunk_plants[layout.chunks[chunk].first + p]];
+				CHECK(record.cell == sim.get_chunk_cell(chunk));
+				CHECK(record.root == plant.root());
+				CHECK(glm::all(glm::lessThanEqual(bounds.min, record.root)));
+				CHECK(glm::all(glm::lessThanEqual(record.root, bounds.max)));
+			}
+		}
+	}
+	CHECK(plants == sim.get_plant_count());
+	CHECK(std::count(tile_of.begin(), tile_of.end(), -1) == 0);
+	CHECK(sim.get_tile_count() < sim.get_chunk_count() / 4); // merged: 12 × 9 cells make 3 × 3 tiles per species
+	// The mask marks exactly the active chunks' cells, per species, and its version moves with them.
+	const uint32_t version = sim.get_mask_version();
+	sim.set_observer({ 20.0f, 1.7f, 15.0f });
+	for (int frame = 0; frame < 30; ++frame) { // the activation budget spreads a jump over updates
+		sim.update(0.016f);
+	}
+	CHECK(sim.get_mask_version() != version);
+	for (uint32_t species = 0; species < 2; ++species) {
+		std::vector<uint8_t> mask(size_t(layout.grid_x) * size_t(layout.grid_z));
+		sim.write_active_mask(species, mask.data());
+		for (uint32_t c = 0; c < sim.get_chunk_count(); ++c) {
+			if (layout.chunks[c].species == species) {
+				CHECK((mask[sim.get_chunk_cell(c)] != 0) == sim.is_chunk_active(c));
+			}
+		}
+	}
+	uint32_t hidden = 0;
+	for (uint32_t t = 0; t < sim.get_tile_count(); ++t) {
+		bool some_static = false;
+		for (uint32_t k = 0; k < sim.get_tile(t).count; ++k) {
+			some_static = some_static || !sim.is_chunk_active(sim.get_tile_chunk(t, k));
+		}
+		CHECK(sim.is_tile_drawn(t) == some_static);
+		hidden += sim.is_tile_drawn(t) ? 0 : 1;
+	}
+	CHECK(hidden > 0); // the tiles around the observer are all near: nothing left for them to draw
+	const uint32_t settled = sim.get_mask_version();
+	sim.update(0.016f);
+	CHECK(sim.get_mask_version() == settled); // nothing turned
+}
+
+TEST_CASE("a field too large for the chunk grid gets larger chunks") {
+	FieldSimulation sim;
+	MapError error;
+	std::string text = "2000 40\n";
+	for (int r = 0; r < 40; ++r) {
+		text += "*" + std::string(1999, '.') + "\n";
+	}
+	REQUIRE(sim.load_map(text, U"", "wide", MapLimits{}, error));
+	LayoutParams params;
+	params.cell_size = 1.0f; // 2 000 × 40 m
+	params.chunk_size = 1.0f; // 80 000 cells: too many
+	sim.set_layout_params(params);
+	const FieldLayout &layout = sim.get_layout();
+	CHECK(int64_t(layout.grid_x) * layout.grid_z <= FieldLayout::MAX_CHUNK_CELLS);
+	CHECK(layout.chunk_size == 2.0f); // 1 000 × 20 cells
+	CHECK(sim.get_plant_count() == 40);
 }
 
 TEST_CASE("a plant's own LOD matches its distance outside the hysteresis bands") {
@@ -646,8 +764,8 @@ TEST_CASE("colour variety: plants are white without it; with it, seeded brightne
 	sim.write_chunk_instances(0, impostors.data());
 	for (uint32_t k = 0; k < sim.get_layout().chunks[0].count; ++k) {
 		const Plant &plant = sim.get_layout().plants[sim.get_layout().chunk_plants[k]];
-		const glm::vec3 colour = read_far_instance(impostors.data() + size_t(k) * FAR_FLOATS_PER_INSTANCE).colour;
-		CHECK(glm::distance(colour, glm::vec3(plant.color(params.varieties[0]))) <= 0.5f / 64.0f * std::sqrt(3.0f) + 1e-6f);
+		const glm::vec3 colour = tone_colour(read_far_instance(impostors.data() + size_t(k) * FAR_FLOATS_PER_INSTANCE).tone);
+		CHECK(glm::distance(colour, glm::vec3(plant.color(params.varieties[0]))) < 0.02f);
 	}
 }
 

@@ -8,9 +8,9 @@
 
 namespace sunflower {
 
-glm::vec4 Plant::color(const PlantVariety &p_variety) const {
+glm::vec2 Plant::tone(const PlantVariety &p_variety) const {
 	if (p_variety.brightness <= 0.0f && p_variety.tint <= 0.0f) {
-		return glm::vec4(1.0f);
+		return glm::vec2(1.0f, 0.0f);
 	}
 	uint32_t x_bits = 0;
 	uint32_t z_bits = 0;
@@ -19,7 +19,11 @@ glm::vec4 Plant::color(const PlantVariety &p_variety) const {
 	const uint64_t hash = hash_plant(uint64_t(x_bits) << 32 | z_bits, 0, STREAM_COLOR);
 	const float brightness = 1.0f + (unit_float(hash) * 2.0f - 1.0f) * p_variety.brightness;
 	const float warmth = (unit_float(hash << 24) * 2.0f - 1.0f) * p_variety.tint;
-	return glm::vec4(brightness * (1.0f + warmth), brightness, brightness * (1.0f - warmth), 1.0f);
+	return glm::vec2(brightness, warmth);
+}
+
+glm::vec4 Plant::color(const PlantVariety &p_variety) const {
+	return tone_colour(tone(p_variety));
 }
 
 namespace {
@@ -70,9 +74,13 @@ void build_layout(const FieldMap &p_map, const LayoutParams &p_params, const Gro
 	r_layout.plants.reserve(static_cast<size_t>(p_map.plant_count));
 	r_layout.size = glm::vec2(float(p_map.columns), float(p_map.rows)) * p_params.cell_size;
 
-	const float chunk_size = std::max(p_params.chunk_size, p_params.cell_size);
-	const int chunks_x = std::max(1, static_cast<int>(std::ceil(r_layout.size.x / chunk_size)));
-	const int chunks_z = std::max(1, static_cast<int>(std::ceil(r_layout.size.y / chunk_size)));
+	float chunk_size = std::max(p_params.chunk_size, p_params.cell_size);
+	const auto chunks_along = [&](float p_metres) { return std::max(1, static_cast<int>(std::ceil(p_metres / chunk_size))); };
+	while (int64_t(chunks_along(r_layout.size.x)) * chunks_along(r_layout.size.y) > FieldLayout::MAX_CHUNK_CELLS) {
+		chunk_size *= 2.0f;
+	}
+	const int chunks_x = chunks_along(r_layout.size.x);
+	const int chunks_z = chunks_along(r_layout.size.y);
 	const size_t cells = static_cast<size_t>(chunks_x) * static_cast<size_t>(chunks_z);
 	const uint32_t species_count = uint32_t(std::clamp(p_map.species_count, 1, FieldMap::MAX_SPECIES));
 	// Plants per (grid cell, species): the chunks to be.

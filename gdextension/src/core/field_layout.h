@@ -60,10 +60,18 @@ struct Plant {
 	glm::vec2 lean{ 0.0f };
 
 	glm::vec3 root() const { return glm::vec3(position.x, ground, position.y); }
-	// The instance colour it is drawn with under p_variety: white, or a seeded brightness and tint
-	// (drawn from its position, which its cell's seeded jitter makes its own).
+	// Its tone under p_variety: brightness (1: as modelled) and warmth (−1 to 1; 0: as modelled),
+	// seeded from its position, which its cell's seeded jitter makes its own.
+	glm::vec2 tone(const PlantVariety &p_variety) const;
+	// The instance colour it is drawn with under p_variety: tone_colour(tone(p_variety)).
 	glm::vec4 color(const PlantVariety &p_variety) const;
 };
+
+// A tone's colour (brightness, warmth) → (b·(1 + w), b, b·(1 − w)). The impostor shader mirrors it
+// for the static chunks' records (shaders/impostor.gdshader: keep them in step).
+inline glm::vec4 tone_colour(const glm::vec2 &p_tone) {
+	return glm::vec4(p_tone.x * (1.0f + p_tone.y), p_tone.x, p_tone.x * (1.0f - p_tone.y), 1.0f);
+}
 
 struct Chunk {
 	glm::vec2 min{ 0.0f }; // x, z bounds of its plants' roots, metres
@@ -85,6 +93,8 @@ struct FieldLayout {
 	// The square grid the chunks come from: cell g = z·grid_x + x holds chunks [grid_chunks[g],
 	// grid_chunks[g + 1]) (none where no plant stands). Lets per-frame work visit only the chunks near
 	// a point.
+	// At most MAX_CHUNK_CELLS cells: a larger field's chunks are made larger (by doubling) to fit.
+	static constexpr int MAX_CHUNK_CELLS = 65536;
 	int grid_x = 0;
 	int grid_z = 0;
 	float chunk_size = 16.0f;

@@ -134,7 +134,93 @@ void FieldSimulation::_rebuild() {
 	for (BucketSet &set : _task_buckets) {
 		set.assign(_buckets.size(), InstanceBuffer{});
 	}
+	_build_tiles();
+	++_mask_version;
 	_lod_due = true;
+}
+
+void FieldSimulation::_build_tiles() {
+	const size_t chunk_count = _layout.chunks.size();
+	_chunk_cells.assign(chunk_count, 0);
+	for (size_t cell = 0; cell + 1 < _layout.grid_chunks.size(); ++cell) {
+		for (uint32_t c = _layout.grid_chunks[cell]; c < _layout.grid_chunks[cell + 1]; ++c) {
+			_chunk_cells[c] = static_cast<uint32_t>(cell);
+		}
+	}
+	// Each chunk's tile key, then the chunks grouped by key (in chunk order within a tile).
+	const uint64_t tiles_x = uint64_t((_layout.grid_x + TILE_CHUNKS - 1) / TILE_CHUNKS);
+	std::vector<std::pair<uint64_t, uint32_t>> keyed(chunk_count);
+	for (uint32_t c = 0; c < chunk_count; ++c) {
+		const uint64_t x = _chunk_cells[c] % uint32_t(_layout.grid_x) / TILE_CHUNKS;
+		const uint64_t z = _chunk_cells[c] / uint32_t(_layout.grid_x) / TILE_CHUNKS;
+		keyed[c] = { (z * tiles_x + x) * FieldMap::MAX_SPECIES + _layout.chunks[c].species, c };
+	}
+	std::sort(keyed.begin(), keyed.end());
+	_tiles.clear();
+	_tile_chunks.resize(chunk_count);
+	for (size_t i = 0; i < chunk_count; ++i) {
+		const auto &[key, chunk] = keyed[i];
+		if (_tiles.empty() || _tiles.back().key != key) {
+			Tile tile;
+			tile.first = static_cast<uint32_t>(i);
+			tile.species = _layout.chunks[chunk].species;
+			tile.key = key;
+			_tiles.push_back(tile);
+		}
+		_tile_chunks[i] = chunk;
+		++_tiles.back().count;
+		_tiles.back().plants += _layout.chunks[chunk].count;
+	}
+}
+
+ChunkBounds FieldSimulation::get_tile_bounds(uint32_t p_tile) const {
+	ChunkBounds bounds = get_chunk_bounds(get_tile_chunk(p_tile, 0));
+	for (uint32_t k = 1; k < _tiles[p_tile].count; ++k) {
+		const ChunkBounds chunk = get_chunk_bounds(get_tile_chunk(p_tile, k));
+		bounds.min = glm::min(bounds.min, chunk.min);
+		bounds.max = glm::max(bounds.max, chunk.max);
+	}
+	return bounds;
+}
+
+void FieldSimulation::write_tile_instances(uint32_t p_tile, float *r_out) const {
+	for (uint32_t k = 0; k < _tiles[p_tile].count; ++k) {
+		const uint32_t chunk = get_tile_chunk(p_tile, k);
+		write_chunk_instances(chunk, r_out);
+		r_out += size_t(_layout.chunks[chunk].count) * FAR_FLOATS_PER_INSTANCE;
+	}
+}
+
+uint64_t FieldSimulation::get_tile_signature(uint32_t p_tile) const {
+	// FNV-1a over the chunks' keys and signatures, never 0.
+	uint64_t hash = 1469598103934665603ull ^ _tiles[p_tile].count;
+	for (uint32_t k = 0; k < _tiles[p_tile].count; ++k) {
+		const uint32_t chunk = get_tile_chunk(p_tile, k);
+		for (uint64_t value : { get_chunk_key(chunk), get_chunk_signature(chunk) }) {
+			for (int byte = 0; byte < 8; ++byte) {
+				hash = (hash ^ ((value >> (8 * byte)) & 0xFFu)) * 1099511628211ull;
+			}
+		}
+	}
+	return hash == 0 ? 1 : hash;
+}
+
+bool FieldSimulation::is_tile_drawn(uint32_t p_tile) const {
+	for (uint32_t k = 0; k < _tiles[p_tile].count; ++k) {
+		if (!_chunk_active[get_tile_chunk(p_tile, k)]) {
+			return true;
+		}
+	}
+	return false;
+}
+
+void FieldSimulation::write_active_mask(uint32_t p_species, uint8_t *r_out) const {
+	std::fill_n(r_out, size_t(_layout.grid_x) * size_t(_layout.grid_z), uint8_t(0));
+	for (uint32_t c : _active_chunks) {
+		if (_layout.chunks[c].species == p_species) {
+			r_out[_chunk_cells[c]] = 255;
+		}
+	}
 }
 
 void FieldSimulation::set_worker_threads(uint32_t p_threads) {
@@ -301,6 +387,7 @@ void FieldSimulation::update(float p_delta) {
 		_lod_due = false; // _select_lods() sets it again when chunks are left for the next update
 		_since_lod = 0.0f;
 		_select_lods();
+		_mask_version += _changed_chunks.empty() ? 0 : 1;
 	} else {
 		_changed_chunks.clear();
 	}
@@ -509,7 +596,8 @@ void FieldSimulation::write_chunk_instances(uint32_t p_chunk, float *r_out) cons
 		instance.yaw = plant.yaw;
 		instance.scale = part_scale * plant.scale;
 		instance.lean = plant.lean;
-		instance.colour = glm::vec3(plant.color(variety));
+		instance.tone = plant.tone(variety);
+		instance.cell = _chunk_cells[p_chunk];
 		write_far_instance(r_out + size_t(k) * FAR_FLOATS_PER_INSTANCE, instance);
 	}
 }
@@ -584,6 +672,7 @@ size_t FieldSimulation::get_memory_bytes() const {
 	bytes += _layout.chunk_plants.capacity() * sizeof(uint32_t);
 	bytes += _plant_lod.capacity() + _plant_wind.capacity() * sizeof(PlantWind);
 	bytes += _chunk_active.capacity() + _visit_mark.capacity() * sizeof(uint32_t);
+	bytes += (_chunk_cells.capacity() + _tile_chunks.capacity()) * sizeof(uint32_t) + _tiles.capacity() * sizeof(Tile);
 	bytes += (_active_chunks.capacity() + _previous_active.capacity() + _changed_chunks.capacity()) * sizeof(uint32_t);
 	bytes += _layout.grid_chunks.capacity() * sizeof(uint32_t) + _layout.object_ground.capacity() * sizeof(float);
 	bytes += (_ground.grid.heights.capacity() + _ground.heights.capacity() + _ground.normals.capacity()) * sizeof(float);

@@ -7,10 +7,12 @@
 // - the field is cut into square chunks. A chunk near the observer is *active*: each of its plants
 //   has its own LOD (with hysteresis) and is written, swaying, into the dynamic buckets
 //   (mesh level × part, sprite, billboard), frustum-culled;
-// - every other chunk is *static*: its plants are in the chunk's own impostor buffer, written once
-//   (sprites and billboards are one multi-view impostor). Counts report a static plant as sprite or
-//   billboard by the distance from the camera to the chunk's bounding-box centre. An active chunk's
-//   static buffer is hidden.
+// - every other chunk is *static*: its plants are drawn from the impostor buffer of its *tile*, a
+//   square of TILE_CHUNKS × TILE_CHUNKS grid cells of one species, written once (sprites and
+//   billboards are one multi-view impostor; one MultiMesh draws a whole tile). Every plant of a
+//   tile is in its buffer; the impostor shader skips those whose chunk is active, as the active
+//   mask (one byte per grid cell and species) says. Counts report a static plant as sprite or
+//   billboard by the distance from the camera to its chunk's bounding-box centre.
 #include "field_layout.h"
 #include "field_map.h"
 #include "frustum.h"
@@ -159,6 +161,36 @@ public:
 	// The static impostor instances of a chunk's plants, compact (FarInstance): count ×
 	// FAR_FLOATS_PER_INSTANCE floats into r_out.
 	void write_chunk_instances(uint32_t p_chunk, float *r_out) const;
+	// The grid cell a chunk lies in (FieldLayout: z·grid_x + x).
+	uint32_t get_chunk_cell(uint32_t p_chunk) const { return _chunk_cells[p_chunk]; }
+
+	// Far tiles: the chunks of one species in a square of TILE_CHUNKS × TILE_CHUNKS grid cells, drawn
+	// from one buffer. Tiles are ordered by where they lie, then species.
+	static constexpr int TILE_CHUNKS = 4;
+	struct Tile {
+		uint32_t first = 0; // range in the tile chunk list (get_tile_chunk)
+		uint32_t count = 0;
+		uint32_t plants = 0;
+		uint32_t species = 0;
+		uint64_t key = 0; // where it lies: tile cell × MAX_SPECIES + species (the same in any layout of the map's size)
+	};
+	uint32_t get_tile_count() const { return static_cast<uint32_t>(_tiles.size()); }
+	const Tile &get_tile(uint32_t p_tile) const { return _tiles[p_tile]; }
+	// The k-th chunk of a tile (k < Tile::count), in chunk order.
+	uint32_t get_tile_chunk(uint32_t p_tile, uint32_t p_k) const { return _tile_chunks[_tiles[p_tile].first + p_k]; }
+	ChunkBounds get_tile_bounds(uint32_t p_tile) const;
+	// The tile's plants' records, chunk after chunk: Tile::plants × FAR_FLOATS_PER_INSTANCE floats.
+	void write_tile_instances(uint32_t p_tile, float *r_out) const;
+	// Two tiles with equal keys and signatures draw the same (see get_chunk_signature).
+	uint64_t get_tile_signature(uint32_t p_tile) const;
+	// Which chunks of p_species are active: grid_x × grid_z bytes into r_out, 255 for an active
+	// chunk's cell, else 0 (the impostor shader's mask).
+	void write_active_mask(uint32_t p_species, uint8_t *r_out) const;
+	// Changes whenever a chunk turns active or static, or the field is rebuilt.
+	uint32_t get_mask_version() const { return _mask_version; }
+	// Whether a tile has a plant to draw now: false when all its chunks are active (its node is then
+	// hidden, so that it costs no draw call).
+	bool is_tile_drawn(uint32_t p_tile) const;
 	// Where a chunk lies: grid cell × MAX_SPECIES + species (the same in any layout of the map's size).
 	uint64_t get_chunk_key(uint32_t p_chunk) const;
 	// A hash of a chunk's static instance data (what its impostor buffers hold): two chunks with equal
@@ -194,6 +226,7 @@ private:
 	void _update_pushes(float p_delta);
 	glm::vec2 _plant_bend(uint32_t p_plant, const Plant &p_plant_data, bool p_moving) const;
 	void _rebuild();
+	void _build_tiles();
 	void _select_lods();
 	void _select_chunk_lods(uint32_t p_chunk, bool p_forced, float p_enter, float p_leave);
 	uint8_t _static_chunk_lod(uint32_t p_chunk) const;
@@ -221,6 +254,10 @@ private:
 	std::vector<PlantWind> _plant_wind;
 	std::vector<uint8_t> _chunk_active;
 	std::vector<uint64_t> _chunk_signatures; // 0: not computed
+	std::vector<uint32_t> _chunk_cells;
+	std::vector<Tile> _tiles;
+	std::vector<uint32_t> _tile_chunks;
+	uint32_t _mask_version = 0;
 	std::vector<uint32_t> _active_chunks;
 	std::vector<uint32_t> _previous_active;
 	std::vector<uint32_t> _changed_chunks;

@@ -36,15 +36,18 @@ inline void write_instance(float *r_out, const glm::mat3 &p_basis, const glm::ve
 	r_out[15] = p_color.w;
 }
 
-// A static chunk's impostor, compact: 8 floats (32 B on the GPU), uploaded as the rows of Godot's
+// A static plant's impostor, compact: 8 floats (32 B on the GPU), uploaded as the rows of Godot's
 // MULTIMESH_TRANSFORM_2D instances without colours. The engine hands the impostor shader the field
 // node's transform times the matrix they make; the shader undoes the node's transform and reads
 // the record back (shaders/impostor.gdshader, `packed_instances`: keep the two in step):
-//   0: scale·cos(yaw)   1: scale·sin(yaw)   2: root z   3: root x
-//   4: lean x, lean z   5: colour r, g      6: colour b 7: root y
-// Floats 4 to 6 hold 8-bit steps, two as low + 256·high: lean in 1/127 steps of [−1, 1] (0 exact),
-// colour in 1/64 steps of [0, 3.98] (1 exact). Below 65 536 the steps survive the node's transform
-// and its inverse (float rounding there is < 0.02 of a step).
+//   0: scale·cos(yaw)   1: scale·sin(yaw)   2: root z       3: root x
+//   4: lean x, lean z   5: tone             6: chunk cell   7: root y
+// Float 6 is the grid cell of the plant's chunk (FieldLayout: z·grid_x + x), which tells the shader
+// whether the dynamic buckets draw the plant now. Floats 4 and 5 hold two 8-bit steps each, as
+// low + 256·high: the lean in 1/127 steps of [−1, 1] (0 exact); the tone's brightness in 1/128
+// steps of [0, 2) (1 exact) and its warmth in 1/127 steps of [−1, 1] (0 exact). Below 65 536 these
+// whole numbers survive the node's transform and its inverse (float rounding there stays under
+// 0.02).
 constexpr uint32_t FAR_FLOATS_PER_INSTANCE = 8;
 
 struct FarInstance {
@@ -52,15 +55,16 @@ struct FarInstance {
 	float yaw = 0.0f;
 	float scale = 1.0f;
 	glm::vec2 lean{ 0.0f }; // the up axis' horizontal part (x, z), as Plant::lean
-	glm::vec3 colour{ 1.0f };
+	glm::vec2 tone{ 1.0f, 0.0f }; // brightness, warmth, as Plant::tone
+	uint32_t cell = 0; // < 65 536 (FieldLayout::MAX_CHUNK_CELLS)
 };
 
 namespace far_steps {
-inline float lean(float p_value) {
+inline float signed_unit(float p_value) {
 	return std::round(std::clamp(p_value, -1.0f, 1.0f) * 127.0f) + 127.0f;
 }
-inline float colour(float p_value) {
-	return std::round(std::clamp(p_value, 0.0f, 255.0f / 64.0f) * 64.0f);
+inline float brightness(float p_value) {
+	return std::round(std::clamp(p_value, 0.0f, 255.0f / 128.0f) * 128.0f);
 }
 } // namespace far_steps
 
@@ -69,13 +73,13 @@ inline void write_far_instance(float *r_out, const FarInstance &p_instance) {
 	r_out[1] = p_instance.scale * std::sin(p_instance.yaw);
 	r_out[2] = p_instance.root.z;
 	r_out[3] = p_instance.root.x;
-	r_out[4] = far_steps::lean(p_instance.lean.x) + 256.0f * far_steps::lean(p_instance.lean.y);
-	r_out[5] = far_steps::colour(p_instance.colour.x) + 256.0f * far_steps::colour(p_instance.colour.y);
-	r_out[6] = far_steps::colour(p_instance.colour.z);
+	r_out[4] = far_steps::signed_unit(p_instance.lean.x) + 256.0f * far_steps::signed_unit(p_instance.lean.y);
+	r_out[5] = far_steps::brightness(p_instance.tone.x) + 256.0f * far_steps::signed_unit(p_instance.tone.y);
+	r_out[6] = float(std::min(p_instance.cell, 65535u));
 	r_out[7] = p_instance.root.y;
 }
 
-// What the shader reads back (the lean and colour in their steps).
+// What the shader reads back (the lean and tone in their steps).
 inline FarInstance read_far_instance(const float *p_in) {
 	const auto low = [](float p_value) { return float(uint32_t(std::lround(p_value)) & 255u); };
 	const auto high = [](float p_value) { return float(uint32_t(std::lround(p_value)) >> 8u); };
@@ -84,7 +88,8 @@ inline FarInstance read_far_instance(const float *p_in) {
 	instance.scale = std::sqrt(p_in[0] * p_in[0] + p_in[1] * p_in[1]);
 	instance.yaw = std::atan2(p_in[1], p_in[0]);
 	instance.lean = (glm::vec2(low(p_in[4]), high(p_in[4])) - 127.0f) / 127.0f;
-	instance.colour = glm::vec3(low(p_in[5]), high(p_in[5]), low(p_in[6])) / 64.0f;
+	instance.tone = glm::vec2(low(p_in[5]) / 128.0f, (high(p_in[5]) - 127.0f) / 127.0f);
+	instance.cell = uint32_t(std::lround(p_in[6]));
 	return instance;
 }
 

@@ -74,10 +74,10 @@ func _run() -> void:
 		var stats: Dictionary = field.get_build_stats()
 		if was_building and not field.is_building():
 			builds += 1
-			made += stats.chunks_made
-			kept += stats.chunks_kept
+			made += stats.tiles_made
+			kept += stats.tiles_kept
 	frame_ms.sort()
-	print("| stroke begin ms | frame median ms | frame max ms | previews built | chunks made | chunks kept |")
+	print("| stroke begin ms | frame median ms | frame max ms | previews built | tiles made | tiles kept |")
 	print("|---|---|---|---|---|---|")
 	print(
 		(

@@ -69,7 +69,7 @@ func test_a_large_map_builds_over_frames_while_the_old_field_is_drawn() -> void:
 	check(frames_seen >= 3, "the build spread over several frames (%d)" % frames_seen)
 	check_eq(built, [360000] as Array[int], "one field_built, with the new plant count")
 	check_eq(field.get_plant_count(), 360000, "the new field is counted")
-	var expected_nodes: int = SunflowerSimulation.BUCKET_COUNT + field.get_simulation().get_chunk_count()
+	var expected_nodes: int = SunflowerSimulation.BUCKET_COUNT + field.get_simulation().get_tile_count()
 	check_eq(field.get_child_count(true) - field.get_child_count(false), expected_nodes, "only the new nodes remain")
 	check(progress.size() >= 3, "progress reported while building (%d times)" % progress.size())
 	var monotonic: bool = true
@@ -155,19 +155,19 @@ func test_parameter_changes_during_a_build_reach_the_new_field() -> void:
 		await frames(1)
 	check(
 		field.is_building(),
-		"some chunk nodes are made, not all: %s %s" % [field.get_build_progress(), field.get_build_stats()]
+		"some tile nodes are made, not all: %s %s" % [field.get_build_progress(), field.get_build_stats()]
 	)
 	field.max_draw_distance = 123.0
 	field.lod_distances = PackedFloat32Array([5.0, 9.0, 18.0, 30.0])
 	field.wind_power = 4.0
 	await frames_until(func() -> bool: return not field.is_building(), 2000)
-	# Each chunk ends once its nearest plant may be past the draw distance (the engine measures to the
+	# Each tile ends once its nearest plant may be past the draw distance (the engine measures to the
 	# box's centre); its plants dither out one by one before that, in the impostor shader.
 	var wrong_ends: int = 0
 	var impostor_material: ShaderMaterial = null
 	for node: Node in field.get_children(true):
 		var instance: MultiMeshInstance3D = node as MultiMeshInstance3D
-		if instance and instance.name.begins_with("ChunkImpostors"):
+		if instance and instance.name.begins_with("FarTile"):
 			var end: float = 123.0 + 0.5 * instance.custom_aabb.size.length()
 			wrong_ends += (
 				0
@@ -175,8 +175,8 @@ func test_parameter_changes_during_a_build_reach_the_new_field() -> void:
 				else 1
 			)
 			impostor_material = instance.multimesh.mesh.surface_get_material(0) as ShaderMaterial
-	check_eq(wrong_ends, 0, "every chunk's range follows the draw distance set during the build")
-	if check(impostor_material != null, "chunks draw the impostor material"):
+	check_eq(wrong_ends, 0, "every tile's range follows the draw distance set during the build")
+	if check(impostor_material != null, "tiles draw the impostor material"):
 		check_eq(impostor_material.get_shader_parameter("draw_distance"), 123.0, "the plants fade out at it")
 		check_near(impostor_material.get_shader_parameter("draw_fade"), 12.3, 1e-4, "over its last tenth")
 	check_eq(field.get_simulation().get_lod_counts().size(), 5, "the new simulation answers")
@@ -190,13 +190,13 @@ func test_parameter_changes_during_a_build_reach_the_new_field() -> void:
 	check(not after.is_equal_approx(before), "the wind set during the build sways the new field")
 
 
-func test_a_small_change_of_a_large_map_makes_nodes_only_for_the_chunks_it_touched() -> void:
-	field.map = _square_map(200)  # 100 × 100 m: 7 × 7 chunks of 16 m
+func test_a_small_change_of_a_large_map_makes_nodes_only_for_the_tiles_it_touched() -> void:
+	field.map = _square_map(200)  # 100 × 100 m: 7 × 7 chunks of 16 m, 2 × 2 tiles of 4 × 4 chunks
 	field.finish_build()
-	var chunks: int = field.get_simulation().get_chunk_count()
-	check_eq(chunks, 49)
-	check_eq(field.get_build_stats().chunks_made, 49, "a new map makes every chunk")
-	# The same map with a 10 × 10-cell hole in the north-west corner: one chunk touched.
+	check_eq(field.get_simulation().get_chunk_count(), 49)
+	check_eq(field.get_simulation().get_tile_count(), 4)
+	check_eq(field.get_build_stats().tiles_made, 4, "a new map makes every tile")
+	# The same map with a 10 × 10-cell hole in the north-west corner: one tile touched.
 	var lines: PackedStringArray = field.map.text.get_string_from_utf8().split("\n")
 	for row: int in range(1, 11):
 		lines[row] = " ".repeat(10) + lines[row].substr(10)
@@ -207,12 +207,12 @@ func test_a_small_change_of_a_large_map_makes_nodes_only_for_the_chunks_it_touch
 	field.finish_build()
 	var stats: Dictionary = field.get_build_stats()
 	check_eq(field.get_plant_count(), 40000 - 100, "the hole's plants are gone")
-	check_eq(stats.chunks_made, 1, "nodes made only for the touched chunk")
-	check_eq(stats.chunks_kept, 48, "the others kept their nodes and buffers")
+	check_eq(stats.tiles_made, 1, "nodes made only for the touched tile")
+	check_eq(stats.tiles_kept, 3, "the others kept their nodes and buffers")
 	# Every plant is still in exactly one far buffer: the kept ones hold what the new field says.
 	var instances: int = 0
 	for node: Node in field.get_children(true):
-		if node.name.begins_with("ChunkImpostors"):
+		if node.name.begins_with("FarTile"):
 			var buffer: PackedFloat32Array = RenderingServer.multimesh_get_buffer(
 				(node as MultiMeshInstance3D).multimesh.get_rid()
 			)

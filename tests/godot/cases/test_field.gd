@@ -165,13 +165,17 @@ func test_every_plant_is_drawn_exactly_once_along_a_camera_path() -> void:
 			var rid: RID = node.multimesh.get_rid()
 			var visible: int = RenderingServer.multimesh_get_visible_instances(rid)
 			var instances: int = visible if visible >= 0 else RenderingServer.multimesh_get_instance_count(rid)
-			if instances == 0 or not _in_visibility_range(node, stop):
+			if instances == 0 or not node.visible or not _in_visibility_range(node, stop):
 				continue
 			if node.name.contains("Middle") or node.name.contains("Head"):
 				continue  # one part per plant: the bottom part's origin is the plant's root
 			var buffer: PackedFloat32Array = RenderingServer.multimesh_get_buffer(rid)
-			var compact: bool = node.name.begins_with("ChunkImpostors")  # 8-float records, whole plants
+			var compact: bool = node.name.begins_with("FarTile")  # 8-float records, whole plants
+			# A tile skips the plants of the chunks its material's mask marks (the near buckets draw them).
+			var mask: PackedByteArray = _mask_of(node) if compact else PackedByteArray()
 			for k: int in instances:
+				if compact and mask[roundi(buffer[k * SunflowerSimulation.FAR_FLOATS_PER_INSTANCE + 6])] != 0:
+					continue
 				var root: Vector3 = _root(buffer, k, compact)
 				var index: int = positions.get(_key(root), -1)
 				if check(index >= 0, "%s instance %d at %s is no plant" % [node.name, k, root]):
@@ -233,6 +237,16 @@ func _sum(values: PackedInt32Array) -> int:
 	for v: int in values:
 		total += v
 	return total
+
+
+## The active-chunk mask a far tile's shader reads (its material's texture), which must be the
+## simulation's for the tile's species.
+func _mask_of(node: MultiMeshInstance3D) -> PackedByteArray:
+	var material: ShaderMaterial = node.multimesh.mesh.surface_get_material(0) as ShaderMaterial
+	var texture: Texture2D = material.get_shader_parameter("active_chunks")
+	var bytes: PackedByteArray = texture.get_image().get_data() if texture else PackedByteArray()
+	check_eq(bytes, field.get_simulation().get_active_mask(0), "%s's mask is the simulation's" % node.name)
+	return bytes
 
 
 ## The root of instance [param k] of a buffer: a 3D transform's origin, or a static chunk's compact

@@ -177,7 +177,7 @@ func _lifecycle_round(killer_script: GDScript) -> void:
 	await frames(2)
 	check_eq(copy.get_plant_count(), 1103, "a duplicate builds its own field")
 	var internal: int = copy.get_child_count(true) - copy.get_child_count(false)
-	var expected: int = SunflowerSimulation.BUCKET_COUNT + copy.get_simulation().get_chunk_count()
+	var expected: int = SunflowerSimulation.BUCKET_COUNT + copy.get_simulation().get_tile_count()
 	check_eq(internal, expected, "the duplicate holds its own nodes only, not copies of the original's")
 	subject.map = null
 	await frames(1)

@@ -77,22 +77,22 @@ func test_a_legend_plant_is_a_species_with_its_own_buckets_impostors_and_counts(
 		framed.append((quad.surface_get_material(0) as ShaderMaterial).get_shader_parameter("frame_size"))
 	check_near(framed[1], frames[1], 1e-3, "the second type's impostor frame")
 	check_near(framed[0], frames[0], 1e-3, "the sunflower's impostor frame")
-	# Chunks hold one type each, with that type's impostor quads.
+	# Tiles hold one type each, with that type's impostor quads.
 	var simulation: RefCounted = field.get_simulation()
 	var types_seen: Dictionary = {}
-	for chunk: int in simulation.get_chunk_count():
-		var species: int = simulation.get_chunk_species(chunk)
+	for tile: int in simulation.get_tile_count():
+		var species: int = simulation.get_tile_species(tile)
 		types_seen[species] = true
-		var impostors: MultiMeshInstance3D = _node_named(field, "ChunkImpostors%d" % simulation.get_chunk_key(chunk))
+		var impostors: MultiMeshInstance3D = _node_named(field, "FarTile%d" % simulation.get_tile_key(tile))
 		var material: ShaderMaterial = impostors.multimesh.mesh.surface_get_material(0) as ShaderMaterial
 		check(
 			(
 				material.get_shader_parameter("packed_instances") == true
 				and is_equal_approx(material.get_shader_parameter("frame_size"), framed[species])
 			),
-			"chunk %d draws its type's impostor from compact records" % chunk
+			"tile %d draws its type's impostor from compact records" % tile
 		)
-	check_eq(types_seen.size(), 2, "chunks of both types")
+	check_eq(types_seen.size(), 2, "tiles of both types")
 	# Per-type counts add up to the field's; each type's plants are as tall as it says.
 	var by_species: Array[PackedInt32Array] = field.get_lod_counts_by_species()
 	var total: PackedInt32Array = field.get_lod_counts()
