@@ -464,6 +464,7 @@ func _write_stats() -> void:
 		"objects": _summary(PackedFloat32Array(_rendering["objects"])),
 		"primitives": _summary(PackedFloat32Array(_rendering["primitives"])),
 		"buffer_memory_bytes": _buffer_memory,
+		"baseline_chunks": get_node("NativeBaseline").get_child_count() if has_node("NativeBaseline") else 0,
 		"lod_counts_mean": mean_counts,
 		"engine": Engine.get_version_info()["string"],
 		"renderer": RenderingServer.get_current_rendering_method(),
