@@ -155,6 +155,8 @@ func update_masks() -> void:
 		if _tile_nodes[tile]:
 			_tile_nodes[tile].visible = drawn[tile] != 0
 	var grid: PackedInt32Array = simulation.get_chunk_grid()
+	if grid[0] * grid[1] == 0:
+		return  # no field laid out
 	for species: int in simulation.get_species_count():
 		var image: Image = Image.create_from_data(
 			grid[0], grid[1], false, Image.FORMAT_R8, simulation.get_active_mask(species)
