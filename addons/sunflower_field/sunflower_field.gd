@@ -96,7 +96,9 @@ const PartMeshes: GDScript = preload("part_meshes.gd")
 		if value != max_plants:
 			max_plants = value
 			_queue_rebuild()
-## Side of the square chunks the far representations are grouped in.
+## Side of the square chunks the field is cut into: a chunk's plants turn near (each with its own
+## level of detail and sway) or far together; far plants are drawn in tiles of 4 × 4 chunks, one
+## draw call each. (A field of more than 65 536 chunks gets larger ones.)
 @export_range(2.0, 256.0, 1.0, "or_greater", "suffix:m") var chunk_size: float = 16.0:
 	set(value):
 		value = Native.accept("SunflowerField.chunk_size", value, chunk_size)
