@@ -118,12 +118,16 @@ func _ready() -> void:
 	load_map(_map_path)
 	while _field.is_building():  # a large map builds in the background; the HUD shows its progress
 		await get_tree().process_frame
-	await get_tree().process_frame  # the field's first frame: its buffers are allocated
-	_buffer_memory["field"] = RenderingServer.get_rendering_info(RenderingServer.RENDERING_INFO_BUFFER_MEM_USED)
+	if not _stats_path.is_empty():
+		await get_tree().process_frame  # the field's first frame: its buffers are allocated
+		_buffer_memory["field"] = RenderingServer.get_rendering_info(RenderingServer.RENDERING_INFO_BUFFER_MEM_USED)
 	if _baseline == "native":
 		_build_native_baseline()
-		await get_tree().process_frame
-		_buffer_memory["baseline"] = RenderingServer.get_rendering_info(RenderingServer.RENDERING_INFO_BUFFER_MEM_USED)
+		if not _stats_path.is_empty():
+			await get_tree().process_frame
+			_buffer_memory["baseline"] = RenderingServer.get_rendering_info(
+				RenderingServer.RENDERING_INFO_BUFFER_MEM_USED
+			)
 	_build_ms = (Time.get_ticks_usec() - build_start) / 1000.0
 	print("demo: %s built in %.0f ms; %s" % [_map_path, _build_ms, _field.get_build_stats()])
 	for argument: String in parts:
