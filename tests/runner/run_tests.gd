@@ -87,6 +87,7 @@ func _run() -> void:
 			case.log = _log
 			_log.take()
 			_log.take_warnings()
+			var start: int = Time.get_ticks_msec()
 			case.before_each()
 			await case.call(name)
 			case.after_each()
@@ -97,12 +98,13 @@ func _run() -> void:
 					allowed = allowed or error.contains(fragment)
 				if not allowed:
 					case.failures.append("unexpected engine error: " + error)
+			var took: String = "(%.1f s)" % ((Time.get_ticks_msec() - start) / 1000.0)  # where the suite's time goes
 			if case.failures.is_empty():
 				passed += 1
-				print("ok   %s.%s" % [file.get_basename(), name])
+				print("ok   %s.%s %s" % [file.get_basename(), name, took])
 			else:
 				failed += 1
-				print("FAIL %s.%s" % [file.get_basename(), name])
+				print("FAIL %s.%s %s" % [file.get_basename(), name, took])
 				for failure: String in case.failures:
 					print("     " + failure)
 	print("godot: %d passed, %d failed" % [passed, failed])
