@@ -139,7 +139,6 @@ func finish(species_meshes: Array, legend: Dictionary, cell_size: float, sway_ma
 		if str(node.name).begins_with("@"):
 			node.name = _tile_node_name(tile)
 	_previous = null  # its remaining nodes go with it
-	update_masks()
 
 
 ## Tells the tiles which chunks the near buckets draw now (after the simulation's update): one mask
@@ -297,9 +296,9 @@ static func _set_range(node: MultiMeshInstance3D, max_draw_distance: float) -> v
 
 func _field_aabb() -> AABB:
 	var box: AABB = AABB()
-	for chunk: int in simulation.get_chunk_count():
-		var chunk_box: AABB = simulation.get_chunk_aabb(chunk)
-		box = chunk_box if chunk == 0 else box.merge(chunk_box)
+	for tile: int in simulation.get_tile_count():  # the tiles' boxes hold the chunks'
+		var tile_box: AABB = simulation.get_tile_aabb(tile)
+		box = tile_box if tile == 0 else box.merge(tile_box)
 	return box
 
 

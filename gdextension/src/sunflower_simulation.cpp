@@ -60,12 +60,10 @@ void SunflowerSimulation::bind_methods() {
 	gdx::bind_method(CLASS, "get_tile_key", &SunflowerSimulation::get_tile_key, { "tile" });
 	gdx::bind_method(CLASS, "get_tile_signature", &SunflowerSimulation::get_tile_signature, { "tile" });
 	gdx::bind_method(CLASS, "get_tile_species", &SunflowerSimulation::get_tile_species, { "tile" });
-	gdx::bind_method(CLASS, "get_tile_plant_count", &SunflowerSimulation::get_tile_plant_count, { "tile" });
 	gdx::bind_method(CLASS, "get_active_mask", &SunflowerSimulation::get_active_mask, { "species" });
 	gdx::bind_method(CLASS, "get_mask_version", &SunflowerSimulation::get_mask_version);
 	gdx::bind_method(CLASS, "get_tiles_drawn", &SunflowerSimulation::get_tiles_drawn);
 	gdx::bind_method(CLASS, "get_chunk_grid", &SunflowerSimulation::get_chunk_grid);
-	gdx::bind_method(CLASS, "get_chunk_cell", &SunflowerSimulation::get_chunk_cell, { "chunk" });
 	gdx::bind_method(CLASS, "get_chunk_key", &SunflowerSimulation::get_chunk_key, { "chunk" });
 	gdx::bind_method(CLASS, "get_chunk_signature", &SunflowerSimulation::get_chunk_signature, { "chunk" });
 	gdx::bind_method(CLASS, "compute_chunk_signatures", &SunflowerSimulation::compute_chunk_signatures);
@@ -423,10 +421,6 @@ int64_t SunflowerSimulation::get_tile_species(int64_t p_tile) const {
 	return _is_tile(p_tile) ? int64_t(_sim.get_tile(uint32_t(p_tile)).species) : -1;
 }
 
-int64_t SunflowerSimulation::get_tile_plant_count(int64_t p_tile) const {
-	return _is_tile(p_tile) ? int64_t(_sim.get_tile(uint32_t(p_tile)).plants) : 0;
-}
-
 gdx::PackedByteArray SunflowerSimulation::get_active_mask(int64_t p_species) const {
 	gdx::PackedByteArray out;
 	if (!_is_species(p_species)) {
@@ -457,10 +451,6 @@ gdx::PackedInt32Array SunflowerSimulation::get_chunk_grid() const {
 	out.data()[0] = _sim.get_layout().grid_x;
 	out.data()[1] = _sim.get_layout().grid_z;
 	return out;
-}
-
-int64_t SunflowerSimulation::get_chunk_cell(int64_t p_chunk) const {
-	return _is_chunk(p_chunk) ? int64_t(_sim.get_chunk_cell(uint32_t(p_chunk))) : -1;
 }
 
 int64_t SunflowerSimulation::get_chunk_key(int64_t p_chunk) const {

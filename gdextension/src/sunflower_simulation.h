@@ -60,14 +60,12 @@ public:
 	int64_t get_tile_key(int64_t p_tile) const;
 	int64_t get_tile_signature(int64_t p_tile) const;
 	int64_t get_tile_species(int64_t p_tile) const;
-	int64_t get_tile_plant_count(int64_t p_tile) const;
 	gdx::PackedByteArray get_active_mask(int64_t p_species) const;
 	gdx::PackedByteArray get_tiles_drawn() const;
 	int64_t get_mask_version() const;
 	gdx::PackedInt32Array get_chunk_grid() const;
 	int64_t get_chunk_key(int64_t p_chunk) const;
 	int64_t get_chunk_signature(int64_t p_chunk) const;
-	int64_t get_chunk_cell(int64_t p_chunk) const;
 	void compute_chunk_signatures();
 	void release_multimeshes();
 	int64_t get_chunk_count() const;

@@ -603,10 +603,7 @@ void FieldSimulation::write_chunk_instances(uint32_t p_chunk, float *r_out) cons
 }
 
 uint64_t FieldSimulation::get_chunk_key(uint32_t p_chunk) const {
-	const Chunk &chunk = _layout.chunks[p_chunk];
-	const glm::vec2 centre = (chunk.min + chunk.max) * 0.5f;
-	const GridRange cell = _grid_range(centre, 0.0f);
-	return (uint64_t(cell.z0) * uint64_t(_layout.grid_x) + uint64_t(cell.x0)) * FieldMap::MAX_SPECIES + chunk.species;
+	return uint64_t(_chunk_cells[p_chunk]) * FieldMap::MAX_SPECIES + _layout.chunks[p_chunk].species;
 }
 
 uint64_t FieldSimulation::get_chunk_signature(uint32_t p_chunk) const {

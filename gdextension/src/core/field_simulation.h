@@ -156,8 +156,6 @@ public:
 	uint32_t get_chunk_count() const { return static_cast<uint32_t>(_layout.chunks.size()); }
 	ChunkBounds get_chunk_bounds(uint32_t p_chunk) const;
 	bool is_chunk_active(uint32_t p_chunk) const { return _chunk_active[p_chunk] != 0; }
-	// Chunks whose active flag changed in the last update (their static buffers must be shown/hidden).
-	const std::vector<uint32_t> &get_changed_chunks() const { return _changed_chunks; }
 	// The static impostor instances of a chunk's plants, compact (FarInstance): count ×
 	// FAR_FLOATS_PER_INSTANCE floats into r_out.
 	void write_chunk_instances(uint32_t p_chunk, float *r_out) const;
