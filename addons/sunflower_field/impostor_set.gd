@@ -51,6 +51,29 @@ func set_texture(kind: String, texture: Texture2D) -> void:
 			)
 		)
 	_set_both(parameter, texture)
+	if kind == "views":
+		_set_both("view_bounds", view_bounds(texture, FieldPlant.ATLAS_VIEWS))
+
+
+## Where each view of the atlas [param texture] ([param views] squares across and down) has
+## anything drawn: per square, in rows, its non-transparent pixels' rectangle as shares of the square
+## (x, y, end x, end y). Empty (the shader then draws whole squares) when the texture has no image.
+static func view_bounds(texture: Texture2D, views: Vector2i) -> PackedVector4Array:
+	var bounds: PackedVector4Array = []
+	var image: Image = texture.get_image() if texture else null
+	if image == null or image.is_empty():
+		return bounds
+	if image.is_compressed():
+		image.decompress()
+	image.clear_mipmaps()
+	var square: Vector2i = image.get_size() / views
+	for row: int in views.y:
+		for column: int in views.x:
+			var used: Rect2i = image.get_region(Rect2i(Vector2i(column, row) * square, square)).get_used_rect()
+			var start: Vector2 = Vector2(used.position) / Vector2(square)
+			var end: Vector2 = Vector2(used.end) / Vector2(square)
+			bounds.append(Vector4(start.x, start.y, end.x, end.y))
+	return bounds
 
 
 ## Sets a shader parameter of the impostor material ([code]alpha_scissor[/code],

@@ -1,9 +1,11 @@
 extends TestCase
 ## Plant types (FieldPlant): the built-in sunflower by default, shared unchanged; a field's own plant
 ## through set_part_mesh and the old properties; a plant's form (part lengths, height) and variety
-## (size and yaw ranges) in the plants drawn; a shared plant's change rebuilds every field using it.
+## (size and yaw ranges) in the plants drawn; a shared plant's change rebuilds every field using it;
+## the impostor quads cut to what the plant's views show.
 
 const DEMO_MAP: SunflowerFieldMap = preload("res://fields/demo.field")
+const ImpostorSetScript: GDScript = preload("res://addons/sunflower_field/impostor_set.gd")
 
 var fields: Array[SunflowerField] = []
 
@@ -151,3 +153,33 @@ func test_changing_a_shared_plant_rebuilds_every_field_that_grows_it() -> void:
 	check(_drawn_mesh(first, 2, 0) == box and _drawn_mesh(second, 2, 0) == box, "a mesh change shows in both")
 	check(not first.is_building(), "a mesh change needs no rebuild")
 	take_warnings()
+
+
+func test_the_impostor_quad_covers_only_what_its_views_show() -> void:
+	# Two 16-pixel squares: the first draws pixels (2..5, 4..15), the second nothing.
+	var image: Image = Image.create_empty(32, 16, false, Image.FORMAT_RGBA8)
+	image.fill_rect(Rect2i(2, 4, 4, 12), Color(0.2, 0.8, 0.1, 0.5))
+	var bounds: PackedVector4Array = ImpostorSetScript.view_bounds(
+		ImageTexture.create_from_image(image), Vector2i(2, 1)
+	)
+	check_eq(bounds.size(), 2, "a rectangle per view")
+	check(
+		bounds[0].is_equal_approx(Vector4(2.0, 4.0, 6.0, 16.0) / 16.0), "the drawn pixels' rectangle (%s)" % bounds[0]
+	)
+	check(bounds[1].z <= bounds[1].x, "an empty view has an empty rectangle (%s)" % bounds[1])
+	check(ImpostorSetScript.view_bounds(null, Vector2i(2, 1)).is_empty(), "no texture: no rectangles")
+	# The built-in sunflower's views fill about a quarter of their squares: its impostors' quads are
+	# cut to that, for the near buckets' material and the far tiles' alike.
+	var field: SunflowerField = _field()
+	for name: String in ["Billboards", "FarTile%d" % field.get_simulation().get_tile_key(0)]:
+		var node: MultiMeshInstance3D = null
+		for child: Node in field.get_children(true):
+			if child.name == name:
+				node = child as MultiMeshInstance3D
+		var material: ShaderMaterial = node.multimesh.mesh.surface_get_material(0) as ShaderMaterial
+		var drawn: PackedVector4Array = material.get_shader_parameter("view_bounds")
+		var area: float = 0.0
+		for view: Vector4 in drawn:
+			area += (view.z - view.x) * (view.w - view.y) / drawn.size()
+		check_eq(drawn.size(), FieldPlant.ATLAS_VIEWS.x * FieldPlant.ATLAS_VIEWS.y, "%s: a rectangle per view" % name)
+		check(area > 0.1 and area < 0.4, "%s: the views fill %.2f of their squares" % [name, area])
