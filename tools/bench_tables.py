@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
-"""Prints tables 2-4 of tools/bench.sh from the demo's JSON statistics in a folder."""
+"""Prints tables 2-4 and 8 of tools/bench.sh from the demo's JSON statistics in a folder."""
 import json
+import statistics
 import os
 import sys
 
@@ -19,6 +20,12 @@ def load(folder, name):
 
 def fps(stats):
     return 1000.0 / stats["frame_ms"]["median"] if stats and stats["frame_ms"]["median"] > 0 else float("nan")
+
+
+def settled_frame_ms(stats):
+    """The median frame after the first (which compiles shaders under software rendering)."""
+    times = stats.get("frame_times_ms", [])[1:]
+    return statistics.median(times) if times else float("nan")
 
 
 def main(folder):
@@ -78,9 +85,10 @@ def main(folder):
     print("Both drawings are cut off at 100 m. Primitives: the engine counts a MultiMesh whose mesh has automatic")
     print("LODs (the native way's) as one instance of the chosen LOD; the corrected figure multiplies the count by")
     print("the native way's plants per chunk (its MultiMeshes). Ours has no such meshes: its count is exact.")
-    print("Memory: render buffers the drawing added (ours: after the field's first frame; native: after its build).\n")
-    print("| field | view | draw calls ours / native | ratio | objects ours / native | primitives ours | native as counted / corrected |")
-    print("|---|---|---|---|---|---|---|")
+    print("Memory: render buffers the drawing added (ours: after the field's first frame; native: after its build).")
+    print("Frame time: the software renderer's median frame, the first frame (shader compilation) left out.\n")
+    print("| field | view | draw calls ours / native | ratio | objects ours / native | primitives ours | native as counted / corrected | frame ms ours / native | ratio |")
+    print("|---|---|---|---|---|---|---|---|---|")
     memory = {}
     draw_calls = {}
     for field in ("demo", "large", "million", "4m"):
@@ -88,7 +96,7 @@ def main(folder):
             ours = load(folder, f"gpu_{field}_{view}_ours")
             native = load(folder, f"gpu_{field}_{view}_native")
             if not ours or not native or "draw_calls" not in ours:
-                print(f"| {field} | {view} | run failed | | | | |")
+                print(f"| {field} | {view} | run failed | | | | | | |")
                 continue
             dc = (ours["draw_calls"]["median"], native["draw_calls"]["median"])
             ob = (ours["objects"]["median"], native["objects"]["median"])
@@ -97,8 +105,9 @@ def main(folder):
             corrected = f"{pr[1] * native['plants'] / chunks:,.0f}" if chunks else "—"
             ratio = dc[0] / dc[1] if dc[1] else float("nan")
             draw_calls[(field, view)] = dc[0]
+            ms = (settled_frame_ms(ours), settled_frame_ms(native))
             print(f"| {field} ({ours['plants']:,}) | {view} | {dc[0]:.0f} / {dc[1]:.0f} | {ratio:.2f} | {ob[0]:.0f} / {ob[1]:.0f} | "
-                  f"{pr[0]:,.0f} | {pr[1]:,.0f} / {corrected} |")
+                  f"{pr[0]:,.0f} | {pr[1]:,.0f} / {corrected} | {ms[0]:.0f} / {ms[1]:.0f} | {ms[0] / ms[1]:.2f} |")
             mem = native.get("buffer_memory_bytes", {})
             if field not in memory and {"before", "field", "baseline"} <= mem.keys():
                 memory[field] = (ours["plants"], mem["field"] - mem["before"], mem["baseline"] - mem["field"])

@@ -126,10 +126,9 @@ func finish(species_meshes: Array, legend: Dictionary, cell_size: float, sway_ma
 				var node_name: String = "%sMesh%d%s" % [prefix, level + 1, PART_NAMES[part].capitalize()]
 				var node: MultiMeshInstance3D = _make_node(node_name, meshes[level * PART_NAMES.size() + part], aabb)
 				_add_dynamic(node, first + Native.mesh_bucket(level, part))
-		var sprite: MultiMeshInstance3D = _make_node(prefix + "Sprites", _impostors[species].mesh(), aabb)
-		var billboard: MultiMeshInstance3D = _make_node(prefix + "Billboards", _impostors[species].mesh(), aabb)
-		_add_dynamic(sprite, first + Native.constant(&"BUCKET_SPRITE"))
-		_add_dynamic(billboard, first + Native.constant(&"BUCKET_BILLBOARD"))
+		# The near sprites and billboards: one multi-view impostor draws both.
+		var impostors: MultiMeshInstance3D = _make_node(prefix + "Impostors", _impostors[species].mesh(), aabb)
+		_add_dynamic(impostors, first + Native.constant(&"BUCKET_IMPOSTOR"))
 	_place_objects(legend, cell_size)
 	for tile: int in _tile_nodes.size():
 		var node: MultiMeshInstance3D = _tile_nodes[tile]

@@ -95,8 +95,7 @@ void SunflowerSimulation::bind_methods() {
 	gdx::bind_integer_constant(CLASS, "", "PART_COUNT", PART_COUNT);
 	gdx::bind_integer_constant(CLASS, "", "MESH_LEVEL_COUNT", LOD_MESH_COUNT);
 	gdx::bind_integer_constant(CLASS, "", "LOD_COUNT", LOD_COUNT);
-	gdx::bind_integer_constant(CLASS, "", "BUCKET_SPRITE", BUCKET_SPRITE);
-	gdx::bind_integer_constant(CLASS, "", "BUCKET_BILLBOARD", BUCKET_BILLBOARD);
+	gdx::bind_integer_constant(CLASS, "", "BUCKET_IMPOSTOR", BUCKET_IMPOSTOR);
 	gdx::bind_integer_constant(CLASS, "", "BUCKET_COUNT", BUCKET_COUNT);
 	gdx::bind_integer_constant(CLASS, "", "MAX_SPECIES", FieldMap::MAX_SPECIES);
 	gdx::bind_integer_constant(CLASS, "", "FLOATS_PER_INSTANCE", FLOATS_PER_INSTANCE);

@@ -63,8 +63,7 @@ int64_t drawn(const FieldSimulation &p_sim) {
 		CHECK(p_sim.get_bucket(mesh_bucket(level, 2)).get_count() == bottom);
 		add(p_sim.get_bucket(mesh_bucket(level, 0)), level == LOD_MESH_3, level == LOD_MESH_3);
 	}
-	add(p_sim.get_bucket(BUCKET_SPRITE), true, false);
-	add(p_sim.get_bucket(BUCKET_BILLBOARD), false, false);
+	add(p_sim.get_bucket(BUCKET_IMPOSTOR), true, false);
 	const FieldLayout &layout = p_sim.get_layout();
 	std::vector<uint8_t> mask(size_t(layout.grid_x) * size_t(layout.grid_z));
 	p_sim.write_active_mask(0, mask.data());
@@ -386,7 +385,7 @@ TEST_CASE("a forced representation draws every plant in it, and memory per plant
 	params.force_level = LOD_BILLBOARD;
 	sim.set_lod(params);
 	sim.update(0.016f);
-	CHECK(sim.get_bucket(BUCKET_BILLBOARD).get_count() == 6000);
+	CHECK(sim.get_bucket(BUCKET_IMPOSTOR).get_count() == 6000);
 	CHECK(sim.get_bucket(mesh_bucket(1, 0)).get_count() == 0);
 	CHECK(drawn(sim) == 6000);
 	params.force_level = -1;
@@ -526,7 +525,7 @@ TEST_CASE("mesh 3 dithers into its impostor over the fade metres before the spri
 	const float middle = 0.5f * PlantShape::HEIGHT * float(param::PLANT_HEIGHT.default_value) / 3.0f;
 	auto impostor_shares = [&]() {
 		std::map<std::pair<float, float>, float> shares;
-		const InstanceBuffer &sprites = sim.get_bucket(BUCKET_SPRITE);
+		const InstanceBuffer &sprites = sim.get_bucket(BUCKET_IMPOSTOR);
 		for (uint32_t i = 0; i < sprites.get_count(); ++i) {
 			const float *instance = sprites.get_data() + size_t(i) * FLOATS_PER_INSTANCE;
 			shares[{ instance[3], instance[11] }] = instance[15];

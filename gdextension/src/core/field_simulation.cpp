@@ -438,7 +438,7 @@ void FieldSimulation::_move_chunks(size_t p_first, size_t p_last, float p_delta,
 			const bool visible = _frustum.intersects_sphere(plant.root() + glm::vec3(0.0f, mid_height * plant.scale, 0.0f), radius * plant.scale);
 			if (lod >= LOD_SPRITE) {
 				if (visible) {
-					_write_impostor(buckets[lod == LOD_SPRITE ? BUCKET_SPRITE : BUCKET_BILLBOARD].push(), plant);
+					_write_impostor(buckets[BUCKET_IMPOSTOR].push(), plant);
 				}
 				continue;
 			}
@@ -453,7 +453,7 @@ void FieldSimulation::_move_chunks(size_t p_first, size_t p_last, float p_delta,
 			// share in its colour's alpha, the mesh's in the rest (complementary screen-door patterns).
 			const float share = lod == LOD_MESH_3 && fading ? _lod.impostor_share(_plant_distance_sq(plant)) : 0.0f;
 			if (share > 0.0f) {
-				_write_impostor(buckets[BUCKET_SPRITE].push(), plant, share);
+				_write_impostor(buckets[BUCKET_IMPOSTOR].push(), plant, share);
 				if (share >= 1.0f) {
 					continue;
 				}

@@ -33,12 +33,12 @@
 
 namespace sunflower {
 
-// The dynamic buckets of one species: mesh levels 1–3 × parts (bottom, middle, head), then sprite
-// and billboard. Species s has buckets [s × BUCKET_COUNT, (s + 1) × BUCKET_COUNT).
+// The dynamic buckets of one species: mesh levels 1–3 × parts (bottom, middle, head), then the
+// impostors (sprites and billboards draw the same multi-view impostor, so they share one bucket).
+// Species s has buckets [s × BUCKET_COUNT, (s + 1) × BUCKET_COUNT).
 constexpr uint32_t PART_COUNT = 3;
-constexpr uint32_t BUCKET_SPRITE = LOD_MESH_COUNT * PART_COUNT;
-constexpr uint32_t BUCKET_BILLBOARD = BUCKET_SPRITE + 1;
-constexpr uint32_t BUCKET_COUNT = BUCKET_BILLBOARD + 1;
+constexpr uint32_t BUCKET_IMPOSTOR = LOD_MESH_COUNT * PART_COUNT;
+constexpr uint32_t BUCKET_COUNT = BUCKET_IMPOSTOR + 1;
 
 constexpr uint32_t mesh_bucket(uint32_t p_level, uint32_t p_part) {
 	return p_level * PART_COUNT + p_part;

@@ -5,7 +5,7 @@ extends TestCase
 func test_native_class_is_registered() -> void:
 	check(ClassDB.class_exists("SunflowerSimulation"), "SunflowerSimulation is not registered")
 	check(ClassDB.is_parent_class("SunflowerSimulation", "RefCounted"), "SunflowerSimulation is not a RefCounted")
-	check_eq(SunflowerSimulation.BUCKET_COUNT, 11, "bucket constant")
+	check_eq(SunflowerSimulation.BUCKET_COUNT, 10, "bucket constant")
 
 
 func test_the_node_names_the_cores_indices() -> void:
@@ -16,7 +16,7 @@ func test_the_node_names_the_cores_indices() -> void:
 	)
 	check_eq(SunflowerField.FieldNodes.PART_NAMES.size(), SunflowerSimulation.PART_COUNT, "part names")
 	check_eq(SunflowerSimulation.mesh_bucket(2, SunflowerField.Part.HEAD), 8, "the last mesh bucket")
-	check_eq(SunflowerSimulation.BUCKET_SPRITE, 9, "sprites follow the mesh buckets")
+	check_eq(SunflowerSimulation.BUCKET_IMPOSTOR, 9, "the impostors follow the mesh buckets")
 
 
 ## Every value the inspector shows a default for is defined once, in the core's table: the

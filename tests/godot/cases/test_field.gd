@@ -182,7 +182,7 @@ func test_every_plant_is_drawn_exactly_once_along_a_camera_path() -> void:
 					var share: float = 1.0 if compact else buffer[k * STRIDE + 15]
 					drawn[index] += 1
 					shares[index] += share
-					var may_fade: bool = node.name.ends_with("Mesh3Bottom") or node.name.ends_with("Sprites")
+					var may_fade: bool = node.name.ends_with("Mesh3Bottom") or node.name.ends_with("Impostors")
 					fading[index] += 1 if may_fade and share < 1.0 else 0
 		var wrong: int = 0
 		var crossfading: int = 0

@@ -171,7 +171,7 @@ func test_the_impostor_quad_covers_only_what_its_views_show() -> void:
 	# The built-in sunflower's views fill about a quarter of their squares: its impostors' quads are
 	# cut to that, for the near buckets' material and the far tiles' alike.
 	var field: SunflowerField = _field()
-	for name: String in ["Billboards", "FarTile%d" % field.get_simulation().get_tile_key(0)]:
+	for name: String in ["Impostors", "FarTile%d" % field.get_simulation().get_tile_key(0)]:
 		var node: MultiMeshInstance3D = null
 		for child: Node in field.get_children(true):
 			if child.name == name:

@@ -66,8 +66,8 @@ func test_a_legend_plant_is_a_species_with_its_own_buckets_impostors_and_counts(
 	check(_node_named(field, "Plant1Mesh1Head").multimesh.mesh == box, "drawn with its own parts")
 	check(_node_named(field, "Mesh1Head").multimesh.mesh != box, "the sunflower keeps its own")
 	# The far impostors of the second type are framed for it: 3.5 model units tall.
-	var maize_quad: Mesh = _node_named(field, "Plant1Billboards").multimesh.mesh
-	var sunflower_quad: Mesh = _node_named(field, "Billboards").multimesh.mesh
+	var maize_quad: Mesh = _node_named(field, "Plant1Impostors").multimesh.mesh
+	var sunflower_quad: Mesh = _node_named(field, "Impostors").multimesh.mesh
 	var frames: Array[float] = [
 		sqrt(3.2 * 3.2 + types[0].impostor_width * types[0].impostor_width),
 		sqrt(3.5 * 3.5 + types[1].impostor_width * types[1].impostor_width),
