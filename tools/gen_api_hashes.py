@@ -7,6 +7,7 @@ ENGINE_METHODS = {
     "RS_MULTIMESH_ALLOCATE_DATA": ("RenderingServer", "multimesh_allocate_data"),
     "RS_MULTIMESH_SET_BUFFER": ("RenderingServer", "multimesh_set_buffer"),
     "RS_MULTIMESH_SET_VISIBLE_INSTANCES": ("RenderingServer", "multimesh_set_visible_instances"),
+    "RS_MULTIMESH_SET_CUSTOM_AABB": ("RenderingServer", "multimesh_set_custom_aabb"),
 }
 BUILTIN_METHODS = {
     f"{prefix}_{method.upper()}": (cls, method)

@@ -258,7 +258,11 @@ static func _usable_keys(legend: Dictionary, warn: bool) -> Array:
 	return keys
 
 
+## A near bucket's node: the simulation fills its MultiMesh each update and gives the MultiMesh the
+## box of the plants it holds then, which the node follows (no box of its own), so that the renderer
+## draws the bucket only in the passes its plants reach (the field's box until the first update).
 func _add_dynamic(node: MultiMeshInstance3D, bucket: int) -> void:
+	node.custom_aabb = AABB()
 	simulation.set_bucket_multimesh(bucket, node.multimesh.get_rid())
 	_dynamic_nodes.append(node)
 	_dynamic_buckets.append(bucket)

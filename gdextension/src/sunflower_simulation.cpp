@@ -507,6 +507,13 @@ void SunflowerSimulation::_push_bucket(uint32_t p_bucket) {
 	if (count > 0) {
 		std::copy_n(bucket.get_data(), size_t(count) * FLOATS_PER_INSTANCE, target.staging.data());
 		gdx::RenderingServer::multimesh_set_buffer(target.multimesh, target.staging);
+		// The box of this frame's plants, so that each pass (a shadow cascade, the camera) draws the
+		// bucket only when they reach into it.
+		if (bucket.get_bounds_low() != target.bounds_low || bucket.get_bounds_high() != target.bounds_high) {
+			target.bounds_low = bucket.get_bounds_low();
+			target.bounds_high = bucket.get_bounds_high();
+			gdx::RenderingServer::multimesh_set_custom_aabb(target.multimesh, gdx::to_godot_aabb(target.bounds_low, target.bounds_high));
+		}
 	}
 	gdx::RenderingServer::multimesh_set_visible_instances(target.multimesh, count);
 	target.last_count = count;

@@ -109,6 +109,8 @@ private:
 		gdx::PackedFloat32Array staging;
 		uint32_t allocated = 0;
 		uint32_t last_count = 0;
+		glm::vec3 bounds_low{ 0.0f }; // the box last given to the renderer
+		glm::vec3 bounds_high{ 0.0f };
 	};
 
 	sunflower::FieldSimulation _sim;

@@ -6,6 +6,7 @@
 #include <map>
 
 #include <glm/geometric.hpp>
+#include <glm/vector_relational.hpp>
 
 #include <numeric>
 
@@ -287,6 +288,40 @@ TEST_CASE("the frustum culls what is written, not what is counted") {
 	CHECK(half < all);
 	CHECK(half > all / 3);
 	CHECK(sim.get_lod_counts() == counts);
+}
+
+TEST_CASE("a bucket's box holds its plants, as near as they are, and empties with them") {
+	FieldSimulation sim;
+	load(sim, rect_map(200, 200)); // 100 × 100 m
+	const glm::vec3 eye{ 50.0f, 1.7f, 50.0f };
+	sim.set_observer(eye);
+	sim.update(0.016f);
+	const float radius = PlantShape::CULL_RADIUS * PlantShape{}.part_scale * 1.5f; // the largest plant's
+	for (uint32_t b = 0; b < BUCKET_COUNT; ++b) {
+		const InstanceBuffer &bucket = sim.get_bucket(b);
+		REQUIRE(bucket.get_count() > 0);
+		for (uint32_t i = 0; i < bucket.get_count(); ++i) {
+			const float *instance = bucket.get_data() + size_t(i) * FLOATS_PER_INSTANCE;
+			const glm::vec3 origin{ instance[3], instance[7], instance[11] };
+			CHECK(glm::all(glm::greaterThanEqual(origin, bucket.get_bounds_low())));
+			CHECK(glm::all(glm::lessThanEqual(origin, bucket.get_bounds_high())));
+		}
+	}
+	// Mesh 1 reaches its switch distance (with hysteresis) and a plant's sphere round the observer:
+	// a box of a few metres in a field of a hundred, which is what lets a shadow cascade skip it.
+	const LodParams lod;
+	const InstanceBuffer &nearest = sim.get_bucket(mesh_bucket(LOD_MESH_1, 0));
+	const float reach = lod.distances[0] + lod.hysteresis + radius;
+	CHECK(glm::all(glm::greaterThanEqual(nearest.get_bounds_low(), eye - glm::vec3(reach, 2.0f, reach))));
+	CHECK(glm::all(glm::lessThanEqual(nearest.get_bounds_high(), eye + glm::vec3(reach, 2.0f * radius + 4.0f, reach))));
+	// Nothing in view: every box is empty.
+	const glm::vec4 plane(0.0f, -1.0f, 0.0f, -1000.0f); // keeps only y > 1 000 m
+	sim.get_frustum().set_planes(&plane, 1);
+	sim.update(0.016f);
+	for (uint32_t b = 0; b < BUCKET_COUNT; ++b) {
+		CHECK(sim.get_bucket(b).get_count() == 0);
+		CHECK(sim.get_bucket(b).get_bounds_low().x > sim.get_bucket(b).get_bounds_high().x);
+	}
 }
 
 TEST_CASE("with wind the transforms change over time; without it the plants stay upright") {

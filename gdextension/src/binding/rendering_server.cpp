@@ -12,6 +12,7 @@ struct Methods {
 	GDExtensionMethodBindPtr allocate_data = nullptr;
 	GDExtensionMethodBindPtr set_buffer = nullptr;
 	GDExtensionMethodBindPtr set_visible_instances = nullptr;
+	GDExtensionMethodBindPtr set_custom_aabb = nullptr;
 };
 Methods methods;
 
@@ -24,7 +25,7 @@ void call(GDExtensionMethodBindPtr p_method, std::initializer_list<GDExtensionCo
 
 bool RenderingServer::ensure_loaded() {
 	if (methods.singleton) {
-		return methods.allocate_data && methods.set_buffer && methods.set_visible_instances;
+		return methods.allocate_data && methods.set_buffer && methods.set_visible_instances && methods.set_custom_aabb;
 	}
 	StringName class_name("RenderingServer");
 	methods.singleton = api.global_get_singleton(class_name.ptr());
@@ -38,7 +39,9 @@ bool RenderingServer::ensure_loaded() {
 	methods.allocate_data = bind("multimesh_allocate_data", hashes::RS_MULTIMESH_ALLOCATE_DATA);
 	methods.set_buffer = bind("multimesh_set_buffer", hashes::RS_MULTIMESH_SET_BUFFER);
 	methods.set_visible_instances = bind("multimesh_set_visible_instances", hashes::RS_MULTIMESH_SET_VISIBLE_INSTANCES);
-	return methods.singleton && methods.allocate_data && methods.set_buffer && methods.set_visible_instances;
+	methods.set_custom_aabb = bind("multimesh_set_custom_aabb", hashes::RS_MULTIMESH_SET_CUSTOM_AABB);
+	return methods.singleton && methods.allocate_data && methods.set_buffer && methods.set_visible_instances &&
+			methods.set_custom_aabb;
 }
 
 void RenderingServer::unload() {
@@ -59,6 +62,10 @@ void RenderingServer::multimesh_set_buffer(Rid p_multimesh, const PackedFloat32A
 
 void RenderingServer::multimesh_set_visible_instances(Rid p_multimesh, int64_t p_visible) {
 	call(methods.set_visible_instances, { &p_multimesh, &p_visible });
+}
+
+void RenderingServer::multimesh_set_custom_aabb(Rid p_multimesh, const AABB &p_aabb) {
+	call(methods.set_custom_aabb, { &p_multimesh, &p_aabb });
 }
 
 } // namespace gdx

@@ -19,6 +19,9 @@ public:
 	static void multimesh_allocate_data(Rid p_multimesh, int64_t p_instances, Format p_format = TRANSFORM_AND_COLOUR);
 	static void multimesh_set_buffer(Rid p_multimesh, const PackedFloat32Array &p_buffer);
 	static void multimesh_set_visible_instances(Rid p_multimesh, int64_t p_visible);
+	// The box the renderer culls the MultiMesh by (in its instance's space), instead of one it
+	// would compute from every instance.
+	static void multimesh_set_custom_aabb(Rid p_multimesh, const AABB &p_aabb);
 };
 
 } // namespace gdx

@@ -435,10 +435,12 @@ void FieldSimulation::_move_chunks(size_t p_first, size_t p_last, float p_delta,
 			const uint32_t index = _layout.chunk_plants[chunk.first + k];
 			const Plant &plant = _layout.plants[index];
 			const uint8_t lod = _plant_lod[index];
-			const bool visible = _frustum.intersects_sphere(plant.root() + glm::vec3(0.0f, mid_height * plant.scale, 0.0f), radius * plant.scale);
+			const glm::vec3 middle = plant.root() + glm::vec3(0.0f, mid_height * plant.scale, 0.0f);
+			const bool visible = _frustum.intersects_sphere(middle, radius * plant.scale);
 			if (lod >= LOD_SPRITE) {
 				if (visible) {
 					_write_impostor(buckets[BUCKET_IMPOSTOR].push(), plant);
+					buckets[BUCKET_IMPOSTOR].include(middle, radius * plant.scale);
 				}
 				continue;
 			}
@@ -454,6 +456,7 @@ void FieldSimulation::_move_chunks(size_t p_first, size_t p_last, float p_delta,
 			const float share = lod == LOD_MESH_3 && fading ? _lod.impostor_share(_plant_distance_sq(plant)) : 0.0f;
 			if (share > 0.0f) {
 				_write_impostor(buckets[BUCKET_IMPOSTOR].push(), plant, share);
+				buckets[BUCKET_IMPOSTOR].include(middle, radius * plant.scale);
 				if (share >= 1.0f) {
 					continue;
 				}
@@ -462,7 +465,9 @@ void FieldSimulation::_move_chunks(size_t p_first, size_t p_last, float p_delta,
 			glm::vec4 color = plant.color(variety);
 			color.w = 1.0f - share;
 			for (uint32_t part = 0; part < PART_COUNT; ++part) {
-				write_instance(buckets[mesh_bucket(lod, part)].push(), parts.basis[part], parts.origin[part], color);
+				InstanceBuffer &bucket = buckets[mesh_bucket(lod, part)];
+				write_instance(bucket.push(), parts.basis[part], parts.origin[part], color);
+				bucket.include(middle, radius * plant.scale);
 			}
 		}
 	}

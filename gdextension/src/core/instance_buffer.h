@@ -6,11 +6,13 @@
 #include <glm/mat3x3.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <glm/common.hpp>
 #include <glm/vec4.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 namespace sunflower {
@@ -97,7 +99,11 @@ inline FarInstance read_far_instance(const float *p_in) {
 // allocates nothing.
 class InstanceBuffer {
 public:
-	void clear() { _count = 0; }
+	void clear() {
+		_count = 0;
+		_low = glm::vec3(std::numeric_limits<float>::infinity());
+		_high = -_low;
+	}
 	float *push() {
 		if (_count >= get_capacity()) {
 			_data.resize(std::max<size_t>(64, size_t(get_capacity()) * 2) * FLOATS_PER_INSTANCE);
@@ -113,7 +119,18 @@ public:
 		std::copy_n(p_other._data.data(), size_t(p_other._count) * FLOATS_PER_INSTANCE,
 				_data.data() + size_t(_count) * FLOATS_PER_INSTANCE);
 		_count = count;
+		_low = glm::min(_low, p_other._low);
+		_high = glm::max(_high, p_other._high);
 	}
+	// Widens the box that holds what the instances draw by a sphere (a plant's culling sphere, the
+	// writer's to give for each plant it pushes): the renderer culls the whole bucket by this box in
+	// every pass, the shadow cascades' included. Empty (low above high) after clear().
+	void include(const glm::vec3 &p_centre, float p_radius) {
+		_low = glm::min(_low, p_centre - p_radius);
+		_high = glm::max(_high, p_centre + p_radius);
+	}
+	const glm::vec3 &get_bounds_low() const { return _low; }
+	const glm::vec3 &get_bounds_high() const { return _high; }
 	uint32_t get_count() const { return _count; }
 	uint32_t get_capacity() const { return static_cast<uint32_t>(_data.size() / FLOATS_PER_INSTANCE); }
 	const float *get_data() const { return _data.data(); }
@@ -121,6 +138,8 @@ public:
 private:
 	std::vector<float> _data;
 	uint32_t _count = 0;
+	glm::vec3 _low{ std::numeric_limits<float>::infinity() };
+	glm::vec3 _high{ -std::numeric_limits<float>::infinity() };
 };
 
 } // namespace sunflower

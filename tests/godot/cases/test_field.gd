@@ -100,6 +100,19 @@ func test_buffers_reach_the_rendering_server() -> void:
 		if not check(expected != null, "instance %d at %s is no plant's head" % [k, origin]):
 			break
 		check_near(buffer[k * STRIDE + 1], (expected as Transform3D).basis.y.x, 1e-4, "basis y.x of instance %d" % k)
+	# The renderer culls the bucket by the box of the plants it holds (and the node adds none of its
+	# own): every head lies in it, and it is smaller than the field's.
+	var box: AABB = RenderingServer.multimesh_get_aabb(rid)
+	check(heads.custom_aabb == AABB(), "the bucket's node has no box of its own")
+	for origin_key: Vector2i in heads_by_origin:
+		var origin: Vector3 = (heads_by_origin[origin_key] as Transform3D).origin
+		if not check(box.grow(1e-3).has_point(origin), "head at %s inside the bucket's box %s" % [origin, box]):
+			break
+	var field_box: AABB = field.get_simulation().get_tile_aabb(0)
+	check(
+		box.size.x * box.size.z < 0.5 * field_box.size.x * field_box.size.z,
+		"%s smaller than the field's %s" % [box, field_box]
+	)
 
 
 func test_wind_moves_the_plants_and_calm_keeps_them_upright() -> void:
