@@ -3,10 +3,10 @@
 // [basis | origin] row by row, then the instance colour (r, g, b, a): Godot's RenderingServer
 // MULTIMESH_TRANSFORM_3D layout with colours. The static chunks' impostors: a compact 8-float
 // record (FarInstance, below).
+#include <glm/common.hpp>
 #include <glm/mat3x3.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
-#include <glm/common.hpp>
 #include <glm/vec4.hpp>
 
 #include <algorithm>
