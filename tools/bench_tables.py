@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """Prints tables 2-4 and 8 of tools/bench.sh from the demo's JSON statistics in a folder."""
 import json
-import statistics
 import os
+import statistics
 import sys
 
 THESIS_TABLE4_1500 = [12, 16, 20, 56, 88]  # FPS, 1 500 plants: model 1, 2, 3, sprite, billboard

@@ -436,11 +436,12 @@ void FieldSimulation::_move_chunks(size_t p_first, size_t p_last, float p_delta,
 			const Plant &plant = _layout.plants[index];
 			const uint8_t lod = _plant_lod[index];
 			const glm::vec3 middle = plant.root() + glm::vec3(0.0f, mid_height * plant.scale, 0.0f);
-			const bool visible = _frustum.intersects_sphere(middle, radius * plant.scale);
+			const float reach = radius * plant.scale; // the culling sphere's radius
+			const bool visible = _frustum.intersects_sphere(middle, reach);
 			if (lod >= LOD_SPRITE) {
 				if (visible) {
 					_write_impostor(buckets[BUCKET_IMPOSTOR].push(), plant);
-					buckets[BUCKET_IMPOSTOR].include(middle, radius * plant.scale);
+					buckets[BUCKET_IMPOSTOR].include(middle, reach);
 				}
 				continue;
 			}
@@ -456,7 +457,7 @@ void FieldSimulation::_move_chunks(size_t p_first, size_t p_last, float p_delta,
 			const float share = lod == LOD_MESH_3 && fading ? _lod.impostor_share(_plant_distance_sq(plant)) : 0.0f;
 			if (share > 0.0f) {
 				_write_impostor(buckets[BUCKET_IMPOSTOR].push(), plant, share);
-				buckets[BUCKET_IMPOSTOR].include(middle, radius * plant.scale);
+				buckets[BUCKET_IMPOSTOR].include(middle, reach);
 				if (share >= 1.0f) {
 					continue;
 				}
@@ -467,7 +468,7 @@ void FieldSimulation::_move_chunks(size_t p_first, size_t p_last, float p_delta,
 			for (uint32_t part = 0; part < PART_COUNT; ++part) {
 				InstanceBuffer &bucket = buckets[mesh_bucket(lod, part)];
 				write_instance(bucket.push(), parts.basis[part], parts.origin[part], color);
-				bucket.include(middle, radius * plant.scale);
+				bucket.include(middle, reach);
 			}
 		}
 	}

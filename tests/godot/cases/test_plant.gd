@@ -35,9 +35,13 @@ func _drawn_mesh(field: SunflowerField, level: int, part: int) -> Mesh:
 
 ## A field's near bucket node for a part (of its '*' plant).
 func _drawn_mesh_node(field: SunflowerField, level: int, part: int) -> MultiMeshInstance3D:
-	var name: String = "Mesh%d%s" % [level + 1, ["Bottom", "Middle", "Head"][part]]
+	return _child_named(field, "Mesh%d%s" % [level + 1, ["Bottom", "Middle", "Head"][part]])
+
+
+## A field's internal MultiMesh node of that name, or null.
+func _child_named(field: SunflowerField, node_name: String) -> MultiMeshInstance3D:
 	for node: Node in field.get_children(true):
-		if node.name == name:
+		if node.name == node_name:
 			return node as MultiMeshInstance3D
 	return null
 
@@ -172,10 +176,7 @@ func test_the_impostor_quad_covers_only_what_its_views_show() -> void:
 	# cut to that, for the near buckets' material and the far tiles' alike.
 	var field: SunflowerField = _field()
 	for name: String in ["Impostors", "FarTile%d" % field.get_simulation().get_tile_key(0)]:
-		var node: MultiMeshInstance3D = null
-		for child: Node in field.get_children(true):
-			if child.name == name:
-				node = child as MultiMeshInstance3D
+		var node: MultiMeshInstance3D = _child_named(field, name)
 		var material: ShaderMaterial = node.multimesh.mesh.surface_get_material(0) as ShaderMaterial
 		var drawn: PackedVector4Array = material.get_shader_parameter("view_bounds")
 		var area: float = 0.0
