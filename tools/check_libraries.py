@@ -85,8 +85,9 @@ def coff_problems(path, text):
 
 def macho_problems(path, text, arch):
     needed = re.search(r"NeededLibraries \[\n(.*?)\n\s*\]", text, re.S)
-    # The list starts with the library's own install name (LC_ID_DYLIB).
-    libs = {lib for lib in (needed.group(1).split() if needed else []) if os.path.basename(lib) != os.path.basename(path)}
+    # The list holds the library's own install name (LC_ID_DYLIB) too.
+    own = run(tool("llvm-objdump"), "--macho", "--dylib-id", "--no-leading-headers", path).split()
+    libs = set(needed.group(1).split() if needed else []) - set(own)
     problems = [f"depends on {lib}" for lib in sorted(libs - MACOS_LIBS)]
     trie = run(tool("llvm-objdump"), "--macho", "--exports-trie", path)
     names = re.findall(r"^0x[0-9A-Fa-f]+\s+_(\S+)", trie, re.M)
