@@ -3,9 +3,11 @@
 #include "lod_selector.h"
 
 #include <doctest/doctest.h>
+#include <glm/geometric.hpp>
 #include <glm/mat4x4.hpp>
 #include <glm/matrix.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace sunflower;
@@ -58,6 +60,52 @@ TEST_CASE("frustum: spheres outside any plane are culled, an unset frustum keeps
 	CHECK(frustum.intersects_sphere({ 10.5f, 0, 0 }, 1.0f)); // overlaps the boundary
 	CHECK_FALSE(frustum.intersects_sphere({ 11.5f, 0, 0 }, 1.0f));
 	CHECK_FALSE(frustum.intersects_sphere({ 0, 0, -12.0f }, 1.0f));
+}
+
+TEST_CASE("frustum: a box out of view holds no sphere in view, a box in view no sphere out of it") {
+	// Camera-like frusta (a 90° wedge with a near and a far plane, turned and tilted) against random
+	// boxes; spheres that fit each box must agree with the box's verdict.
+	uint32_t state = 12345u;
+	auto random = [&state](float p_low, float p_high) {
+		state = state * 1664525u + 1013904223u;
+		return p_low + (p_high - p_low) * float(state >> 8) / float(1u << 24);
+	};
+	int seen[3] = { 0, 0, 0 };
+	for (int pose = 0; pose < 40; ++pose) {
+		const float yaw = random(0.0f, 6.283f);
+		const float pitch = random(-1.2f, 0.3f);
+		const glm::vec3 eye(random(-20.0f, 20.0f), random(1.0f, 30.0f), random(-20.0f, 20.0f));
+		const glm::vec3 forward(std::cos(pitch) * std::sin(yaw), std::sin(pitch), std::cos(pitch) * std::cos(yaw));
+		const glm::vec3 right = glm::normalize(glm::cross(forward, glm::vec3(0.0f, 1.0f, 0.0f)));
+		const glm::vec3 up = glm::cross(right, forward);
+		const glm::vec3 normals[6] = { -forward, forward, right - forward, -right - forward, up - forward, -up - forward };
+		glm::vec4 planes[6];
+		for (int i = 0; i < 6; ++i) {
+			const glm::vec3 n = glm::normalize(normals[i]);
+			const glm::vec3 on = i == 0 ? eye + 0.05f * forward : (i == 1 ? eye + 60.0f * forward : eye);
+			planes[i] = glm::vec4(n, glm::dot(n, on));
+		}
+		Frustum frustum;
+		frustum.set_planes(planes, 6);
+		for (int b = 0; b < 200; ++b) {
+			const glm::vec3 low(random(-60.0f, 60.0f), random(-5.0f, 30.0f), random(-60.0f, 60.0f));
+			const glm::vec3 high = low + glm::vec3(random(0.5f, 16.0f), random(0.5f, 4.0f), random(0.5f, 16.0f));
+			const Frustum::Overlap overlap = frustum.classify_box(low, high);
+			++seen[overlap];
+			for (int k = 0; k < 50 && overlap != Frustum::CROSSING; ++k) {
+				const glm::vec3 extent = high - low;
+				const float radius = random(0.0f, 0.5f) * std::min({ extent.x, extent.y, extent.z });
+				const glm::vec3 centre(random(low.x + radius, high.x - radius), random(low.y + radius, high.y - radius),
+						random(low.z + radius, high.z - radius));
+				CHECK(frustum.intersects_sphere(centre, radius) == (overlap == Frustum::INSIDE));
+			}
+		}
+	}
+	CHECK(seen[Frustum::OUTSIDE] > 100);
+	CHECK(seen[Frustum::INSIDE] > 20);
+	CHECK(seen[Frustum::CROSSING] > 100);
+	// With no planes every box is in view.
+	CHECK(Frustum{}.classify_box(glm::vec3(1e6f), glm::vec3(2e6f)) == Frustum::INSIDE);
 }
 
 TEST_CASE("instance layout: 16 floats, the 3×4 matrix row by row, then the colour") {

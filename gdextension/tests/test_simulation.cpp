@@ -290,6 +290,94 @@ TEST_CASE("the frustum culls what is written, not what is counted") {
 	CHECK(sim.get_lod_counts() == counts);
 }
 
+TEST_CASE("chunks out of view or wholly in it are culled as their plants would be, and keep their wind") {
+	// Keep only x > 12: chunks left of it lie out of view, right of it wholly in view, on it across.
+	const glm::vec4 plane(-1.0f, 0.0f, 0.0f, -12.0f);
+	const glm::vec3 eye{ 15.0f, 1.7f, 15.0f };
+	WindParams wind;
+	wind.model = WIND_THESIS; // the model whose plants carry state from frame to frame
+	wind.power = 3.0f;
+	LodParams lod;
+	lod.fade = 0.0f; // each plant in one bucket
+	// 30 × 30 m of 8 m chunks, all near the eye; plants of sizes 0.7–1.3, so that level planes cut
+	// through their culling spheres.
+	MapError error;
+	LayoutParams layout;
+	layout.chunk_size = 8.0f;
+	layout.varieties[0].scale_min = 0.7f;
+	layout.varieties[0].scale_max = 1.3f;
+	FieldSimulation sim;
+	REQUIRE(sim.load_map(rect_map(60, 60), U"", "sim", MapLimits{}, error));
+	sim.set_layout_params(layout);
+	sim.set_wind(wind);
+	sim.set_lod(lod);
+	sim.set_observer(eye);
+	sim.get_frustum().set_planes(&plane, 1);
+	FieldSimulation unculled; // the same field seen whole
+	REQUIRE(unculled.load_map(rect_map(60, 60), U"", "sim", MapLimits{}, error));
+	unculled.set_layout_params(layout);
+	unculled.set_wind(wind);
+	unculled.set_lod(lod);
+	unculled.set_observer(eye);
+	for (int frame = 0; frame < 600; ++frame) { // 20 s: the plants' b redraws come round
+		sim.update(1.0f / 30.0f);
+		unculled.update(1.0f / 30.0f);
+	}
+	// The plants that spent the 20 s out of view sway as they would have in view.
+	uint32_t compared = 0;
+	for (uint32_t i = 0; i < sim.get_plant_count(); ++i) {
+		if (sim.get_layout().plants[i].position.x < 8.0f && sim.get_plant_lod(i) < LOD_SPRITE) {
+			PartTransforms culled, seen;
+			sim.get_plant_parts(i, culled);
+			unculled.get_plant_parts(i, seen);
+			CHECK(culled.origin[2] == seen.origin[2]);
+			++compared;
+		}
+	}
+	CHECK(compared > 100);
+	// What each plant's own test keeps, bucket by bucket, for planes that cut the chunks' boxes: across
+	// the field (at a chunk's edge, within its plants' reach), and level, through the middle of the
+	// culling spheres' bottoms and of their tops (plants differ in size).
+	const PlantShape &shape = sim.get_shape();
+	std::vector<float> bottoms, tops;
+	for (const Plant &plant : sim.get_layout().plants) {
+		const float scale = shape.part_scale * plant.scale;
+		bottoms.push_back(plant.ground + (0.5f * shape.height - shape.cull_radius) * scale);
+		tops.push_back(plant.ground + (0.5f * shape.height + shape.cull_radius) * scale);
+	}
+	std::sort(bottoms.begin(), bottoms.end());
+	std::sort(tops.begin(), tops.end());
+	const glm::vec4 cuts[] = { plane, { -1.0f, 0.0f, 0.0f, -8.5f }, { 0.0f, 1.0f, 0.0f, bottoms[bottoms.size() / 2] },
+		{ 0.0f, -1.0f, 0.0f, -tops[tops.size() / 2] } };
+	for (size_t c = 0; c < std::size(cuts); ++c) {
+		CAPTURE(c);
+		const glm::vec4 &cut = cuts[c];
+		sim.get_frustum().set_planes(&cut, 1);
+		sim.update(0.001f);
+		std::array<uint32_t, BUCKET_COUNT> expected{};
+		uint32_t out_of_view = 0;
+		for (uint32_t i = 0; i < sim.get_plant_count(); ++i) {
+			const Plant &plant = sim.get_layout().plants[i];
+			if (!sim.is_chunk_active(plant.chunk)) {
+				continue;
+			}
+			const float scale = shape.part_scale * plant.scale;
+			const glm::vec3 middle = plant.root() + glm::vec3(0.0f, 0.5f * shape.height * scale, 0.0f);
+			if (!sim.get_frustum().intersects_sphere(middle, shape.cull_radius * scale)) {
+				++out_of_view;
+				continue;
+			}
+			const uint8_t level = sim.get_plant_lod(i);
+			++expected[level >= LOD_SPRITE ? BUCKET_IMPOSTOR : mesh_bucket(level, 0)];
+		}
+		CHECK(out_of_view > sim.get_plant_count() / 8);
+		CHECK(std::accumulate(expected.begin(), expected.end(), 0u) > sim.get_plant_count() / 8);
+		for (uint32_t b : { mesh_bucket(LOD_MESH_1, 0), mesh_bucket(LOD_MESH_2, 0), mesh_bucket(LOD_MESH_3, 0), BUCKET_IMPOSTOR }) {
+			CHECK(sim.get_bucket(b).get_count() == expected[b]);
+		}
+	}
+}
+
 TEST_CASE("a bucket's box holds its plants, as near as they are, and empties with them") {
 	FieldSimulation sim;
 	load(sim, rect_map(200, 200)); // 100 × 100 m

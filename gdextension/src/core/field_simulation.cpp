@@ -431,13 +431,31 @@ void FieldSimulation::_move_chunks(size_t p_first, size_t p_last, float p_delta,
 		InstanceBuffer *buckets = r_buckets.data() + size_t(chunk.species) * BUCKET_COUNT;
 		const float radius = shape.cull_radius * shape.part_scale;
 		const float mid_height = 0.5f * shape.height * shape.part_scale;
+		// The chunk against the frustum first, by a box that holds its plants' culling spheres: a
+		// chunk out of view only keeps its mesh plants' wind going, one fully in view skips the
+		// plants' own tests. Either way each plant ends as its own test would have it.
+		const float reach_max = radius * chunk.scale_max;
+		const glm::vec3 low(chunk.min.x - reach_max, chunk.ground_min + std::min(0.0f, (mid_height - radius) * chunk.scale_max),
+				chunk.min.y - reach_max);
+		const glm::vec3 high(chunk.max.x + reach_max, chunk.ground_max + (mid_height + radius) * chunk.scale_max,
+				chunk.max.y + reach_max);
+		const Frustum::Overlap overlap = _frustum.classify_box(low, high);
+		if (overlap == Frustum::OUTSIDE) {
+			for (uint32_t k = 0; moving && _wind.advances_plants() && k < chunk.count; ++k) {
+				const uint32_t index = _layout.chunk_plants[chunk.first + k];
+				if (_plant_lod[index] < LOD_SPRITE) {
+					_wind.advance_plant(_plant_wind[index], _layout_params.seed, index, _time, p_delta);
+				}
+			}
+			continue;
+		}
 		for (uint32_t k = 0; k < chunk.count; ++k) {
 			const uint32_t index = _layout.chunk_plants[chunk.first + k];
 			const Plant &plant = _layout.plants[index];
 			const uint8_t lod = _plant_lod[index];
 			const glm::vec3 middle = plant.root() + glm::vec3(0.0f, mid_height * plant.scale, 0.0f);
 			const float reach = radius * plant.scale; // the culling sphere's radius
-			const bool visible = _frustum.intersects_sphere(middle, reach);
+			const bool visible = overlap == Frustum::INSIDE || _frustum.intersects_sphere(middle, reach);
 			if (lod >= LOD_SPRITE) {
 				if (visible) {
 					_write_impostor(buckets[BUCKET_IMPOSTOR].push(), plant);

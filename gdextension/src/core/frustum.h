@@ -25,6 +25,34 @@ public:
 		return true;
 	}
 
+	enum Overlap {
+		OUTSIDE, // beyond a plane: every sphere inside the box fails intersects_sphere()
+		CROSSING, // neither: test each sphere
+		INSIDE, // within every plane: every sphere inside the box passes
+	};
+	// A box within this many metres of a plane counts as crossing it, so that rounding never decides
+	// a box against what its spheres' own tests say (a float's step is 0.5 mm at 4 km).
+	static constexpr float BOX_MARGIN = 0.01f;
+	// Where the box [p_low, p_high] lies, for spheres that fit inside it.
+	Overlap classify_box(const glm::vec3 &p_low, const glm::vec3 &p_high) const {
+		Overlap overlap = INSIDE;
+		for (size_t i = 0; i < _count; ++i) {
+			const glm::vec4 &plane = _planes[i];
+			// The box's corners least and most far along the plane's normal.
+			const float nearest = plane.x * (plane.x > 0.0f ? p_low.x : p_high.x) +
+					plane.y * (plane.y > 0.0f ? p_low.y : p_high.y) + plane.z * (plane.z > 0.0f ? p_low.z : p_high.z);
+			const float farthest = plane.x * (plane.x > 0.0f ? p_high.x : p_low.x) +
+					plane.y * (plane.y > 0.0f ? p_high.y : p_low.y) + plane.z * (plane.z > 0.0f ? p_high.z : p_low.z);
+			if (nearest - plane.w > BOX_MARGIN) {
+				return OUTSIDE;
+			}
+			if (farthest - plane.w > -BOX_MARGIN) {
+				overlap = CROSSING;
+			}
+		}
+		return overlap;
+	}
+
 private:
 	std::array<glm::vec4, 6> _planes{};
 	size_t _count = 0;

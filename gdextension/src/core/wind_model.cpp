@@ -199,7 +199,7 @@ void WindModel::init_plant(PlantWind &r_wind, uint64_t p_seed, uint32_t p_plant,
 }
 
 void WindModel::advance_plant(PlantWind &r_wind, uint64_t p_seed, uint32_t p_plant, double p_time, float p_delta) const {
-	if (_params.model == WIND_NATURAL) {
+	if (!advances_plants()) {
 		return; // natural sway is a function of the plant's place and the field's phase
 	}
 	const double offset = double(flip_offset(p_seed, p_plant));
