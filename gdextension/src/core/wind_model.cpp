@@ -37,9 +37,6 @@ uint32_t natural_hash(const glm::vec2 &p_position) {
 	return h;
 }
 
-// The natural sway's pace steps: m / PACE_STEPS for m in [PACE_LOW, PACE_LOW + PACE_SPAN).
-constexpr uint32_t PACE_LOW = 54;
-constexpr uint32_t PACE_SPAN = 21;
 
 // A smooth saturation like tanh, cheaper: the Padé form x(27 + x²)/(27 + 9x²), which reaches ±1 at
 // |x| = 3 with zero slope, and ±1 beyond. Monotone, odd, slope 1 at 0.
@@ -119,6 +116,9 @@ void WindModel::advance(float p_delta) {
 										: glm::vec2(std::cos(now + std::copysign(turn_step, turn)), std::sin(now + std::copysign(turn_step, turn)));
 	_derive();
 	_sway = std::fmod(_sway + double(_rate) * double(p_delta), double(TAU) * PACE_STEPS);
+	for (uint32_t m = 0; m < PACE_SPAN; ++m) {
+		_pace_phase[m] = float(std::fmod(double(PACE_LOW + m) * _sway / PACE_STEPS, double(TAU)));
+	}
 	// Gusts travel with the wind (p_w ≈ m/s). Kept in cells, wrapped every 2^16 cells (524 km) so a
 	// float keeps its precision; the lattice hash repeats there too, so the wrap is seamless.
 	_gust_scroll_cells = float(std::fmod(double(_gust_scroll_cells) + double(_power) * double(p_delta) / double(GUST_CELL), 65536.0));
@@ -170,9 +170,8 @@ glm::vec2 WindModel::bend_vector(const PlantWind &p_wind, const glm::vec2 &p_pos
 float WindModel::sway_phase(const glm::vec2 &p_position) const {
 	const uint32_t h = natural_hash(p_position);
 	const float offset = float(h & 0xFFFFu) * (TAU / 65536.0f);
-	const float pace = float(PACE_LOW + (h >> 16) % PACE_SPAN);
 	// φ₀ + (m / PACE_STEPS)·Φ, wrapped: m·(Φ / PACE_STEPS) is exact to float precision at any Φ.
-	return offset + float(std::fmod(double(pace) * _sway / PACE_STEPS, double(TAU)));
+	return offset + _pace_phase[(h >> 16) % PACE_SPAN];
 }
 
 WindModel::ShaderState WindModel::shader_state() const {

@@ -30,6 +30,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include <array>
 #include <cstdint>
 
 namespace sunflower {
@@ -107,6 +108,9 @@ public:
 	ShaderState shader_state() const;
 	// The pace of the sway is m / PACE_STEPS for a whole m: Φ can wrap at 2π × PACE_STEPS unseen.
 	static constexpr int PACE_STEPS = 64;
+	// The pace steps plants draw from: m in [PACE_LOW, PACE_LOW + PACE_SPAN).
+	static constexpr uint32_t PACE_LOW = 54;
+	static constexpr uint32_t PACE_SPAN = 21;
 	// The bend of a plant now, as a vector on the ground (x, z), in either model.
 	glm::vec2 bend_vector(const PlantWind &p_wind, const glm::vec2 &p_position) const;
 
@@ -143,6 +147,9 @@ private:
 	float _gust_phase = 0.0f; // thesis: Ψ
 	float _gust_scroll_cells = 0.0f; // natural: gust cells the pattern has moved downwind (mod 2^16)
 	double _sway = 0.0; // natural: Φ, wrapped at 2π × PACE_STEPS
+	// natural: (m / PACE_STEPS)·Φ wrapped at 2π for each pace step m, made when Φ moves (a double
+	// fmod per pace per frame instead of per near plant).
+	std::array<float, PACE_SPAN> _pace_phase{};
 	bool _advanced = false; // natural wind eases changes only once it moves
 };
 
