@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Benchmarks (numbers, not pass/fail). Prints eight tables:
+# Benchmarks (numbers, not pass/fail). Prints nine tables:
 #   1. the C++ core alone: per-frame time and memory, 1M vs 4M plants;
 #   2. the engine: the demo's recording mode on the demo, large and million-plant fields;
 #   3. the thesis' experiment (Tables 3-5): a 1 500-plant field at distances 5 and 40 m, every plant
@@ -10,6 +10,8 @@
 #   7. GPU memory: the render buffers a million far plants take (the renderer's own count).
 #   8. The GPU side: draw calls, objects, primitives and render-buffer memory per view, against the
 #      Godot-native way, on the demo, large, million and 4-million-plant fields.
+#   9. The editor: its frame times while a scene with a million-plant field opens and builds
+#      (headless, and rendering with Vulkan lavapipe under Xvfb), against the editor alone.
 # Results (JSON per run) go to build/bench/; BENCH_FRAMES and BENCH_RESOLUTION change the runs.
 set -euo pipefail
 repo=$(cd "$(dirname "$0")/.." && pwd)
@@ -100,3 +102,27 @@ echo "## 7. GPU memory: a million far plants' render buffers (Forward+ on Vulkan
 timeout 600 xvfb-run -a -s "-screen 0 1280x720x24" "$godot" --rendering-driver vulkan --audio-driver Dummy \
   --resolution "$resolution" --path "$repo/tests/godot" --script res://bench/gpu_memory_bench.gd 2>&1 | grep '^|' ||
   echo "bench: the GPU memory benchmark failed" >&2
+echo
+echo "## 9. The editor opening a scene with a million-plant field (frame intervals; the plugin's frame probe)"
+editor_project=$(mktemp -d)
+mkdir -p "$editor_project/addons"
+cp -rL "$repo/addons/sunflower_field" "$editor_project/addons/"
+cp -r "$repo/tools/bench_editor/frame_probe" "$editor_project/addons/"
+cp "$repo/tools/bench_editor/project.godot" "$repo/tools/bench_editor/million.tscn" "$editor_project/"
+cp "$out/fields/million.field" "$editor_project/"
+if "$repo/tools/import_project.sh" "$editor_project" >"$out/runs/editor_import.log" 2>&1; then
+  for mode in headless vulkan; do
+    launch=(xvfb-run -a -s "-screen 0 1600x900x24" "$godot" --rendering-driver vulkan)
+    [[ $mode == headless ]] && launch=("$godot" --headless)
+    echo
+    echo "Editor, $([[ $mode == headless ]] && echo "headless (no rendering)" || echo "Forward+ on Vulkan lavapipe under Xvfb, 1600 x 900"):"
+    echo
+    rm -rf "$editor_project/.godot/editor" # else the editor reopens the scene the last run left open
+    RUN_PROBE=1 timeout 900 "${launch[@]}" --editor --audio-driver Dummy --path "$editor_project" \
+      >"$out/runs/editor_$mode.log" 2>&1
+    grep -E '^\||^probe: build' "$out/runs/editor_$mode.log" || echo "bench: the editor run ($mode) failed; see $out/runs/editor_$mode.log" >&2
+  done
+else
+  echo "bench: importing the editor project failed; see $out/runs/editor_import.log" >&2
+fi
+rm -rf "$editor_project"
