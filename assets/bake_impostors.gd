@@ -1,6 +1,6 @@
 extends SceneTree
 ## Renders a plant's impostor atlases with the addon's baker (addons/sunflower_field/impostor_baker.gd,
-## the editor's "Bake impostors"), into the given folder as <name>_views.png and <name>_normals.png:
+## the editor's "Bake impostors"), into the given folder as <name>_views.png, <name>_normals.png and <name>_depths.png:
 ## the built-in sunflower ("sunflower"), or the plant resource given with its name.
 ##
 ## Needs a real renderer (not --headless): xvfb-run godot --path <project with the addon> \

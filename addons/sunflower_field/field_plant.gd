@@ -9,8 +9,9 @@ extends Resource
 ## bottom, middle and head, each starting at the previous one's tip ([member part_lengths] model
 ## units up it). The whole plant is [member height] metres from the root to the top of its parts.
 ## The far levels draw a multi-view impostor: the level-1 parts rendered from [constant ATLAS_VIEWS]
-## directions (around the plant, and from the side up to straight above) into [member impostor_views]
-## and [member impostor_normals] (the editor's "Bake impostors"); each view frames the cylinder
+## directions (around the plant, and from the side up to straight above) into [member impostor_views],
+## [member impostor_normals] and [member impostor_depths] (the editor's "Bake impostors"); each view
+## frames the cylinder
 ## [member impostor_width] wide and [member height_units] tall that holds the plant.
 ## The built-in sunflower is [method default_plant]; [code]null[/code] mesh or texture slots use it.
 
@@ -22,7 +23,7 @@ const ImpostorBaker: GDScript = preload("impostor_baker.gd")
 ## towards +x), rows of elevation from the side (0°, top row) to straight above (90°, bottom row).
 const ATLAS_VIEWS: Vector2i = Vector2i(12, 4)
 ## The impostor textures, as [method texture_drawn] names them.
-const IMPOSTOR_TEXTURES: PackedStringArray = ["views", "normals"]
+const IMPOSTOR_TEXTURES: PackedStringArray = ["views", "normals", "depths"]
 
 static var _default: FieldPlant
 
@@ -135,6 +136,13 @@ static var _default: FieldPlant
 @export var impostor_normals: Texture2D:
 	set(value):
 		impostor_normals = value
+		emit_changed()
+## How far each pixel of the views lies in front of (lighter) or behind (darker) the plant's middle,
+## along the view (0–1 for −½ to +½ of the view's square): the far levels are lit and shadowed where
+## the plant's leaves and head are, not on the flat quad.
+@export var impostor_depths: Texture2D:
+	set(value):
+		impostor_depths = value
 		emit_changed()
 
 

@@ -26,6 +26,21 @@ void fragment() {
 }
 """
 
+## Draws how far each point lies along the view from the plant's middle (the plane through its
+## copy's origin, facing the camera), in shares of the view's square: 0.5 + z / square, as a colour
+## the viewport's sRGB conversion turns into that code.
+const DEPTHS_SHADER: String = """
+shader_type spatial;
+render_mode unshaded, cull_disabled;
+uniform float square = 1.0;
+void fragment() {
+	float z = (INV_VIEW_MATRIX * vec4(VERTEX, 1.0)).z;
+	vec3 code = vec3(clamp(0.5 + z / square, 0.0, 1.0));
+	vec3 low = step(code, vec3(0.04045));
+	ALBEDO = mix(pow((code + 0.055) / 1.055, vec3(2.4)), code / 12.92, low);
+}
+"""
+
 
 ## Renders [param plant]'s impostor atlases in a viewport under [param host] (any node in a tree
 ## that draws: the editor's base control, the field), saves them as
@@ -55,12 +70,13 @@ static func bake(plant: FieldPlant, host: Node, folder: String = "", base_name: 
 	host.add_child(viewport)
 	var images: Array[Image] = []
 	for kind: String in FieldPlant.IMPOSTOR_TEXTURES:
-		if kind == "normals":
-			var normals: ShaderMaterial = ShaderMaterial.new()
-			normals.shader = Shader.new()
-			normals.shader.code = NORMALS_SHADER
+		if kind != "views":
+			var coded: ShaderMaterial = ShaderMaterial.new()
+			coded.shader = Shader.new()
+			coded.shader.code = NORMALS_SHADER if kind == "normals" else DEPTHS_SHADER
+			coded.set_shader_parameter("square", plant.impostor_frame().x)
 			for instance: Node in viewport.find_children("*", "MeshInstance3D", true, false):
-				(instance as MeshInstance3D).material_override = normals
+				(instance as MeshInstance3D).material_override = coded
 		for i: int in SETTLE_FRAMES:
 			await RenderingServer.frame_post_draw
 		var image: Image = viewport.get_texture().get_image()
@@ -162,8 +178,8 @@ static func _give_textures(plant: FieldPlant, paths: PackedStringArray, images: 
 			var texture: ImageTexture = ImageTexture.create_from_image(image)
 			texture.resource_name = plant.name
 			textures.append(texture)
-	plant.impostor_views = textures[0]
-	plant.impostor_normals = textures[1]
+	for i: int in textures.size():
+		plant.set("impostor_" + FieldPlant.IMPOSTOR_TEXTURES[i], textures[i])
 	if in_project and plant.resource_path.begins_with("res://") and not plant.resource_path.contains("::"):
 		ResourceSaver.save(plant)
 

@@ -8,6 +8,8 @@ extends RefCounted
 ## decodes them ([code]packed_instances[/code]); every parameter is set on both.
 
 const SHADER: Shader = preload("shaders/impostor.gdshader")
+## The shader's sampler of each of [constant FieldPlant.IMPOSTOR_TEXTURES].
+const ATLAS_PARAMETERS: Dictionary = {"views": "view_atlas", "normals": "normal_atlas", "depths": "depth_atlas"}
 
 ## The material of the near buckets' impostors (3D transforms and colours).
 var material: ShaderMaterial = ShaderMaterial.new()
@@ -37,10 +39,10 @@ func configure(plant: Resource) -> void:
 	_set_both("frame_centre", frame.y)
 
 
-## Shows [param texture] as the impostor's [param kind] ("views" or "normals"); null draws it
-## untextured, with a warning.
+## Shows [param texture] as the impostor's [param kind] (one of [constant FieldPlant.IMPOSTOR_TEXTURES]);
+## null draws it untextured (flat, for depths), with a warning.
 func set_texture(kind: String, texture: Texture2D) -> void:
-	var parameter: String = "view_atlas" if kind == "views" else "normal_atlas"
+	var parameter: String = ATLAS_PARAMETERS[kind]
 	if texture == material.get_shader_parameter(parameter):
 		return
 	if texture == null:

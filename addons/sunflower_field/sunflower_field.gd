@@ -376,6 +376,12 @@ var impostor_normals: Texture2D:
 		return _plant().texture_drawn("normals")
 	set(value):
 		_own_plant().impostor_normals = value
+## The far levels' depths: the [member plant]'s [member FieldPlant.impostor_depths].
+var impostor_depths: Texture2D:
+	get:
+		return _plant().texture_drawn("depths")
+	set(value):
+		_own_plant().impostor_depths = value
 
 var _driver: FieldDriver = FieldDriver.new(self)
 var _empty_simulation: RefCounted

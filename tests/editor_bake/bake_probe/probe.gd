@@ -33,7 +33,7 @@ func _run() -> void:
 			await tree.process_frame
 			if plant.impostor_views != null and button.text == "Bake impostors":
 				break
-		for kind: String in ["views", "normals"]:
+		for kind: String in FieldPlant.IMPOSTOR_TEXTURES:
 			var path: String = "res://my_plant_%s.png" % kind
 			if not FileAccess.file_exists(path):
 				problems.append("%s was not written" % path)
@@ -41,7 +41,9 @@ func _run() -> void:
 		if views == null or views.resource_path != "res://my_plant_views.png":
 			problems.append("the plant's views atlas is not the imported file: %s" % views)
 		var saved: String = FileAccess.get_file_as_string(PLANT_PATH)
-		if not saved.contains("my_plant_views.png") or not saved.contains("my_plant_normals.png"):
+		if not Array(FieldPlant.IMPOSTOR_TEXTURES).all(
+			func(k: String) -> bool: return saved.contains("my_plant_%s.png" % k)
+		):
 			problems.append("the plant file does not name its new atlases")
 		var image: Image = views.get_image() if views else null
 		if image == null or image.is_empty() or image.detect_alpha() == Image.ALPHA_NONE:

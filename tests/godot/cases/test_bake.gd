@@ -90,7 +90,10 @@ func test_a_gltf_plant_gets_impostors_in_its_own_colours() -> void:
 	check_eq(result, OK, "baked")
 	for kind: String in FieldPlant.IMPOSTOR_TEXTURES:
 		check(FileAccess.file_exists(FOLDER.path_join("red_plant_%s.png" % kind)), "%s atlas written" % kind)
-	if not check(plant.impostor_views != null and plant.impostor_normals != null, "the plant has its atlases"):
+	if not check(
+		plant.impostor_views != null and plant.impostor_normals != null and plant.impostor_depths != null,
+		"the plant has its atlases"
+	):
 		return
 	var views: Image = plant.impostor_views.get_image()
 	var normals: Image = plant.impostor_normals.get_image()
@@ -129,11 +132,32 @@ func test_a_gltf_plant_gets_impostors_in_its_own_colours() -> void:
 		var at: Vector2i = (case[0] as Vector2i) * cell + (case[1] as Vector2i)
 		var normal: Vector3 = _normal(normals, at)
 		check(normal.dot(case[2]) > 0.95, "view %s: the head's normal %s points %s" % [case[0], normal, case[2]])
+	# Depths along the view, in shares of the square from the plant's middle (1.5 units up): from
+	# above, the head's top (3 units up) is the nearest; from the side, the thin stalk stands on the
+	# plant's axis, as deep as the middle.
+	var depths: Image = plant.impostor_depths.get_image()
+	depths.clear_mipmaps()
+	var above_depth: float = (
+		depths.get_pixelv(Vector2i(0, FieldPlant.ATLAS_VIEWS.y - 1) * cell + Vector2i(cell / 2, cell / 2)).r
+	)
+	check(
+		above_depth > 0.5 + 1.3 / frame.x,
+		"from above, the head's top is 1.5 units nearer than the middle: %.3f" % above_depth
+	)
+	for column: int in [0, 3, 7]:
+		var stalk_depth: Color = depths.get_pixelv(
+			Vector2i(column, 0) * cell + Vector2i(cell / 2, roundi(cell / 2 + 1.0 * pixels_per_unit))
+		)
+		check(
+			stalk_depth.a > 0.5 and absf(stalk_depth.r - 0.5) < 0.2 / frame.x,
+			"view %d: the stalk lies at the middle's depth: %.3f" % [column, stalk_depth.r]
+		)
 	# A field growing the plant draws the baked atlases.
 	var field: SunflowerField = SunflowerField.new()
 	field.plant = plant
 	tree.root.add_child(field)
 	check(field.impostor_views == plant.impostor_views, "the field draws them")
+	check(field.impostor_depths == plant.impostor_depths, "and their depths")
 	field.free()
 
 
