@@ -37,7 +37,6 @@ uint32_t natural_hash(const glm::vec2 &p_position) {
 	return h;
 }
 
-
 // A smooth saturation like tanh, cheaper: the Padé form x(27 + x²)/(27 + 9x²), which reaches ±1 at
 // |x| = 3 with zero slope, and ±1 beyond. Monotone, odd, slope 1 at 0.
 float soft_clip(float p_x) {

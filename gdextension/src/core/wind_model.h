@@ -115,9 +115,10 @@ public:
 	glm::vec2 bend_vector(const PlantWind &p_wind, const glm::vec2 &p_position) const;
 
 	void init_plant(PlantWind &r_wind, uint64_t p_seed, uint32_t p_plant, double p_time) const;
-	// Advances φ by p_delta seconds ending at p_time, redrawing b where a redraw time was passed.
-	// Natural wind keeps no state per plant (its sway is a function of place and time): nothing to do.
+	// Whether advance_plant() does anything: natural wind keeps no state per plant (its sway is a
+	// function of place and time).
 	bool advances_plants() const { return _params.model != WIND_NATURAL; }
+	// Advances φ by p_delta seconds ending at p_time, redrawing b where a redraw time was passed.
 	void advance_plant(PlantWind &r_wind, uint64_t p_seed, uint32_t p_plant, double p_time, float p_delta) const;
 	// The clamped bend force p of a plant at downwind coordinate p_downwind, given the field's gust phase Ψ.
 	float bend(const PlantWind &p_wind, float p_downwind, float p_gust_phase) const;
