@@ -11,8 +11,7 @@ extends Resource
 ## The far levels draw a multi-view impostor: the level-1 parts rendered from [constant ATLAS_VIEWS]
 ## directions (around the plant, and from the side up to straight above) into [member impostor_views],
 ## [member impostor_normals] and [member impostor_depths] (the editor's "Bake impostors"); each view
-## frames the cylinder
-## [member impostor_width] wide and [member height_units] tall that holds the plant.
+## frames the cylinder [member impostor_width] wide and [member height_units] tall that holds the plant.
 ## The built-in sunflower is [method default_plant]; [code]null[/code] mesh or texture slots use it.
 
 const Native: GDScript = preload("native.gd")

@@ -46,10 +46,11 @@ func set_texture(kind: String, texture: Texture2D) -> void:
 	if texture == material.get_shader_parameter(parameter):
 		return
 	if texture == null:
+		var effect: String = "lit on their flat quads" if kind == "depths" else "drawn untextured"
 		push_warning(
 			(
-				"SunflowerField: no impostor %s texture; the far plants are drawn untextured (bake the plant's impostors)"
-				% kind
+				"SunflowerField: no impostor %s texture; the far plants are %s (bake the plant's impostors)"
+				% [kind, effect]
 			)
 		)
 	_set_both(parameter, texture)
