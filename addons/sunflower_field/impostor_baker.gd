@@ -74,7 +74,8 @@ static func bake(plant: FieldPlant, host: Node, folder: String = "", base_name: 
 			var coded: ShaderMaterial = ShaderMaterial.new()
 			coded.shader = Shader.new()
 			coded.shader.code = NORMALS_SHADER if kind == "normals" else DEPTHS_SHADER
-			coded.set_shader_parameter("square", plant.impostor_frame().x)
+			if kind == "depths":
+				coded.set_shader_parameter("square", plant.impostor_frame().x)
 			for instance: Node in viewport.find_children("*", "MeshInstance3D", true, false):
 				(instance as MeshInstance3D).material_override = coded
 		for i: int in SETTLE_FRAMES:

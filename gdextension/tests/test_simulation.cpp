@@ -307,18 +307,15 @@ TEST_CASE("chunks out of view or wholly in it are culled as their plants would b
 	layout.varieties[0].scale_min = 0.7f;
 	layout.varieties[0].scale_max = 1.3f;
 	FieldSimulation sim;
-	REQUIRE(sim.load_map(rect_map(60, 60), U"", "sim", MapLimits{}, error));
-	sim.set_layout_params(layout);
-	sim.set_wind(wind);
-	sim.set_lod(lod);
-	sim.set_observer(eye);
-	sim.get_frustum().set_planes(&plane, 1);
 	FieldSimulation unculled; // the same field seen whole
-	REQUIRE(unculled.load_map(rect_map(60, 60), U"", "sim", MapLimits{}, error));
-	unculled.set_layout_params(layout);
-	unculled.set_wind(wind);
-	unculled.set_lod(lod);
-	unculled.set_observer(eye);
+	for (FieldSimulation *field : { &sim, &unculled }) {
+		REQUIRE(field->load_map(rect_map(60, 60), U"", "sim", MapLimits{}, error));
+		field->set_layout_params(layout);
+		field->set_wind(wind);
+		field->set_lod(lod);
+		field->set_observer(eye);
+	}
+	sim.get_frustum().set_planes(&plane, 1);
 	for (int frame = 0; frame < 600; ++frame) { // 20 s: the plants' b redraws come round
 		sim.update(1.0f / 30.0f);
 		unculled.update(1.0f / 30.0f);

@@ -422,6 +422,7 @@ void FieldSimulation::_move_chunks(size_t p_first, size_t p_last, float p_delta,
 		bucket.clear();
 	}
 	const bool moving = _wind.get_effective_power() > 0.0f;
+	const bool advancing = moving && _wind.advances_plants(); // plants with wind state of their own
 	const bool fading = _lod.get_params().force_level < 0 && _lod.get_params().fade > 0.0f;
 	PartTransforms parts;
 	for (size_t a = p_first; a < p_last; ++a) {
@@ -441,7 +442,7 @@ void FieldSimulation::_move_chunks(size_t p_first, size_t p_last, float p_delta,
 				chunk.max.y + reach_max);
 		const Frustum::Overlap overlap = _frustum.classify_box(low, high);
 		if (overlap == Frustum::OUTSIDE) {
-			for (uint32_t k = 0; moving && _wind.advances_plants() && k < chunk.count; ++k) {
+			for (uint32_t k = 0; advancing && k < chunk.count; ++k) {
 				const uint32_t index = _layout.chunk_plants[chunk.first + k];
 				if (_plant_lod[index] < LOD_SPRITE) {
 					_wind.advance_plant(_plant_wind[index], _layout_params.seed, index, _time, p_delta);
@@ -464,7 +465,7 @@ void FieldSimulation::_move_chunks(size_t p_first, size_t p_last, float p_delta,
 				continue;
 			}
 			PlantWind &wind = _plant_wind[index];
-			if (moving) {
+			if (advancing) {
 				_wind.advance_plant(wind, _layout_params.seed, index, _time, p_delta);
 			}
 			if (!visible) {
