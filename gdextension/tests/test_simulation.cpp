@@ -697,48 +697,6 @@ TEST_CASE("mesh 3 dithers into its impostor over the fade metres before the spri
 	CHECK(drawn(sim) == sim.get_plant_count());
 }
 
-TEST_CASE("active chunks' impostor records are the plants' own, and follow a change of the plant's height") {
-	// A field whose active chunks were drawn at one height, changed to another, draws what a field made
-	// at that height draws: the records kept per active chunk are made anew.
-	auto walk = [](FieldSimulation &r_sim) {
-		LodParams lod;
-		lod.interval = 0.0f;
-		r_sim.set_lod(lod);
-		for (float x : { 20.0f, 24.0f, 28.0f }) {
-			r_sim.set_observer(glm::vec3(x, 1.7f, 30.0f));
-			for (int i = 0; i < 10; ++i) { // chunks turn active a budget's worth per update
-				r_sim.update(0.016f);
-			}
-		}
-	};
-	FieldSimulation changed;
-	load(changed, rect_map(120, 120));
-	walk(changed);
-	changed.set_plant_height(3.0f);
-	walk(changed);
-	FieldSimulation made;
-	load(made, rect_map(120, 120));
-	made.set_plant_height(3.0f);
-	walk(made);
-	const InstanceBuffer &a = changed.get_bucket(BUCKET_IMPOSTOR);
-	const InstanceBuffer &b = made.get_bucket(BUCKET_IMPOSTOR);
-	REQUIRE(a.get_count() == b.get_count());
-	CHECK(a.get_count() > 1000);
-	// The same records (in the order the chunks turned active, which differs).
-	auto records = [](const InstanceBuffer &p_bucket) {
-		std::vector<std::array<float, FLOATS_PER_INSTANCE>> out(p_bucket.get_count());
-		for (uint32_t i = 0; i < p_bucket.get_count(); ++i) {
-			std::copy_n(p_bucket.get_data() + size_t(i) * FLOATS_PER_INSTANCE, FLOATS_PER_INSTANCE, out[i].begin());
-		}
-		std::sort(out.begin(), out.end());
-		return out;
-	};
-	CHECK(records(a) == records(b));
-	// 3 m tall: a sprite's up axis is 1 m per model unit.
-	CHECK(glm::length(glm::vec3(b.get_data()[1], b.get_data()[5], b.get_data()[9])) == doctest::Approx(1.0f));
-	CHECK(drawn(changed) == changed.get_plant_count());
-}
-
 TEST_CASE("a jump of the observer re-selects at once, nearest chunks first, within the activation budget") {
 	FieldSimulation sim;
 	load(sim, rect_map(400, 400), 16.0f); // 200 × 200 m, 160 000 plants

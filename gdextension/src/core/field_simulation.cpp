@@ -103,9 +103,6 @@ void FieldSimulation::set_shape(const PlantShape &p_shape, uint32_t p_species) {
 	shape.part_scale = shape.part_scale > 0.0f && std::isfinite(shape.part_scale) ? shape.part_scale : current.part_scale;
 	current = shape;
 	_chunk_signatures.clear(); // the impostors' scale may have changed
-	for (std::vector<float> &records : _chunk_impostors) {
-		records.clear(); // made anew by the LOD pass that follows, before plants are drawn
-	}
 	_lod_due = true;
 }
 
@@ -126,7 +123,6 @@ void FieldSimulation::_rebuild() {
 	_plant_wind.assign(plants, PlantWind{});
 	_pushed.clear(); // the slots pointed at the old field's plants
 	_chunk_active.assign(_layout.chunks.size(), 0);
-	_chunk_impostors.assign(_layout.chunks.size(), {});
 	_chunk_signatures.clear(); // the shape or variety may have changed too: computed anew
 	_visit_mark.assign(_layout.chunks.size(), 0);
 	_lod_pass = 0;
@@ -354,21 +350,11 @@ void FieldSimulation::_select_chunk_lods(uint32_t p_chunk, bool p_forced, float 
 		_chunk_active[p_chunk] = active ? 1 : 0;
 		_changed_chunks.push_back(p_chunk);
 	}
-	std::vector<float> &records = _chunk_impostors[p_chunk];
 	if (!active) {
-		if (was_active) {
-			std::vector<float>().swap(records); // its memory back
-		}
 		return;
 	}
 	_active_chunks.push_back(p_chunk);
 	const Chunk &chunk = _layout.chunks[p_chunk];
-	if (records.empty() && !p_forced) { // (a forced level draws every chunk: no records for all of them)
-		records.resize(size_t(chunk.count) * FLOATS_PER_INSTANCE);
-		for (uint32_t k = 0; k < chunk.count; ++k) {
-			_write_impostor(records.data() + size_t(k) * FLOATS_PER_INSTANCE, _layout.plants[_layout.chunk_plants[chunk.first + k]]);
-		}
-	}
 	_active_plants += chunk.count;
 	for (uint32_t k = 0; k < chunk.count; ++k) {
 		const uint32_t index = _layout.chunk_plants[chunk.first + k];
@@ -455,7 +441,6 @@ void FieldSimulation::_move_chunks(size_t p_first, size_t p_last, float p_delta,
 		const glm::vec3 high(chunk.max.x + reach_max, chunk.ground_max + (mid_height + radius) * chunk.scale_max,
 				chunk.max.y + reach_max);
 		const Frustum::Overlap overlap = _frustum.classify_box(low, high);
-		const std::vector<float> &records = _chunk_impostors[_active_chunks[a]];
 		if (overlap == Frustum::OUTSIDE) {
 			for (uint32_t k = 0; advancing && k < chunk.count; ++k) {
 				const uint32_t index = _layout.chunk_plants[chunk.first + k];
@@ -474,12 +459,7 @@ void FieldSimulation::_move_chunks(size_t p_first, size_t p_last, float p_delta,
 			const bool visible = overlap == Frustum::INSIDE || _frustum.intersects_sphere(middle, reach);
 			if (lod >= LOD_SPRITE) {
 				if (visible) {
-					float *out = buckets[BUCKET_IMPOSTOR].push();
-					if (records.empty()) {
-						_write_impostor(out, plant);
-					} else {
-						std::copy_n(records.data() + size_t(k) * FLOATS_PER_INSTANCE, FLOATS_PER_INSTANCE, out);
-					}
+					_write_impostor(buckets[BUCKET_IMPOSTOR].push(), plant);
 					buckets[BUCKET_IMPOSTOR].include(middle, reach);
 				}
 				continue;
@@ -714,10 +694,6 @@ size_t FieldSimulation::get_memory_bytes() const {
 	bytes += _layout.chunk_plants.capacity() * sizeof(uint32_t);
 	bytes += _plant_lod.capacity() + _plant_wind.capacity() * sizeof(PlantWind);
 	bytes += _chunk_active.capacity() + _visit_mark.capacity() * sizeof(uint32_t);
-	bytes += _chunk_impostors.capacity() * sizeof(std::vector<float>);
-	for (uint32_t c : _active_chunks) {
-		bytes += _chunk_impostors[c].capacity() * sizeof(float);
-	}
 	bytes += (_chunk_cells.capacity() + _tile_chunks.capacity()) * sizeof(uint32_t) + _tiles.capacity() * sizeof(Tile);
 	bytes += (_active_chunks.capacity() + _previous_active.capacity() + _changed_chunks.capacity()) * sizeof(uint32_t);
 	bytes += _layout.grid_chunks.capacity() * sizeof(uint32_t) + _layout.object_ground.capacity() * sizeof(float);

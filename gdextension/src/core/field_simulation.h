@@ -251,10 +251,6 @@ private:
 	std::vector<uint8_t> _plant_lod;
 	std::vector<PlantWind> _plant_wind;
 	std::vector<uint8_t> _chunk_active;
-	// Per chunk while it is active: its plants' impostor records (FLOATS_PER_INSTANCE each, in chunk
-	// order), made when it turns active. A far plant's record does not change from frame to frame
-	// (the shader sways it), so the plants of active chunks drawn as impostors are copied from here.
-	std::vector<std::vector<float>> _chunk_impostors;
 	std::vector<uint64_t> _chunk_signatures; // 0: not computed
 	std::vector<uint32_t> _chunk_cells;
 	std::vector<Tile> _tiles;
