@@ -37,6 +37,7 @@ void SunflowerSimulation::bind_methods() {
 	gdx::bind_method(CLASS, "set_plant_height", &SunflowerSimulation::set_plant_height, { "species", "metres" });
 	gdx::bind_method(CLASS, "set_plant_form", &SunflowerSimulation::set_plant_form,
 			{ "species", "part_lengths", "middle_variation", "height_units", "cull_radius_units", "stiffness" });
+	gdx::bind_method(CLASS, "set_plant_whole", &SunflowerSimulation::set_plant_whole, { "species", "whole" });
 	gdx::bind_method(CLASS, "set_plant_variation", &SunflowerSimulation::set_plant_variation,
 			{ "species", "yaw_range", "scale_min", "scale_max", "brightness", "tint" });
 	gdx::bind_method(CLASS, "set_wind", &SunflowerSimulation::set_wind,
@@ -99,6 +100,7 @@ void SunflowerSimulation::bind_methods() {
 	gdx::bind_integer_constant(CLASS, "", "BUCKET_COUNT", BUCKET_COUNT);
 	gdx::bind_integer_constant(CLASS, "", "MAX_SPECIES", FieldMap::MAX_SPECIES);
 	gdx::bind_integer_constant(CLASS, "", "FLOATS_PER_INSTANCE", FLOATS_PER_INSTANCE);
+	gdx::bind_integer_constant(CLASS, "", "WHOLE_FLOATS_PER_INSTANCE", WHOLE_FLOATS_PER_INSTANCE);
 	gdx::bind_integer_constant(CLASS, "", "FAR_FLOATS_PER_INSTANCE", FAR_FLOATS_PER_INSTANCE);
 	gdx::bind_integer_constant(CLASS, "", "PARALLEL_MIN_PLANTS", FieldSimulation::PARALLEL_MIN_PLANTS);
 	gdx::bind_integer_constant(CLASS, "", "MAX_AUTO_THREADS", param::MAX_AUTO_THREADS);
@@ -308,6 +310,15 @@ void SunflowerSimulation::set_plant_form(int64_t p_species, gdx::Vector3 p_part_
 	_sim.set_plant_height(metres, species);
 }
 
+void SunflowerSimulation::set_plant_whole(int64_t p_species, bool p_whole) {
+	if (!_is_species(p_species)) {
+		return;
+	}
+	PlantShape shape = _sim.get_shape(uint32_t(p_species));
+	shape.whole = p_whole;
+	_sim.set_shape(shape, uint32_t(p_species));
+}
+
 void SunflowerSimulation::set_plant_variation(int64_t p_species, double p_yaw_range, double p_scale_min, double p_scale_max,
 		double p_brightness, double p_tint) {
 	if (!_is_species(p_species)) {
@@ -499,13 +510,17 @@ void SunflowerSimulation::_push_bucket(uint32_t p_bucket) {
 	if (!target.multimesh.is_valid() || (count == 0 && target.last_count == 0)) {
 		return;
 	}
-	if (count > target.allocated) {
+	const uint32_t stride = bucket.get_stride();
+	if (count > target.allocated || stride != target.stride) {
 		target.allocated = std::max(bucket.get_capacity(), count);
-		gdx::RenderingServer::multimesh_allocate_data(target.multimesh, target.allocated);
-		target.staging.resize(int64_t(target.allocated) * FLOATS_PER_INSTANCE);
+		target.stride = stride;
+		gdx::RenderingServer::multimesh_allocate_data(target.multimesh, target.allocated,
+				stride == WHOLE_FLOATS_PER_INSTANCE ? gdx::RenderingServer::TRANSFORM_COLOUR_AND_CUSTOM
+													: gdx::RenderingServer::TRANSFORM_AND_COLOUR);
+		target.staging.resize(int64_t(target.allocated) * stride);
 	}
 	if (count > 0) {
-		std::copy_n(bucket.get_data(), size_t(count) * FLOATS_PER_INSTANCE, target.staging.data());
+		std::copy_n(bucket.get_data(), size_t(count) * stride, target.staging.data());
 		gdx::RenderingServer::multimesh_set_buffer(target.multimesh, target.staging);
 		// The box of this frame's plants, so that each pass (a shadow cascade, the camera) draws the
 		// bucket only when they reach into it.

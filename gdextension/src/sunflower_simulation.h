@@ -37,6 +37,10 @@ public:
 	void set_plant_height(int64_t p_species, double p_metres);
 	void set_plant_form(int64_t p_species, gdx::Vector3 p_part_lengths, double p_middle_variation, double p_height_units,
 			double p_cull_radius_units, double p_stiffness);
+	// Whether the species' near plants are drawn whole: one instance per plant in its level's first
+	// mesh bucket (WHOLE_FLOATS_PER_INSTANCE floats, with custom data), their parts placed by the
+	// shader, instead of one per part.
+	void set_plant_whole(int64_t p_species, bool p_whole);
 	void set_plant_variation(int64_t p_species, double p_yaw_range, double p_scale_min, double p_scale_max, double p_brightness,
 			double p_tint);
 	void set_wind(int64_t p_model, double p_power, gdx::Vector2 p_direction, double p_stiffness_middle, double p_stiffness_bottom,
@@ -108,6 +112,7 @@ private:
 		gdx::Rid multimesh;
 		gdx::PackedFloat32Array staging;
 		uint32_t allocated = 0;
+		uint32_t stride = 0; // floats per instance allocated (the bucket's)
 		uint32_t last_count = 0;
 		glm::vec3 bounds_low{ 0.0f }; // the box last given to the renderer
 		glm::vec3 bounds_high{ 0.0f };

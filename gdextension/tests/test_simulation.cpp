@@ -48,7 +48,7 @@ int64_t drawn(const FieldSimulation &p_sim) {
 	std::map<std::pair<float, float>, Drawn> plants; // by root (x, z)
 	auto add = [&](const InstanceBuffer &p_bucket, bool p_may_fade, bool p_mesh_3) {
 		for (uint32_t i = 0; i < p_bucket.get_count(); ++i) {
-			const float *instance = p_bucket.get_data() + size_t(i) * FLOATS_PER_INSTANCE;
+			const float *instance = p_bucket.get_data() + size_t(i) * p_bucket.get_stride();
 			Drawn &plant = plants[{ instance[3], instance[11] }];
 			plant.share += instance[15];
 			plant.representations += 1;
@@ -59,9 +59,12 @@ int64_t drawn(const FieldSimulation &p_sim) {
 		}
 	};
 	for (uint32_t level = 0; level < LOD_MESH_COUNT; ++level) {
+		// Part by part, the three parts of a plant in their buckets; drawn whole, one instance.
+		const bool whole = p_sim.get_shape().whole;
 		const uint32_t bottom = p_sim.get_bucket(mesh_bucket(level, 0)).get_count();
-		CHECK(p_sim.get_bucket(mesh_bucket(level, 1)).get_count() == bottom);
-		CHECK(p_sim.get_bucket(mesh_bucket(level, 2)).get_count() == bottom);
+		CHECK(p_sim.get_bucket(mesh_bucket(level, 0)).get_stride() == (whole ? WHOLE_FLOATS_PER_INSTANCE : FLOATS_PER_INSTANCE));
+		CHECK(p_sim.get_bucket(mesh_bucket(level, 1)).get_count() == (whole ? 0 : bottom));
+		CHECK(p_sim.get_bucket(mesh_bucket(level, 2)).get_count() == (whole ? 0 : bottom));
 		add(p_sim.get_bucket(mesh_bucket(level, 0)), level == LOD_MESH_3, level == LOD_MESH_3);
 	}
 	add(p_sim.get_bucket(BUCKET_IMPOSTOR), true, false);
@@ -96,6 +99,12 @@ int64_t drawn(const FieldSimulation &p_sim) {
 TEST_CASE("every plant is drawn exactly once along a path, and LOD counts follow the observer") {
 	FieldSimulation sim;
 	load(sim, rect_map(200, 120)); // 100 × 60 m, 24 000 plants
+	SUBCASE("part by part") {}
+	SUBCASE("drawn whole") {
+		PlantShape shape;
+		shape.whole = true;
+		sim.set_shape(shape);
+	}
 	for (float x = -30.0f; x <= 130.0f; x += 7.3f) {
 		sim.set_observer({ x, 1.7f, 30.0f });
 		sim.request_lod_update();
@@ -652,13 +661,19 @@ TEST_CASE("mesh 3 dithers into its impostor over the fade metres before the spri
 		}
 		const InstanceBuffer &meshes = sim.get_bucket(mesh_bucket(LOD_MESH_3, 0));
 		for (uint32_t i = 0; i < meshes.get_count(); ++i) {
-			const float *instance = meshes.get_data() + size_t(i) * FLOATS_PER_INSTANCE;
+			const float *instance = meshes.get_data() + size_t(i) * meshes.get_stride();
 			shares.emplace(std::make_pair(instance[3], instance[11]), 0.0f); // mesh 3 alone: no impostor
 		}
 		return shares;
 	};
 	int in_band = 0;
 	int switching = 0;
+	SUBCASE("part by part") {}
+	SUBCASE("drawn whole") { // the same shares, on one instance per plant
+		PlantShape shape;
+		shape.whole = true;
+		sim.set_shape(shape);
+	}
 	// Walk out and back in: plants near 20 m are at mesh 3 on one way and sprites on the other.
 	for (float step : { 0.0f, 0.6f, 1.2f, 0.6f, 0.0f }) {
 		sim.set_observer(eye + glm::vec3(step, 0.0f, 0.0f));

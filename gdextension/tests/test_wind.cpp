@@ -366,3 +366,46 @@ TEST_CASE("a plant type's stiffness scales how far the wind bends it") {
 	const float stiff_angle = std::acos(glm::normalize(stiff.basis[0][1]).y);
 	CHECK(stiff_angle == doctest::Approx(soft_angle * 0.5f).epsilon(1e-4));
 }
+
+TEST_CASE("a plant drawn whole: its record gives back the part transforms, through the bytes the shader reads") {
+	// Plants of every kind: turned, sized, stretched, leaning with the ground, stiff or soft, bent
+	// every way or not at all, with parts of unequal lengths.
+	PlantShape shape = unit_shape(0.8f);
+	shape.part_lengths = glm::vec3(1.3f, 0.6f, 1.1f);
+	shape.middle_variation = 0.2f;
+	const WindModel wind = make_wind(2.0f, { 0.6f, 0.8f });
+	int cases = 0;
+	for (float yaw : { 0.0f, 0.7f, -2.5f }) {
+		for (glm::vec2 lean : { glm::vec2(0.0f), glm::vec2(0.3f, -0.2f) }) {
+			for (glm::vec2 bend : { glm::vec2(0.0f), glm::vec2(0.4f, 0.1f), glm::vec2(-0.2f, 0.5f) }) {
+				for (float stiffness : { 1.0f, 2.5f }) {
+					Plant plant;
+					plant.position = { 4.0f, -7.0f };
+					plant.ground = 1.5f;
+					plant.alpha = 0.35f;
+					plant.yaw = yaw;
+					plant.scale = 1.2f;
+					plant.lean = lean;
+					shape.stiffness = stiffness;
+					PartTransforms expected;
+					wind.part_transforms(plant, bend, shape, expected);
+					WholePlant whole;
+					wind.whole_plant(plant, bend, shape, whole);
+					float record[WHOLE_FLOATS_PER_INSTANCE];
+					write_whole_instance(record, whole, glm::vec4(1.0f));
+					PartTransforms assembled;
+					assemble_parts(read_whole_instance(record), shape.part_lengths, assembled);
+					for (int part = 0; part < 3; ++part) {
+						CAPTURE(part);
+						for (int column = 0; column < 3; ++column) {
+							check_vec(assembled.basis[part][column], expected.basis[part][column]);
+						}
+						check_vec(assembled.origin[part], expected.origin[part]);
+					}
+					++cases;
+				}
+			}
+		}
+	}
+	CHECK(cases == 36);
+}

@@ -52,8 +52,9 @@ void RenderingServer::multimesh_allocate_data(Rid p_multimesh, int64_t p_instanc
 	// RenderingServer.MULTIMESH_TRANSFORM_2D is 0, MULTIMESH_TRANSFORM_3D 1.
 	const int64_t transform = p_format == COMPACT ? 0 : 1;
 	const GDExtensionBool colours = p_format == COMPACT ? 0 : 1;
+	const GDExtensionBool custom = p_format == TRANSFORM_COLOUR_AND_CUSTOM ? 1 : 0;
 	const GDExtensionBool no = 0;
-	call(methods.allocate_data, { &p_multimesh, &p_instances, &transform, &colours, &no, &no });
+	call(methods.allocate_data, { &p_multimesh, &p_instances, &transform, &colours, &custom, &no });
 }
 
 void RenderingServer::multimesh_set_buffer(Rid p_multimesh, const PackedFloat32Array &p_buffer) {

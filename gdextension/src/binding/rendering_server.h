@@ -11,9 +11,11 @@ public:
 	static void unload();
 
 	// The instance formats the core writes (instance_buffer.h): 3D transforms with colours (the
-	// dynamic buckets), or the compact far record as 2D transforms without colours (static chunks).
+	// dynamic buckets), with custom data too (plants drawn whole), or the compact far record as 2D
+	// transforms without colours (static chunks).
 	enum Format {
 		TRANSFORM_AND_COLOUR,
+		TRANSFORM_COLOUR_AND_CUSTOM,
 		COMPACT,
 	};
 	static void multimesh_allocate_data(Rid p_multimesh, int64_t p_instances, Format p_format = TRANSFORM_AND_COLOUR);

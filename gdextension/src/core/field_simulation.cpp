@@ -10,7 +10,7 @@
 namespace sunflower {
 
 FieldSimulation::FieldSimulation() {
-	_buckets.assign(BUCKET_COUNT, InstanceBuffer{});
+	_make_buckets();
 	_wind.configure(WindParams{});
 	_lod.configure(LodParams{});
 }
@@ -101,9 +101,13 @@ void FieldSimulation::set_shape(const PlantShape &p_shape, uint32_t p_species) {
 	shape.height = shape.height > 0.0f && std::isfinite(shape.height) ? shape.height : defaults.height;
 	shape.cull_radius = shape.cull_radius > 0.0f && std::isfinite(shape.cull_radius) ? shape.cull_radius : defaults.cull_radius;
 	shape.part_scale = shape.part_scale > 0.0f && std::isfinite(shape.part_scale) ? shape.part_scale : current.part_scale;
+	const bool drawn_otherwise = shape.whole != current.whole;
 	current = shape;
 	_chunk_signatures.clear(); // the impostors' scale may have changed
 	_lod_due = true;
+	if (drawn_otherwise) {
+		_make_buckets();
+	}
 }
 
 void FieldSimulation::set_plant_height(float p_metres, uint32_t p_species) {
@@ -130,10 +134,7 @@ void FieldSimulation::_rebuild() {
 	_previous_active.clear();
 	_changed_chunks.clear();
 	_active_plants = 0;
-	_buckets.assign(size_t(std::max(_map.species_count, 1)) * BUCKET_COUNT, InstanceBuffer{});
-	for (BucketSet &set : _task_buckets) {
-		set.assign(_buckets.size(), InstanceBuffer{});
-	}
+	_make_buckets();
 	_build_tiles();
 	++_mask_version;
 	_lod_due = true;
@@ -232,7 +233,25 @@ void FieldSimulation::set_worker_threads(uint32_t p_threads) {
 		return;
 	}
 	_pool.reset(threads > 1 ? new WorkerPool(threads) : nullptr);
-	_task_buckets.assign(threads > 1 ? threads * TASKS_PER_THREAD - 1 : 0, BucketSet(_buckets.size()));
+	_task_buckets.assign(threads > 1 ? threads * TASKS_PER_THREAD - 1 : 0, BucketSet{});
+	_make_buckets();
+}
+
+void FieldSimulation::_make_buckets() {
+	BucketSet buckets;
+	const uint32_t species_count = uint32_t(std::max(_map.species_count, 1));
+	for (uint32_t species = 0; species < species_count; ++species) {
+		const bool whole = _shapes[species].whole;
+		for (uint32_t b = 0; b < BUCKET_COUNT; ++b) {
+			// Drawn whole, a plant is one instance in its level's first bucket (the others stay empty).
+			const bool whole_plants = whole && b < BUCKET_IMPOSTOR && b % PART_COUNT == 0;
+			buckets.emplace_back(whole_plants ? WHOLE_FLOATS_PER_INSTANCE : FLOATS_PER_INSTANCE);
+		}
+	}
+	_buckets = buckets;
+	for (BucketSet &set : _task_buckets) {
+		set = buckets;
+	}
 }
 
 ChunkBounds FieldSimulation::get_chunk_bounds(uint32_t p_chunk) const {
@@ -425,6 +444,7 @@ void FieldSimulation::_move_chunks(size_t p_first, size_t p_last, float p_delta,
 	const bool advancing = moving && _wind.advances_plants(); // plants with wind state of their own
 	const bool fading = _lod.get_params().force_level < 0 && _lod.get_params().fade > 0.0f;
 	PartTransforms parts;
+	WholePlant whole;
 	for (size_t a = p_first; a < p_last; ++a) {
 		const Chunk &chunk = _layout.chunks[_active_chunks[a]];
 		const PlantShape &shape = _shapes[chunk.species];
@@ -481,9 +501,16 @@ void FieldSimulation::_move_chunks(size_t p_first, size_t p_last, float p_delta,
 					continue;
 				}
 			}
-			_wind.part_transforms(plant, _plant_bend(index, plant, moving), shape, parts);
 			glm::vec4 color = plant.color(variety);
 			color.w = 1.0f - share;
+			if (shape.whole) {
+				_wind.whole_plant(plant, _plant_bend(index, plant, moving), shape, whole);
+				InstanceBuffer &bucket = buckets[mesh_bucket(lod, 0)];
+				write_whole_instance(bucket.push(), whole, color);
+				bucket.include(middle, reach);
+				continue;
+			}
+			_wind.part_transforms(plant, _plant_bend(index, plant, moving), shape, parts);
 			for (uint32_t part = 0; part < PART_COUNT; ++part) {
 				InstanceBuffer &bucket = buckets[mesh_bucket(lod, part)];
 				write_instance(bucket.push(), parts.basis[part], parts.origin[part], color);
@@ -701,11 +728,11 @@ size_t FieldSimulation::get_memory_bytes() const {
 	bytes += _pushed.capacity() * sizeof(PushState) + _pushers.capacity() * sizeof(Pusher);
 	bytes += _near.capacity() * sizeof(uint32_t) + _activation.capacity() * sizeof(_activation[0]);
 	for (const InstanceBuffer &bucket : _buckets) {
-		bytes += size_t(bucket.get_capacity()) * FLOATS_PER_INSTANCE * sizeof(float);
+		bytes += size_t(bucket.get_capacity()) * bucket.get_stride() * sizeof(float);
 	}
 	for (const BucketSet &set : _task_buckets) {
 		for (const InstanceBuffer &bucket : set) {
-			bytes += size_t(bucket.get_capacity()) * FLOATS_PER_INSTANCE * sizeof(float);
+			bytes += size_t(bucket.get_capacity()) * bucket.get_stride() * sizeof(float);
 		}
 	}
 	return bytes;

@@ -210,6 +210,9 @@ public:
 	void get_plant_parts(uint32_t p_plant, PartTransforms &r_parts) const;
 
 private:
+	// The buckets (and the parallel tasks' ones) anew, empty, with each species' strides.
+	void _make_buckets();
+
 	struct PushState {
 		uint32_t plant = 0;
 		glm::vec2 offset{ 0.0f }; // the push's bend now

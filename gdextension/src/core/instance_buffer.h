@@ -38,6 +38,46 @@ inline void write_instance(float *r_out, const glm::mat3 &p_basis, const glm::ve
 	r_out[15] = p_color.w;
 }
 
+// A near plant drawn whole: one instance whose mesh holds all three parts (a part's index in each
+// vertex's UV2.x), placed by the shader (shaders/plant_whole.gdshader: keep the two in step). The
+// transform is the plant's own frame (standing on its ground, turned by its yaw, at its size) and
+// the custom data what bends the parts in that frame:
+//   16, 17: the bottom part's tilt, a vector (x, z) whose length is the angle in radians, about
+//           the horizontal axis along it;
+//   18: the upper parts' tilt angle about the same axis, radians;
+//   19: the middle part's stretch along its length (the thesis' s' = s + α/10, as a factor).
+constexpr uint32_t WHOLE_FLOATS_PER_INSTANCE = FLOATS_PER_INSTANCE + 4;
+
+struct WholePlant {
+	glm::mat3 basis{ 1.0f }; // lean · yaw · size
+	glm::vec3 origin{ 0.0f }; // the root
+	glm::vec2 tilt{ 0.0f }; // the bottom part's, in the plant's frame
+	float upper = 0.0f;
+	float middle = 1.0f;
+};
+
+inline void write_whole_instance(float *r_out, const WholePlant &p_plant, const glm::vec4 &p_color) {
+	write_instance(r_out, p_plant.basis, p_plant.origin, p_color);
+	r_out[16] = p_plant.tilt.x;
+	r_out[17] = p_plant.tilt.y;
+	r_out[18] = p_plant.upper;
+	r_out[19] = p_plant.middle;
+}
+
+inline WholePlant read_whole_instance(const float *p_in) {
+	WholePlant plant;
+	for (int row = 0; row < 3; ++row) {
+		for (int column = 0; column < 3; ++column) {
+			plant.basis[column][row] = p_in[row * 4 + column];
+		}
+		plant.origin[row] = p_in[row * 4 + 3];
+	}
+	plant.tilt = glm::vec2(p_in[16], p_in[17]);
+	plant.upper = p_in[18];
+	plant.middle = p_in[19];
+	return plant;
+}
+
 // A static plant's impostor, compact: 8 floats (32 B on the GPU), uploaded as the rows of Godot's
 // MULTIMESH_TRANSFORM_2D instances without colours. The engine hands the impostor shader the field
 // node's transform times the matrix they make; the shader undoes the node's transform and reads
@@ -99,6 +139,11 @@ inline FarInstance read_far_instance(const float *p_in) {
 // allocates nothing.
 class InstanceBuffer {
 public:
+	// p_stride: floats per instance (FLOATS_PER_INSTANCE, or WHOLE_FLOATS_PER_INSTANCE for plants
+	// drawn whole).
+	explicit InstanceBuffer(uint32_t p_stride = FLOATS_PER_INSTANCE) :
+			_stride(p_stride) {}
+	uint32_t get_stride() const { return _stride; }
 	void clear() {
 		_count = 0;
 		_low = glm::vec3(std::numeric_limits<float>::infinity());
@@ -106,18 +151,18 @@ public:
 	}
 	float *push() {
 		if (_count >= get_capacity()) {
-			_data.resize(std::max<size_t>(64, size_t(get_capacity()) * 2) * FLOATS_PER_INSTANCE);
+			_data.resize(std::max<size_t>(64, size_t(get_capacity()) * 2) * _stride);
 		}
-		return _data.data() + static_cast<size_t>(_count++) * FLOATS_PER_INSTANCE;
+		return _data.data() + static_cast<size_t>(_count++) * _stride;
 	}
-	// Appends another buffer's instances (growing like push, so steady state allocates nothing).
+	// Appends another buffer's instances, of the same stride (growing like push, so steady state
+	// allocates nothing).
 	void append(const InstanceBuffer &p_other) {
 		const uint32_t count = _count + p_other._count;
 		if (count > get_capacity()) {
-			_data.resize(std::max<size_t>(count, size_t(get_capacity()) * 2) * FLOATS_PER_INSTANCE);
+			_data.resize(std::max<size_t>(count, size_t(get_capacity()) * 2) * _stride);
 		}
-		std::copy_n(p_other._data.data(), size_t(p_other._count) * FLOATS_PER_INSTANCE,
-				_data.data() + size_t(_count) * FLOATS_PER_INSTANCE);
+		std::copy_n(p_other._data.data(), size_t(p_other._count) * _stride, _data.data() + size_t(_count) * _stride);
 		_count = count;
 		_low = glm::min(_low, p_other._low);
 		_high = glm::max(_high, p_other._high);
@@ -132,11 +177,12 @@ public:
 	const glm::vec3 &get_bounds_low() const { return _low; }
 	const glm::vec3 &get_bounds_high() const { return _high; }
 	uint32_t get_count() const { return _count; }
-	uint32_t get_capacity() const { return static_cast<uint32_t>(_data.size() / FLOATS_PER_INSTANCE); }
+	uint32_t get_capacity() const { return static_cast<uint32_t>(_data.size() / _stride); }
 	const float *get_data() const { return _data.data(); }
 
 private:
 	std::vector<float> _data;
+	uint32_t _stride = FLOATS_PER_INSTANCE;
 	uint32_t _count = 0;
 	glm::vec3 _low{ std::numeric_limits<float>::infinity() };
 	glm::vec3 _high{ -std::numeric_limits<float>::infinity() };

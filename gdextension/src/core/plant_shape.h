@@ -35,11 +35,15 @@ struct PlantShape {
 	// parts is drawn at plant_height / parts_height().
 	float part_scale = float(param::PLANT_HEIGHT.default_value) / (PART_LENGTHS.x + PART_LENGTHS.y + PART_LENGTHS.z);
 
+	// Whether the near levels draw a plant as one instance (WholePlant: its parts in one mesh, placed
+	// by the shader) instead of one instance per part.
+	bool whole = false;
+
 	float parts_height() const { return part_lengths.x + part_lengths.y + part_lengths.z; }
 	bool operator==(const PlantShape &p_other) const {
 		return part_lengths == p_other.part_lengths && middle_variation == p_other.middle_variation &&
 				height == p_other.height && cull_radius == p_other.cull_radius && part_scale == p_other.part_scale &&
-				stiffness == p_other.stiffness;
+				stiffness == p_other.stiffness && whole == p_other.whole;
 	}
 };
 

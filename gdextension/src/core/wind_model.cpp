@@ -260,4 +260,38 @@ void WindModel::part_transforms(const Plant &p_plant, const glm::vec2 &p_bend, c
 	r_parts.origin[2] = r_parts.origin[1] + r_parts.basis[1][1] * p_shape.part_lengths.y;
 }
 
+void WindModel::whole_plant(const Plant &p_plant, const glm::vec2 &p_bend, const PlantShape &p_shape, WholePlant &r_plant) const {
+	// part_transforms() tilts each part about a horizontal axis before its yaw: R(a) · Y = Y · R(Yᵀa),
+	// so the plant's frame takes the yaw and the size, and the tilts turn about the axis seen from it.
+	const float size = glm::length(p_bend);
+	const glm::vec2 axis = size > 1e-9f ? glm::vec2(p_bend.y, -p_bend.x) / size : glm::vec2(0.0f, -1.0f);
+	const float c = std::cos(p_plant.yaw);
+	const float s = std::sin(p_plant.yaw);
+	const glm::vec2 own_axis(c * axis.x - s * axis.y, s * axis.x + c * axis.y);
+	const float scale = p_shape.part_scale * p_plant.scale;
+	const glm::mat3 frame = yaw_scale(p_plant.yaw, scale, scale);
+	r_plant.basis = p_plant.lean == glm::vec2(0.0f) ? frame : lean_rotation(p_plant.lean) * frame;
+	r_plant.origin = p_plant.root();
+	r_plant.tilt = own_axis * (size / (_params.d2 * p_shape.stiffness));
+	r_plant.upper = size / (_params.d1 * p_shape.stiffness);
+	r_plant.middle = 1.0f + p_plant.alpha * p_shape.middle_variation;
+}
+
+void assemble_parts(const WholePlant &p_plant, const glm::vec3 &p_part_lengths, PartTransforms &r_parts) {
+	const float bottom = glm::length(p_plant.tilt);
+	const glm::vec2 axis = bottom > 1e-9f ? p_plant.tilt / bottom : glm::vec2(0.0f, -1.0f);
+	const glm::mat3 bottom_tilt = rotation_about_horizontal(axis, bottom);
+	const glm::mat3 upper_tilt = rotation_about_horizontal(axis, p_plant.upper);
+	const glm::mat3 stretch(glm::vec3(1.0f, 0.0f, 0.0f), glm::vec3(0.0f, p_plant.middle, 0.0f), glm::vec3(0.0f, 0.0f, 1.0f));
+	// In the plant's frame: each part turned by its tilt, starting at the previous one's tip.
+	const glm::mat3 own[3] = { bottom_tilt, upper_tilt * stretch, upper_tilt };
+	const glm::vec3 middle_root = bottom_tilt * glm::vec3(0.0f, p_part_lengths.x, 0.0f);
+	const glm::vec3 head_root = middle_root + upper_tilt * glm::vec3(0.0f, p_plant.middle * p_part_lengths.y, 0.0f);
+	const glm::vec3 roots[3] = { glm::vec3(0.0f), middle_root, head_root };
+	for (int part = 0; part < 3; ++part) {
+		r_parts.basis[part] = p_plant.basis * own[part];
+		r_parts.origin[part] = p_plant.origin + p_plant.basis * roots[part];
+	}
+}
+
 } // namespace sunflower

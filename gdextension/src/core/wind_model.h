@@ -23,6 +23,7 @@
 // across the lean; the head sits rigidly on the middle. A bend is a vector on the ground (x, z):
 // its length the bend force, its direction the lean, so pushes from bodies add to the wind's.
 #include "field_layout.h"
+#include "instance_buffer.h"
 #include "plant_shape.h"
 #include "parameters.h"
 
@@ -72,6 +73,11 @@ struct PartTransforms {
 	glm::mat3 basis[3];
 	glm::vec3 origin[3];
 };
+
+// The three part transforms a whole-plant record stands for, as the whole-plant shader places them
+// (shaders/plant_whole.gdshader mirrors this: keep the two in step). p_part_lengths: model units
+// from each part's root to the next one's (PlantShape::part_lengths).
+void assemble_parts(const WholePlant &p_plant, const glm::vec3 &p_part_lengths, PartTransforms &r_parts);
 
 class WindModel {
 public:
@@ -130,6 +136,10 @@ public:
 	void part_transforms(const Plant &p_plant, float p_bend, const PlantShape &p_shape, PartTransforms &r_parts) const;
 	// Part transforms for a bend vector on the ground (x, z): tilted by its length, towards it.
 	void part_transforms(const Plant &p_plant, const glm::vec2 &p_bend, const PlantShape &p_shape, PartTransforms &r_parts) const;
+
+	// The same plant bent by p_bend as one whole-plant record: its frame, and its parts' tilts and
+	// stretch in that frame (assemble_parts() gives back what part_transforms() gives).
+	void whole_plant(const Plant &p_plant, const glm::vec2 &p_bend, const PlantShape &p_shape, WholePlant &r_plant) const;
 
 	// A flip offset in [0, flip_interval) for a plant, so redraws are staggered across the field.
 	float flip_offset(uint64_t p_seed, uint32_t p_plant) const;
