@@ -31,6 +31,7 @@ class Job:
 	var chunk_size: float
 	var plant_symbols: String
 	var plants: Array = []
+	var whole: Array[bool] = []  # per species: drawn whole (decided on the main thread: it asks the renderer)
 	var ground: FieldGround
 	var error: String = ""
 	var usec: int = 0
@@ -51,6 +52,7 @@ class Job:
 		job.plant_symbols = FieldNodes.plant_symbols(field.legend)
 		for species_plant: Resource in species_plants:
 			job.plants.append(species_plant.duplicate())
+			job.whole.append(species_plant.drawn_whole())
 		job.ground = FieldGround.for_field(field)
 		return job
 
@@ -61,6 +63,7 @@ class Job:
 		simulation.set_layout(cell_size, seed, independent_jitter, chunk_size)
 		for species: int in plants.size():
 			plants[species].apply_to(simulation, species)
+			simulation.set_plant_whole(species, whole[species])
 		ground.prepare(simulation)
 		error = simulation.load_map(text, source, legend, plant_symbols, max_plants)
 		if error.is_empty():

@@ -10,7 +10,6 @@ const FieldInteraction: GDScript = preload("field_interaction.gd")
 const FieldNodes: GDScript = preload("field_nodes.gd")
 const FieldObserver: GDScript = preload("field_observer.gd")
 const ImpostorSet: GDScript = preload("impostor_set.gd")
-const PartMeshes: GDScript = preload("part_meshes.gd")
 ## Maps of at least this many bytes (about as many cells) build in the background when the field's
 ## background_build is on; smaller ones take a few milliseconds and build at once.
 const BACKGROUND_BUILD_MIN_BYTES: int = 65536
@@ -131,12 +130,10 @@ func show(nodes: FieldNodes) -> void:
 	_free_foreign_children()
 	if drawn == null:
 		return
-	var meshes: Array = []
 	var tallest: float = 0.0
 	for species_plant: Resource in plants:
-		meshes.append(species_plant.meshes_drawn())
 		tallest = maxf(tallest, species_plant.height * species_plant.scale_max)
-	drawn.finish(meshes, _field.legend, _field.cell_size, tallest * 0.5)
+	drawn.finish(plants, _field.legend, _field.cell_size, tallest * 0.5)
 	configure_wind()
 	configure_lod()
 	configure_push()
@@ -201,9 +198,7 @@ func configure_plants(species_plants: Array) -> bool:
 		impostor_sets[species].configure(plants[species])
 		key.append(plants[species].layout_key())
 		if drawn:
-			for level: int in PartMeshes.LEVELS:
-				for part: int in PartMeshes.PART_NAMES.size():
-					drawn.set_part_mesh(species, level, part, plants[species].mesh_drawn(level, part))
+			drawn.set_plant_meshes(species, plants[species])
 	var changed: bool = key != _layout_key and not _layout_key.is_empty()
 	_layout_key = key
 	return changed

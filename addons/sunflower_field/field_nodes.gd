@@ -25,6 +25,7 @@ var _dynamic_nodes: Array[MultiMeshInstance3D] = []
 var _dynamic_buckets: PackedInt32Array = []  # the native bucket each dynamic node draws
 var _shown_buckets: PackedByteArray = []  # the filled buckets the nodes' visibility follows
 var _object_nodes: Array[Node] = []
+var _whole: Array[bool] = []  # per species: its near plants drawn whole (one node per level)
 var _masks: Array[ImageTexture] = []  # per species: which chunk cells the near buckets draw
 var _mask_version: int = -1  # the simulation's mask version the textures show
 ## The field drawn before this one: tiles that draw the same here take its nodes and GPU buffers.
@@ -112,19 +113,28 @@ func get_tile_progress() -> float:
 
 
 ## Completes the field: the near plants' bucket nodes and the legend's scenes, then shows it all.
-## [param species_meshes] holds each species' part meshes ([code]level × 3 + part[/code]); the near
-## plants' bounds reach [param sway_margin] metres past the chunks' (a swaying plant's lean).
-func finish(species_meshes: Array, legend: Dictionary, cell_size: float, sway_margin: float) -> void:
+## [param species_plants] holds each species' FieldPlant: a plant drawn whole gets one node per
+## level ([code]Mesh1[/code]…), any other one per level and part ([code]Mesh1Bottom[/code]…). The
+## near plants' bounds reach [param sway_margin] metres past the chunks' (a swaying plant's lean).
+func finish(species_plants: Array, legend: Dictionary, cell_size: float, sway_margin: float) -> void:
 	var aabb: AABB = _field_aabb().grow(sway_margin)
 	var per_species: int = Native.constant(&"BUCKET_COUNT")
 	for species: int in simulation.get_species_count():
 		var prefix: String = "" if species == 0 else "Plant%d" % species
-		var meshes: Array = species_meshes[species]
+		var plant: Resource = species_plants[species]
 		var first: int = species * per_species
+		_whole.append(plant.drawn_whole())
 		for level: int in Native.constant(&"MESH_LEVEL_COUNT"):
+			if _whole[species]:
+				var whole: MultiMeshInstance3D = _make_node(
+					"%sMesh%d" % [prefix, level + 1], plant.whole_mesh(level), aabb
+				)
+				whole.multimesh.use_custom_data = true
+				_add_dynamic(whole, first + Native.mesh_bucket(level, 0))
+				continue
 			for part: int in PART_NAMES.size():
 				var node_name: String = "%sMesh%d%s" % [prefix, level + 1, PART_NAMES[part].capitalize()]
-				var node: MultiMeshInstance3D = _make_node(node_name, meshes[level * PART_NAMES.size() + part], aabb)
+				var node: MultiMeshInstance3D = _make_node(node_name, plant.mesh_drawn(level, part), aabb)
 				_add_dynamic(node, first + Native.mesh_bucket(level, part))
 		# The near sprites and billboards: one multi-view impostor draws both.
 		var impostors: MultiMeshInstance3D = _make_node(prefix + "Impostors", _impostors[species].mesh(), aabb)
@@ -187,11 +197,22 @@ func apply_ranges(max_draw_distance: float) -> void:
 			_set_range(node, max_draw_distance)
 
 
-## Draws [param mesh] for [param species]' near plants' [param level] / [param part] (once the
-## field is complete).
-func set_part_mesh(species: int, level: int, part: int, mesh: Mesh) -> void:
-	var bucket: int = species * Native.constant(&"BUCKET_COUNT") + Native.mesh_bucket(level, part)
-	var slot: int = _dynamic_buckets.find(bucket)
+## Draws [param species]' near plants with [param plant]'s meshes as drawn now (once the field is
+## complete), when it is drawn as the nodes were made (whole or part by part; else the field is
+## rebuilt anyway).
+func set_plant_meshes(species: int, plant: Resource) -> void:
+	if species >= _whole.size() or _whole[species] != plant.drawn_whole():
+		return
+	for level: int in Native.constant(&"MESH_LEVEL_COUNT"):
+		if _whole[species]:
+			_set_bucket_mesh(species, Native.mesh_bucket(level, 0), plant.whole_mesh(level))
+			continue
+		for part: int in PART_NAMES.size():
+			_set_bucket_mesh(species, Native.mesh_bucket(level, part), plant.mesh_drawn(level, part))
+
+
+func _set_bucket_mesh(species: int, bucket_in_species: int, mesh: Mesh) -> void:
+	var slot: int = _dynamic_buckets.find(species * Native.constant(&"BUCKET_COUNT") + bucket_in_species)
 	if slot >= 0 and _dynamic_nodes[slot].multimesh.mesh != mesh:
 		_dynamic_nodes[slot].multimesh.mesh = mesh
 

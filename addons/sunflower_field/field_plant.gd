@@ -18,6 +18,7 @@ const Native: GDScript = preload("native.gd")
 const DEFAULT_PATH: String = "res://addons/sunflower_field/plants/sunflower.tres"
 const PartMeshes: GDScript = preload("part_meshes.gd")
 const ImpostorBaker: GDScript = preload("impostor_baker.gd")
+const WholePlantMesh: GDScript = preload("whole_plant_mesh.gd")
 ## The impostor atlases' views: columns around the plant (the first from its front, +z, turning
 ## towards +x), rows of elevation from the side (0°, top row) to straight above (90°, bottom row).
 const ATLAS_VIEWS: Vector2i = Vector2i(12, 4)
@@ -52,6 +53,15 @@ static var _default: FieldPlant
 @export var mesh_level_3: Array[Mesh] = [null, null, null]:
 	set(value):
 		mesh_level_3 = _three(value)
+		emit_changed()
+## Draw each near plant as one instance, its parts merged into one mesh per level and placed by the
+## shader, instead of one instance per part: a third of the draw calls and less per-frame work. Only
+## parts drawn with the addon's plant material ([code]shaders/plant_parts.gdshader[/code], as the
+## built-in plants' are) can be merged; any other plant is drawn part by part whatever this says
+## ([method drawn_whole]).
+@export var draw_whole: bool = true:
+	set(value):
+		draw_whole = value
 		emit_changed()
 
 @export_group("Form")
@@ -144,6 +154,8 @@ static var _default: FieldPlant
 		impostor_depths = value
 		emit_changed()
 
+var _whole_meshes: Dictionary = {}  # level → [what it was merged from, the merged mesh]
+
 
 ## The built-in sunflower (shared: duplicate it before changing it).
 static func default_plant() -> FieldPlant:
@@ -163,13 +175,27 @@ func mesh_drawn(level: int, part: int) -> Mesh:
 	return mesh if mesh else default_plant().get_part_mesh(level, part)
 
 
-## Every part's mesh as drawn, by [code]level × 3 + part[/code].
-func meshes_drawn() -> Array[Mesh]:
-	var meshes: Array[Mesh] = []
+## Whether the near levels draw this plant whole ([member draw_whole], and every level's parts as
+## drawn can be merged).
+func drawn_whole() -> bool:
+	if not draw_whole:
+		return false
 	for level: int in PartMeshes.LEVELS:
-		for part: int in PartMeshes.PART_NAMES.size():
-			meshes.append(mesh_drawn(level, part))
-	return meshes
+		if not WholePlantMesh.can_merge(_drawn_parts(level)):
+			return false
+	return true
+
+
+## The mesh a plant drawn whole is drawn with at [param level] (its parts as drawn, merged), or null
+## when they cannot be merged. Made once per set of parts and [member part_lengths].
+func whole_mesh(level: int) -> Mesh:
+	var parts: Array[Mesh] = _drawn_parts(level)
+	var source: Array = [parts, part_lengths]
+	var made: Array = _whole_meshes.get(level, [])
+	if made.is_empty() or made[0] != source:
+		made = [source, WholePlantMesh.merge(parts, part_lengths)]
+		_whole_meshes[level] = made
+	return made[1]
 
 
 ## The impostor texture drawn ("views" or "normals"): its own, else the built-in sunflower's when
@@ -190,8 +216,9 @@ func impostor_frame() -> Vector2:
 	return Vector2(sqrt(height_units * height_units + impostor_width * impostor_width), height_units * 0.5)
 
 
-## What the layout depends on: a change of any of these rebuilds the field (the impostor frame and
-## textures are the impostor material's, set without a rebuild).
+## What the layout depends on, and whether the plant is drawn whole (the native buckets follow it):
+## a change of any of these rebuilds the field (the impostor frame and textures are the impostor
+## material's, set without a rebuild).
 func layout_key() -> Array:
 	return [
 		height,
@@ -205,6 +232,7 @@ func layout_key() -> Array:
 		scale_max,
 		brightness_variation,
 		tint_variation,
+		drawn_whole(),
 	]
 
 
@@ -233,6 +261,13 @@ func apply_to(simulation: RefCounted, species: int = 0) -> void:
 	simulation.set_plant_form(species, part_lengths, middle_variation, height_units, cull_radius_units, stiffness)
 	simulation.set_plant_height(species, height)
 	simulation.set_plant_variation(species, yaw_range, scale_min, scale_max, brightness_variation, tint_variation)
+
+
+func _drawn_parts(level: int) -> Array[Mesh]:
+	var parts: Array[Mesh] = []
+	for part: int in PartMeshes.PART_NAMES.size():
+		parts.append(mesh_drawn(level, part))
+	return parts
 
 
 func _level(level: int) -> Array[Mesh]:

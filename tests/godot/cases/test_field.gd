@@ -79,27 +79,33 @@ func test_buffers_reach_the_rendering_server() -> void:
 	observer.position = Vector3(10.0, 1.7, 7.5)
 	field.advance(0.3)
 	var simulation: SunflowerSimulation = field.get_simulation()
-	var heads: MultiMeshInstance3D = _node("Mesh1Head")
+	# The built-in sunflower is drawn whole: one instance per mesh-1 plant, in the level's first bucket.
+	var heads: MultiMeshInstance3D = _node("Mesh1")
 	var rid: RID = heads.multimesh.get_rid()
-	var count: int = simulation.get_bucket_instance_count(SunflowerSimulation.mesh_bucket(0, SunflowerField.Part.HEAD))
-	check(count > 100, "mesh-1 heads written: %d" % count)
+	var count: int = simulation.get_bucket_instance_count(SunflowerSimulation.mesh_bucket(0, 0))
+	var whole: int = SunflowerSimulation.WHOLE_FLOATS_PER_INSTANCE
+	check(count > 100, "mesh-1 plants written: %d" % count)
+	check_eq(simulation.get_bucket_instance_count(SunflowerSimulation.mesh_bucket(0, 2)), 0, "no instances per part")
 	check_eq(RenderingServer.multimesh_get_visible_instances(rid), count, "visible instances")
 	var buffer: PackedFloat32Array = RenderingServer.multimesh_get_buffer(rid)
-	check(buffer.size() >= count * SunflowerSimulation.FLOATS_PER_INSTANCE, "buffer holds the instances")
-	# Each head instance is some mesh-1 plant's head transform, as get_plant_info reports it.
+	check(buffer.size() >= count * whole, "buffer holds the instances")
+	# Each instance stands at some mesh-1 plant's root, at its size, as get_plant_info reports it.
 	var heads_by_origin: Dictionary = {}
+	var bottoms: Dictionary = {}
 	for i: int in field.get_plant_count():
 		var info: Dictionary = field.get_plant_info(i)
 		if info["lod"] == 0:
-			var head: Transform3D = info["parts"][2]
-			heads_by_origin[_key(head.origin)] = head
+			var bottom: Transform3D = info["parts"][0]
+			heads_by_origin[_key(bottom.origin)] = info["parts"][2]
+			bottoms[_key(bottom.origin)] = bottom
 	check_eq(heads_by_origin.size(), count, "mesh-1 plants vs instances")
 	for k: int in count:
-		var origin: Vector3 = Vector3(buffer[k * STRIDE + 3], buffer[k * STRIDE + 7], buffer[k * STRIDE + 11])
-		var expected: Variant = heads_by_origin.get(_key(origin))
-		if not check(expected != null, "instance %d at %s is no plant's head" % [k, origin]):
+		var origin: Vector3 = Vector3(buffer[k * whole + 3], buffer[k * whole + 7], buffer[k * whole + 11])
+		var expected: Variant = bottoms.get(_key(origin))
+		if not check(expected != null, "instance %d at %s is no plant's root" % [k, origin]):
 			break
-		check_near(buffer[k * STRIDE + 1], (expected as Transform3D).basis.y.x, 1e-4, "basis y.x of instance %d" % k)
+		var up: Vector3 = Vector3(buffer[k * whole + 1], buffer[k * whole + 5], buffer[k * whole + 9])
+		check_near(up.length(), (expected as Transform3D).basis.y.length(), 1e-4, "size of instance %d" % k)
 	# The renderer culls the bucket by the box of the plants it holds (and the node adds none of its
 	# own): every head lies in it, and it is smaller than the field's.
 	var box: AABB = RenderingServer.multimesh_get_aabb(rid)
@@ -184,18 +190,22 @@ func test_every_plant_is_drawn_exactly_once_along_a_camera_path() -> void:
 				continue  # one part per plant: the bottom part's origin is the plant's root
 			var buffer: PackedFloat32Array = RenderingServer.multimesh_get_buffer(rid)
 			var compact: bool = node.name.begins_with("FarTile")  # 8-float records, whole plants
+			# Near plants drawn whole: one instance each, with custom data.
+			var stride: int = (
+				SunflowerSimulation.WHOLE_FLOATS_PER_INSTANCE if node.multimesh.use_custom_data else STRIDE
+			)
 			# A tile skips the plants of the chunks its material's mask marks (the near buckets draw them).
 			var mask: PackedByteArray = _mask_of(node) if compact else PackedByteArray()
 			for k: int in instances:
 				if compact and mask[roundi(buffer[k * SunflowerSimulation.FAR_FLOATS_PER_INSTANCE + 6])] != 0:
 					continue
-				var root: Vector3 = _root(buffer, k, compact)
+				var root: Vector3 = _root(buffer, k, compact, stride)
 				var index: int = positions.get(_key(root), -1)
 				if check(index >= 0, "%s instance %d at %s is no plant" % [node.name, k, root]):
-					var share: float = 1.0 if compact else buffer[k * STRIDE + 15]
+					var share: float = 1.0 if compact else buffer[k * stride + 15]
 					drawn[index] += 1
 					shares[index] += share
-					var may_fade: bool = node.name.ends_with("Mesh3Bottom") or node.name.ends_with("Impostors")
+					var may_fade: bool = node.name.ends_with("Mesh3") or node.name.ends_with("Impostors")
 					fading[index] += 1 if may_fade and share < 1.0 else 0
 		var wrong: int = 0
 		var crossfading: int = 0
@@ -264,11 +274,11 @@ func _mask_of(node: MultiMeshInstance3D) -> PackedByteArray:
 
 ## The root of instance [param k] of a buffer: a 3D transform's origin, or a static chunk's compact
 ## record's (instance_buffer.h: floats 3, 7 and 2 of 8).
-func _root(buffer: PackedFloat32Array, k: int, compact: bool) -> Vector3:
+func _root(buffer: PackedFloat32Array, k: int, compact: bool, stride: int) -> Vector3:
 	if compact:
 		var far: int = SunflowerSimulation.FAR_FLOATS_PER_INSTANCE
 		return Vector3(buffer[k * far + 3], buffer[k * far + 7], buffer[k * far + 2])
-	return Vector3(buffer[k * STRIDE + 3], buffer[k * STRIDE + 7], buffer[k * STRIDE + 11])
+	return Vector3(buffer[k * stride + 3], buffer[k * stride + 7], buffer[k * stride + 11])
 
 
 func _key(v: Vector3) -> Vector2i:
@@ -336,14 +346,25 @@ func test_part_meshes_can_be_swapped_at_run_time() -> void:
 	observer.position = Vector3(10.0, 1.7, 7.5)
 	field.advance(0.3)
 	var box: BoxMesh = BoxMesh.new()
+	# A box cannot be merged with the other parts: the plant is drawn part by part from then on.
 	field.set_part_mesh(0, SunflowerField.Part.HEAD, box)
+	field.finish_build()
 	check(_node("Mesh1Head").multimesh.mesh == box, "the head multimesh draws the new mesh")
 	check(field.get_part_mesh(0, SunflowerField.Part.HEAD) == box, "get_part_mesh returns it")
+	var sphere: SphereMesh = SphereMesh.new()
+	field.set_part_mesh(0, SunflowerField.Part.HEAD, sphere)  # drawn as before: swapped in place
+	check(_node("Mesh1Head").multimesh.mesh == sphere, "the head multimesh draws the other new mesh")
 	field.set("part_meshes/mesh_1/head", null)
-	check(_node("Mesh1Head").multimesh.mesh != box, "null restores the default")
+	field.finish_build()
+	check(_node("Mesh1").multimesh.mesh.get_surface_count() == 1, "null restores the default, drawn whole")
 	allow_error("out of range")
 	field.set_part_mesh(3, 0, box)
-	check(_node("Mesh1Head").multimesh.mesh != box, "an out-of-range slot changes nothing")
+	for level: int in 3:
+		for part: int in 3:
+			check(
+				field.get_part_mesh(level, part) != box,
+				"an out-of-range slot changes nothing (%d / %d)" % [level, part]
+			)
 	allow_error("is not a Mesh")
 	field.set("part_meshes/mesh_2/bottom", Texture2D.new())
 	check(field.get_part_mesh(1, 0) is ArrayMesh, "a non-mesh resource falls back to the default part")

@@ -27,15 +27,27 @@ func _field(plant: FieldPlant = null) -> SunflowerField:
 	return field
 
 
-## The mesh a field's near bucket node draws for a part.
+## The mesh a field's near bucket node draws for a part (a plant drawn part by part), once a
+## rebuild that is due is done.
 func _drawn_mesh(field: SunflowerField, level: int, part: int) -> Mesh:
-	var node: MultiMeshInstance3D = _drawn_mesh_node(field, level, part)
+	field.finish_build()
+	var node: MultiMeshInstance3D = _child_named(field, "Mesh%d%s" % [level + 1, ["Bottom", "Middle", "Head"][part]])
 	return node.multimesh.mesh if node else null
 
 
-## A field's near bucket node for a part (of its '*' plant).
-func _drawn_mesh_node(field: SunflowerField, level: int, part: int) -> MultiMeshInstance3D:
-	return _child_named(field, "Mesh%d%s" % [level + 1, ["Bottom", "Middle", "Head"][part]])
+## The mesh a field's near bucket node draws for a level of a plant drawn whole (null when the
+## plant is drawn part by part), once a rebuild that is due is done.
+func _whole_mesh(field: SunflowerField, level: int) -> Mesh:
+	field.finish_build()
+	var node: MultiMeshInstance3D = _child_named(field, "Mesh%d" % (level + 1))
+	return node.multimesh.mesh if node else null
+
+
+## The node that draws a field's mesh-1 heads: its plants' level-1 node drawn whole, else its head
+## part's.
+func _heads_node(field: SunflowerField) -> MultiMeshInstance3D:
+	var whole: MultiMeshInstance3D = _child_named(field, "Mesh1")
+	return whole if whole else _child_named(field, "Mesh1Head")
 
 
 ## A field's internal MultiMesh node of that name, or null.
@@ -53,17 +65,19 @@ func test_the_built_in_sunflower_is_the_default_and_stays_shared_unchanged() -> 
 	var first: SunflowerField = _field()
 	var second: SunflowerField = _field()
 	check(first.plant == null, "no plant set: the built-in one is grown")
-	check(_drawn_mesh(first, 0, 2) == default_plant.get_part_mesh(0, 2), "the sunflower's head is drawn")
+	check(default_plant.drawn_whole(), "the sunflower is drawn whole")
+	check(_whole_mesh(first, 0) == default_plant.whole_mesh(0), "the sunflower's parts are drawn, merged")
 	check(first.impostor_views == default_plant.impostor_views, "and its impostor textures")
 	var box: BoxMesh = BoxMesh.new()
 	first.set_part_mesh(0, 2, box)
 	check(first.plant != null and first.plant != default_plant, "set_part_mesh gives the field its own plant")
-	check(_drawn_mesh(first, 0, 2) == box, "the new head is drawn")
+	check(_drawn_mesh(first, 0, 2) == box, "the new head is drawn (part by part: a box cannot be merged)")
+	check(_drawn_mesh(first, 0, 1) == default_plant.get_part_mesh(0, 1), "with the sunflower's other parts")
 	check(default_plant.get_part_mesh(0, 2) != box, "the built-in plant is unchanged")
-	check(_drawn_mesh(second, 0, 2) == default_plant.get_part_mesh(0, 2), "another field is unchanged")
+	check(_whole_mesh(second, 0) == default_plant.whole_mesh(0), "another field is unchanged")
 	check(first.get_part_mesh(0, 1) == default_plant.get_part_mesh(0, 1), "the other parts stay the sunflower's")
 	first.set_part_mesh(0, 2, null)
-	check(_drawn_mesh(first, 0, 2) == default_plant.get_part_mesh(0, 2), "null restores the default part")
+	check(_whole_mesh(first, 0) != null, "null restores the default part, drawn whole again")
 	# Scenes saved before plant types named part meshes "part_meshes/mesh_N/part".
 	second.set("part_meshes/mesh_2/middle", box)
 	check(_drawn_mesh(second, 1, 1) == box, "the old property name still sets a part")
@@ -89,7 +103,8 @@ func test_a_plants_form_and_height_shape_the_plants_drawn() -> void:
 	check((parts[0] as Transform3D).basis.z.is_equal_approx(Vector3(0, 0, 2)), "no yaw with a zero yaw range")
 	# Without meshes of its own, the plant is drawn with the sunflower's parts and impostors; with
 	# its own level-1 parts but no textures (not baked yet), its impostors are untextured, and it says so.
-	check(_drawn_mesh(field, 0, 0) == FieldPlant.default_plant().get_part_mesh(0, 0))
+	check(_whole_mesh(field, 0) == plant.whole_mesh(0), "drawn whole")
+	check(plant.whole_mesh(0).get_faces().size() > 0, "of the sunflower's parts, merged")
 	check(field.impostor_views == FieldPlant.default_plant().impostor_views)
 	take_warnings()
 	plant.set_part_mesh(0, 1, BoxMesh.new())
@@ -120,8 +135,8 @@ func test_a_plants_variety_spreads_sizes_and_yaws_within_its_ranges() -> void:
 	check(largest - smallest > 0.7, "and spread over the range")
 	check(widest <= PI / 2.0 + 1e-4 and widest > 1.3, "yaws within ±90° (widest %.2f rad)" % widest)
 	# Colour variety: the near buckets' instance colours (after the transform) vary by the range.
-	var heads: MultiMesh = _drawn_mesh_node(field, 0, 2).multimesh
-	var stride: int = SunflowerSimulation.FLOATS_PER_INSTANCE
+	var heads: MultiMesh = _heads_node(field).multimesh
+	var stride: int = SunflowerSimulation.WHOLE_FLOATS_PER_INSTANCE
 	var white: bool = true
 	for k: int in mini(RenderingServer.multimesh_get_buffer(heads.get_rid()).size() / stride, 50):
 		white = white and RenderingServer.multimesh_get_buffer(heads.get_rid())[k * stride + 12] == 1.0
@@ -130,9 +145,7 @@ func test_a_plants_variety_spreads_sizes_and_yaws_within_its_ranges() -> void:
 	await frames(1)
 	field.finish_build()
 	field.advance(0.1)
-	var buffer: PackedFloat32Array = RenderingServer.multimesh_get_buffer(
-		_drawn_mesh_node(field, 0, 2).multimesh.get_rid()
-	)
+	var buffer: PackedFloat32Array = RenderingServer.multimesh_get_buffer(_heads_node(field).multimesh.get_rid())
 	var greens: Array[float] = []
 	for k: int in mini(buffer.size() / stride, 200):
 		greens.append(buffer[k * stride + 13])
@@ -152,10 +165,22 @@ func test_changing_a_shared_plant_rebuilds_every_field_that_grows_it() -> void:
 	second.finish_build()
 	for field: SunflowerField in [first, second]:
 		check_near(field.get_simulation().get_chunk_aabb(0).end.y, before * 2.0, 0.05, "chunk bounds follow the height")
+	# Drawn whole: a part that merges as well is swapped into both fields' merged meshes in place.
+	var other_bottom: Mesh = FieldPlant.default_plant().get_part_mesh(1, 0)
+	plant.set_part_mesh(2, 0, other_bottom)
+	check(not first.is_building() and not second.is_building(), "a mesh change drawn the same way needs no rebuild")
+	var merged: Mesh = plant.whole_mesh(2)
+	check(_whole_mesh(first, 2) == merged and _whole_mesh(second, 2) == merged, "a mesh change shows in both")
+	check(merged.get_faces().size() > FieldPlant.default_plant().whole_mesh(2).get_faces().size(), "with the new part")
+	# Part by part (a box cannot be merged: both rebuild once), then a mesh change swaps in place.
 	var box: BoxMesh = BoxMesh.new()
 	plant.set_part_mesh(2, 0, box)
+	check(first.is_building(), "changing how the plant is drawn rebuilds the field")
 	check(_drawn_mesh(first, 2, 0) == box and _drawn_mesh(second, 2, 0) == box, "a mesh change shows in both")
-	check(not first.is_building(), "a mesh change needs no rebuild")
+	var sphere: SphereMesh = SphereMesh.new()
+	plant.set_part_mesh(2, 1, sphere)
+	check(not first.is_building(), "a mesh change drawn the same way needs no rebuild")
+	check(_drawn_mesh(first, 2, 1) == sphere and _drawn_mesh(second, 2, 1) == sphere, "and shows in both")
 	take_warnings()
 
 

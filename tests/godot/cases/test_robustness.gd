@@ -177,7 +177,8 @@ func _lifecycle_round(killer_script: GDScript) -> void:
 	await frames(2)
 	check_eq(copy.get_plant_count(), 1103, "a duplicate builds its own field")
 	var internal: int = copy.get_child_count(true) - copy.get_child_count(false)
-	var expected: int = SunflowerSimulation.BUCKET_COUNT + copy.get_simulation().get_tile_count()
+	# The sunflower is drawn whole: a node per mesh level and one of the near impostors, then the tiles.
+	var expected: int = SunflowerSimulation.MESH_LEVEL_COUNT + 1 + copy.get_simulation().get_tile_count()
 	check_eq(internal, expected, "the duplicate holds its own nodes only, not copies of the original's")
 	subject.map = null
 	await frames(1)

@@ -64,7 +64,8 @@ func test_a_legend_plant_is_a_species_with_its_own_buckets_impostors_and_counts(
 	check(types.size() == 2 and types[1] == maize, "the field grows the sunflower and the legend's plant")
 	check(_node_named(field, "Plant1Mesh1Head") != null, "the second type has its own near bucket nodes")
 	check(_node_named(field, "Plant1Mesh1Head").multimesh.mesh == box, "drawn with its own parts")
-	check(_node_named(field, "Mesh1Head").multimesh.mesh != box, "the sunflower keeps its own")
+	check(_node_named(field, "Plant1Mesh1") == null, "part by part: a box cannot be merged")
+	check(_node_named(field, "Mesh1").multimesh.mesh == types[0].whole_mesh(0), "the sunflower keeps its own, whole")
 	# The far impostors of the second type are framed for it: 3.5 model units tall.
 	var maize_quad: Mesh = _node_named(field, "Plant1Impostors").multimesh.mesh
 	var sunflower_quad: Mesh = _node_named(field, "Impostors").multimesh.mesh
