@@ -48,6 +48,16 @@ void fragment() {
 ## plant's resource file, named after it), and gives them to the plant (reimported in the editor;
 ## loaded from the files elsewhere). Returns OK, or an error after pushing what went wrong.
 static func bake(plant: FieldPlant, host: Node, folder: String = "", base_name: String = "") -> Error:
+	# The editor draws a frame only when something on screen changed; the bake waits for drawn frames
+	# of its own viewport, so frames are drawn continuously while it runs.
+	var low_processor: bool = OS.low_processor_usage_mode
+	OS.low_processor_usage_mode = false
+	var result: Error = await _bake(plant, host, folder, base_name)
+	OS.low_processor_usage_mode = low_processor
+	return result
+
+
+static func _bake(plant: FieldPlant, host: Node, folder: String, base_name: String) -> Error:
 	if plant == null or host == null or not host.is_inside_tree():
 		push_error("Bake impostors: needs a plant and a node in the scene tree to render under")
 		return ERR_INVALID_PARAMETER

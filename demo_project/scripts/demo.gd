@@ -16,6 +16,7 @@ extends Node3D
 ##   --culling off            do not skip plants outside the camera's view
 ##   --baseline native        draw the field the Godot-native way instead (benchmark baseline)
 ##   --wind P                 the wind power (0: calm)
+##   --whole off              draw the near plants part by part (FieldPlant.draw_whole off)
 ##   --no-hud                 hide the heads-up display (pictures for measurements)
 
 const MAP_NAMES: PackedStringArray = [
@@ -99,6 +100,10 @@ func _ready() -> void:
 				_field.frustum_culling = value != "off"
 			"--baseline":
 				_baseline = value
+			"--whole":
+				var own: FieldPlant = FieldPlant.default_plant().duplicate()
+				own.draw_whole = value != "off"
+				_field.plant = own
 			"--wind":
 				_field.wind_power = value.to_float()
 			"--no-hud":

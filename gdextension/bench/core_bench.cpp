@@ -42,6 +42,7 @@ struct Walk {
 	bool print = true;
 	int wind_model = WIND_NATURAL;
 	int pushers = 0; // bodies walking with the camera, 0.6 m radius, on a 2 m ring around it
+	bool whole = true; // near plants drawn whole, as the node draws the built-in plants; else part by part
 };
 
 struct Run {
@@ -52,6 +53,9 @@ struct Run {
 // A camera 1.7 m high walking a circle, looking along its path (a 90° frustum, as a Camera3D
 // gives it: outward planes); the per-frame update timed.
 Run walk(FieldSimulation &r_sim, int p_frames, const Walk &p_walk) {
+	PlantShape shape = r_sim.get_shape();
+	shape.whole = p_walk.whole;
+	r_sim.set_shape(shape);
 	const glm::vec2 size = r_sim.get_layout().size;
 	std::vector<double> times;
 	times.reserve(static_cast<size_t>(p_frames));
@@ -133,7 +137,8 @@ int main() {
 			four.p99 / one.p99);
 
 	// The wind models' cost per near plant, and what pushers add, on one thread along the 1M walk.
-	std::printf("\nWind models and pushers (1M field, power 3, one thread, 1200 frames each):\n\n");
+	std::printf("\nWind models, parts and pushers (1M field, power 3, one thread, 1200 frames each; plants drawn whole\n"
+				"unless said):\n\n");
 	std::printf("| run | median ms | p99 ms | near plants | ns per near plant |\n|---|---|---|---|---|\n");
 	Walk one_thread = path;
 	one_thread.threads = 1;
@@ -154,6 +159,17 @@ int main() {
 		no_pushers = result.result;
 		std::printf("| %s wind | %.3f | %.3f | %u | %.1f |\n", model == WIND_THESIS ? "thesis" : "natural",
 				result.result.median, result.result.p99, result.active_plants, per_plant[model]);
+	}
+	{
+		FieldSimulation sim;
+		MapError error;
+		sim.load_map(rect_map(1000, 1000), U"", "1M", MapLimits{}, error);
+		sim.set_worker_threads(1);
+		Walk parts = one_thread;
+		parts.whole = false;
+		const Run result = walk(sim, 1200, parts);
+		std::printf("| natural wind, part by part | %.3f | %.3f | %u | %.1f |\n", result.result.median, result.result.p99,
+				result.active_plants, result.result.median * 1e6 / result.active_plants);
 	}
 	{
 		FieldSimulation sim;
