@@ -245,9 +245,11 @@ const PartMeshes: GDScript = preload("part_meshes.gd")
 			_driver.configure_lod()
 ## Metres over which a plant leaving mesh 3 dithers into its impostor (both drawn, complementary
 ## screen-door patterns), ending at the sprite switch less [member lod_hysteresis]: no plant pops
-## from mesh to impostor. Plant materials fade when they dither by the instance colour's alpha, as
-## the addon's [code]shaders/plant_parts.gdshader[/code] does (the built-in plants use it); other
-## materials switch at once. 0 turns the fade off.
+## from mesh to impostor. Plants drawn whole ([member FieldPlant.draw_whole]) also dither from mesh 1
+## into 2 and from 2 into 3, over as large a share of this as the switch distance is of the sprite
+## switch's. Plant materials fade when they dither by the instance colour's alpha, as the addon's
+## [code]shaders/plant_parts.gdshader[/code] does (the built-in plants use it); other materials
+## switch at once. 0 turns the fades off.
 @export_range(0.0, 10.0, 0.1, "or_greater", "suffix:m") var lod_fade: float = 3.0:
 	set(value):
 		value = Native.accept("SunflowerField.lod_fade", value, lod_fade)

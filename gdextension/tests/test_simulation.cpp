@@ -36,25 +36,29 @@ int64_t total(const std::array<int64_t, LOD_COUNT> &p_counts) {
 
 // Plants drawn by the dynamic buckets plus the tiles' records the impostor shader keeps (those whose
 // chunk cell the active mask leaves 0): with no frustum, every plant must be drawn exactly once, or,
-// in the mesh 3 → impostor cross-fade, twice: as mesh 3 and as an impostor whose shares (the
-// instance colours' alpha, the patterns each level's shader keeps) add up to one. Returns the
-// plants drawn.
+// in a cross-fade, twice with complementary shares that add up to one: mesh 3 and its impostor (the
+// instance colours' alpha, the patterns each level's shader keeps), or, drawn whole, two adjacent
+// mesh levels (the finer with a positive alpha, the coarser with a negative one: the other pixels).
+// Returns the plants drawn.
 int64_t drawn(const FieldSimulation &p_sim) {
 	struct Drawn {
 		float share = 0.0f;
 		int representations = 0;
-		bool mesh_3 = false;
+		int finest = -1; // the finest level drawn (3: impostor)
+		int levels = 0; // bits: the levels drawn
+		bool complement = false; // a level drew the other pixels (negative alpha)
 	};
 	std::map<std::pair<float, float>, Drawn> plants; // by root (x, z)
-	auto add = [&](const InstanceBuffer &p_bucket, bool p_may_fade, bool p_mesh_3) {
+	auto add = [&](const InstanceBuffer &p_bucket, int p_level) {
 		for (uint32_t i = 0; i < p_bucket.get_count(); ++i) {
 			const float *instance = p_bucket.get_data() + size_t(i) * p_bucket.get_stride();
 			Drawn &plant = plants[{ instance[3], instance[11] }];
-			plant.share += instance[15];
+			plant.share += std::abs(instance[15]);
 			plant.representations += 1;
-			plant.mesh_3 = plant.mesh_3 || p_mesh_3;
-			if (!p_may_fade) {
-				CHECK(instance[15] == 1.0f);
+			plant.levels |= 1 << p_level;
+			plant.complement = plant.complement || instance[15] < 0.0f;
+			if (p_level == 0) { // nothing fades into mesh 1
+				CHECK(instance[15] > 0.0f);
 			}
 		}
 	};
@@ -65,9 +69,9 @@ int64_t drawn(const FieldSimulation &p_sim) {
 		CHECK(p_sim.get_bucket(mesh_bucket(level, 0)).get_stride() == (whole ? WHOLE_FLOATS_PER_INSTANCE : FLOATS_PER_INSTANCE));
 		CHECK(p_sim.get_bucket(mesh_bucket(level, 1)).get_count() == (whole ? 0 : bottom));
 		CHECK(p_sim.get_bucket(mesh_bucket(level, 2)).get_count() == (whole ? 0 : bottom));
-		add(p_sim.get_bucket(mesh_bucket(level, 0)), level == LOD_MESH_3, level == LOD_MESH_3);
+		add(p_sim.get_bucket(mesh_bucket(level, 0)), int(level));
 	}
-	add(p_sim.get_bucket(BUCKET_IMPOSTOR), true, false);
+	add(p_sim.get_bucket(BUCKET_IMPOSTOR), LOD_SPRITE);
 	const FieldLayout &layout = p_sim.get_layout();
 	std::vector<uint8_t> mask(size_t(layout.grid_x) * size_t(layout.grid_z));
 	p_sim.write_active_mask(0, mask.data());
@@ -81,14 +85,23 @@ int64_t drawn(const FieldSimulation &p_sim) {
 				Drawn &plant = plants[{ record.root.x, record.root.z }];
 				plant.share += 1.0f;
 				plant.representations += 1;
+				plant.levels |= 1 << LOD_SPRITE;
 			}
 		}
 	}
+	const bool whole = p_sim.get_shape().whole;
 	for (const auto &[root, plant] : plants) {
 		CHECK(plant.share == doctest::Approx(1.0f).epsilon(1e-5));
 		CHECK(plant.representations <= 2);
 		if (plant.representations == 2) {
-			CHECK(plant.mesh_3); // the only pair: mesh 3 and its impostor
+			// The pairs: mesh 3 and its impostor; drawn whole, also mesh 1 and 2, or 2 and 3, the coarser
+			// drawing the other pixels.
+			const bool impostor_pair = plant.levels == ((1 << LOD_MESH_3) | (1 << LOD_SPRITE)) && !plant.complement;
+			const bool mesh_pair = whole && plant.complement &&
+					(plant.levels == ((1 << LOD_MESH_1) | (1 << LOD_MESH_2)) || plant.levels == ((1 << LOD_MESH_2) | (1 << LOD_MESH_3)));
+			CHECK((impostor_pair || mesh_pair));
+		} else {
+			CHECK(!plant.complement);
 		}
 	}
 	return int64_t(plants.size());
@@ -113,12 +126,13 @@ TEST_CASE("every plant is drawn exactly once along a path, and LOD counts follow
 		CHECK(drawn(sim) == 24000);
 		const auto counts = sim.get_lod_counts();
 		CHECK(total(counts) == 24000);
-		// With no frustum, the mesh buckets hold exactly the plants counted at mesh levels (mesh 3 but
-		// those wholly faded into their impostors).
-		for (uint32_t level = 0; level < LOD_MESH_3; ++level) {
+		// With no frustum, part by part, the mesh buckets hold exactly the plants counted at mesh levels
+		// (mesh 3 but those wholly faded into their impostors). Drawn whole, plants fading into the
+		// next level are in its bucket too.
+		for (uint32_t level = 0; level < LOD_MESH_3 && !sim.get_shape().whole; ++level) {
 			CHECK(sim.get_bucket(mesh_bucket(level, 0)).get_count() == counts[level]);
 		}
-		CHECK(sim.get_bucket(mesh_bucket(LOD_MESH_3, 0)).get_count() <= counts[LOD_MESH_3]);
+		CHECK(sim.get_bucket(mesh_bucket(LOD_MESH_3, 0)).get_count() <= counts[LOD_MESH_3] + counts[LOD_MESH_2]);
 	}
 	sim.set_observer({ 50.0f, 1.7f, 30.0f });
 	sim.request_lod_update();
@@ -708,6 +722,82 @@ TEST_CASE("mesh 3 dithers into its impostor over the fade metres before the spri
 	sim.update(0.016f);
 	for (const auto &[root, share] : impostor_shares()) {
 		CHECK((share == 0.0f || share == 1.0f));
+	}
+	CHECK(drawn(sim) == sim.get_plant_count());
+}
+
+TEST_CASE("drawn whole, mesh 1 and 2 dither into the next level before their switches, the same whichever level a plant is at") {
+	FieldSimulation sim;
+	load(sim, rect_map(120, 120)); // 60 × 60 m
+	LodParams lod; // switches at 6, 10, 20 m, hysteresis 0.5 m, fade 3 m at 20 m: 0.9 m at 6, 1.5 m at 10
+	lod.interval = 0.0f;
+	sim.set_lod(lod);
+	PlantShape shape;
+	shape.whole = true;
+	sim.set_shape(shape);
+	const glm::vec3 eye{ 30.0f, 1.7f, 30.0f };
+	const float middle = 0.5f * PlantShape::HEIGHT * float(param::PLANT_HEIGHT.default_value) / 3.0f;
+	const struct {
+		float start, length;
+	} bands[2] = { { 4.6f, 0.9f }, { 8.0f, 1.5f } };
+	int in_band[2] = { 0, 0 };
+	for (float step : { 0.0f, 0.4f, 0.8f, 0.4f, 0.0f }) { // out and back in: levels differ in the hysteresis bands
+		const glm::vec3 at = eye + glm::vec3(step, 0.0f, 0.0f);
+		sim.set_observer(at);
+		for (int i = 0; i < 10; ++i) {
+			sim.request_lod_update();
+			sim.update(0.016f);
+		}
+		// Each plant's alpha per mesh level.
+		std::map<std::pair<float, float>, std::array<float, 3>> alphas;
+		for (uint32_t level = 0; level < LOD_MESH_COUNT; ++level) {
+			const InstanceBuffer &bucket = sim.get_bucket(mesh_bucket(level, 0));
+			for (uint32_t i = 0; i < bucket.get_count(); ++i) {
+				const float *instance = bucket.get_data() + size_t(i) * bucket.get_stride();
+				alphas.try_emplace({ instance[3], instance[11] }, std::array<float, 3>{ 0.0f, 0.0f, 0.0f });
+				alphas[{ instance[3], instance[11] }][level] = instance[15];
+			}
+		}
+		for (uint32_t i = 0; i < sim.get_plant_count(); ++i) {
+			const Plant &plant = sim.get_layout().plants[i];
+			const float distance = glm::length(at - (plant.root() + glm::vec3(0.0f, middle, 0.0f)));
+			for (int band = 0; band < 2; ++band) {
+				if (distance < bands[band].start - 1.0f || distance > bands[band].start + bands[band].length + 1.0f) {
+					continue;
+				}
+				const auto found = alphas.find({ plant.root().x, plant.root().z });
+				REQUIRE(found != alphas.end());
+				const float share = std::clamp((distance - bands[band].start) / bands[band].length, 0.0f, 1.0f);
+				const float finer = found->second[band];
+				const float coarser = found->second[band + 1];
+				CAPTURE(distance);
+				CAPTURE(band);
+				if (share <= 0.0f) {
+					CHECK(finer == doctest::Approx(1.0f));
+					CHECK(coarser == 0.0f);
+				} else if (share >= 1.0f) {
+					CHECK(finer == 0.0f);
+					CHECK(coarser == doctest::Approx(1.0f));
+				} else {
+					CHECK(finer == doctest::Approx(1.0f - share).epsilon(1e-3));
+					CHECK(coarser == doctest::Approx(-share).epsilon(1e-3)); // the other pixels
+					++in_band[band];
+				}
+			}
+		}
+		CHECK(drawn(sim) == sim.get_plant_count());
+	}
+	CHECK(in_band[0] > 40);
+	CHECK(in_band[1] > 80);
+	shape.whole = false; // part by part (any material): the mesh levels switch at once
+	sim.set_shape(shape);
+	sim.request_lod_update();
+	sim.update(0.016f);
+	for (uint32_t level = 0; level < LOD_MESH_3; ++level) {
+		const InstanceBuffer &bucket = sim.get_bucket(mesh_bucket(level, 0));
+		for (uint32_t i = 0; i < bucket.get_count(); ++i) {
+			CHECK(bucket.get_data()[size_t(i) * bucket.get_stride() + 15] == 1.0f);
+		}
 	}
 	CHECK(drawn(sim) == sim.get_plant_count());
 }

@@ -505,6 +505,19 @@ void FieldSimulation::_move_chunks(size_t p_first, size_t p_last, float p_delta,
 			color.w = 1.0f - share;
 			if (shape.whole) {
 				_wind.whole_plant(plant, _plant_bend(index, plant, moving), shape, whole);
+				// Drawn whole (by the addon's plant shader), mesh 1 and 2 near their switches dither into
+				// the next level the same way: the coarser mesh keeps the other pixels, which a negative
+				// alpha asks for (plant_surface.gdshaderinc).
+				const float coarser = lod < LOD_MESH_3 && fading ? _lod.fade_share(lod, _plant_distance_sq(plant)) : 0.0f;
+				if (coarser > 0.0f) {
+					InstanceBuffer &next = buckets[mesh_bucket(lod + 1u, 0)];
+					write_whole_instance(next.push(), whole, glm::vec4(glm::vec3(color), coarser < 1.0f ? -coarser : 1.0f));
+					next.include(middle, reach);
+					if (coarser >= 1.0f) {
+						continue;
+					}
+					color.w = 1.0f - coarser;
+				}
 				InstanceBuffer &bucket = buckets[mesh_bucket(lod, 0)];
 				write_whole_instance(bucket.push(), whole, color);
 				bucket.include(middle, reach);

@@ -22,9 +22,12 @@ void LodSelector::configure(const LodParams &p_params) {
 		_coarser_sq[i] = (d + _params.hysteresis) * (d + _params.hysteresis);
 		_finer_sq[i] = finer * finer;
 	}
-	const float fade_end = std::max(0.0f, _params.distances[2] - _params.hysteresis);
-	_fade_start = std::max(0.0f, fade_end - _params.fade);
-	_fade_start_sq = _params.fade > 0.0f ? _fade_start * _fade_start : std::numeric_limits<float>::infinity();
+	for (size_t i = 0; i < 3; ++i) {
+		const float fade_end = std::max(0.0f, _params.distances[i] - _params.hysteresis);
+		_fade_length[i] = _params.fade * _params.distances[i] / _params.distances[2];
+		_fade_start[i] = std::max(0.0f, fade_end - _fade_length[i]);
+		_fade_start_sq[i] = _fade_length[i] > 0.0f ? _fade_start[i] * _fade_start[i] : std::numeric_limits<float>::infinity();
+	}
 }
 
 uint8_t LodSelector::select(float p_distance_sq) const {

@@ -42,23 +42,31 @@ public:
 	uint8_t select(float p_distance_sq) const;
 	// The level for a plant that was at p_current: hysteresis applies.
 	uint8_t update(uint8_t p_current, float p_distance_sq) const;
-	// How much of a mesh-3 plant at squared distance p_distance_sq its impostor draws, 0–1: the
-	// cross-fade runs over `fade` metres up to the mesh 3 → sprite switch less the hysteresis, so a
-	// plant on either side of the switch looks the same whichever level it is at.
-	float impostor_share(float p_distance_sq) const {
-		if (p_distance_sq <= _fade_start_sq) {
+	// How much of a plant at the finer level of switch p_switch (0: mesh 1 → 2, 1: mesh 2 → 3,
+	// 2: mesh 3 → impostor) at squared distance p_distance_sq the coarser level draws, 0–1: the
+	// cross-fade ends at the switch distance less the hysteresis, so a plant on either side of the
+	// switch looks the same whichever level it is at. It runs over `fade` metres before the sprite
+	// switch, and over a share of it as large as the switch distance's share of the sprite
+	// switch's before the mesh switches (1.5 m at 10 m with the defaults).
+	float fade_share(uint32_t p_switch, float p_distance_sq) const {
+		if (p_distance_sq <= _fade_start_sq[p_switch]) {
 			return 0.0f;
 		}
-		return std::min(1.0f, (std::sqrt(p_distance_sq) - _fade_start) / _params.fade);
+		return std::min(1.0f, (std::sqrt(p_distance_sq) - _fade_start[p_switch]) / _fade_length[p_switch]);
 	}
+	// The mesh 3 → impostor share (fade_share(2, …)).
+	float impostor_share(float p_distance_sq) const { return fade_share(2, p_distance_sq); }
 
 private:
 	LodParams _params;
 	std::array<float, 4> _plain_sq{};
 	std::array<float, 4> _coarser_sq{}; // (d + margin)²: leave level i for i + 1 beyond this
 	std::array<float, 4> _finer_sq{}; // (d - margin)²: leave level i + 1 for i below this
-	float _fade_start = 0.0f; // metres: mesh 3 starts to dither into its impostor here
-	float _fade_start_sq = 0.0f; // infinite without a fade
+	// Per switch (mesh 1 → 2, 2 → 3, 3 → impostor): metres where the finer level starts to dither
+	// into the coarser, over how many metres; the start squared is infinite without a fade.
+	std::array<float, 3> _fade_start{};
+	std::array<float, 3> _fade_length{};
+	std::array<float, 3> _fade_start_sq{};
 };
 
 } // namespace sunflower
