@@ -187,7 +187,8 @@ func drawn_whole() -> bool:
 
 
 ## The mesh a plant drawn whole is drawn with at [param level] (its parts as drawn, merged), or null
-## when they cannot be merged. Made once per set of parts and [member part_lengths].
+## when they cannot be merged. Made once per set of parts and [member part_lengths]: an edit inside
+## a part mesh or its material shows once a part slot or the lengths change (set the part again).
 func whole_mesh(level: int) -> Mesh:
 	var parts: Array[Mesh] = _drawn_parts(level)
 	var source: Array = [parts, part_lengths]
