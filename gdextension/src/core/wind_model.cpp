@@ -265,11 +265,10 @@ void WindModel::whole_plant(const Plant &p_plant, const glm::vec2 &p_bend, const
 	// so the plant's frame takes the yaw and the size, and the tilts turn about the axis seen from it.
 	const float size = glm::length(p_bend);
 	const glm::vec2 axis = size > 1e-9f ? glm::vec2(p_bend.y, -p_bend.x) / size : glm::vec2(0.0f, -1.0f);
-	const float c = std::cos(p_plant.yaw);
-	const float s = std::sin(p_plant.yaw);
-	const glm::vec2 own_axis(c * axis.x - s * axis.y, s * axis.x + c * axis.y);
-	const float scale = p_shape.part_scale * p_plant.scale;
-	const glm::mat3 frame = yaw_scale(p_plant.yaw, scale, scale);
+	const glm::mat3 yaw = yaw_scale(p_plant.yaw, 1.0f, 1.0f);
+	// Yᵀa: the axis against the yawed frame's x and z columns.
+	const glm::vec2 own_axis(yaw[0].x * axis.x + yaw[0].z * axis.y, yaw[2].x * axis.x + yaw[2].z * axis.y);
+	const glm::mat3 frame = yaw * (p_shape.part_scale * p_plant.scale);
 	r_plant.basis = p_plant.lean == glm::vec2(0.0f) ? frame : lean_rotation(p_plant.lean) * frame;
 	r_plant.origin = p_plant.root();
 	r_plant.tilt = own_axis * (size / (_params.d2 * p_shape.stiffness));
