@@ -33,10 +33,10 @@ TEST_CASE("positions follow x = (column + α)·cell, z = (row + α)·cell with �
 		const Plant &plant = layout.plants[i];
 		const int column = static_cast<int>(i % 40);
 		const int row = static_cast<int>(i / 40);
-		CHECK(plant.alpha >= 0.0f);
-		CHECK(plant.alpha < 0.5f);
-		CHECK(plant.position.x == doctest::Approx((float(column) + plant.alpha) * 0.5f));
-		CHECK(plant.position.y == doctest::Approx((float(row) + plant.alpha) * 0.5f)); // the same α on z
+		CHECK(plant.alpha() >= 0.0f);
+		CHECK(plant.alpha() < 0.5f);
+		CHECK(plant.position.x == doctest::Approx((float(column) + plant.alpha()) * 0.5f));
+		CHECK(plant.position.y == doctest::Approx((float(row) + plant.alpha()) * 0.5f)); // the same α on z
 	}
 }
 
@@ -53,7 +53,7 @@ TEST_CASE("a seed reproduces a field exactly; another seed does not") {
 	for (size_t i = 0; i < a.plants.size(); ++i) {
 		CHECK(a.plants[i].position == b.plants[i].position);
 		CHECK(a.plants[i].yaw == b.plants[i].yaw);
-		same += a.plants[i].alpha == c.plants[i].alpha ? 1 : 0;
+		same += a.plants[i].alpha() == c.plants[i].alpha() ? 1 : 0;
 	}
 	CHECK(same < 5);
 }

@@ -91,7 +91,7 @@ TEST_CASE("eq. 4: part ends move by m2 and m1 + m2 along the wind, vertical exte
 TEST_CASE("joints chain exactly: each part's root is the previous part's tip, head rigid on the middle") {
 	Plant plant;
 	plant.position = { 3.0f, -2.0f };
-	plant.alpha = 0.4f;
+	plant.set_alpha(0.4f);
 	plant.yaw = 0.3f;
 	PartTransforms parts;
 	const WindModel wind = make_wind(3.0f, { 0.3f, -1.0f });
@@ -382,10 +382,10 @@ TEST_CASE("a plant drawn whole: its record gives back the part transforms, throu
 					Plant plant;
 					plant.position = { 4.0f, -7.0f };
 					plant.ground = 1.5f;
-					plant.alpha = 0.35f;
+					plant.set_alpha(0.35f);
 					plant.yaw = yaw;
 					plant.scale = 1.2f;
-					plant.lean = lean;
+					plant.set_lean(lean);
 					shape.stiffness = stiffness;
 					PartTransforms expected;
 					wind.part_transforms(plant, bend, shape, expected);

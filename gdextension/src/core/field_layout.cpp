@@ -102,14 +102,16 @@ void build_layout(const FieldMap &p_map, const LayoutParams &p_params, const Gro
 			const PlantVariety &variety = p_params.varieties[species];
 			Plant plant;
 			const uint64_t key = cell_key(p_map, column, row);
-			plant.position = plant_root(p_params, key, column, row, plant.alpha);
+			float alpha = 0.0f;
+			plant.position = plant_root(p_params, key, column, row, alpha);
+			plant.set_alpha(alpha);
 			plant.ground = ground_fits ? p_ground.height_at(uint32_t(index), plant.position) : NAN;
 			if (!std::isfinite(plant.ground)) {
 				++r_layout.cells_without_ground;
 				++index;
 				continue;
 			}
-			plant.lean = p_ground.lean_at(uint32_t(index), plant.position);
+			plant.set_lean(p_ground.lean_at(uint32_t(index), plant.position));
 			plant.yaw = (unit_float(hash_plant(p_params.seed, key, STREAM_YAW)) * 2.0f - 1.0f) * variety.yaw_range;
 			plant.scale = variety.scale_min +
 					(variety.scale_max - variety.scale_min) * unit_float(hash_plant(p_params.seed, key, STREAM_SCALE));

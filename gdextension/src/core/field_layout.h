@@ -4,6 +4,7 @@
 // standing on the field's ground (ground.h): a cell with no ground under its plant gets none.
 #include "field_map.h"
 #include "ground.h"
+#include "instance_buffer.h"
 #include "parameters.h"
 
 #include <glm/common.hpp>
@@ -48,24 +49,39 @@ struct LayoutParams {
 	}
 };
 
+// One per plant of the field, 28 bytes: what changes per frame is kept elsewhere, and only for the
+// plants near the observer (FieldSimulation), so a million plants cost what this and the map cost.
 struct Plant {
 	glm::vec2 position{ 0.0f }; // x, z in the field's space, metres
 	float ground = 0.0f; // y of the root: the ground's height there
-	float alpha = 0.0f; // the thesis' α, also used for height variety (s' = s + α/10)
 	float yaw = 0.0f; // radians about +y
 	float scale = 1.0f; // the plant's size factor (LayoutParams' scale range)
 	uint32_t chunk = 0;
-	// The plant's up axis leaning towards the ground's normal: its horizontal part (x, z); zero for an
-	// upright plant.
-	glm::vec2 lean{ 0.0f };
 
 	glm::vec3 root() const { return glm::vec3(position.x, ground, position.y); }
+	// The plant's up axis leaning towards the ground's normal: its horizontal part (x, z), zero for an
+	// upright plant. Kept in the far records' steps (far_steps::SIGNED_STEPS): a plant leans alike as
+	// a mesh and as an impostor.
+	glm::vec2 lean() const { return glm::vec2(float(_lean[0]), float(_lean[1])) * (1.0f / far_steps::SIGNED_STEPS); }
+	void set_lean(const glm::vec2 &p_lean) {
+		_lean[0] = int8_t(far_steps::signed_unit(p_lean.x) - far_steps::SIGNED_STEPS);
+		_lean[1] = int8_t(far_steps::signed_unit(p_lean.y) - far_steps::SIGNED_STEPS);
+	}
+	bool upright() const { return _lean[0] == 0 && _lean[1] == 0; }
+	// The thesis' α ∈ [0, 1), also used for height variety (s' = s + α/10); kept in 1/65 536 steps.
+	float alpha() const { return float(_alpha) * (1.0f / 65536.0f); }
+	void set_alpha(float p_alpha) { _alpha = uint16_t(std::clamp(std::round(p_alpha * 65536.0f), 0.0f, 65535.0f)); }
 	// Its tone under p_variety: brightness (1: as modelled) and warmth (−1 to 1; 0: as modelled),
 	// seeded from its position, which its cell's seeded jitter makes its own.
 	glm::vec2 tone(const PlantVariety &p_variety) const;
 	// The instance colour it is drawn with under p_variety: tone_colour(tone(p_variety)).
 	glm::vec4 color(const PlantVariety &p_variety) const;
+
+private:
+	int8_t _lean[2] = { 0, 0 };
+	uint16_t _alpha = 0;
 };
+static_assert(sizeof(Plant) == 28, "a plant's layout stays 28 bytes (CPU memory per plant, README)");
 
 // A tone's colour (brightness, warmth) → (b·(1 + w), b, b·(1 − w)). The impostor shader mirrors it
 // for the static chunks' records (shaders/impostor.gdshader: keep them in step).

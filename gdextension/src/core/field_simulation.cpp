@@ -124,7 +124,8 @@ void FieldSimulation::_rebuild() {
 	build_layout(_map, _layout_params, _ground, _layout);
 	const size_t plants = _layout.plants.size();
 	_plant_lod.assign(plants, LOD_BILLBOARD);
-	_plant_wind.assign(plants, PlantWind{});
+	_chunk_wind.clear(); // the old field's states go with their memory
+	_chunk_wind.resize(_layout.chunks.size());
 	_pushed.clear(); // the slots pointed at the old field's plants
 	_chunk_active.assign(_layout.chunks.size(), 0);
 	_chunk_signatures.clear(); // the shape or variety may have changed too: computed anew
@@ -369,23 +370,31 @@ void FieldSimulation::_select_chunk_lods(uint32_t p_chunk, bool p_forced, float 
 		_chunk_active[p_chunk] = active ? 1 : 0;
 		_changed_chunks.push_back(p_chunk);
 	}
+	const Chunk &chunk = _layout.chunks[p_chunk];
+	std::vector<PlantWind> &winds = _chunk_wind[p_chunk];
 	if (!active) {
+		if (was_active) {
+			_drop_pushes(p_chunk);
+			std::vector<PlantWind>().swap(winds); // its memory back: only active chunks hold wind state
+		}
 		return;
 	}
 	_active_chunks.push_back(p_chunk);
-	const Chunk &chunk = _layout.chunks[p_chunk];
 	_active_plants += chunk.count;
+	if (!was_active) {
+		winds.assign(chunk.count, PlantWind{});
+	}
 	for (uint32_t k = 0; k < chunk.count; ++k) {
 		const uint32_t index = _layout.chunk_plants[chunk.first + k];
 		const float plant_sq = _plant_distance_sq(_layout.plants[index]);
 		if (p_forced) {
 			if (!was_active || _plant_lod[index] != params.force_level) {
-				_wind.init_plant(_plant_wind[index], _layout_params.seed, index, _time);
+				_wind.init_plant(winds[k], _layout_params.seed, index, _time);
 			}
 			_plant_lod[index] = static_cast<uint8_t>(params.force_level);
 		} else if (!was_active) {
 			_plant_lod[index] = _lod.select(plant_sq);
-			_wind.init_plant(_plant_wind[index], _layout_params.seed, index, _time);
+			_wind.init_plant(winds[k], _layout_params.seed, index, _time);
 		} else {
 			_plant_lod[index] = _lod.update(_plant_lod[index], plant_sq);
 		}
@@ -447,6 +456,7 @@ void FieldSimulation::_move_chunks(size_t p_first, size_t p_last, float p_delta,
 	WholePlant whole;
 	for (size_t a = p_first; a < p_last; ++a) {
 		const Chunk &chunk = _layout.chunks[_active_chunks[a]];
+		PlantWind *winds = _chunk_wind[_active_chunks[a]].data();
 		const PlantShape &shape = _shapes[chunk.species];
 		const PlantVariety &variety = _layout_params.varieties[chunk.species];
 		InstanceBuffer *buckets = r_buckets.data() + size_t(chunk.species) * BUCKET_COUNT;
@@ -465,7 +475,7 @@ void FieldSimulation::_move_chunks(size_t p_first, size_t p_last, float p_delta,
 			for (uint32_t k = 0; advancing && k < chunk.count; ++k) {
 				const uint32_t index = _layout.chunk_plants[chunk.first + k];
 				if (_plant_lod[index] < LOD_SPRITE) {
-					_wind.advance_plant(_plant_wind[index], _layout_params.seed, index, _time, p_delta);
+					_wind.advance_plant(winds[k], _layout_params.seed, index, _time, p_delta);
 				}
 			}
 			continue;
@@ -484,7 +494,7 @@ void FieldSimulation::_move_chunks(size_t p_first, size_t p_last, float p_delta,
 				}
 				continue;
 			}
-			PlantWind &wind = _plant_wind[index];
+			PlantWind &wind = winds[k];
 			if (advancing) {
 				_wind.advance_plant(wind, _layout_params.seed, index, _time, p_delta);
 			}
@@ -504,7 +514,7 @@ void FieldSimulation::_move_chunks(size_t p_first, size_t p_last, float p_delta,
 			glm::vec4 color = plant.color(variety);
 			color.w = 1.0f - share;
 			if (shape.whole) {
-				_wind.whole_plant(plant, _plant_bend(index, plant, moving), shape, whole);
+				_wind.whole_plant(plant, _plant_bend(wind, plant, moving), shape, whole);
 				// Drawn whole (by the addon's plant shader), mesh 1 and 2 near their switches dither into
 				// the next level the same way: the coarser mesh keeps the other pixels, which a negative
 				// alpha asks for (plant_surface.gdshaderinc).
@@ -523,7 +533,7 @@ void FieldSimulation::_move_chunks(size_t p_first, size_t p_last, float p_delta,
 				bucket.include(middle, reach);
 				continue;
 			}
-			_wind.part_transforms(plant, _plant_bend(index, plant, moving), shape, parts);
+			_wind.part_transforms(plant, _plant_bend(wind, plant, moving), shape, parts);
 			for (uint32_t part = 0; part < PART_COUNT; ++part) {
 				InstanceBuffer &bucket = buckets[mesh_bucket(lod, part)];
 				write_instance(bucket.push(), parts.basis[part], parts.origin[part], color);
@@ -533,13 +543,12 @@ void FieldSimulation::_move_chunks(size_t p_first, size_t p_last, float p_delta,
 	}
 }
 
-glm::vec2 FieldSimulation::_plant_bend(uint32_t p_plant, const Plant &p_plant_data, bool p_moving) const {
-	const PlantWind &wind = _plant_wind[p_plant];
-	glm::vec2 bend = p_moving ? _wind.bend_vector(wind, p_plant_data.position) : glm::vec2(0.0f);
-	if (wind.push_slot == 0) {
+glm::vec2 FieldSimulation::_plant_bend(const PlantWind &p_wind, const Plant &p_plant, bool p_moving) const {
+	glm::vec2 bend = p_moving ? _wind.bend_vector(p_wind, p_plant.position) : glm::vec2(0.0f);
+	if (p_wind.push_slot == 0) {
 		return bend;
 	}
-	bend += _pushed[wind.push_slot - 1u].offset;
+	bend += _pushed[p_wind.push_slot - 1u].offset;
 	const float size = glm::length(bend);
 	const float limit = _wind.get_bend_limit();
 	return size > limit ? bend * (limit / size) : bend; // a pushed plant still bends at most max_bend
@@ -578,6 +587,38 @@ void FieldSimulation::find_plants_near(const glm::vec2 &p_center, float p_radius
 	}
 }
 
+const PlantWind *FieldSimulation::_wind_of(uint32_t p_plant) const {
+	const uint32_t chunk = _layout.plants[p_plant].chunk;
+	if (!_chunk_active[chunk]) {
+		return nullptr;
+	}
+	// A chunk lists its plants in map order, so the plant's place among them is found by bisection.
+	const Chunk &range = _layout.chunks[chunk];
+	const auto first = _layout.chunk_plants.begin() + range.first;
+	const auto found = std::lower_bound(first, first + range.count, p_plant);
+	return _chunk_wind[chunk].data() + (found - first);
+}
+
+PlantWind *FieldSimulation::_wind_of(uint32_t p_plant) {
+	return const_cast<PlantWind *>(static_cast<const FieldSimulation *>(this)->_wind_of(p_plant));
+}
+
+void FieldSimulation::_drop_pushes(uint32_t p_chunk) {
+	for (size_t i = 0; i < _pushed.size();) {
+		if (_layout.plants[_pushed[i].plant].chunk != p_chunk) {
+			++i;
+			continue;
+		}
+		if (i + 1 < _pushed.size()) {
+			_pushed[i] = _pushed.back(); // looked at next: dropped too if it is the chunk's
+			if (_layout.plants[_pushed[i].plant].chunk != p_chunk) {
+				_wind_of(_pushed[i].plant)->push_slot = static_cast<uint16_t>(i + 1);
+			}
+		}
+		_pushed.pop_back();
+	}
+}
+
 void FieldSimulation::_update_pushes(float p_delta) {
 	if (_pushers.empty() && _pushed.empty()) {
 		return;
@@ -599,7 +640,11 @@ void FieldSimulation::_update_pushes(float p_delta) {
 			if (above_root - pusher.radius > shape.height * shape.part_scale * plant.scale || above_root + pusher.radius < 0.0f) {
 				continue; // flying over the plant, or under its ground
 			}
-			PlantWind &wind = _plant_wind[index];
+			PlantWind *const state = _wind_of(index);
+			if (state == nullptr) {
+				continue; // not near: drawn as an impostor, which shows no push
+			}
+			PlantWind &wind = *state;
 			if (wind.push_slot == 0) {
 				if (_pushed.size() >= 0xFFFFu) {
 					continue; // more than 65 535 plants pushed at once: the rest stay as they are
@@ -631,10 +676,10 @@ void FieldSimulation::_update_pushes(float p_delta) {
 			++i;
 			continue;
 		}
-		_plant_wind[state.plant].push_slot = 0;
+		_wind_of(state.plant)->push_slot = 0;
 		if (i + 1 < _pushed.size()) {
 			state = _pushed.back();
-			_plant_wind[state.plant].push_slot = static_cast<uint16_t>(i + 1);
+			_wind_of(state.plant)->push_slot = static_cast<uint16_t>(i + 1);
 		}
 		_pushed.pop_back();
 	}
@@ -647,7 +692,7 @@ void FieldSimulation::_write_impostor(float *r_out, const Plant &p_plant, float 
 	const glm::mat3 basis(glm::vec3(c, 0.0f, -s), glm::vec3(0.0f, scale, 0.0f), glm::vec3(s, 0.0f, c));
 	glm::vec4 color = p_plant.color(_layout_params.varieties[_species_of(p_plant)]);
 	color.w = p_share;
-	write_instance(r_out, p_plant.lean == glm::vec2(0.0f) ? basis : lean_rotation(p_plant.lean) * basis, p_plant.root(), color);
+	write_instance(r_out, p_plant.upright() ? basis : lean_rotation(p_plant.lean()) * basis, p_plant.root(), color);
 }
 
 void FieldSimulation::write_chunk_instances(uint32_t p_chunk, float *r_out) const {
@@ -660,7 +705,7 @@ void FieldSimulation::write_chunk_instances(uint32_t p_chunk, float *r_out) cons
 		instance.root = plant.root();
 		instance.yaw = plant.yaw;
 		instance.scale = part_scale * plant.scale;
-		instance.lean = plant.lean;
+		instance.lean = plant.lean();
 		instance.tone = plant.tone(variety);
 		instance.cell = _chunk_cells[p_chunk];
 		write_far_instance(r_out + size_t(k) * FAR_FLOATS_PER_INSTANCE, instance);
@@ -732,7 +777,10 @@ size_t FieldSimulation::get_memory_bytes() const {
 	size_t bytes = _map.plants.capacity() + _map.objects.capacity() * sizeof(MapObject);
 	bytes += _layout.plants.capacity() * sizeof(Plant) + _layout.chunks.capacity() * sizeof(Chunk);
 	bytes += _layout.chunk_plants.capacity() * sizeof(uint32_t);
-	bytes += _plant_lod.capacity() + _plant_wind.capacity() * sizeof(PlantWind);
+	bytes += _plant_lod.capacity() + _chunk_wind.capacity() * sizeof(_chunk_wind[0]);
+	for (const std::vector<PlantWind> &winds : _chunk_wind) {
+		bytes += winds.capacity() * sizeof(PlantWind);
+	}
 	bytes += _chunk_active.capacity() + _visit_mark.capacity() * sizeof(uint32_t);
 	bytes += (_chunk_cells.capacity() + _tile_chunks.capacity()) * sizeof(uint32_t) + _tiles.capacity() * sizeof(Tile);
 	bytes += (_active_chunks.capacity() + _previous_active.capacity() + _changed_chunks.capacity()) * sizeof(uint32_t);
@@ -754,8 +802,9 @@ size_t FieldSimulation::get_memory_bytes() const {
 void FieldSimulation::get_plant_parts(uint32_t p_plant, PartTransforms &r_parts) const {
 	const Plant &plant = _layout.plants[p_plant];
 	glm::vec2 bend(0.0f);
-	if (_chunk_active[plant.chunk] && _plant_lod[p_plant] < LOD_SPRITE) {
-		bend = _plant_bend(p_plant, plant, _wind.get_effective_power() > 0.0f);
+	const PlantWind *wind = _wind_of(p_plant);
+	if (wind != nullptr && _plant_lod[p_plant] < LOD_SPRITE) {
+		bend = _plant_bend(*wind, plant, _wind.get_effective_power() > 0.0f);
 	}
 	_wind.part_transforms(plant, bend, _shapes[_species_of(plant)], r_parts);
 }

@@ -225,7 +225,12 @@ private:
 	};
 	GridRange _grid_range(const glm::vec2 &p_center, float p_reach) const;
 	void _update_pushes(float p_delta);
-	glm::vec2 _plant_bend(uint32_t p_plant, const Plant &p_plant_data, bool p_moving) const;
+	glm::vec2 _plant_bend(const PlantWind &p_wind, const Plant &p_plant, bool p_moving) const;
+	// The wind state of a plant of an active chunk (nullptr for any other plant).
+	PlantWind *_wind_of(uint32_t p_plant);
+	const PlantWind *_wind_of(uint32_t p_plant) const;
+	// Drops the push states of a chunk's plants (it turns inactive: its wind states go).
+	void _drop_pushes(uint32_t p_chunk);
 	void _rebuild();
 	void _build_tiles();
 	void _select_lods();
@@ -252,7 +257,9 @@ private:
 	glm::vec3 _observer{ 0.0f };
 
 	std::vector<uint8_t> _plant_lod;
-	std::vector<PlantWind> _plant_wind;
+	// The wind state of the plants of active chunks (only they are drawn as meshes), per chunk in
+	// chunk_plants order; empty for a chunk that is not active, so it costs only what is near.
+	std::vector<std::vector<PlantWind>> _chunk_wind;
 	std::vector<uint8_t> _chunk_active;
 	std::vector<uint64_t> _chunk_signatures; // 0: not computed
 	std::vector<uint32_t> _chunk_cells;

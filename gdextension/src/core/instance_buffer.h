@@ -102,8 +102,10 @@ struct FarInstance {
 };
 
 namespace far_steps {
+// Values in [−1, 1] travel in steps of 1/SIGNED_STEPS (a byte: 0 … 2·SIGNED_STEPS).
+constexpr float SIGNED_STEPS = 127.0f;
 inline float signed_unit(float p_value) {
-	return std::round(std::clamp(p_value, -1.0f, 1.0f) * 127.0f) + 127.0f;
+	return std::round(std::clamp(p_value, -1.0f, 1.0f) * SIGNED_STEPS) + SIGNED_STEPS;
 }
 inline float brightness(float p_value) {
 	return std::round(std::clamp(p_value, 0.0f, 255.0f / 128.0f) * 128.0f);
@@ -129,8 +131,9 @@ inline FarInstance read_far_instance(const float *p_in) {
 	instance.root = glm::vec3(p_in[3], p_in[7], p_in[2]);
 	instance.scale = std::sqrt(p_in[0] * p_in[0] + p_in[1] * p_in[1]);
 	instance.yaw = std::atan2(p_in[1], p_in[0]);
-	instance.lean = (glm::vec2(low(p_in[4]), high(p_in[4])) - 127.0f) / 127.0f;
-	instance.tone = glm::vec2(low(p_in[5]) / 128.0f, (high(p_in[5]) - 127.0f) / 127.0f);
+	using far_steps::SIGNED_STEPS;
+	instance.lean = (glm::vec2(low(p_in[4]), high(p_in[4])) - SIGNED_STEPS) / SIGNED_STEPS;
+	instance.tone = glm::vec2(low(p_in[5]) / 128.0f, (high(p_in[5]) - SIGNED_STEPS) / SIGNED_STEPS);
 	instance.cell = uint32_t(std::lround(p_in[6]));
 	return instance;
 }

@@ -238,18 +238,18 @@ void WindModel::part_transforms(const Plant &p_plant, const glm::vec2 &p_bend, c
 	// The plant type's stiffness scales the wind's (thesis: d1, d2): a stiffer plant bends less.
 	const glm::mat3 bottom_tilt = rotation_about_horizontal(axis, size / (_params.d2 * p_shape.stiffness));
 	const glm::mat3 upper_tilt = rotation_about_horizontal(axis, size / (_params.d1 * p_shape.stiffness));
-	const float middle_height = 1.0f + p_plant.alpha * p_shape.middle_variation; // thesis: s' = s + α/10
+	const float middle_height = 1.0f + p_plant.alpha() * p_shape.middle_variation; // thesis: s' = s + α/10
 	const float scale = p_shape.part_scale * p_plant.scale;
 
 	const glm::mat3 shape = yaw_scale(p_plant.yaw, scale, scale);
 	const glm::mat3 middle_shape = yaw_scale(p_plant.yaw, scale, scale * middle_height);
 
-	if (p_plant.lean == glm::vec2(0.0f)) {
+	if (p_plant.upright()) {
 		r_parts.basis[0] = bottom_tilt * shape;
 		r_parts.basis[1] = upper_tilt * middle_shape;
 		r_parts.basis[2] = upper_tilt * shape;
 	} else {
-		const glm::mat3 lean = lean_rotation(p_plant.lean); // the plant's upright, tilted with the ground
+		const glm::mat3 lean = lean_rotation(p_plant.lean()); // the plant's upright, tilted with the ground
 		r_parts.basis[0] = lean * bottom_tilt * shape;
 		r_parts.basis[1] = lean * upper_tilt * middle_shape;
 		r_parts.basis[2] = lean * upper_tilt * shape;
@@ -269,11 +269,11 @@ void WindModel::whole_plant(const Plant &p_plant, const glm::vec2 &p_bend, const
 	// Yᵀa: the axis against the yawed frame's x and z columns.
 	const glm::vec2 own_axis(yaw[0].x * axis.x + yaw[0].z * axis.y, yaw[2].x * axis.x + yaw[2].z * axis.y);
 	const glm::mat3 frame = yaw * (p_shape.part_scale * p_plant.scale);
-	r_plant.basis = p_plant.lean == glm::vec2(0.0f) ? frame : lean_rotation(p_plant.lean) * frame;
+	r_plant.basis = p_plant.upright() ? frame : lean_rotation(p_plant.lean()) * frame;
 	r_plant.origin = p_plant.root();
 	r_plant.tilt = own_axis * (size / (_params.d2 * p_shape.stiffness));
 	r_plant.upper = size / (_params.d1 * p_shape.stiffness);
-	r_plant.middle = 1.0f + p_plant.alpha * p_shape.middle_variation;
+	r_plant.middle = 1.0f + p_plant.alpha() * p_shape.middle_variation;
 }
 
 void assemble_parts(const WholePlant &p_plant, const glm::vec3 &p_part_lengths, PartTransforms &r_parts) {
