@@ -137,7 +137,7 @@ func finish(species_plants: Array, legend: Dictionary, cell_size: float, sway_ma
 				var node: MultiMeshInstance3D = _make_node(node_name, plant.mesh_drawn(level, part), aabb)
 				_add_dynamic(node, first + Native.mesh_bucket(level, part))
 		# The near sprites and billboards: one multi-view impostor draws both.
-		var impostors: MultiMeshInstance3D = _make_node(prefix + "Impostors", _impostors[species].mesh(), aabb)
+		var impostors: MultiMeshInstance3D = _make_node(prefix + "Impostors", _impostors[species].mesh(), aabb, true)
 		_add_dynamic(impostors, first + Native.constant(&"BUCKET_IMPOSTOR"))
 	_place_objects(legend, cell_size)
 	for tile: int in _tile_nodes.size():
@@ -290,7 +290,7 @@ func _add_dynamic(node: MultiMeshInstance3D, bucket: int) -> void:
 
 
 ## A MultiMesh node for the native buffers: 3D transforms and colours, or when [param compact] the
-## far tiles' 8-float records (2D transforms without colours; the impostor shader decodes them).
+## impostors' 8-float records (2D transforms without colours; the impostor shader decodes them).
 func _make_node(node_name: String, mesh: Mesh, aabb: AABB, compact: bool = false) -> MultiMeshInstance3D:
 	var multimesh: MultiMesh = MultiMesh.new()
 	multimesh.transform_format = MultiMesh.TRANSFORM_2D if compact else MultiMesh.TRANSFORM_3D

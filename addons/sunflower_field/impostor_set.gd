@@ -4,26 +4,28 @@ extends RefCounted
 ## the plant type says; made once per field and shared by the field drawn and one being built.
 ## Sprites and billboards draw the same quad (shaders/impostor.gdshader): the plant seen from the
 ## observer's direction, blended from the plant's baked views, shaded through its baked normals.
-## The far tiles draw it from their compact instance records, through a twin of the material that
-## decodes them ([code]packed_instances[/code]); every parameter is set on both.
+## Both draw it from compact 8-float instance records: the near bucket's carry each plant's share
+## of the pixels ([code]records_hold_shares[/code]), the far tiles' their chunk's cell, which the
+## tiles' twin of the material looks up in the mask of active chunks; every other parameter is set
+## on both.
 
 const SHADER: Shader = preload("shaders/impostor.gdshader")
 ## The shader's sampler of each of [constant FieldPlant.IMPOSTOR_TEXTURES].
 const ATLAS_PARAMETERS: Dictionary = {"views": "view_atlas", "normals": "normal_atlas", "depths": "depth_atlas"}
 
-## The material of the near buckets' impostors (3D transforms and colours).
+## The material of the near bucket's impostors (records with shares).
 var material: ShaderMaterial = ShaderMaterial.new()
-## The material of the far tiles' impostors (compact records).
-var packed_material: ShaderMaterial = ShaderMaterial.new()
-var _quads: Array[ArrayMesh] = [null, null]  # [near, packed]
+## The material of the far tiles' impostors (records with their chunk's cell).
+var tile_material: ShaderMaterial = ShaderMaterial.new()
+var _quads: Array[ArrayMesh] = [null, null]  # [near, tiles]
 var _stiffness: float = 1.0  # the plant type's
 var _field_transform: Transform3D = Transform3D.IDENTITY
 
 
 func _init() -> void:
 	material.shader = SHADER
-	packed_material.shader = SHADER
-	packed_material.set_shader_parameter("packed_instances", true)
+	material.set_shader_parameter("records_hold_shares", true)
+	tile_material.shader = SHADER
 	_set_both("atlas_views", FieldPlant.ATLAS_VIEWS)
 
 
@@ -98,8 +100,8 @@ func sway(state: PackedFloat32Array, wind: SunflowerWind, field_transform: Trans
 ## Hides the far tiles' plants in the chunks the near buckets draw: [param mask] holds a byte per
 ## chunk cell (rows of [param grid_width]), non-zero where the chunk is active.
 func set_active_chunks(mask: Texture2D, grid_width: int) -> void:
-	packed_material.set_shader_parameter("active_chunks", mask)
-	packed_material.set_shader_parameter("chunk_grid_width", grid_width)
+	tile_material.set_shader_parameter("active_chunks", mask)
+	tile_material.set_shader_parameter("chunk_grid_width", grid_width)
 
 
 ## Places the impostors with the field node's [param field_transform] (the far tiles' records
@@ -112,10 +114,10 @@ func place(field_transform: Transform3D) -> void:
 
 
 ## A unit square the shader turns to the observer and scales to the frame, with [member material],
-## or with [member packed_material] when [param packed] (for the far tiles). (What it shows lies
-## in the plant's cylinder, inside the cull radius the chunks' bounds are made from.)
-func mesh(packed: bool = false) -> ArrayMesh:
-	var index: int = 1 if packed else 0
+## or with [member tile_material] when [param for_tiles]. (What it shows lies in the plant's
+## cylinder, inside the cull radius the chunks' bounds are made from.)
+func mesh(for_tiles: bool = false) -> ArrayMesh:
+	var index: int = 1 if for_tiles else 0
 	if _quads[index] == null:
 		var quad: ArrayMesh = ArrayMesh.new()
 		var arrays: Array = []
@@ -127,11 +129,11 @@ func mesh(packed: bool = false) -> ArrayMesh:
 		arrays[Mesh.ARRAY_TEX_UV] = PackedVector2Array([Vector2(0, 1), Vector2(1, 1), Vector2(1, 0), Vector2(0, 0)])
 		arrays[Mesh.ARRAY_INDEX] = PackedInt32Array([0, 2, 1, 0, 3, 2])
 		quad.add_surface_from_arrays(Mesh.PRIMITIVE_TRIANGLES, arrays)
-		quad.surface_set_material(0, packed_material if packed else material)
+		quad.surface_set_material(0, tile_material if for_tiles else material)
 		_quads[index] = quad
 	return _quads[index]
 
 
 func _set_both(parameter: StringName, value: Variant) -> void:
 	material.set_shader_parameter(parameter, value)
-	packed_material.set_shader_parameter(parameter, value)
+	tile_material.set_shader_parameter(parameter, value)

@@ -515,8 +515,9 @@ void SunflowerSimulation::_push_bucket(uint32_t p_bucket) {
 		target.allocated = std::max(bucket.get_capacity(), count);
 		target.stride = stride;
 		gdx::RenderingServer::multimesh_allocate_data(target.multimesh, target.allocated,
-				stride == WHOLE_FLOATS_PER_INSTANCE ? gdx::RenderingServer::TRANSFORM_COLOUR_AND_CUSTOM
-													: gdx::RenderingServer::TRANSFORM_AND_COLOUR);
+				stride == WHOLE_FLOATS_PER_INSTANCE		 ? gdx::RenderingServer::TRANSFORM_COLOUR_AND_CUSTOM
+						: stride == FAR_FLOATS_PER_INSTANCE ? gdx::RenderingServer::COMPACT
+															: gdx::RenderingServer::TRANSFORM_AND_COLOUR);
 		target.staging.resize(int64_t(target.allocated) * stride);
 	}
 	if (count > 0) {

@@ -30,6 +30,20 @@ void load(FieldSimulation &r_sim, const std::string &p_text, float p_chunk = 8.0
 	r_sim.set_layout_params(params);
 }
 
+// Where instance p_index of a bucket stands, and its share of the pixels (the colour's alpha; the
+// impostors' compact records hold it in place of a cell).
+struct Placed {
+	glm::vec3 root{ 0.0f };
+	float share = 1.0f;
+};
+Placed placed(const InstanceBuffer &p_bucket, uint32_t p_index) {
+	const float *instance = p_bucket.get_data() + size_t(p_index) * p_bucket.get_stride();
+	if (p_bucket.get_stride() == FAR_FLOATS_PER_INSTANCE) {
+		return { read_far_instance(instance).root, instance[FAR_CELL_OR_SHARE] };
+	}
+	return { glm::vec3(instance[3], instance[7], instance[11]), instance[15] };
+}
+
 int64_t total(const std::array<int64_t, LOD_COUNT> &p_counts) {
 	return std::accumulate(p_counts.begin(), p_counts.end(), int64_t(0));
 }
@@ -51,14 +65,14 @@ int64_t drawn(const FieldSimulation &p_sim) {
 	std::map<std::pair<float, float>, Drawn> plants; // by root (x, z)
 	auto add = [&](const InstanceBuffer &p_bucket, int p_level) {
 		for (uint32_t i = 0; i < p_bucket.get_count(); ++i) {
-			const float *instance = p_bucket.get_data() + size_t(i) * p_bucket.get_stride();
-			Drawn &plant = plants[{ instance[3], instance[11] }];
-			plant.share += std::abs(instance[15]);
+			const Placed instance = placed(p_bucket, i);
+			Drawn &plant = plants[{ instance.root.x, instance.root.z }];
+			plant.share += std::abs(instance.share);
 			plant.representations += 1;
 			plant.levels |= 1 << p_level;
-			plant.complement = plant.complement || instance[15] < 0.0f;
+			plant.complement = plant.complement || instance.share < 0.0f;
 			if (p_level == 0) { // nothing fades into mesh 1
-				CHECK(instance[15] > 0.0f);
+				CHECK(instance.share > 0.0f);
 			}
 		}
 	};
@@ -409,8 +423,7 @@ TEST_CASE("a bucket's box holds its plants, as near as they are, and empties wit
 		const InstanceBuffer &bucket = sim.get_bucket(b);
 		REQUIRE(bucket.get_count() > 0);
 		for (uint32_t i = 0; i < bucket.get_count(); ++i) {
-			const float *instance = bucket.get_data() + size_t(i) * FLOATS_PER_INSTANCE;
-			const glm::vec3 origin{ instance[3], instance[7], instance[11] };
+			const glm::vec3 origin = placed(bucket, i).root;
 			CHECK(glm::all(glm::greaterThanEqual(origin, bucket.get_bounds_low())));
 			CHECK(glm::all(glm::lessThanEqual(origin, bucket.get_bounds_high())));
 		}
@@ -738,8 +751,8 @@ TEST_CASE("mesh 3 dithers into its impostor over the fade metres before the spri
 		std::map<std::pair<float, float>, float> shares;
 		const InstanceBuffer &sprites = sim.get_bucket(BUCKET_IMPOSTOR);
 		for (uint32_t i = 0; i < sprites.get_count(); ++i) {
-			const float *instance = sprites.get_data() + size_t(i) * FLOATS_PER_INSTANCE;
-			shares[{ instance[3], instance[11] }] = instance[15];
+			const Placed instance = placed(sprites, i);
+			shares[{ instance.root.x, instance.root.z }] = instance.share;
 		}
 		const InstanceBuffer &meshes = sim.get_bucket(mesh_bucket(LOD_MESH_3, 0));
 		for (uint32_t i = 0; i < meshes.get_count(); ++i) {

@@ -87,7 +87,7 @@ TEST_CASE("near plants moved on two threads are written exactly as on one") {
 			const InstanceBuffer &one = serial.get_bucket(b);
 			const InstanceBuffer &two = parallel.get_bucket(b);
 			REQUIRE(one.get_count() == two.get_count());
-			CHECK(std::memcmp(one.get_data(), two.get_data(), size_t(one.get_count()) * FLOATS_PER_INSTANCE * sizeof(float)) == 0);
+			CHECK(std::memcmp(one.get_data(), two.get_data(), size_t(one.get_count()) * one.get_stride() * sizeof(float)) == 0);
 			CHECK(one.get_bounds_low() == two.get_bounds_low()); // the tasks' boxes merged
 			CHECK(one.get_bounds_high() == two.get_bounds_high());
 		}

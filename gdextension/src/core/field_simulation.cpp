@@ -245,8 +245,10 @@ void FieldSimulation::_make_buckets() {
 		const bool whole = _shapes[species].whole;
 		for (uint32_t b = 0; b < BUCKET_COUNT; ++b) {
 			// Drawn whole, a plant is one instance in its level's first bucket (the others stay empty).
+			// The impostors are compact records, as the far tiles' (with the share in place of the cell).
 			const bool whole_plants = whole && b < BUCKET_IMPOSTOR && b % PART_COUNT == 0;
-			buckets.emplace_back(whole_plants ? WHOLE_FLOATS_PER_INSTANCE : FLOATS_PER_INSTANCE);
+			buckets.emplace_back(b == BUCKET_IMPOSTOR ? FAR_FLOATS_PER_INSTANCE
+													  : whole_plants ? WHOLE_FLOATS_PER_INSTANCE : FLOATS_PER_INSTANCE);
 		}
 	}
 	_buckets = buckets;
@@ -685,28 +687,25 @@ void FieldSimulation::_update_pushes(float p_delta) {
 	}
 }
 
+FarInstance FieldSimulation::_far_instance(const Plant &p_plant, uint32_t p_species) const {
+	FarInstance instance;
+	instance.root = p_plant.root();
+	instance.yaw = p_plant.yaw;
+	instance.scale = _shapes[p_species].part_scale * p_plant.scale;
+	instance.lean = p_plant.lean();
+	instance.tone = p_plant.tone(_layout_params.varieties[p_species]);
+	return instance;
+}
+
 void FieldSimulation::_write_impostor(float *r_out, const Plant &p_plant, float p_share) const {
-	const float scale = _shapes[_species_of(p_plant)].part_scale * p_plant.scale;
-	const float c = std::cos(p_plant.yaw) * scale;
-	const float s = std::sin(p_plant.yaw) * scale;
-	const glm::mat3 basis(glm::vec3(c, 0.0f, -s), glm::vec3(0.0f, scale, 0.0f), glm::vec3(s, 0.0f, c));
-	glm::vec4 color = p_plant.color(_layout_params.varieties[_species_of(p_plant)]);
-	color.w = p_share;
-	write_instance(r_out, p_plant.upright() ? basis : lean_rotation(p_plant.lean()) * basis, p_plant.root(), color);
+	write_far_instance(r_out, _far_instance(p_plant, _species_of(p_plant)));
+	r_out[FAR_CELL_OR_SHARE] = p_share;
 }
 
 void FieldSimulation::write_chunk_instances(uint32_t p_chunk, float *r_out) const {
 	const Chunk &chunk = _layout.chunks[p_chunk];
-	const PlantVariety &variety = _layout_params.varieties[chunk.species];
-	const float part_scale = _shapes[chunk.species].part_scale;
 	for (uint32_t k = 0; k < chunk.count; ++k) {
-		const Plant &plant = _layout.plants[_layout.chunk_plants[chunk.first + k]];
-		FarInstance instance;
-		instance.root = plant.root();
-		instance.yaw = plant.yaw;
-		instance.scale = part_scale * plant.scale;
-		instance.lean = plant.lean();
-		instance.tone = plant.tone(variety);
+		FarInstance instance = _far_instance(_layout.plants[_layout.chunk_plants[chunk.first + k]], chunk.species);
 		instance.cell = _chunk_cells[p_chunk];
 		write_far_instance(r_out + size_t(k) * FAR_FLOATS_PER_INSTANCE, instance);
 	}

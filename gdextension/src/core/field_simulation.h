@@ -240,7 +240,10 @@ private:
 	float _plant_distance_sq(const Plant &p_plant) const;
 	// The species of a plant: its chunk's (a chunk holds one species).
 	uint32_t _species_of(const Plant &p_plant) const { return _layout.chunks[p_plant.chunk].species; }
-	// p_share: how much of the plant the impostor draws (its colour's alpha; below 1 in a cross-fade).
+	// A plant's compact impostor record (its cell left 0).
+	FarInstance _far_instance(const Plant &p_plant, uint32_t p_species) const;
+	// The near impostor bucket's record: p_share is how much of the plant the impostor draws (below 1
+	// in a cross-fade), in place of the cell.
 	void _write_impostor(float *r_out, const Plant &p_plant, float p_share = 1.0f) const;
 	// Moves the plants of active chunks [p_first, p_last) and writes the visible ones into r_buckets.
 	void _move_chunks(size_t p_first, size_t p_last, float p_delta, BucketSet &r_buckets);

@@ -78,14 +78,16 @@ inline WholePlant read_whole_instance(const float *p_in) {
 	return plant;
 }
 
-// A static plant's impostor, compact: 8 floats (32 B on the GPU), uploaded as the rows of Godot's
+// A plant's impostor, compact: 8 floats (32 B on the GPU), uploaded as the rows of Godot's
 // MULTIMESH_TRANSFORM_2D instances without colours. The engine hands the impostor shader the field
 // node's transform times the matrix they make; the shader undoes the node's transform and reads
-// the record back (shaders/impostor.gdshader, `packed_instances`: keep the two in step):
+// the record back (shaders/impostor.gdshader: keep the two in step):
 //   0: scale·cos(yaw)   1: scale·sin(yaw)   2: root z       3: root x
-//   4: lean x, lean z   5: tone             6: chunk cell   7: root y
-// Float 6 is the grid cell of the plant's chunk (FieldLayout: z·grid_x + x), which tells the shader
-// whether the dynamic buckets draw the plant now. Floats 4 and 5 hold two 8-bit steps each, as
+//   4: lean x, lean z   5: tone             6: cell / share 7: root y
+// In a far tile's record float 6 is the grid cell of the plant's chunk (FieldLayout: z·grid_x + x),
+// which tells the shader whether the dynamic buckets draw the plant now; in the near impostor
+// bucket's it is the plant's share of the pixels (1, or less in its cross-fade with mesh 3: the
+// material's `records_hold_shares`). Floats 4 and 5 hold two 8-bit steps each, as
 // low + 256·high: the lean in 1/127 steps of [−1, 1] (0 exact); the tone's brightness in 1/128
 // steps of [0, 2) (1 exact) and its warmth in 1/127 steps of [−1, 1] (0 exact). Below 65 536 these
 // whole numbers survive the node's transform and its inverse (float rounding there stays under
@@ -112,6 +114,9 @@ inline float brightness(float p_value) {
 }
 } // namespace far_steps
 
+// Which float of a compact record holds the chunk's cell (far tiles) or the share (near bucket).
+constexpr uint32_t FAR_CELL_OR_SHARE = 6;
+
 inline void write_far_instance(float *r_out, const FarInstance &p_instance) {
 	r_out[0] = p_instance.scale * std::cos(p_instance.yaw);
 	r_out[1] = p_instance.scale * std::sin(p_instance.yaw);
@@ -119,7 +124,7 @@ inline void write_far_instance(float *r_out, const FarInstance &p_instance) {
 	r_out[3] = p_instance.root.x;
 	r_out[4] = far_steps::signed_unit(p_instance.lean.x) + 256.0f * far_steps::signed_unit(p_instance.lean.y);
 	r_out[5] = far_steps::brightness(p_instance.tone.x) + 256.0f * far_steps::signed_unit(p_instance.tone.y);
-	r_out[6] = float(std::min(p_instance.cell, 65535u));
+	r_out[FAR_CELL_OR_SHARE] = float(std::min(p_instance.cell, 65535u));
 	r_out[7] = p_instance.root.y;
 }
 
@@ -134,7 +139,7 @@ inline FarInstance read_far_instance(const float *p_in) {
 	using far_steps::SIGNED_STEPS;
 	instance.lean = (glm::vec2(low(p_in[4]), high(p_in[4])) - SIGNED_STEPS) / SIGNED_STEPS;
 	instance.tone = glm::vec2(low(p_in[5]) / 128.0f, (high(p_in[5]) - SIGNED_STEPS) / SIGNED_STEPS);
-	instance.cell = uint32_t(std::lround(p_in[6]));
+	instance.cell = uint32_t(std::lround(p_in[FAR_CELL_OR_SHARE]));
 	return instance;
 }
 

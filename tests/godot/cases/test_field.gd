@@ -189,25 +189,30 @@ func test_every_plant_is_drawn_exactly_once_along_a_camera_path() -> void:
 			if node.name.contains("Middle") or node.name.contains("Head"):
 				continue  # one part per plant: the bottom part's origin is the plant's root
 			var buffer: PackedFloat32Array = RenderingServer.multimesh_get_buffer(rid)
-			var compact: bool = node.name.begins_with("FarTile")  # 8-float records, whole plants
+			# Impostors are 8-float records: a far tile's carry their chunk's cell, the near bucket's a share.
+			var compact: bool = node.multimesh.transform_format == MultiMesh.TRANSFORM_2D
+			var tile: bool = node.name.begins_with("FarTile")
 			# Near plants drawn whole: one instance each, with custom data.
 			var stride: int = (
 				SunflowerSimulation.WHOLE_FLOATS_PER_INSTANCE if node.multimesh.use_custom_data else STRIDE
 			)
 			# A tile skips the plants of the chunks its material's mask marks (the near buckets draw them).
-			var mask: PackedByteArray = _mask_of(node) if compact else PackedByteArray()
+			var mask: PackedByteArray = _mask_of(node) if tile else PackedByteArray()
+			var far: int = SunflowerSimulation.FAR_FLOATS_PER_INSTANCE
 			for k: int in instances:
-				if compact and mask[roundi(buffer[k * SunflowerSimulation.FAR_FLOATS_PER_INSTANCE + 6])] != 0:
+				if tile and mask[roundi(buffer[k * far + 6])] != 0:
 					continue
 				var root: Vector3 = _root(buffer, k, compact, stride)
 				var index: int = positions.get(_key(root), -1)
 				if check(index >= 0, "%s instance %d at %s is no plant" % [node.name, k, root]):
 					# The instance colour's alpha: the share of the pixels drawn (negative: the other pixels,
 					# a coarser mesh fading in).
-					var share: float = 1.0 if compact else absf(buffer[k * stride + 15])
+					var share: float = (
+						1.0 if tile else absf(buffer[k * far + 6] if compact else buffer[k * stride + 15])
+					)
 					drawn[index] += 1
 					shares[index] += share
-					var may_fade: bool = not compact
+					var may_fade: bool = not tile
 					fading[index] += 1 if may_fade and share < 1.0 else 0
 		var wrong: int = 0
 		var crossfading: int = 0

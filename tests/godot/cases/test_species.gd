@@ -88,7 +88,7 @@ func test_a_legend_plant_is_a_species_with_its_own_buckets_impostors_and_counts(
 		var material: ShaderMaterial = impostors.multimesh.mesh.surface_get_material(0) as ShaderMaterial
 		check(
 			(
-				material.get_shader_parameter("packed_instances") == true
+				material.get_shader_parameter("records_hold_shares") != true
 				and is_equal_approx(material.get_shader_parameter("frame_size"), framed[species])
 			),
 			"tile %d draws its type's impostor from compact records" % tile
