@@ -62,7 +62,7 @@ TEST_CASE("frustum: spheres outside any plane are culled, an unset frustum keeps
 	CHECK_FALSE(frustum.intersects_sphere({ 0, 0, -12.0f }, 1.0f));
 }
 
-TEST_CASE("frustum: a box out of view holds no sphere in view, a box in view no sphere out of it") {
+TEST_CASE("frustum: a box out of view holds no sphere in view, a box in view no sphere out of it, a crossing box's planes judge its spheres") {
 	// Camera-like frusta (a 90° wedge with a near and a far plane, turned and tilted) against random
 	// boxes; spheres that fit each box must agree with the box's verdict.
 	uint32_t state = 12345u;
@@ -71,6 +71,7 @@ TEST_CASE("frustum: a box out of view holds no sphere in view, a box in view no 
 		return p_low + (p_high - p_low) * float(state >> 8) / float(1u << 24);
 	};
 	int seen[3] = { 0, 0, 0 };
+	int crossed[2] = { 0, 0 }; // spheres in crossing boxes: out of view, in view
 	for (int pose = 0; pose < 40; ++pose) {
 		const float yaw = random(0.0f, 6.283f);
 		const float pitch = random(-1.2f, 0.3f);
@@ -90,8 +91,19 @@ TEST_CASE("frustum: a box out of view holds no sphere in view, a box in view no 
 		for (int b = 0; b < 200; ++b) {
 			const glm::vec3 low(random(-60.0f, 60.0f), random(-5.0f, 30.0f), random(-60.0f, 60.0f));
 			const glm::vec3 high = low + glm::vec3(random(0.5f, 16.0f), random(0.5f, 4.0f), random(0.5f, 16.0f));
-			const Frustum::Overlap overlap = frustum.classify_box(low, high);
+			Frustum crossing;
+			const Frustum::Overlap overlap = frustum.classify_box(low, high, &crossing);
 			++seen[overlap];
+			// Crossing, a sphere inside the box meets the planes it crosses as it meets all six.
+			for (int k = 0; k < 50 && overlap == Frustum::CROSSING; ++k) {
+				const glm::vec3 extent = high - low;
+				const float radius = random(0.0f, 0.5f) * std::min({ extent.x, extent.y, extent.z });
+				const glm::vec3 centre(random(low.x + radius, high.x - radius), random(low.y + radius, high.y - radius),
+						random(low.z + radius, high.z - radius));
+				const bool seen_by_all = frustum.intersects_sphere(centre, radius);
+				crossed[seen_by_all] += 1;
+				CHECK(crossing.intersects_sphere(centre, radius) == seen_by_all);
+			}
 			for (int k = 0; k < 50 && overlap != Frustum::CROSSING; ++k) {
 				const glm::vec3 extent = high - low;
 				const float radius = random(0.0f, 0.5f) * std::min({ extent.x, extent.y, extent.z });
@@ -104,6 +116,8 @@ TEST_CASE("frustum: a box out of view holds no sphere in view, a box in view no 
 	CHECK(seen[Frustum::OUTSIDE] > 100);
 	CHECK(seen[Frustum::INSIDE] > 20);
 	CHECK(seen[Frustum::CROSSING] > 100);
+	CHECK(crossed[0] > 500); // crossing boxes' spheres both out of view and in it
+	CHECK(crossed[1] > 500);
 	// With no planes every box is in view.
 	CHECK(Frustum{}.classify_box(glm::vec3(1e6f), glm::vec3(2e6f)) == Frustum::INSIDE);
 }

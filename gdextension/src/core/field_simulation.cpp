@@ -472,7 +472,8 @@ void FieldSimulation::_move_chunks(size_t p_first, size_t p_last, float p_delta,
 				chunk.min.y - reach_max);
 		const glm::vec3 high(chunk.max.x + reach_max, chunk.ground_max + (mid_height + radius) * chunk.scale_max,
 				chunk.max.y + reach_max);
-		const Frustum::Overlap overlap = _frustum.classify_box(low, high);
+		Frustum crossing; // the planes the chunk's box crosses: its plants need test only those
+		const Frustum::Overlap overlap = _frustum.classify_box(low, high, &crossing);
 		if (overlap == Frustum::OUTSIDE) {
 			for (uint32_t k = 0; advancing && k < chunk.count; ++k) {
 				const uint32_t index = _layout.chunk_plants[chunk.first + k];
@@ -488,7 +489,7 @@ void FieldSimulation::_move_chunks(size_t p_first, size_t p_last, float p_delta,
 			const uint8_t lod = _plant_lod[index];
 			const glm::vec3 middle = plant.root() + glm::vec3(0.0f, mid_height * plant.scale, 0.0f);
 			const float reach = radius * plant.scale; // the culling sphere's radius
-			const bool visible = overlap == Frustum::INSIDE || _frustum.intersects_sphere(middle, reach);
+			const bool visible = overlap == Frustum::INSIDE || crossing.intersects_sphere(middle, reach);
 			if (lod >= LOD_SPRITE) {
 				if (visible) {
 					_write_impostor(buckets[BUCKET_IMPOSTOR].push(), plant);

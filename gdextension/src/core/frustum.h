@@ -33,9 +33,14 @@ public:
 	// A box within this many metres of a plane counts as crossing it, so that rounding never decides
 	// a box against what its spheres' own tests say (a float's step is 0.5 mm at 4 km).
 	static constexpr float BOX_MARGIN = 0.01f;
-	// Where the box [p_low, p_high] lies, for spheres that fit inside it.
-	Overlap classify_box(const glm::vec3 &p_low, const glm::vec3 &p_high) const {
+	// Where the box [p_low, p_high] lies, for spheres that fit inside it. When it is CROSSING,
+	// r_crossing (if given) gets the planes it crosses: the only ones a sphere inside the box can be
+	// beyond, so its intersects_sphere() says what this frustum's does, testing fewer planes.
+	Overlap classify_box(const glm::vec3 &p_low, const glm::vec3 &p_high, Frustum *r_crossing = nullptr) const {
 		Overlap overlap = INSIDE;
+		if (r_crossing != nullptr) {
+			r_crossing->_count = 0;
+		}
 		for (size_t i = 0; i < _count; ++i) {
 			const glm::vec4 &plane = _planes[i];
 			// The box's corners least and most far along the plane's normal.
@@ -48,6 +53,9 @@ public:
 			}
 			if (farthest - plane.w > -BOX_MARGIN) {
 				overlap = CROSSING;
+				if (r_crossing != nullptr) {
+					r_crossing->_planes[r_crossing->_count++] = plane;
+				}
 			}
 		}
 		return overlap;
