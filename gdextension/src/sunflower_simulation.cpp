@@ -514,10 +514,14 @@ void SunflowerSimulation::_push_bucket(uint32_t p_bucket) {
 	if (count > target.allocated || stride != target.stride) {
 		target.allocated = std::max(bucket.get_capacity(), count);
 		target.stride = stride;
-		gdx::RenderingServer::multimesh_allocate_data(target.multimesh, target.allocated,
-				stride == WHOLE_FLOATS_PER_INSTANCE		 ? gdx::RenderingServer::TRANSFORM_COLOUR_AND_CUSTOM
-						: stride == FAR_FLOATS_PER_INSTANCE ? gdx::RenderingServer::COMPACT
-															: gdx::RenderingServer::TRANSFORM_AND_COLOUR);
+		// Whole plants' records carry custom data; the impostors' are compact (2D transforms only).
+		gdx::RenderingServer::Format format = gdx::RenderingServer::TRANSFORM_AND_COLOUR;
+		if (stride == WHOLE_FLOATS_PER_INSTANCE) {
+			format = gdx::RenderingServer::TRANSFORM_COLOUR_AND_CUSTOM;
+		} else if (stride == FAR_FLOATS_PER_INSTANCE) {
+			format = gdx::RenderingServer::COMPACT;
+		}
+		gdx::RenderingServer::multimesh_allocate_data(target.multimesh, target.allocated, format);
 		target.staging.resize(int64_t(target.allocated) * stride);
 	}
 	if (count > 0) {

@@ -247,8 +247,8 @@ void FieldSimulation::_make_buckets() {
 			// Drawn whole, a plant is one instance in its level's first bucket (the others stay empty).
 			// The impostors are compact records, as the far tiles' (with the share in place of the cell).
 			const bool whole_plants = whole && b < BUCKET_IMPOSTOR && b % PART_COUNT == 0;
-			buckets.emplace_back(b == BUCKET_IMPOSTOR ? FAR_FLOATS_PER_INSTANCE
-													  : whole_plants ? WHOLE_FLOATS_PER_INSTANCE : FLOATS_PER_INSTANCE);
+			const uint32_t stride = whole_plants ? WHOLE_FLOATS_PER_INSTANCE : FLOATS_PER_INSTANCE;
+			buckets.emplace_back(b == BUCKET_IMPOSTOR ? FAR_FLOATS_PER_INSTANCE : stride);
 		}
 	}
 	_buckets = buckets;
