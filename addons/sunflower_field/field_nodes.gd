@@ -134,7 +134,7 @@ func finish(species_plants: Array, legend: Dictionary, cell_size: float, sway_ma
 				continue
 			for part: int in PART_NAMES.size():
 				var node_name: String = "%sMesh%d%s" % [prefix, level + 1, PART_NAMES[part].capitalize()]
-				var node: MultiMeshInstance3D = _make_node(node_name, plant.mesh_drawn(level, part), aabb)
+				var node: MultiMeshInstance3D = _make_node(node_name, plant.mesh_for_field(level, part), aabb)
 				_add_dynamic(node, first + Native.mesh_bucket(level, part))
 		# The near sprites and billboards: one multi-view impostor draws both.
 		var impostors: MultiMeshInstance3D = _make_node(prefix + "Impostors", _impostors[species].mesh(), aabb, true)
@@ -208,7 +208,7 @@ func set_plant_meshes(species: int, plant: Resource) -> void:
 			_set_bucket_mesh(species, Native.mesh_bucket(level, 0), plant.whole_mesh(level))
 			continue
 		for part: int in PART_NAMES.size():
-			_set_bucket_mesh(species, Native.mesh_bucket(level, part), plant.mesh_drawn(level, part))
+			_set_bucket_mesh(species, Native.mesh_bucket(level, part), plant.mesh_for_field(level, part))
 
 
 func _set_bucket_mesh(species: int, bucket_in_species: int, mesh: Mesh) -> void:

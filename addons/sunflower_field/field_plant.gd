@@ -19,6 +19,7 @@ const DEFAULT_PATH: String = "res://addons/sunflower_field/plants/sunflower.tres
 const PartMeshes: GDScript = preload("part_meshes.gd")
 const ImpostorBaker: GDScript = preload("impostor_baker.gd")
 const WholePlantMesh: GDScript = preload("whole_plant_mesh.gd")
+const PlantMaterial: GDScript = preload("plant_material.gd")
 ## The impostor atlases' views: columns around the plant (the first from its front, +z, turning
 ## towards +x), rows of elevation from the side (0°, top row) to straight above (90°, bottom row).
 const ATLAS_VIEWS: Vector2i = Vector2i(12, 4)
@@ -57,11 +58,19 @@ static var _default: FieldPlant
 ## Draw each near plant as one instance, its parts merged into one mesh per level and placed by the
 ## shader, instead of one instance per part: a third of the draw calls and less per-frame work. Only
 ## parts drawn with the addon's plant material ([code]shaders/plant_parts.gdshader[/code], as the
-## built-in plants' are) can be merged; any other plant is drawn part by part whatever this says
-## ([method drawn_whole]).
+## built-in plants' are, or a plain StandardMaterial3D it takes over: [member use_plant_material])
+## can be merged; any other plant is drawn part by part whatever this says ([method drawn_whole]).
 @export var draw_whole: bool = true:
 	set(value):
 		draw_whole = value
+		emit_changed()
+## Draw the parts' plain StandardMaterial3D surfaces (albedo colour and texture, roughness, alpha
+## scissor, vertex colours) with the addon's plant material of the same settings, so that the near
+## levels cross-fade into each other and the impostors and the plant can be drawn whole
+## ([code]plant_material.gd[/code] says what carries over). Off: every part keeps its own material.
+@export var use_plant_material: bool = true:
+	set(value):
+		use_plant_material = value
 		emit_changed()
 
 @export_group("Form")
@@ -155,6 +164,7 @@ static var _default: FieldPlant
 		emit_changed()
 
 var _whole_meshes: Dictionary = {}  # level → [what it was merged from, the merged mesh]
+var _field_meshes: Dictionary = {}  # a part mesh → the mesh the field draws it with
 
 
 ## The built-in sunflower (shared: duplicate it before changing it).
@@ -175,8 +185,22 @@ func mesh_drawn(level: int, part: int) -> Mesh:
 	return mesh if mesh else default_plant().get_part_mesh(level, part)
 
 
+## The mesh the field's nodes draw a part with: [method mesh_drawn], its plain StandardMaterial3D
+## surfaces drawn with the plant material when [member use_plant_material] (a copy made once per
+## mesh: an edit inside the mesh or its materials shows once the part slot is set again).
+func mesh_for_field(level: int, part: int) -> Mesh:
+	var mesh: Mesh = mesh_drawn(level, part)
+	if not use_plant_material or mesh == null:
+		return mesh
+	if not _field_meshes.has(mesh):
+		if _field_meshes.size() >= PartMeshes.LEVELS * PartMeshes.PART_NAMES.size():
+			_field_meshes.clear()  # parts were swapped: the copies of meshes no longer drawn go
+		_field_meshes[mesh] = PlantMaterial.adopt_mesh(mesh)
+	return _field_meshes[mesh]
+
+
 ## Whether the near levels draw this plant whole ([member draw_whole], and every level's parts as
-## drawn can be merged).
+## the field draws them can be merged).
 func drawn_whole() -> bool:
 	if not draw_whole:
 		return false
@@ -234,6 +258,7 @@ func layout_key() -> Array:
 		brightness_variation,
 		tint_variation,
 		drawn_whole(),
+		use_plant_material,
 	]
 
 
@@ -267,7 +292,7 @@ func apply_to(simulation: RefCounted, species: int = 0) -> void:
 func _drawn_parts(level: int) -> Array[Mesh]:
 	var parts: Array[Mesh] = []
 	for part: int in PartMeshes.PART_NAMES.size():
-		parts.append(mesh_drawn(level, part))
+		parts.append(mesh_for_field(level, part))
 	return parts
 
 

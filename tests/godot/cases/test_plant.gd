@@ -2,10 +2,12 @@ extends TestCase
 ## Plant types (FieldPlant): the built-in sunflower by default, shared unchanged; a field's own plant
 ## through set_part_mesh and the old properties; a plant's form (part lengths, height) and variety
 ## (size and yaw ranges) in the plants drawn; a shared plant's change rebuilds every field using it;
-## the impostor quads cut to what the plant's views show.
+## the impostor quads cut to what the plant's views show; plain StandardMaterial3D parts taken over
+## by the plant material.
 
 const DEMO_MAP: SunflowerFieldMap = preload("res://fields/demo.field")
 const ImpostorSetScript: GDScript = preload("res://addons/sunflower_field/impostor_set.gd")
+const PlantMaterialScript: GDScript = preload("res://addons/sunflower_field/plant_material.gd")
 
 var fields: Array[SunflowerField] = []
 
@@ -209,3 +211,64 @@ func test_the_impostor_quad_covers_only_what_its_views_show() -> void:
 			area += (view.z - view.x) * (view.w - view.y) / drawn.size()
 		check_eq(drawn.size(), FieldPlant.ATLAS_VIEWS.x * FieldPlant.ATLAS_VIEWS.y, "%s: a rectangle per view" % name)
 		check(area > 0.1 and area < 0.4, "%s: the views fill %.2f of their squares" % [name, area])
+
+
+func test_plain_standard_materials_are_taken_over_and_others_kept() -> void:
+	var texture: ImageTexture = ImageTexture.create_from_image(Image.create(4, 4, false, Image.FORMAT_RGBA8))
+	var leaf: StandardMaterial3D = StandardMaterial3D.new()
+	leaf.albedo_color = Color(0.2, 0.6, 0.1)
+	leaf.albedo_texture = texture
+	leaf.uv1_scale = Vector3(2.0, 3.0, 1.0)
+	leaf.roughness = 0.4
+	leaf.transparency = BaseMaterial3D.TRANSPARENCY_ALPHA_SCISSOR
+	leaf.alpha_scissor_threshold = 0.3
+	var taken: ShaderMaterial = PlantMaterialScript.adopt(leaf, false)
+	if check(taken != null, "a plain textured, scissored StandardMaterial3D is taken over"):
+		check(taken.shader == preload("res://addons/sunflower_field/shaders/plant_parts.gdshader"), "plant shader")
+		check_eq(taken.get_shader_parameter("albedo_colour"), leaf.albedo_color, "albedo colour")
+		check_eq(taken.get_shader_parameter("albedo_texture"), texture, "albedo texture")
+		check_eq(taken.get_shader_parameter("use_albedo_texture"), true, "the texture is used")
+		check_eq(taken.get_shader_parameter("uv_scale"), Vector2(2.0, 3.0), "UV scale")
+		check(is_equal_approx(taken.get_shader_parameter("roughness"), 0.4), "roughness")
+		check(is_equal_approx(taken.get_shader_parameter("alpha_scissor"), 0.3), "alpha scissor")
+	# What the plant material cannot draw is kept: the part is drawn by its own material.
+	var glowing: StandardMaterial3D = leaf.duplicate()
+	glowing.emission_enabled = true
+	check(PlantMaterialScript.adopt(glowing, false) == null, "emission is kept as it is")
+	var blended: StandardMaterial3D = leaf.duplicate()
+	blended.transparency = BaseMaterial3D.TRANSPARENCY_ALPHA
+	check(PlantMaterialScript.adopt(blended, false) == null, "alpha blending is kept as it is")
+	var front: StandardMaterial3D = leaf.duplicate()
+	front.cull_mode = BaseMaterial3D.CULL_FRONT
+	check(PlantMaterialScript.adopt(front, false) == null, "front faces culled are kept as they are")
+	var passes: StandardMaterial3D = leaf.duplicate()
+	passes.next_pass = StandardMaterial3D.new()
+	check(PlantMaterialScript.adopt(passes, false) == null, "a next pass is kept as it is")
+	check(PlantMaterialScript.adopt(ORMMaterial3D.new(), false) == null, "an ORMMaterial3D is kept as it is")
+	check(PlantMaterialScript.adopt(leaf, true) == null, "vertex colours the material ignores: kept as it is")
+	leaf.vertex_color_use_as_albedo = true
+	check(PlantMaterialScript.adopt(leaf, true) != null, "vertex colours as albedo: taken over")
+	# A plant of such parts is drawn whole, one surface per distinct material; switched off, or with
+	# one part kept, part by part.
+	var plant: FieldPlant = FieldPlant.default_plant().duplicate()
+	var stalk: StandardMaterial3D = StandardMaterial3D.new()
+	stalk.vertex_color_use_as_albedo = true
+	var head: StandardMaterial3D = stalk.duplicate()
+	head.albedo_color = Color(1.0, 0.8, 0.2)
+	for level: int in SunflowerSimulation.MESH_LEVEL_COUNT:
+		for part: int in SunflowerSimulation.PART_COUNT:
+			var mesh: ArrayMesh = plant.mesh_drawn(level, part).duplicate() as ArrayMesh
+			for surface: int in mesh.get_surface_count():
+				mesh.surface_set_material(surface, head if part == 2 else stalk)
+			plant.set_part_mesh(level, part, mesh)
+	check(plant.drawn_whole(), "plain StandardMaterial3D parts: drawn whole")
+	check_eq(plant.whole_mesh(0).get_surface_count(), 2, "one merged surface per distinct material")
+	check_eq(plant.mesh_drawn(0, 2).surface_get_material(0), head, "the plant's own mesh keeps its material")
+	plant.use_plant_material = false
+	check(not plant.drawn_whole(), "their own materials: drawn part by part")
+	plant.use_plant_material = true
+	var lit: ArrayMesh = plant.mesh_drawn(1, 0).duplicate() as ArrayMesh
+	lit.surface_set_material(0, glowing)
+	plant.set_part_mesh(1, 0, lit)
+	check(not plant.drawn_whole(), "a part with emission: drawn part by part")
+	check_eq(plant.mesh_for_field(1, 0).surface_get_material(0), glowing, "that part keeps its material")
