@@ -11,6 +11,7 @@ extends TestCase
 const Stage: GDScript = preload("res://runner/stage.gd")
 const Picture: GDScript = preload("res://runner/picture.gd")
 const Maps: GDScript = preload("res://runner/maps.gd")
+const Dressing: GDScript = preload("res://runner/dressing.gd")
 const FIELD_CELLS: int = 120  # 0.5 m cells: 60 × 60 m
 ## Eye and target of each view: head height inside, 5 m and 40 m outside, 25 m up at 45°, 60 m down.
 const VIEWS: Dictionary = {
@@ -154,12 +155,7 @@ func _impostors_alone(eye: Vector3, target: Vector3, name: String) -> PackedFloa
 	black.shading_mode = BaseMaterial3D.SHADING_MODE_UNSHADED
 	black.albedo_color = Color.BLACK
 	black.cull_mode = BaseMaterial3D.CULL_DISABLED
-	for level: int in SunflowerSimulation.MESH_LEVEL_COUNT:
-		for part: int in SunflowerSimulation.PART_COUNT:
-			var mesh: ArrayMesh = field.get_part_mesh(level, part).duplicate() as ArrayMesh
-			for surface: int in mesh.get_surface_count():
-				mesh.surface_set_material(surface, black)
-			field.set_part_mesh(level, part, mesh)
+	Dressing.dress_parts(field, func(_level: int, _part: int) -> Material: return black)
 	stage.ground.visible = false
 	stage.environment.background_mode = Environment.BG_COLOR
 	stage.environment.background_color = Color.BLACK

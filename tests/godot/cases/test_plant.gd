@@ -8,6 +8,7 @@ extends TestCase
 const DEMO_MAP: SunflowerFieldMap = preload("res://fields/demo.field")
 const ImpostorSetScript: GDScript = preload("res://addons/sunflower_field/impostor_set.gd")
 const PlantMaterialScript: GDScript = preload("res://addons/sunflower_field/plant_material.gd")
+const Dressing: GDScript = preload("res://runner/dressing.gd")
 
 var fields: Array[SunflowerField] = []
 
@@ -255,12 +256,7 @@ func test_plain_standard_materials_are_taken_over_and_others_kept() -> void:
 	stalk.vertex_color_use_as_albedo = true
 	var head: StandardMaterial3D = stalk.duplicate()
 	head.albedo_color = Color(1.0, 0.8, 0.2)
-	for level: int in SunflowerSimulation.MESH_LEVEL_COUNT:
-		for part: int in SunflowerSimulation.PART_COUNT:
-			var mesh: ArrayMesh = plant.mesh_drawn(level, part).duplicate() as ArrayMesh
-			for surface: int in mesh.get_surface_count():
-				mesh.surface_set_material(surface, head if part == 2 else stalk)
-			plant.set_part_mesh(level, part, mesh)
+	Dressing.dress_parts(plant, func(_level: int, part: int) -> Material: return head if part == 2 else stalk)
 	check(plant.drawn_whole(), "plain StandardMaterial3D parts: drawn whole")
 	check_eq(plant.whole_mesh(0).get_surface_count(), 2, "one merged surface per distinct material")
 	check_eq(plant.mesh_drawn(0, 2).surface_get_material(0), head, "the plant's own mesh keeps its material")

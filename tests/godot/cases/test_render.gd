@@ -4,6 +4,7 @@ extends TestCase
 
 const Picture: GDScript = preload("res://runner/picture.gd")
 const Stage: GDScript = preload("res://runner/stage.gd")
+const Dressing: GDScript = preload("res://runner/dressing.gd")
 const SHOT: String = "render_demo_field.png"
 
 var scene: Node3D
@@ -140,19 +141,9 @@ func test_plants_drawn_whole_look_as_drawn_part_by_part() -> void:
 	var calls: Array[int] = []
 	var picture: Picture = Picture.new(640, 360)
 	for whole: bool in [true, false]:
-		var field: SunflowerField = _still_field(
-			"res://fields/demo.field", Vector3(8.0, 2.8, 10.0), Vector3(14.0, 0.8, 3.0)
-		)
 		var own: FieldPlant = FieldPlant.default_plant().duplicate()
 		own.draw_whole = whole
-		field.plant = own
-		field.wind_power = 4.0
-		field.lod_fade = 0.0  # plants drawn whole also fade between mesh levels: compare without fades
-		field.set_process(false)
-		field.finish_build()
-		for step: int in 40:
-			field.advance(1.0 / 60.0)
-		await frames(4)
+		var field: SunflowerField = await _windy_demo_field(own)
 		var counts: PackedInt32Array = field.get_lod_counts()
 		check(counts[0] > 20 and counts[1] > 20 and counts[2] > 20, "plants at every mesh level: %s" % counts)
 		var nodes: Array[String] = []
@@ -161,9 +152,7 @@ func test_plants_drawn_whole_look_as_drawn_part_by_part() -> void:
 				nodes.append(node.name)
 		check_eq(nodes.size(), 3 if whole else 9, "near mesh nodes drawn (%s)" % ", ".join(nodes))
 		calls.append(RenderingServer.get_rendering_info(RenderingServer.RENDERING_INFO_TOTAL_DRAW_CALLS_IN_FRAME))
-		var image: Image = tree.root.get_viewport().get_texture().get_image()
-		image.save_png(_artifact_path("render_whole_%s.png" % ("plants" if whole else "parts")))
-		pictures.append(picture.luminance(image))
+		pictures.append(_snapshot(picture, "render_whole_%s.png" % ("plants" if whole else "parts")))
 		field.free()
 	var similarity: float = picture.ssim(pictures[0], pictures[1])
 	var difference: float = picture.mean_difference(pictures[0], pictures[1])
@@ -194,30 +183,13 @@ func test_plain_standard_materials_are_drawn_as_the_plant_material() -> void:
 	standard.cull_mode = BaseMaterial3D.CULL_DISABLED
 	var ways: Array[String] = ["built-in", "taken over", "own material"]
 	for way: String in ways:
-		var field: SunflowerField = _still_field(
-			"res://fields/demo.field", Vector3(8.0, 2.8, 10.0), Vector3(14.0, 0.8, 3.0)
-		)
 		var own: FieldPlant = FieldPlant.default_plant().duplicate()
 		if way != "built-in":
-			for level: int in SunflowerSimulation.MESH_LEVEL_COUNT:
-				for part: int in SunflowerSimulation.PART_COUNT:
-					var mesh: ArrayMesh = own.mesh_drawn(level, part).duplicate() as ArrayMesh
-					for surface: int in mesh.get_surface_count():
-						mesh.surface_set_material(surface, standard)
-					own.set_part_mesh(level, part, mesh)
+			Dressing.dress_parts(own, func(_level: int, _part: int) -> Material: return standard)
 			own.use_plant_material = way == "taken over"
-		field.plant = own
-		field.wind_power = 4.0
-		field.lod_fade = 0.0  # a part's own material does not fade: compare the lighting alone
-		field.set_process(false)
-		field.finish_build()
-		for step: int in 40:
-			field.advance(1.0 / 60.0)
-		await frames(4)
+		var field: SunflowerField = await _windy_demo_field(own)
 		check_eq(own.drawn_whole(), way != "own material", "%s: drawn whole" % way)
-		var image: Image = tree.root.get_viewport().get_texture().get_image()
-		image.save_png(_artifact_path("render_standard_%s.png" % way.replace(" ", "_")))
-		pictures.append(picture.luminance(image))
+		pictures.append(_snapshot(picture, "render_standard_%s.png" % way.replace(" ", "_")))
 		field.free()
 	var as_built_in: float = picture.ssim(pictures[1], pictures[0])
 	var as_own: float = picture.ssim(pictures[1], pictures[2])
@@ -325,6 +297,31 @@ func _yellow_centre(image: Image) -> Vector2:
 				sum += Vector2(x, y)
 				count += 1
 	return sum / maxf(count, 1.0)
+
+
+## The picture drawn now, saved to the artifacts as [param file]; its luminance for [param picture].
+func _snapshot(picture: Picture, file: String) -> PackedFloat32Array:
+	var image: Image = tree.root.get_viewport().get_texture().get_image()
+	image.save_png(_artifact_path(file))
+	return picture.luminance(image)
+
+
+## The demo field of [param plant] seen from inside at one instant of a strong wind, without fades
+## (plants drawn whole fade between mesh levels, parts drawn by their own material do not: the
+## tests compare the pictures without them).
+func _windy_demo_field(plant: FieldPlant) -> SunflowerField:
+	var field: SunflowerField = _still_field(
+		"res://fields/demo.field", Vector3(8.0, 2.8, 10.0), Vector3(14.0, 0.8, 3.0)
+	)
+	field.plant = plant
+	field.wind_power = 4.0
+	field.lod_fade = 0.0
+	field.set_process(false)
+	field.finish_build()
+	for step: int in 40:
+		field.advance(1.0 / 60.0)
+	await frames(4)
+	return field
 
 
 ## A calm field from [param map_path] in the scene, seen by a current camera at [param eye]
