@@ -247,6 +247,10 @@ func test_plain_standard_materials_are_taken_over_and_others_kept() -> void:
 	check(PlantMaterialScript.adopt(passes, false) == null, "a next pass is kept as it is")
 	check(PlantMaterialScript.adopt(ORMMaterial3D.new(), false) == null, "an ORMMaterial3D is kept as it is")
 	check(PlantMaterialScript.adopt(leaf, true) == null, "vertex colours the material ignores: kept as it is")
+	var coloured: ArrayMesh = FieldPlant.default_plant().mesh_drawn(0, 0).duplicate() as ArrayMesh  # has them
+	for surface: int in coloured.get_surface_count():
+		coloured.surface_set_material(surface, leaf)
+	check(PlantMaterialScript.adopt_mesh(coloured) == coloured, "a mesh with vertex colours its material ignores")
 	leaf.vertex_color_use_as_albedo = true
 	check(PlantMaterialScript.adopt(leaf, true) != null, "vertex colours as albedo: taken over")
 	# A plant of such parts is drawn whole, one surface per distinct material; switched off, or with
