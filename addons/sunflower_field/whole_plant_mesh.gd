@@ -16,14 +16,13 @@ const KEPT: Array[int] = [Mesh.ARRAY_VERTEX, Mesh.ARRAY_NORMAL, Mesh.ARRAY_TANGE
 
 ## Whether [param parts] (bottom, middle, head) can be merged: see the script's description.
 static func can_merge(parts: Array[Mesh]) -> bool:
-	return _materials_of(parts).size() > 0
+	return _mergeable(parts)
 
 
 ## The merged mesh of [param parts] (bottom, middle, head) for a plant whose parts' roots lie
 ## [param part_lengths] model units apart, or null when they cannot be merged ([method can_merge]).
 static func merge(parts: Array[Mesh], part_lengths: Vector3) -> ArrayMesh:
-	var materials: Array[ShaderMaterial] = _materials_of(parts)
-	if materials.is_empty():
+	if not _mergeable(parts):
 		return null
 	# One group per distinct setting: the source material and the arrays merged so far.
 	var groups: Array[Dictionary] = []
@@ -105,28 +104,26 @@ static func _merged_arrays(group: Dictionary) -> Array:
 	return out
 
 
-## The plant materials of [param parts]' surfaces, or none when a surface has another material
-## (or is not of triangles, or has blend shapes).
-static func _materials_of(parts: Array[Mesh]) -> Array[ShaderMaterial]:
-	var found: Array[ShaderMaterial] = []
+## Whether every surface of [param parts] has a plant material, is of triangles and has no blend
+## shapes.
+static func _mergeable(parts: Array[Mesh]) -> bool:
 	if parts.size() != 3:
-		return found
+		return false
 	for mesh: Mesh in parts:
 		if mesh == null or mesh.get_surface_count() == 0:
-			return []
+			return false
 		for surface: int in mesh.get_surface_count():
 			var material: ShaderMaterial = mesh.surface_get_material(surface) as ShaderMaterial
 			if material == null or material.shader != PARTS_SHADER:
-				return []
+				return false
 			if (
 				mesh is ArrayMesh
 				and (mesh as ArrayMesh).surface_get_primitive_type(surface) != Mesh.PRIMITIVE_TRIANGLES
 			):
-				return []
+				return false
 			if mesh.surface_get_blend_shape_arrays(surface).size() > 0:
-				return []
-			found.append(material)
-	return found
+				return false
+	return true
 
 
 static func _same_settings(a: ShaderMaterial, b: ShaderMaterial) -> bool:
