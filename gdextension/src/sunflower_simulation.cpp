@@ -16,6 +16,8 @@ using namespace sunflower;
 void SunflowerSimulation::bind_methods() {
 	const char *CLASS = "SunflowerSimulation";
 	gdx::bind_method(CLASS, "load_map", &SunflowerSimulation::load_map, { "text", "source", "legend", "plant_symbols", "max_plants" });
+	gdx::bind_method(CLASS, "check_map", &SunflowerSimulation::check_map, { "text", "source", "legend", "plant_symbols", "max_plants" });
+	gdx::bind_method(CLASS, "get_checked_map", &SunflowerSimulation::get_checked_map);
 	gdx::bind_method(CLASS, "get_species_count", &SunflowerSimulation::get_species_count);
 	gdx::bind_method(CLASS, "paint_map", &SunflowerSimulation::paint_map, { "center", "radius", "symbol", "density", "seed", "relayout" });
 	gdx::bind_method(CLASS, "write_map", &SunflowerSimulation::write_map);
@@ -107,12 +109,17 @@ void SunflowerSimulation::bind_methods() {
 	gdx::bind_integer_constant(CLASS, "", "MAX_THREADS", param::MAX_THREADS);
 }
 
-gdx::String SunflowerSimulation::load_map(const gdx::PackedByteArray &p_text, const gdx::String &p_source,
-		const gdx::String &p_legend, const gdx::String &p_plant_symbols, int64_t p_max_plants) {
+static MapLimits limits_for(int64_t p_max_plants) {
 	MapLimits limits;
 	if (p_max_plants > 0) {
 		limits.max_plants = p_max_plants;
 	}
+	return limits;
+}
+
+gdx::String SunflowerSimulation::load_map(const gdx::PackedByteArray &p_text, const gdx::String &p_source,
+		const gdx::String &p_legend, const gdx::String &p_plant_symbols, int64_t p_max_plants) {
+	const MapLimits limits = limits_for(p_max_plants);
 	MapError error;
 	if (!_sim.load_map(gdx::to_core(p_text), decode_utf8_text(p_legend.utf8()), decode_utf8_text(p_plant_symbols.utf8()),
 				p_source.utf8(), limits, error)) {
@@ -120,6 +127,24 @@ gdx::String SunflowerSimulation::load_map(const gdx::PackedByteArray &p_text, co
 	}
 	release_multimeshes(); // the old field's chunks no longer exist
 	return gdx::String();
+}
+
+gdx::String SunflowerSimulation::check_map(const gdx::PackedByteArray &p_text, const gdx::String &p_source,
+		const gdx::String &p_legend, const gdx::String &p_plant_symbols, int64_t p_max_plants) {
+	FieldMap parsed;
+	MapError error;
+	if (!parse_field_map(gdx::to_core(p_text), decode_utf8_text(p_legend.utf8()), decode_utf8_text(p_plant_symbols.utf8()),
+				p_source.utf8(), limits_for(p_max_plants), parsed, error)) {
+		return gdx::String(error.to_string());
+	}
+	_checked = { parsed.columns, parsed.rows, static_cast<int32_t>(parsed.plant_count) };
+	return gdx::String();
+}
+
+gdx::PackedInt32Array SunflowerSimulation::get_checked_map() const {
+	gdx::PackedInt32Array out;
+	out.assign(_checked.data(), _checked.size());
+	return out;
 }
 
 void SunflowerSimulation::clear() {

@@ -257,6 +257,8 @@ func test_a_bad_map_keeps_the_field_and_reports_file_line_column() -> void:
 	good.close()
 	check_eq(field.load_map_file(path), OK, "a good map loads")
 	check_eq(field.get_plant_count(), 5, "the new field")
+	# The check before the build only parses; its figures are the built field's.
+	check_eq([field.map.columns, field.map.rows, field.map.plant_count], [3, 2, 5], "the checked map's size and plants")
 
 
 # --- helpers ---
