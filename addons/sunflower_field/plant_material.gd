@@ -4,9 +4,10 @@ extends RefCounted
 ## ([code]shaders/plant_parts.gdshader[/code]), so that its near levels cross-fade (the shader's
 ## screen door) and the plant can be drawn whole ([code]whole_plant_mesh.gd[/code]). A plain
 ## [StandardMaterial3D] is carried over: albedo colour and texture, UV1 scale and offset (x, y),
-## roughness, alpha scissor, vertex colours as albedo and their encoding, back faces culled or not
-## (the plant material draws both). A material with anything else set (emission, a normal map,
-## transparency other than alpha scissor, another shading mode, a next pass...) is kept as it is:
+## roughness, metallic, specular, a normal map and its scale, alpha scissor, vertex colours as albedo
+## and their encoding, back faces culled or not (the plant material draws both). A material with
+## anything else set (emission, textures of roughness, metallic or others, transparency other than
+## alpha scissor, another shading mode, a next pass...) is kept as it is:
 ## that part is drawn by its own material, without fades, and its plant part by part.
 
 const PARTS_SHADER: Shader = preload("shaders/plant_parts.gdshader")
@@ -17,6 +18,11 @@ const CARRIED: PackedStringArray = [
 	"uv1_scale",
 	"uv1_offset",
 	"roughness",
+	"metallic",
+	"metallic_specular",
+	"normal_enabled",
+	"normal_texture",
+	"normal_scale",
 	"transparency",
 	"alpha_scissor_threshold",
 	"vertex_color_use_as_albedo",
@@ -66,6 +72,11 @@ static func adopt(material: Material, has_vertex_colours: bool) -> ShaderMateria
 	adopted.set_shader_parameter(&"uv_scale", Vector2(standard.uv1_scale.x, standard.uv1_scale.y))
 	adopted.set_shader_parameter(&"uv_offset", Vector2(standard.uv1_offset.x, standard.uv1_offset.y))
 	adopted.set_shader_parameter(&"roughness", standard.roughness)
+	adopted.set_shader_parameter(&"metallic", standard.metallic)
+	adopted.set_shader_parameter(&"specular", standard.metallic_specular)
+	adopted.set_shader_parameter(&"use_normal_texture", standard.normal_enabled and standard.normal_texture != null)
+	adopted.set_shader_parameter(&"normal_texture", standard.normal_texture)
+	adopted.set_shader_parameter(&"normal_scale", standard.normal_scale)
 	var scissor: bool = standard.transparency == BaseMaterial3D.TRANSPARENCY_ALPHA_SCISSOR
 	adopted.set_shader_parameter(&"alpha_scissor", standard.alpha_scissor_threshold if scissor else 0.0)
 	adopted.set_shader_parameter(&"vertex_colour_is_srgb", standard.vertex_color_is_srgb)

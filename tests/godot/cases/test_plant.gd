@@ -223,6 +223,11 @@ func test_plain_standard_materials_are_taken_over_and_others_kept() -> void:
 	leaf.roughness = 0.4
 	leaf.transparency = BaseMaterial3D.TRANSPARENCY_ALPHA_SCISSOR
 	leaf.alpha_scissor_threshold = 0.3
+	leaf.metallic = 0.2
+	leaf.metallic_specular = 0.7
+	leaf.normal_enabled = true
+	leaf.normal_texture = texture
+	leaf.normal_scale = 0.5
 	var taken: ShaderMaterial = PlantMaterialScript.adopt(leaf, false)
 	if check(taken != null, "a plain textured, scissored StandardMaterial3D is taken over"):
 		check(taken.shader == preload("res://addons/sunflower_field/shaders/plant_parts.gdshader"), "plant shader")
@@ -232,7 +237,15 @@ func test_plain_standard_materials_are_taken_over_and_others_kept() -> void:
 		check_eq(taken.get_shader_parameter("uv_scale"), Vector2(2.0, 3.0), "UV scale")
 		check(is_equal_approx(taken.get_shader_parameter("roughness"), 0.4), "roughness")
 		check(is_equal_approx(taken.get_shader_parameter("alpha_scissor"), 0.3), "alpha scissor")
+		check(is_equal_approx(taken.get_shader_parameter("metallic"), 0.2), "metallic")
+		check(is_equal_approx(taken.get_shader_parameter("specular"), 0.7), "specular")
+		check_eq(taken.get_shader_parameter("use_normal_texture"), true, "the normal map is used")
+		check_eq(taken.get_shader_parameter("normal_texture"), texture, "normal map")
+		check(is_equal_approx(taken.get_shader_parameter("normal_scale"), 0.5), "normal scale")
 	# What the plant material cannot draw is kept: the part is drawn by its own material.
+	var rough_map: StandardMaterial3D = leaf.duplicate()
+	rough_map.roughness_texture = texture
+	check(PlantMaterialScript.adopt(rough_map, false) == null, "a roughness texture is kept as it is")
 	var glowing: StandardMaterial3D = leaf.duplicate()
 	glowing.emission_enabled = true
 	check(PlantMaterialScript.adopt(glowing, false) == null, "emission is kept as it is")

@@ -171,9 +171,10 @@ func test_plants_drawn_whole_look_as_drawn_part_by_part() -> void:
 
 
 func test_plain_standard_materials_are_drawn_as_the_plant_material() -> void:
-	# The demo field in a strong wind, drawn three ways: the built-in sunflower; the same meshes with
+	# The demo field in a strong wind, drawn five ways: the built-in sunflower; the same meshes with
 	# plain StandardMaterial3D surfaces of the same look, taken over by the plant material; and those
-	# surfaces drawn by their own material (use_plant_material off).
+	# surfaces drawn by their own material (use_plant_material off); then both again with a normal map,
+	# metallic and specular set.
 	var pictures: Array[PackedFloat32Array] = []
 	var picture: Picture = Picture.new(640, 360)
 	var standard: StandardMaterial3D = StandardMaterial3D.new()
@@ -181,25 +182,44 @@ func test_plain_standard_materials_are_drawn_as_the_plant_material() -> void:
 	standard.vertex_color_is_srgb = true
 	standard.roughness = 0.85
 	standard.cull_mode = BaseMaterial3D.CULL_DISABLED
-	var ways: Array[String] = ["built-in", "taken over", "own material"]
+	var mapped: StandardMaterial3D = standard.duplicate()
+	mapped.metallic = 0.4
+	mapped.metallic_specular = 0.9
+	mapped.roughness = 0.4
+	mapped.normal_enabled = true
+	var bumps: Image = Image.create(8, 8, false, Image.FORMAT_RGB8)
+	bumps.fill(Color(0.85, 0.3, 0.75))  # a tangent-space normal tilted well away from the surface's
+	mapped.normal_texture = ImageTexture.create_from_image(bumps)
+	mapped.normal_scale = 1.0
+	var ways: Array[String] = ["built-in", "taken over", "own material", "mapped, taken over", "mapped, own material"]
 	for way: String in ways:
 		var own: FieldPlant = FieldPlant.default_plant().duplicate()
 		if way != "built-in":
-			Dressing.dress_parts(own, func(_level: int, _part: int) -> Material: return standard)
-			own.use_plant_material = way == "taken over"
+			var material: StandardMaterial3D = mapped if way.begins_with("mapped") else standard
+			Dressing.dress_parts(own, func(_level: int, _part: int) -> Material: return material)
+			own.use_plant_material = way.ends_with("taken over")
 		var field: SunflowerField = await _windy_demo_field(own)
-		check_eq(own.drawn_whole(), way != "own material", "%s: drawn whole" % way)
-		pictures.append(_snapshot(picture, "render_standard_%s.png" % way.replace(" ", "_")))
+		check_eq(own.drawn_whole(), not way.ends_with("own material"), "%s: drawn whole" % way)
+		pictures.append(_snapshot(picture, "render_standard_%s.png" % way.replace(" ", "_").replace(",", "")))
 		field.free()
 	var as_built_in: float = picture.ssim(pictures[1], pictures[0])
 	var as_own: float = picture.ssim(pictures[1], pictures[2])
+	var mapped_as_own: float = picture.ssim(pictures[3], pictures[4])
+	var mapped_as_plain: float = picture.ssim(pictures[4], pictures[2])
 	print(
 		(
-			"     standard materials taken over: SSIM %.4f to the built-in plant, %.4f to their own material"
-			% [as_built_in, as_own]
+			(
+				"     standard materials taken over: SSIM %.4f to the built-in plant, %.4f to their own material;"
+				% [as_built_in, as_own]
+			)
+			+ (
+				" with a normal map, metallic and specular %.4f (their own against the plain one %.4f)"
+				% [mapped_as_own, mapped_as_plain]
+			)
 		)
 	)
 	check(as_built_in > 0.99, "taken over, the plant looks as the built-in one (SSIM %.4f)" % as_built_in)
+	check(mapped_as_plain < 0.97, "the normal map and metallic change the look (SSIM %.4f)" % mapped_as_plain)
 	# Forward+ lights the plant material as it lights the StandardMaterial3D it took over (0.998). The
 	# Compatibility renderer draws any spatial shader that contains a discard (the plant material's
 	# screen door) darker than the same shader without one, even where it never discards (measured
@@ -207,6 +227,7 @@ func test_plain_standard_materials_are_drawn_as_the_plant_material() -> void:
 	# changes the look (0.779 here), which the README says and use_plant_material switches off.
 	if RenderingServer.get_current_rendering_method() == "forward_plus":
 		check(as_own > 0.97, "taken over, the plant looks as its own material draws it (SSIM %.4f)" % as_own)
+		check(mapped_as_own > 0.97, "with a normal map and metallic too (SSIM %.4f)" % mapped_as_own)
 	else:
 		print("     (not the same look on the Compatibility renderer: SSIM %.4f, not checked there)" % as_own)
 
