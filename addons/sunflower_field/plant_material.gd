@@ -4,10 +4,10 @@ extends RefCounted
 ## ([code]shaders/plant_parts.gdshader[/code]), so that its near levels cross-fade (the shader's
 ## screen door) and the plant can be drawn whole ([code]whole_plant_mesh.gd[/code]). A plain
 ## [StandardMaterial3D] is carried over: albedo colour and texture, UV1 scale and offset (x, y),
-## roughness, metallic, specular, a normal map and its scale, alpha scissor, vertex colours as albedo
-## and their encoding, back faces culled or not (the plant material draws both). A material with
-## anything else set (emission, textures of roughness, metallic or others, transparency other than
-## alpha scissor, another shading mode, a next pass...) is kept as it is:
+## roughness and metallic (and their textures and channels), specular, a normal map and its scale,
+## alpha scissor, vertex colours as albedo and their encoding, back faces culled or not (the plant
+## material draws both). A material with anything else set (emission, other textures, transparency
+## other than alpha scissor, another shading mode, a next pass...) is kept as it is:
 ## that part is drawn by its own material, without fades, and its plant part by part.
 
 const PARTS_SHADER: Shader = preload("shaders/plant_parts.gdshader")
@@ -18,7 +18,11 @@ const CARRIED: PackedStringArray = [
 	"uv1_scale",
 	"uv1_offset",
 	"roughness",
+	"roughness_texture",
+	"roughness_texture_channel",
 	"metallic",
+	"metallic_texture",
+	"metallic_texture_channel",
 	"metallic_specular",
 	"normal_enabled",
 	"normal_texture",
@@ -28,6 +32,15 @@ const CARRIED: PackedStringArray = [
 	"vertex_color_use_as_albedo",
 	"vertex_color_is_srgb",
 	"cull_mode",
+]
+
+## BaseMaterial3D.TextureChannel (red, green, blue, alpha, grayscale) as the weights that read it.
+const CHANNELS: Array[Vector4] = [
+	Vector4(1.0, 0.0, 0.0, 0.0),
+	Vector4(0.0, 1.0, 0.0, 0.0),
+	Vector4(0.0, 0.0, 1.0, 0.0),
+	Vector4(0.0, 0.0, 0.0, 1.0),
+	Vector4(0.333333, 0.333333, 0.333333, 0.0),
 ]
 
 static var _plain: StandardMaterial3D
@@ -73,6 +86,11 @@ static func adopt(material: Material, has_vertex_colours: bool) -> ShaderMateria
 	adopted.set_shader_parameter(&"uv_offset", Vector2(standard.uv1_offset.x, standard.uv1_offset.y))
 	adopted.set_shader_parameter(&"roughness", standard.roughness)
 	adopted.set_shader_parameter(&"metallic", standard.metallic)
+	for map: String in ["roughness", "metallic"]:
+		var texture: Texture2D = standard.get(map + "_texture")
+		adopted.set_shader_parameter("use_%s_texture" % map, texture != null)
+		adopted.set_shader_parameter(map + "_texture", texture)
+		adopted.set_shader_parameter(map + "_channel", CHANNELS[standard.get(map + "_texture_channel")])
 	adopted.set_shader_parameter(&"specular", standard.metallic_specular)
 	adopted.set_shader_parameter(&"use_normal_texture", standard.normal_enabled and standard.normal_texture != null)
 	adopted.set_shader_parameter(&"normal_texture", standard.normal_texture)

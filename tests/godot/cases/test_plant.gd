@@ -228,6 +228,10 @@ func test_plain_standard_materials_are_taken_over_and_others_kept() -> void:
 	leaf.normal_enabled = true
 	leaf.normal_texture = texture
 	leaf.normal_scale = 0.5
+	leaf.roughness_texture = texture
+	leaf.roughness_texture_channel = BaseMaterial3D.TEXTURE_CHANNEL_GREEN
+	leaf.metallic_texture = texture
+	leaf.metallic_texture_channel = BaseMaterial3D.TEXTURE_CHANNEL_BLUE
 	var taken: ShaderMaterial = PlantMaterialScript.adopt(leaf, false)
 	if check(taken != null, "a plain textured, scissored StandardMaterial3D is taken over"):
 		check(taken.shader == preload("res://addons/sunflower_field/shaders/plant_parts.gdshader"), "plant shader")
@@ -242,10 +246,14 @@ func test_plain_standard_materials_are_taken_over_and_others_kept() -> void:
 		check_eq(taken.get_shader_parameter("use_normal_texture"), true, "the normal map is used")
 		check_eq(taken.get_shader_parameter("normal_texture"), texture, "normal map")
 		check(is_equal_approx(taken.get_shader_parameter("normal_scale"), 0.5), "normal scale")
+		check_eq(taken.get_shader_parameter("use_roughness_texture"), true, "the roughness texture is used")
+		check_eq(taken.get_shader_parameter("roughness_channel"), Vector4(0, 1, 0, 0), "roughness from green")
+		check_eq(taken.get_shader_parameter("use_metallic_texture"), true, "the metallic texture is used")
+		check_eq(taken.get_shader_parameter("metallic_channel"), Vector4(0, 0, 1, 0), "metallic from blue")
 	# What the plant material cannot draw is kept: the part is drawn by its own material.
-	var rough_map: StandardMaterial3D = leaf.duplicate()
-	rough_map.roughness_texture = texture
-	check(PlantMaterialScript.adopt(rough_map, false) == null, "a roughness texture is kept as it is")
+	var occluded: StandardMaterial3D = leaf.duplicate()
+	occluded.ao_enabled = true
+	check(PlantMaterialScript.adopt(occluded, false) == null, "ambient occlusion is kept as it is")
 	var glowing: StandardMaterial3D = leaf.duplicate()
 	glowing.emission_enabled = true
 	check(PlantMaterialScript.adopt(glowing, false) == null, "emission is kept as it is")
