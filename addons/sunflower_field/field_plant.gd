@@ -64,10 +64,10 @@ static var _default: FieldPlant
 	set(value):
 		draw_whole = value
 		emit_changed()
-## Draw the parts' plain StandardMaterial3D surfaces (albedo colour and texture, roughness, alpha
-## scissor, vertex colours) with the addon's plant material of the same settings, so that the near
-## levels cross-fade into each other and the impostors and the plant can be drawn whole
-## ([code]plant_material.gd[/code] says what carries over). Off: every part keeps its own material.
+## Draw the parts' plain StandardMaterial3D surfaces with the addon's plant material of the same
+## settings ([code]plant_material.gd[/code] says which settings carry over), so that the near levels
+## cross-fade into each other and the impostors and the plant can be drawn whole. Off: every part
+## keeps its own material.
 @export var use_plant_material: bool = true:
 	set(value):
 		use_plant_material = value
