@@ -27,6 +27,7 @@ void SunflowerSimulation::bind_methods() {
 	gdx::bind_method(CLASS, "get_map_rows", &SunflowerSimulation::get_map_rows);
 	gdx::bind_method(CLASS, "get_map_objects", &SunflowerSimulation::get_map_objects);
 	gdx::bind_method(CLASS, "set_layout", &SunflowerSimulation::set_layout, { "cell_size", "seed", "independent_jitter", "chunk_size" });
+	gdx::bind_method(CLASS, "set_tile_merge_distance", &SunflowerSimulation::set_tile_merge_distance, { "metres" });
 	gdx::bind_method(CLASS, "set_ground_flat", &SunflowerSimulation::set_ground_flat);
 	gdx::bind_method(CLASS, "set_ground_height_map", &SunflowerSimulation::set_ground_height_map,
 			{ "rgba", "width", "depth", "origin", "size", "height_min", "height_max", "tilt" });
@@ -63,6 +64,10 @@ void SunflowerSimulation::bind_methods() {
 	gdx::bind_method(CLASS, "get_tile_key", &SunflowerSimulation::get_tile_key, { "tile" });
 	gdx::bind_method(CLASS, "get_tile_signature", &SunflowerSimulation::get_tile_signature, { "tile" });
 	gdx::bind_method(CLASS, "get_tile_species", &SunflowerSimulation::get_tile_species, { "tile" });
+	gdx::bind_method(CLASS, "get_tile_level", &SunflowerSimulation::get_tile_level, { "tile" });
+	gdx::bind_method(CLASS, "get_tile_parent", &SunflowerSimulation::get_tile_parent, { "tile" });
+	gdx::bind_method(CLASS, "get_tile_begin", &SunflowerSimulation::get_tile_begin, { "tile" });
+	gdx::bind_method(CLASS, "get_tile_density", &SunflowerSimulation::get_tile_density, { "tile" });
 	gdx::bind_method(CLASS, "get_active_mask", &SunflowerSimulation::get_active_mask, { "species" });
 	gdx::bind_method(CLASS, "get_mask_version", &SunflowerSimulation::get_mask_version);
 	gdx::bind_method(CLASS, "get_tiles_drawn", &SunflowerSimulation::get_tiles_drawn);
@@ -178,6 +183,14 @@ void SunflowerSimulation::set_layout(double p_cell_size, int64_t p_seed, bool p_
 	params.chunk_size = static_cast<float>(p_chunk_size);
 	if (_sim.set_layout_params(params)) {
 		release_multimeshes(); // the chunks changed
+	}
+}
+
+void SunflowerSimulation::set_tile_merge_distance(double p_metres) {
+	LayoutParams params = _sim.get_layout_params();
+	params.tile_merge_distance = static_cast<float>(p_metres);
+	if (_sim.set_layout_params(params)) {
+		release_multimeshes(); // the tiles changed
 	}
 }
 
@@ -454,6 +467,26 @@ int64_t SunflowerSimulation::get_tile_signature(int64_t p_tile) const {
 
 int64_t SunflowerSimulation::get_tile_species(int64_t p_tile) const {
 	return _is_tile(p_tile) ? int64_t(_sim.get_tile(uint32_t(p_tile)).species) : -1;
+}
+
+int64_t SunflowerSimulation::get_tile_level(int64_t p_tile) const {
+	return _is_tile(p_tile) ? int64_t(_sim.get_tile(uint32_t(p_tile)).level) : -1;
+}
+
+int64_t SunflowerSimulation::get_tile_parent(int64_t p_tile) const {
+	if (!_is_tile(p_tile)) {
+		return -1;
+	}
+	const uint32_t parent = _sim.get_tile(uint32_t(p_tile)).parent;
+	return parent == FieldSimulation::NO_TILE ? -1 : int64_t(parent);
+}
+
+double SunflowerSimulation::get_tile_begin(int64_t p_tile) const {
+	return _is_tile(p_tile) ? double(_sim.get_tile_begin(uint32_t(p_tile))) : 0.0;
+}
+
+double SunflowerSimulation::get_tile_density(int64_t p_tile) const {
+	return _is_tile(p_tile) ? double(FieldSimulation::tile_density(_sim.get_tile(uint32_t(p_tile)).level)) : 0.0;
 }
 
 gdx::PackedByteArray SunflowerSimulation::get_active_mask(int64_t p_species) const {

@@ -31,6 +31,7 @@ public:
 	gdx::PackedInt32Array get_map_objects() const;
 
 	void set_layout(double p_cell_size, int64_t p_seed, bool p_independent_jitter, double p_chunk_size);
+	void set_tile_merge_distance(double p_metres);
 	void set_ground_flat();
 	gdx::String set_ground_height_map(const gdx::PackedFloat32Array &p_rgba, int64_t p_width, int64_t p_depth, gdx::Vector2 p_origin,
 			gdx::Vector2 p_size, double p_height_min, double p_height_max, double p_tilt);
@@ -70,6 +71,10 @@ public:
 	int64_t get_tile_key(int64_t p_tile) const;
 	int64_t get_tile_signature(int64_t p_tile) const;
 	int64_t get_tile_species(int64_t p_tile) const;
+	int64_t get_tile_level(int64_t p_tile) const;
+	int64_t get_tile_parent(int64_t p_tile) const;
+	double get_tile_begin(int64_t p_tile) const;
+	double get_tile_density(int64_t p_tile) const;
 	gdx::PackedByteArray get_active_mask(int64_t p_species) const;
 	gdx::PackedByteArray get_tiles_drawn() const;
 	int64_t get_mask_version() const;

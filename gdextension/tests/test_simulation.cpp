@@ -2,6 +2,7 @@
 
 #include <doctest/doctest.h>
 
+#include <cmath>
 #include <algorithm>
 #include <map>
 
@@ -48,13 +49,35 @@ int64_t total(const std::array<int64_t, LOD_COUNT> &p_counts) {
 	return std::accumulate(p_counts.begin(), p_counts.end(), int64_t(0));
 }
 
-// Plants drawn by the dynamic buckets plus the tiles' records the impostor shader keeps (those whose
-// chunk cell the active mask leaves 0): with no frustum, every plant must be drawn exactly once, or,
-// in a cross-fade, twice with complementary shares that add up to one: mesh 3 and its impostor (the
-// instance colours' alpha, the patterns each level's shader keeps), or, drawn whole, two adjacent
-// mesh levels (the finer with a positive alpha, the coarser with a negative one: the other pixels).
-// Returns the plants drawn.
-int64_t drawn(const FieldSimulation &p_sim) {
+// Whether the engine draws far tile p_tile seen from p_camera: its node is shown (it has a plant
+// to draw), the camera is at least its begin distance from its box centre, and no shown ancestor is
+// (a node's visibility parent hides it while the parent is within its own range; a hidden node
+// leaves the chain).
+bool tile_drawn_from(const FieldSimulation &p_sim, uint32_t p_tile, const glm::vec3 &p_camera) {
+	const auto reached = [&](uint32_t p_t) {
+		return glm::distance(p_camera, p_sim.get_tile_bounds(p_t).center()) >= p_sim.get_tile_begin(p_t);
+	};
+	if (!p_sim.is_tile_drawn(p_tile) || !reached(p_tile)) {
+		return false;
+	}
+	for (uint32_t t = p_sim.get_tile(p_tile).parent; t != FieldSimulation::NO_TILE && p_sim.is_tile_drawn(t);
+			t = p_sim.get_tile(t).parent) {
+		if (reached(t)) {
+			return false;
+		}
+	}
+	return true;
+}
+
+// Plants drawn by the dynamic buckets plus the records of the tiles drawn from the observer that
+// the impostor shader keeps (those whose chunk cell the active mask leaves 0): with no frustum,
+// every plant must be drawn exactly once, or, in a cross-fade, twice with complementary shares that
+// add up to one: mesh 3 and its impostor (the instance colours' alpha, the patterns each level's
+// shader keeps), or, drawn whole, two adjacent mesh levels (the finer with a positive alpha, the
+// coarser with a negative one: the other pixels); or, where a merged tile is drawn, not at all when
+// the tile's level leaves it out (counted as drawn once: the merged tile stands in for it).
+// Returns the plants drawn or stood in for; r_thinned (if given) gets those stood in for.
+int64_t drawn(const FieldSimulation &p_sim, int64_t *r_thinned = nullptr) {
 	struct Drawn {
 		float share = 0.0f;
 		int representations = 0;
@@ -89,10 +112,15 @@ int64_t drawn(const FieldSimulation &p_sim) {
 	const FieldLayout &layout = p_sim.get_layout();
 	std::vector<uint8_t> mask(size_t(layout.grid_x) * size_t(layout.grid_z));
 	p_sim.write_active_mask(0, mask.data());
+	int64_t thinned = 0;
 	for (uint32_t t = 0; t < p_sim.get_tile_count(); ++t) {
-		std::vector<float> records(size_t(p_sim.get_tile(t).plants) * FAR_FLOATS_PER_INSTANCE);
+		if (!tile_drawn_from(p_sim, t, p_sim.get_observer())) {
+			continue;
+		}
+		const FieldSimulation::Tile &tile = p_sim.get_tile(t);
+		std::vector<float> records(size_t(tile.plants) * FAR_FLOATS_PER_INSTANCE);
 		p_sim.write_tile_instances(t, records.data());
-		for (size_t k = 0; k < p_sim.get_tile(t).plants; ++k) {
+		for (size_t k = 0; k < tile.plants; ++k) {
 			const FarInstance record = read_far_instance(records.data() + k * FAR_FLOATS_PER_INSTANCE);
 			REQUIRE(record.cell < mask.size());
 			if (mask[record.cell] == 0) {
@@ -102,6 +130,22 @@ int64_t drawn(const FieldSimulation &p_sim) {
 				plant.levels |= 1 << LOD_SPRITE;
 			}
 		}
+		// The plants of its static chunks its level leaves out: no other representation may draw them.
+		for (uint32_t c = 0; c < tile.count && tile.level > 0; ++c) {
+			const Chunk &chunk = layout.chunks[p_sim.get_tile_chunk(t, c)];
+			for (uint32_t i = 0; i < chunk.count && !p_sim.is_chunk_active(p_sim.get_tile_chunk(t, c)); ++i) {
+				const Plant &left_out = layout.plants[layout.chunk_plants[chunk.first + i]];
+				if (p_sim.plant_tile_level(left_out) < tile.level) {
+					Drawn &plant = plants[{ left_out.position.x, left_out.position.y }];
+					plant.share += 1.0f;
+					plant.representations += 1;
+					++thinned;
+				}
+			}
+		}
+	}
+	if (r_thinned) {
+		*r_thinned = thinned;
 	}
 	const bool whole = p_sim.get_shape().whole;
 	for (const auto &[root, plant] : plants) {
@@ -185,6 +229,9 @@ TEST_CASE("far tiles: every chunk in one tile of its species, at most 4 × 4 cel
 	uint32_t plants = 0;
 	for (uint32_t t = 0; t < sim.get_tile_count(); ++t) {
 		const FieldSimulation::Tile &tile = sim.get_tile(t);
+		if (tile.level > 0) {
+			continue; // merged tiles: see the next test
+		}
 		plants += tile.plants;
 		uint32_t in_chunks = 0;
 		int x0 = 1 << 30, x1 = -1, z0 = 1 << 30, z1 = -1;
@@ -250,6 +297,110 @@ TEST_CASE("far tiles: every chunk in one tile of its species, at most 4 × 4 cel
 	const uint32_t settled = sim.get_mask_version();
 	sim.update(0.016f);
 	CHECK(sim.get_mask_version() == settled); // nothing turned
+}
+
+TEST_CASE("far tiles merge with distance: nested quarters, parents covering their children, one level drawn at each place") {
+	FieldSimulation sim;
+	load(sim, rect_map(240, 240), 2.0f); // 120 m square, 57 600 plants; 60 × 60 chunk cells, 15 × 15 tiles
+	const uint32_t plant_count = sim.get_plant_count();
+	LayoutParams params = sim.get_layout_params();
+	params.tile_merge_distance = 10.0f;
+	sim.set_layout_params(params);
+	const FieldLayout &layout = sim.get_layout();
+	REQUIRE(layout.grid_x == 60);
+	std::array<uint32_t, FieldSimulation::MAX_TILE_LEVELS> tiles_at{};
+	std::array<uint32_t, FieldSimulation::MAX_TILE_LEVELS> plants_at{};
+	uint32_t top = 0;
+	for (uint32_t t = 0; t < sim.get_tile_count(); ++t) {
+		const FieldSimulation::Tile &tile = sim.get_tile(t);
+		CAPTURE(t);
+		++tiles_at[tile.level];
+		plants_at[tile.level] += tile.plants;
+		top = std::max(top, tile.level);
+		CHECK((tile.key >> 56) == uint64_t(tile.level));
+		CHECK((t == 0 || sim.get_tile(t - 1).level <= tile.level)); // level by level
+		const float side = float(FieldSimulation::TILE_CHUNKS << tile.level) * layout.chunk_size;
+		CHECK(sim.get_tile_begin(t) == (tile.level == 0 ? 0.0f : std::max(10.0f * float(1u << (tile.level - 1)), 1.5f * side)));
+		if (tile.parent != FieldSimulation::NO_TILE) {
+			CHECK(sim.get_tile(tile.parent).level == tile.level + 1);
+			CHECK(sim.get_tile(tile.parent).species == tile.species);
+		}
+		if (tile.level == 0) {
+			continue;
+		}
+		// Its chunks are its children's, and its records exactly their plants kept at its level.
+		std::vector<uint32_t> chunks;
+		for (uint32_t child = 0; child < sim.get_tile_count(); ++child) {
+			for (uint32_t k = 0; k < sim.get_tile(child).count && sim.get_tile(child).parent == t; ++k) {
+				chunks.push_back(sim.get_tile_chunk(child, k));
+			}
+		}
+		std::vector<uint32_t> own;
+		for (uint32_t k = 0; k < tile.count; ++k) {
+			own.push_back(sim.get_tile_chunk(t, k));
+		}
+		std::sort(chunks.begin(), chunks.end());
+		std::sort(own.begin(), own.end());
+		CHECK(own == chunks);
+		std::vector<std::pair<float, float>> kept;
+		for (uint32_t chunk : own) {
+			for (uint32_t k = 0; k < layout.chunks[chunk].count; ++k) {
+				const Plant &plant = layout.plants[layout.chunk_plants[layout.chunks[chunk].first + k]];
+				if (sim.plant_tile_level(plant) >= tile.level) {
+					kept.emplace_back(plant.position.x, plant.position.y);
+				}
+			}
+		}
+		std::vector<float> records(size_t(tile.plants) * FAR_FLOATS_PER_INSTANCE);
+		sim.write_tile_instances(t, records.data());
+		std::vector<std::pair<float, float>> held;
+		for (size_t k = 0; k < tile.plants; ++k) {
+			const FarInstance record = read_far_instance(records.data() + k * FAR_FLOATS_PER_INSTANCE);
+			held.emplace_back(record.root.x, record.root.z);
+			CHECK(std::find(own.begin(), own.end(), layout.grid_chunks[record.cell]) != own.end());
+		}
+		std::sort(kept.begin(), kept.end());
+		std::sort(held.begin(), held.end());
+		CHECK(held == kept);
+	}
+	// 15 × 15 tiles, then 8 × 8, 4 × 4, 2 × 2 and one; each level a quarter of the one below.
+	CHECK(top == 4);
+	CHECK(tiles_at[0] == 225);
+	CHECK(tiles_at[1] == 64);
+	CHECK(tiles_at[4] == 1);
+	CHECK(plants_at[0] == plant_count);
+	for (uint32_t level = 1; level <= top; ++level) {
+		const double p = FieldSimulation::tile_density(level);
+		const double sd = std::sqrt(plant_count * p * (1.0 - p));
+		CAPTURE(level);
+		CHECK(std::abs(double(plants_at[level]) - plant_count * p) < 5.0 * sd);
+	}
+	// Every place drawn by one level: from inside, from the edge, from far and from high above, every
+	// plant is drawn once or stood in for by the merged tile drawn there; the farther, the fewer drawn.
+	int64_t previous_thinned = -1;
+	for (const glm::vec3 &camera : { glm::vec3(60.0f, 1.7f, 60.0f), glm::vec3(-10.0f, 1.7f, 60.0f),
+				 glm::vec3(-80.0f, 1.7f, 60.0f), glm::vec3(-250.0f, 1.7f, 60.0f) }) {
+		CAPTURE(camera.x);
+		sim.set_observer(camera);
+		for (int frame = 0; frame < 40; ++frame) { // the activation budget spreads a jump over updates
+			sim.update(0.016f);
+		}
+		int64_t thinned = 0;
+		CHECK(drawn(sim, &thinned) == plant_count);
+		CHECK(thinned > previous_thinned);
+		previous_thinned = thinned;
+		uint32_t tiles_drawn = 0;
+		for (uint32_t t = 0; t < sim.get_tile_count(); ++t) {
+			tiles_drawn += tile_drawn_from(sim, t, camera) ? 1 : 0;
+		}
+		CHECK(tiles_drawn < 60); // of 225 level-0 tiles
+	}
+	CHECK(double(previous_thinned) > 0.9 * plant_count); // from 250 m away, level 3 or 4 stands in
+	// Without merging: the level-0 tiles alone.
+	params.tile_merge_distance = 0.0f;
+	sim.set_layout_params(params);
+	CHECK(sim.get_tile_count() == 225);
+	CHECK(drawn(sim) == plant_count);
 }
 
 TEST_CASE("a field too large for the chunk grid gets larger chunks") {

@@ -42,10 +42,14 @@ struct LayoutParams {
 	std::array<PlantVariety, FieldMap::MAX_SPECIES> varieties{};
 	// Metres; the far representations are grouped in square chunks.
 	float chunk_size = float(param::CHUNK_SIZE.default_value);
+	// Where far tiles start to merge (param::TILE_MERGE_DISTANCE); 0: they never do. The layout
+	// itself does not depend on it, the far tiles built from it do.
+	float tile_merge_distance = float(param::TILE_MERGE_DISTANCE.default_value);
 
 	bool operator==(const LayoutParams &p_other) const {
 		return cell_size == p_other.cell_size && seed == p_other.seed && independent_jitter == p_other.independent_jitter &&
-				jitter == p_other.jitter && chunk_size == p_other.chunk_size && varieties == p_other.varieties;
+				jitter == p_other.jitter && chunk_size == p_other.chunk_size &&
+				tile_merge_distance == p_other.tile_merge_distance && varieties == p_other.varieties;
 	}
 };
 

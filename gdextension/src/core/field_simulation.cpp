@@ -1,11 +1,14 @@
 #include "field_simulation.h"
 
+#include "random_hash.h"
+
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include <algorithm>
 #include <utility>
 #include <cmath>
+#include <cstring>
 
 namespace sunflower {
 
@@ -55,6 +58,8 @@ bool FieldSimulation::set_layout_params(const LayoutParams &p_params) {
 	LayoutParams params = p_params;
 	params.cell_size = sanitize(param::CELL_SIZE, p_params.cell_size, _layout_params.cell_size);
 	params.chunk_size = sanitize(param::CHUNK_SIZE, p_params.chunk_size, _layout_params.chunk_size);
+	params.tile_merge_distance =
+			sanitize(param::TILE_MERGE_DISTANCE, p_params.tile_merge_distance, _layout_params.tile_merge_distance);
 	for (size_t s = 0; s < params.varieties.size(); ++s) {
 		PlantVariety &variety = params.varieties[s];
 		const PlantVariety &current = _layout_params.varieties[s];
@@ -173,6 +178,93 @@ void FieldSimulation::_build_tiles() {
 		++_tiles.back().count;
 		_tiles.back().plants += _layout.chunks[chunk].count;
 	}
+	if (_layout_params.tile_merge_distance > 0.0f) {
+		_merge_tiles();
+	}
+}
+
+void FieldSimulation::_merge_tiles() {
+	// Per chunk, how many of its plants each level keeps (level 0: all).
+	std::vector<std::array<uint32_t, MAX_TILE_LEVELS>> kept(_layout.chunks.size());
+	for (size_t c = 0; c < _layout.chunks.size(); ++c) {
+		const Chunk &chunk = _layout.chunks[c];
+		for (uint32_t k = 0; k < chunk.count; ++k) {
+			const uint32_t level = plant_tile_level(_layout.plants[_layout.chunk_plants[chunk.first + k]]);
+			for (uint32_t l = 0; l <= level; ++l) {
+				++kept[c][l];
+			}
+		}
+	}
+	size_t below_first = 0; // the level below's tiles: [below_first, below_end)
+	for (uint32_t level = 1; level < MAX_TILE_LEVELS; ++level) {
+		const size_t below_end = _tiles.size();
+		std::array<bool, FieldMap::MAX_SPECIES> species{};
+		size_t species_count = 0;
+		for (size_t t = below_first; t < below_end; ++t) {
+			species_count += species[_tiles[t].species] ? 0 : 1;
+			species[_tiles[t].species] = true;
+		}
+		if (below_end - below_first <= species_count) {
+			return; // one tile per species covers the field
+		}
+		// Each tile below, keyed by the tile of this level covering it (its first chunk's cell tells).
+		const uint32_t span = uint32_t(TILE_CHUNKS) << level; // grid cells along this level's side
+		const uint64_t tiles_x = (uint64_t(_layout.grid_x) + span - 1) / span;
+		std::vector<std::pair<uint64_t, uint32_t>> keyed;
+		keyed.reserve(below_end - below_first);
+		for (size_t t = below_first; t < below_end; ++t) {
+			const uint32_t cell = _chunk_cells[get_tile_chunk(uint32_t(t), 0)];
+			const uint64_t x = cell % uint32_t(_layout.grid_x) / span;
+			const uint64_t z = cell / uint32_t(_layout.grid_x) / span;
+			keyed.emplace_back((uint64_t(level) << 56) | ((z * tiles_x + x) * FieldMap::MAX_SPECIES + _tiles[t].species),
+					uint32_t(t));
+		}
+		std::sort(keyed.begin(), keyed.end());
+		for (const auto &[key, child] : keyed) {
+			if (_tiles.size() == below_end || _tiles.back().key != key) {
+				Tile tile;
+				tile.first = static_cast<uint32_t>(_tile_chunks.size());
+				tile.species = _tiles[child].species;
+				tile.level = level;
+				tile.key = key;
+				_tiles.push_back(tile);
+			}
+			Tile &parent = _tiles.back();
+			_tiles[child].parent = uint32_t(_tiles.size() - 1);
+			for (uint32_t k = 0; k < _tiles[child].count; ++k) {
+				const uint32_t chunk = get_tile_chunk(child, k);
+				_tile_chunks.push_back(chunk);
+				++parent.count;
+				parent.plants += kept[chunk][level];
+			}
+		}
+		below_first = below_end;
+	}
+}
+
+uint32_t FieldSimulation::plant_tile_level(const Plant &p_plant) const {
+	// Two bits of a hash of the plant's place per level: all zero with probability 1/4, so the
+	// plants kept at level L are a quarter of those kept at L − 1, and among them.
+	uint32_t x_bits = 0;
+	uint32_t z_bits = 0;
+	std::memcpy(&x_bits, &p_plant.position.x, sizeof(x_bits));
+	std::memcpy(&z_bits, &p_plant.position.y, sizeof(z_bits));
+	uint64_t hash = hash_plant(_layout_params.seed, (uint64_t(x_bits) << 32) | z_bits, STREAM_TILE_LEVEL);
+	uint32_t level = 0;
+	while (level + 1 < MAX_TILE_LEVELS && (hash >> 62) == 0) {
+		++level;
+		hash <<= 2;
+	}
+	return level;
+}
+
+float FieldSimulation::get_tile_begin(uint32_t p_tile) const {
+	const uint32_t level = _tiles[p_tile].level;
+	if (level == 0) {
+		return 0.0f;
+	}
+	const float side = float(TILE_CHUNKS << level) * _layout.chunk_size;
+	return std::max(_layout_params.tile_merge_distance * float(1u << (level - 1)), 1.5f * side);
 }
 
 ChunkBounds FieldSimulation::get_tile_bounds(uint32_t p_tile) const {
@@ -186,16 +278,30 @@ ChunkBounds FieldSimulation::get_tile_bounds(uint32_t p_tile) const {
 }
 
 void FieldSimulation::write_tile_instances(uint32_t p_tile, float *r_out) const {
-	for (uint32_t k = 0; k < _tiles[p_tile].count; ++k) {
+	const Tile &tile = _tiles[p_tile];
+	for (uint32_t k = 0; k < tile.count; ++k) {
 		const uint32_t chunk = get_tile_chunk(p_tile, k);
-		write_chunk_instances(chunk, r_out);
-		r_out += size_t(_layout.chunks[chunk].count) * FAR_FLOATS_PER_INSTANCE;
+		if (tile.level == 0) {
+			write_chunk_instances(chunk, r_out);
+			r_out += size_t(_layout.chunks[chunk].count) * FAR_FLOATS_PER_INSTANCE;
+			continue;
+		}
+		const Chunk &held = _layout.chunks[chunk];
+		for (uint32_t i = 0; i < held.count; ++i) {
+			const Plant &plant = _layout.plants[_layout.chunk_plants[held.first + i]];
+			if (plant_tile_level(plant) >= tile.level) {
+				FarInstance instance = _far_instance(plant, held.species);
+				instance.cell = _chunk_cells[chunk];
+				write_far_instance(r_out, instance);
+				r_out += FAR_FLOATS_PER_INSTANCE;
+			}
+		}
 	}
 }
 
 uint64_t FieldSimulation::get_tile_signature(uint32_t p_tile) const {
-	// FNV-1a over the chunks' keys and signatures, never 0.
-	uint64_t hash = 1469598103934665603ull ^ _tiles[p_tile].count;
+	// FNV-1a over the chunks' keys and signatures, never 0 (the level picks which plants it holds).
+	uint64_t hash = 1469598103934665603ull ^ _tiles[p_tile].count ^ (uint64_t(_tiles[p_tile].level) << 40);
 	for (uint32_t k = 0; k < _tiles[p_tile].count; ++k) {
 		const uint32_t chunk = get_tile_chunk(p_tile, k);
 		for (uint64_t value : { get_chunk_key(chunk), get_chunk_signature(chunk) }) {

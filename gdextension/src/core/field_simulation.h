@@ -11,7 +11,9 @@
 //   square of TILE_CHUNKS × TILE_CHUNKS grid cells of one species, written once (sprites and
 //   billboards are one multi-view impostor; one MultiMesh draws a whole tile). Every plant of a
 //   tile is in its buffer; the impostor shader skips those whose chunk is active, as the active
-//   mask (one byte per grid cell and species) says. Counts report a static plant as sprite or
+//   mask (one byte per grid cell and species) says. Far away, merged tiles (2 × 2 tiles, then
+//   4 × 4, …) stand in for their children, drawing a nested quarter of their plants per level
+//   (see TILE_CHUNKS). Counts report a static plant as sprite or
 //   billboard by the distance from the camera to its chunk's bounding-box centre.
 #include "field_layout.h"
 #include "field_map.h"
@@ -24,6 +26,7 @@
 
 #include <glm/vec3.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <memory>
@@ -163,24 +166,46 @@ public:
 	uint32_t get_chunk_cell(uint32_t p_chunk) const { return _chunk_cells[p_chunk]; }
 
 	// Far tiles: the chunks of one species in a square of TILE_CHUNKS × TILE_CHUNKS grid cells, drawn
-	// from one buffer. Tiles are ordered by where they lie, then species.
+	// from one buffer (level 0). While the field's tile merge distance is above 0, tiles merge with
+	// distance: a level-L tile covers the square of 2 × 2 level-(L − 1) tiles (its children, whose
+	// parent it is) and holds the plants of its chunks whose tile level (plant_tile_level) is at least
+	// L: a quarter of the plants per level, each level's a subset of the one below. A tile is drawn
+	// from get_tile_begin on, its children nearer (the engine's visibility parents), so each place is
+	// drawn by one level; the impostor shader widens a merged tile's plants by 1 / √density to keep
+	// the field's cover. Levels stop once one tile per species covers the field. Level-0 tiles come
+	// first, ordered by where they lie, then species; then level 1's, and so on.
 	static constexpr int TILE_CHUNKS = 4;
+	static constexpr uint32_t MAX_TILE_LEVELS = 8;
+	static constexpr uint32_t NO_TILE = UINT32_MAX;
 	struct Tile {
 		uint32_t first = 0; // range in the tile chunk list (get_tile_chunk)
 		uint32_t count = 0;
-		uint32_t plants = 0;
+		uint32_t plants = 0; // in its buffer: those of its chunks at its level or above
 		uint32_t species = 0;
-		uint64_t key = 0; // where it lies: tile cell × MAX_SPECIES + species (the same in any layout of the map's size)
+		uint32_t level = 0;
+		uint32_t parent = NO_TILE; // the tile of the next level covering it
+		// Where it lies: (level << 56) | tile cell × MAX_SPECIES + species (the same in any layout of the
+		// map's size).
+		uint64_t key = 0;
 	};
 	uint32_t get_tile_count() const { return static_cast<uint32_t>(_tiles.size()); }
 	const Tile &get_tile(uint32_t p_tile) const { return _tiles[p_tile]; }
-	// The k-th chunk of a tile (k < Tile::count), in chunk order.
+	// The k-th chunk of a tile (k < Tile::count), in chunk order within each child.
 	uint32_t get_tile_chunk(uint32_t p_tile, uint32_t p_k) const { return _tile_chunks[_tiles[p_tile].first + p_k]; }
 	ChunkBounds get_tile_bounds(uint32_t p_tile) const;
 	// The tile's plants' records, chunk after chunk: Tile::plants × FAR_FLOATS_PER_INSTANCE floats.
 	void write_tile_instances(uint32_t p_tile, float *r_out) const;
 	// Two tiles with equal keys and signatures draw the same (see get_chunk_signature).
 	uint64_t get_tile_signature(uint32_t p_tile) const;
+	// The camera distance (to the tile's box centre) from which a tile is drawn instead of its
+	// children: 0 for level 0; for level L the merge distance × 2^(L − 1), but at least 1.5 × the
+	// tile's side, so that no merged tile is drawn around the camera.
+	float get_tile_begin(uint32_t p_tile) const;
+	// The share of its chunks' plants a tile of p_level holds on average: 4^−level.
+	static float tile_density(uint32_t p_level) { return 1.0f / float(1u << (2u * std::min(p_level, 15u))); }
+	// The highest tile level a plant is kept at (0 … MAX_TILE_LEVELS − 1), from its seeded place:
+	// level ≥ L for a share 4^−L of the plants.
+	uint32_t plant_tile_level(const Plant &p_plant) const;
 	// Which chunks of p_species are active: grid_x × grid_z bytes into r_out, 255 for an active
 	// chunk's cell, else 0 (the impostor shader's mask).
 	void write_active_mask(uint32_t p_species, uint8_t *r_out) const;
@@ -233,6 +258,8 @@ private:
 	void _drop_pushes(uint32_t p_chunk);
 	void _rebuild();
 	void _build_tiles();
+	// The merged levels above the level-0 tiles (see TILE_CHUNKS).
+	void _merge_tiles();
 	void _select_lods();
 	void _select_chunk_lods(uint32_t p_chunk, bool p_forced, float p_enter, float p_leave);
 	uint8_t _static_chunk_lod(uint32_t p_chunk) const;

@@ -78,6 +78,10 @@ inline constexpr ParameterSpec FORCE_LOD{ "SunflowerField.force_lod", -1.0, -1.0
 inline constexpr ParameterSpec ALPHA_SCISSOR{ "SunflowerField.alpha_scissor", 190.0 / 255.0, 0.0, 1.0, ParameterSpec::CLAMP, 190.0 / 255.0 };
 inline constexpr ParameterSpec THINNING_DISTANCE{ "SunflowerField.thinning_distance", 0.0, 0.0, NO_MAX, ParameterSpec::CLAMP, 0.0 };
 inline constexpr ParameterSpec THINNING_MIN_DENSITY{ "SunflowerField.thinning_min_density", 0.25, 0.01, 1.0, ParameterSpec::CLAMP, 0.25 };
+// Far tiles merge with distance: from this distance (camera to a merged tile's centre) 2 × 2 tiles
+// are drawn as one holding a quarter of their plants, from twice it 4 × 4 with a sixteenth, and so
+// on (FieldSimulation::get_tile_begin); 0: tiles never merge.
+inline constexpr ParameterSpec TILE_MERGE_DISTANCE{ "SunflowerField.tile_merge_distance", 200.0, 0.0, NO_MAX, ParameterSpec::CLAMP, 200.0 };
 inline constexpr ParameterSpec MAX_DRAW_DISTANCE{ "SunflowerField.max_draw_distance", 0.0, 0.0, NO_MAX, ParameterSpec::CLAMP, 0.0 };
 
 // Performance. 0 threads: the machine's cores, at most MAX_AUTO_THREADS.
@@ -100,10 +104,10 @@ inline constexpr ParameterSpec GROUND_TILT{ "SunflowerField.ground_tilt", 0.0, 0
 inline constexpr ParameterSpec GROUND_RAY_ABOVE{ "SunflowerField.ground_ray_above", 100.0, 0.0, NO_MAX, ParameterSpec::CLAMP, 100.0 };
 inline constexpr ParameterSpec GROUND_RAY_BELOW{ "SunflowerField.ground_ray_below", 100.0, 0.0, NO_MAX, ParameterSpec::CLAMP, 100.0 };
 
-inline constexpr std::array<const ParameterSpec *, 39> ALL{ { &WIND_MODEL, &WIND_POWER, &WIND_INCREMENT, &WIND_STIFFNESS_MIDDLE,
+inline constexpr std::array<const ParameterSpec *, 40> ALL{ { &WIND_MODEL, &WIND_POWER, &WIND_INCREMENT, &WIND_STIFFNESS_MIDDLE,
 		&WIND_STIFFNESS_BOTTOM, &WIND_BEND_PER_POWER, &WIND_MAX_BEND, &WIND_FLIP_INTERVAL, &WIND_FLIP_CHANCE,
 		&WIND_GUST_SPEED, &WIND_GUST_SHARE, &CELL_SIZE, &PLANT_HEIGHT, &CHUNK_SIZE, &MAX_PLANTS, &LOD_HYSTERESIS,
-		&LOD_INTERVAL, &LOD_FADE, &FORCE_LOD, &ALPHA_SCISSOR, &THINNING_DISTANCE, &THINNING_MIN_DENSITY, &MAX_DRAW_DISTANCE,
+		&LOD_INTERVAL, &LOD_FADE, &FORCE_LOD, &ALPHA_SCISSOR, &THINNING_DISTANCE, &THINNING_MIN_DENSITY, &TILE_MERGE_DISTANCE, &MAX_DRAW_DISTANCE,
 		&BUILD_BUDGET_MS, &WORKER_THREADS, &PUSH_STRENGTH, &PUSH_RECOVERY, &PUSHER_RADIUS,
 		&COLLISION_REACH, &GROUND_TILT, &GROUND_RAY_ABOVE, &GROUND_RAY_BELOW, &PLANT_YAW_RANGE, &PLANT_SCALE_MIN, &PLANT_SCALE_MAX,
 		&PLANT_MIDDLE_VARIATION, &PLANT_BRIGHTNESS_VARIATION, &PLANT_TINT_VARIATION, &PLANT_STIFFNESS } };

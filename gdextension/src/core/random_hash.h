@@ -32,6 +32,7 @@ enum RandomStream : uint64_t {
 	STREAM_SCALE = 8,
 	STREAM_COLOR = 9,
 	STREAM_PAINT = 10,
+	STREAM_TILE_LEVEL = 11,
 };
 
 } // namespace sunflower
