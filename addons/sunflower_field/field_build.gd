@@ -29,6 +29,7 @@ class Job:
 	var seed: int
 	var independent_jitter: bool
 	var chunk_size: float
+	var tile_merge_distance: float
 	var plant_symbols: String
 	var plants: Array = []
 	var whole: Array[bool] = []  # per species: drawn whole (decided on the main thread: it asks the renderer)
@@ -49,6 +50,7 @@ class Job:
 		job.seed = field.seed
 		job.independent_jitter = field.independent_jitter
 		job.chunk_size = field.chunk_size
+		job.tile_merge_distance = field.tile_merge_distance
 		job.plant_symbols = FieldNodes.plant_symbols(field.legend)
 		for species_plant: Resource in species_plants:
 			job.plants.append(species_plant.duplicate())
@@ -61,6 +63,7 @@ class Job:
 	func run() -> void:
 		var start: int = Time.get_ticks_usec()
 		simulation.set_layout(cell_size, seed, independent_jitter, chunk_size)
+		simulation.set_tile_merge_distance(tile_merge_distance)
 		for species: int in plants.size():
 			plants[species].apply_to(simulation, species)
 			simulation.set_plant_whole(species, whole[species])

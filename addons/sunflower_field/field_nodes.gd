@@ -1,12 +1,13 @@
 @tool
 extends RefCounted
-## The internal nodes that draw one field (one native simulation): per far tile (4 × 4 chunks of
-## one species) one static MultiMeshInstance3D of its plants' impostors (sprite and billboard draw
-## the same multi-view impostor, so one GPU copy of a far plant serves both; its visibility range
-## ends at the field's draw distance), the dynamic bucket nodes of the near plants, and the scenes
-## the legend places; and per species the active-chunk mask that keeps the tiles from drawing the
-## plants the near buckets draw. The only script that makes MultiMeshes or sets visibility ranges.
-## Tile nodes can be made a few at a time, hidden, and shown at once.
+## The internal nodes that draw one field (one native simulation): per far tile (4 × 4 chunks of one
+## species, or a merged tile of a level above: the visibility parent of the 2 × 2 tiles below) one
+## static MultiMeshInstance3D of its plants' impostors (sprite and billboard draw the same
+## multi-view impostor, so one GPU copy of a far plant serves both; its visibility range begins
+## where its level does and ends at the field's draw distance), the dynamic bucket nodes of the near
+## plants, and the scenes the legend places; and per species the active-chunk mask that keeps the
+## tiles from drawing the plants the near buckets draw. The only script that makes MultiMeshes or
+## sets visibility ranges. Tile nodes can be made a few at a time, hidden, and shown at once.
 
 const Native: GDScript = preload("native.gd")
 const ImpostorSet: GDScript = preload("impostor_set.gd")
@@ -73,6 +74,9 @@ func make_tiles(budget_usec: int, max_draw_distance: float) -> bool:
 		var impostors: ImpostorSet = _impostors[simulation.get_tile_species(tile)]
 		var node: MultiMeshInstance3D = _make_node(_tile_node_name(tile), impostors.mesh(true), aabb, true)
 		node.visible = false  # shown when the whole field is ready
+		node.visibility_range_begin = simulation.get_tile_begin(tile)
+		if simulation.get_tile_level(tile) > 0:
+			node.set_instance_shader_parameter(&"tile_density", simulation.get_tile_density(tile))
 		_set_range(node, max_draw_distance)
 		_tile_nodes.append(node)
 		simulation.set_tile_multimesh(tile, node.multimesh.get_rid())
@@ -147,6 +151,12 @@ func finish(species_plants: Array, legend: Dictionary, cell_size: float, sway_ma
 		# node of that key was still there had a generated name until now.
 		if str(node.name).begins_with("@"):
 			node.name = _tile_node_name(tile)
+	# A merged tile hides its children while the camera is past its begin distance: one level is
+	# drawn at each place.
+	for tile: int in _tile_nodes.size():
+		var parent: int = simulation.get_tile_parent(tile)
+		var node: MultiMeshInstance3D = _tile_nodes[tile]
+		node.visibility_parent = node.get_path_to(_tile_nodes[parent]) if parent >= 0 else NodePath()
 	_previous = null  # its remaining nodes go with it
 
 

@@ -9,6 +9,7 @@ extends Node3D
 ##   --path FILE              the recording path (lines "x y z tx ty tz"); default: a built-in flight
 ##   --view NAME              record from a still view instead: inside, outside40, above45, down60
 ##   --draw-distance M        the field's max_draw_distance (and the native baseline's cut-off)
+##   --tile-merge M           the field's tile_merge_distance (0: far tiles never merge)
 ##   --screenshot PATH        save the last frame (recording mode; 60 frames if --frames is not given)
 ##   --screenshot-every K     also save every K-th frame, as PATH with the frame number
 ##   --stats PATH             write frame times, LOD counts and the renderer as JSON
@@ -88,6 +89,8 @@ func _ready() -> void:
 			"--draw-distance":
 				_draw_distance = value.to_float()
 				_field.max_draw_distance = _draw_distance
+			"--tile-merge":
+				_field.tile_merge_distance = value.to_float()
 			"--screenshot":
 				_screenshot = value
 			"--screenshot-every":
@@ -469,6 +472,7 @@ func _write_stats() -> void:
 		"lod_counts_final": Array(_field.get_lod_counts()),
 		"view": _view,
 		"draw_distance": _field.max_draw_distance,
+		"tile_merge_distance": _field.tile_merge_distance,
 		"draw_calls": _summary(PackedFloat32Array(_rendering["draw_calls"])),
 		"objects": _summary(PackedFloat32Array(_rendering["objects"])),
 		"primitives": _summary(PackedFloat32Array(_rendering["primitives"])),

@@ -164,15 +164,22 @@ func test_parameter_changes_during_a_build_reach_the_new_field() -> void:
 	await frames_until(func() -> bool: return not field.is_building(), 2000)
 	# Each tile ends once its nearest plant may be past the draw distance (the engine measures to the
 	# box's centre); its plants dither out one by one before that, in the impostor shader.
+	# A merged tile's range begins where its level does.
+	var begins: Dictionary = {}  # node name → the range begin of its tile
+	var simulation: RefCounted = field.get_simulation()
+	for tile: int in simulation.get_tile_count():
+		begins["FarTile%d" % simulation.get_tile_key(tile)] = simulation.get_tile_begin(tile)
+	check(begins.values().max() > 0.0, "the field has merged tiles")
 	var wrong_ends: int = 0
 	var impostor_material: ShaderMaterial = null
 	for node: Node in field.get_children(true):
 		var instance: MultiMeshInstance3D = node as MultiMeshInstance3D
 		if instance and instance.name.begins_with("FarTile"):
 			var end: float = 123.0 + 0.5 * instance.custom_aabb.size.length()
+			var begin: float = begins.get(str(instance.name), -1.0)
 			wrong_ends += (
 				0
-				if instance.visibility_range_begin == 0.0 and is_equal_approx(instance.visibility_range_end, end)
+				if instance.visibility_range_begin == begin and is_equal_approx(instance.visibility_range_end, end)
 				else 1
 			)
 			impostor_material = instance.multimesh.mesh.surface_get_material(0) as ShaderMaterial
@@ -194,10 +201,12 @@ func test_parameter_changes_during_a_build_reach_the_new_field() -> void:
 func test_a_small_change_of_a_large_map_makes_nodes_only_for_the_tiles_it_touched() -> void:
 	field.map = _square_map(200)  # 100 × 100 m: 7 × 7 chunks of 16 m, 2 × 2 tiles of 4 × 4 chunks
 	field.finish_build()
-	check_eq(field.get_simulation().get_chunk_count(), 49)
-	check_eq(field.get_simulation().get_tile_count(), 4)
-	check_eq(field.get_build_stats().tiles_made, 4, "a new map makes every tile")
-	# The same map with a 10 × 10-cell hole in the north-west corner: one tile touched.
+	var simulation: RefCounted = field.get_simulation()
+	check_eq(simulation.get_chunk_count(), 49)
+	check_eq(simulation.get_tile_count(), 5, "2 × 2 tiles and the merged tile over them")
+	check_eq(field.get_build_stats().tiles_made, 5, "a new map makes every tile")
+	# The same map with a 10 × 10-cell hole in the north-west corner: one tile touched, and the
+	# merged tile that holds its plants too.
 	var lines: PackedStringArray = field.map.text.get_string_from_utf8().split("\n")
 	for row: int in range(1, 11):
 		lines[row] = " ".repeat(10) + lines[row].substr(10)
@@ -206,16 +215,31 @@ func test_a_small_change_of_a_large_map_makes_nodes_only_for_the_tiles_it_touche
 	holed.text = "\n".join(lines).to_utf8_buffer()
 	field.map = holed
 	field.finish_build()
+	simulation = field.get_simulation()
 	var stats: Dictionary = field.get_build_stats()
 	check_eq(field.get_plant_count(), 40000 - 100, "the hole's plants are gone")
-	check_eq(stats.tiles_made, 1, "nodes made only for the touched tile")
+	check_eq(stats.tiles_made, 2, "nodes made only for the touched tile and the merged one")
 	check_eq(stats.tiles_kept, 3, "the others kept their nodes and buffers")
-	# Every plant is still in exactly one far buffer: the kept ones hold what the new field says.
-	var instances: int = 0
+	# Every plant is still in exactly one level-0 buffer: the kept ones hold what the new field says;
+	# the merged tile holds its share, and is the visibility parent of the other four.
+	var by_name: Dictionary = {}
+	for tile: int in simulation.get_tile_count():
+		by_name["FarTile%d" % simulation.get_tile_key(tile)] = tile
+	var instances: PackedInt32Array = [0, 0]  # per level
 	for node: Node in field.get_children(true):
-		if node.name.begins_with("FarTile"):
-			var buffer: PackedFloat32Array = RenderingServer.multimesh_get_buffer(
-				(node as MultiMeshInstance3D).multimesh.get_rid()
-			)
-			instances += buffer.size() / SunflowerSimulation.FAR_FLOATS_PER_INSTANCE
-	check_eq(instances, field.get_plant_count(), "far buffers hold every plant once")
+		if not node.name.begins_with("FarTile"):
+			continue
+		var tile: int = by_name[str(node.name)]
+		var level: int = simulation.get_tile_level(tile)
+		var buffer: PackedFloat32Array = RenderingServer.multimesh_get_buffer(
+			(node as MultiMeshInstance3D).multimesh.get_rid()
+		)
+		instances[level] += buffer.size() / SunflowerSimulation.FAR_FLOATS_PER_INSTANCE
+		var parent: int = simulation.get_tile_parent(tile)
+		var expected: NodePath = (
+			NodePath() if parent < 0 else NodePath("../FarTile%d" % simulation.get_tile_key(parent))
+		)
+		check_eq(node.visibility_parent, expected, "%s's visibility parent" % node.name)
+	check_eq(instances[0], field.get_plant_count(), "far buffers hold every plant once")
+	var quarter: float = field.get_plant_count() / 4.0
+	check_near(instances[1], quarter, 5.0 * sqrt(quarter), "the merged tile holds about a quarter")

@@ -155,9 +155,6 @@ func test_every_plant_is_drawn_exactly_once_along_a_camera_path() -> void:
 	# is drawn; a plain Node3D observer has no frustum, so every plant must appear exactly once, or, in
 	# the mesh 3 → impostor cross-fade, as mesh 3 and as an impostor whose shares (the instance
 	# colours' alpha) add up to one.
-	var positions: Dictionary = {}
-	for i: int in field.get_plant_count():
-		positions[_key(field.get_plant_info(i)["position"])] = i
 	var path: Array[Vector3] = [
 		Vector3(-40, 1.7, -40),
 		Vector3(-8, 1.7, 7),
@@ -170,7 +167,40 @@ func test_every_plant_is_drawn_exactly_once_along_a_camera_path() -> void:
 		Vector3(30, 30, 10),
 		Vector3(10, 60, 7),
 	]
+	var counted: Vector2i = _check_drawn_once_along(path)
+	check(counted.x > 0, "some plants were in the cross-fade along the path")
+	check_eq(counted.y, 0, "no merged tile is drawn on the demo field's 16 m chunks")
+
+
+func test_merged_far_tiles_draw_each_place_once_across_levels() -> void:
+	# 2 m chunks make 8 m tiles, 16 m merged ones and one of 32 m over the demo field; with a 10 m
+	# merge distance they are drawn from 24 m and 48 m (1.5 × their side). Each place is drawn by one
+	# level: every plant once, or left out by the merged tile drawn where it stands.
+	field.chunk_size = 2.0
+	field.tile_merge_distance = 10.0
+	field.finish_build()
+	var simulation: RefCounted = field.get_simulation()
+	var levels: Dictionary = {}
+	for tile: int in simulation.get_tile_count():
+		levels[simulation.get_tile_level(tile)] = true
+	check_eq(levels.keys(), [0, 1, 2], "three tile levels")
+	var path: Array[Vector3] = [Vector3(10, 1.7, 7), Vector3(-25, 1.7, 7), Vector3(-30, 20, -30), Vector3(-70, 10, 7)]
+	var counted: Vector2i = _check_drawn_once_along(path)
+	check(counted.y > 0, "merged tiles left plants out along the path")
+	field.tile_merge_distance = 0.0
+	field.finish_build()
+	check_eq(_check_drawn_once_along(path).y, 0, "without merging every plant is drawn")
+
+
+## Checks, at each of [param path]'s stops, that every plant is drawn once (or twice in a cross-fade,
+## shares adding up to one) or left out by a merged tile drawn there; returns the plants seen in
+## cross-fades and those left out, summed over the stops.
+func _check_drawn_once_along(path: Array[Vector3]) -> Vector2i:
+	var positions: Dictionary = {}
+	for i: int in field.get_plant_count():
+		positions[_key(field.get_plant_info(i)["position"])] = i
 	var crossfades: int = 0
+	var left_out: int = 0
 	for stop: Vector3 in path:
 		observer.position = stop
 		field.advance(0.3)
@@ -180,11 +210,12 @@ func test_every_plant_is_drawn_exactly_once_along_a_camera_path() -> void:
 		shares.resize(field.get_plant_count())
 		var fading: PackedInt32Array = PackedInt32Array()  # representations drawn in a cross-fade
 		fading.resize(field.get_plant_count())
+		var merged_boxes: Array[AABB] = []  # the merged tiles drawn from here
 		for node: MultiMeshInstance3D in _field_nodes():
 			var rid: RID = node.multimesh.get_rid()
 			var visible: int = RenderingServer.multimesh_get_visible_instances(rid)
 			var instances: int = visible if visible >= 0 else RenderingServer.multimesh_get_instance_count(rid)
-			if instances == 0 or not node.visible or not _in_visibility_range(node, stop):
+			if instances == 0 or not _drawn_from(node, stop):
 				continue
 			if node.name.contains("Middle") or node.name.contains("Head"):
 				continue  # one part per plant: the bottom part's origin is the plant's root
@@ -192,6 +223,9 @@ func test_every_plant_is_drawn_exactly_once_along_a_camera_path() -> void:
 			# Impostors are 8-float records: a far tile's carry their chunk's cell, the near bucket's a share.
 			var compact: bool = node.multimesh.transform_format == MultiMesh.TRANSFORM_2D
 			var tile: bool = node.name.begins_with("FarTile")
+			var density: Variant = node.get_instance_shader_parameter(&"tile_density")  # set on merged tiles
+			if tile and density != null and float(density) < 1.0:
+				merged_boxes.append(node.custom_aabb)
 			# Near plants drawn whole: one instance each, with custom data.
 			var stride: int = (
 				SunflowerSimulation.WHOLE_FLOATS_PER_INSTANCE if node.multimesh.use_custom_data else STRIDE
@@ -220,6 +254,9 @@ func test_every_plant_is_drawn_exactly_once_along_a_camera_path() -> void:
 			var once: bool = drawn[i] == 1 and is_equal_approx(shares[i], 1.0)
 			var complementary: bool = drawn[i] == 2 and fading[i] == 2 and absf(shares[i] - 1.0) < 1e-4
 			crossfading += 1 if complementary else 0
+			if drawn[i] == 0 and _in_any_box(field.get_plant_info(i)["position"], merged_boxes):
+				left_out += 1
+				continue
 			if not once and not complementary:
 				wrong += 1
 				if wrong <= 3:
@@ -227,7 +264,36 @@ func test_every_plant_is_drawn_exactly_once_along_a_camera_path() -> void:
 		check_eq(wrong, 0, "from %s plants not drawn once (or twice complementarily)" % stop)
 		crossfades += crossfading
 		check_eq(_sum(field.get_lod_counts()), field.get_plant_count(), "LOD counts from %s" % stop)
-	check(crossfades > 0, "some plants were in the cross-fade along the path")
+	return Vector2i(crossfades, left_out)
+
+
+## Whether the engine draws [param node] from [param camera]: it is shown, within its visibility
+## range, and no shown visibility ancestor is past its own range's begin (a merged tile drawn there
+## stands in for its children).
+func _drawn_from(node: GeometryInstance3D, camera: Vector3) -> bool:
+	if not node.visible or not _in_visibility_range(node, camera):
+		return false
+	var parent: Node = node.get_node_or_null(node.visibility_parent) if not node.visibility_parent.is_empty() else null
+	while parent is GeometryInstance3D:
+		var ancestor: GeometryInstance3D = parent
+		if ancestor.visible and _distance_to_box(ancestor, camera) >= ancestor.visibility_range_begin:
+			return false
+		parent = (
+			ancestor.get_node_or_null(ancestor.visibility_parent) if not ancestor.visibility_parent.is_empty() else null
+		)
+	return true
+
+
+func _in_any_box(position: Vector3, boxes: Array[AABB]) -> bool:
+	for box: AABB in boxes:
+		if (
+			position.x >= box.position.x
+			and position.x <= box.end.x
+			and position.z >= box.position.z
+			and position.z <= box.end.z
+		):
+			return true
+	return false
 
 
 func test_a_bad_map_keeps_the_field_and_reports_file_line_column() -> void:
@@ -312,8 +378,12 @@ func _node(node_name: String) -> MultiMeshInstance3D:
 
 ## The engine's rule: shown while begin ≤ distance ≤ end, the distance measured from the camera
 ## to the centre of the instance's world-space bounding box (0 disables a bound).
+func _distance_to_box(node: GeometryInstance3D, camera: Vector3) -> float:
+	return camera.distance_to(node.global_transform * node.custom_aabb.get_center())
+
+
 func _in_visibility_range(node: GeometryInstance3D, camera: Vector3) -> bool:
-	var distance: float = camera.distance_to(node.global_transform * node.custom_aabb.get_center())
+	var distance: float = _distance_to_box(node, camera)
 	if node.visibility_range_end > 0.0 and distance > node.visibility_range_end:
 		return false
 	return not (node.visibility_range_begin > 0.0 and distance < node.visibility_range_begin)
