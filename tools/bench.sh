@@ -9,7 +9,8 @@
 #   6. painting: a brush stroke on a million-plant field, main-thread time per frame, chunks rebuilt.
 #   7. GPU memory: the render buffers a million far plants take (the renderer's own count).
 #   8. The GPU side: draw calls, objects, primitives and render-buffer memory per view, against the
-#      Godot-native way, on the demo, large, million and 4-million-plant fields.
+#      Godot-native way, on the demo, large, million and 4-million-plant fields; then without a
+#      cut-off, far tiles merged with distance and not, a million and 4 million plants.
 #   9. The editor: its frame times while a scene with a million-plant field opens and builds
 #      (headless, and rendering with Vulkan lavapipe under Xvfb), against the editor alone.
 #  10. A million-plant build while the scene is drawn (Vulkan lavapipe under Xvfb): the load call,
@@ -86,6 +87,16 @@ for field in demo:res://fields/demo.field large:res://fields/large.field million
     # in the frame after quit; 480 x 270 has not.)
     frames=3 run "gpu_${field%%:*}_${view}_ours" --map "${field#*:}" --view "$view" --draw-distance 100 --no-hud
     frames=3 run "gpu_${field%%:*}_${view}_native" --map "${field#*:}" --view "$view" --draw-distance 100 --baseline native --no-hud
+  done
+done
+# Without a cut-off: far tiles merged with distance (the default) and never merged, on the million and
+# 4-million-plant fields (draw calls per field size: table 8's second part).
+for field in million:"$out/fields/million.field" 4m:"$out/fields/4m.field"; do
+  for view in outside40 above45; do
+    for merge in 200 0; do
+      frames=3 run "far_${field%%:*}_${view}_merge${merge}" --map "${field#*:}" --view "$view" --draw-distance 0 \
+        --tile-merge "$merge" --no-hud
+    done
   done
 done
 echo >&2

@@ -122,5 +122,28 @@ def main(folder):
         print(f"| {field} | {plants:,} | {ours_bytes / 1048576:.1f} MB | {native_bytes / 1048576:.1f} MB | "
               f"{ours_bytes / max(plants, 1):.1f} B | {native_bytes / max(plants, 1):.1f} B |")
 
+    print("\nWithout a cut-off (--draw-distance 0): far tiles merged with distance (tile_merge_distance 200 m, the")
+    print("default) and never merged (0). Render buffers: what the field added, per plant.\n")
+    print("| view | merged: draw calls 1 M / 4 M | ratio | not merged: 1 M / 4 M | ratio | render buffers per plant, merged / not |")
+    print("|---|---|---|---|---|---|")
+    for view in ("outside40", "above45"):
+        calls = {}
+        per_plant = {}
+        for merge in (200, 0):
+            for field in ("million", "4m"):
+                s = load(folder, f"far_{field}_{view}_merge{merge}")
+                if s and "draw_calls" in s:
+                    calls[(merge, field)] = s["draw_calls"]["median"]
+                    mem = s.get("buffer_memory_bytes", {})
+                    if field == "million" and {"before", "field"} <= mem.keys():
+                        per_plant[merge] = (mem["field"] - mem["before"]) / max(s["plants"], 1)
+        if len(calls) < 4:
+            print(f"| {view} | run failed | | | | |")
+            continue
+        print(f"| {view} | {calls[(200, 'million')]:.0f} / {calls[(200, '4m')]:.0f} | {calls[(200, '4m')] / calls[(200, 'million')]:.2f} | "
+              f"{calls[(0, 'million')]:.0f} / {calls[(0, '4m')]:.0f} | {calls[(0, '4m')] / calls[(0, 'million')]:.2f} | "
+              f"{per_plant.get(200, float('nan')):.1f} B / {per_plant.get(0, float('nan')):.1f} B |")
+
+
 if __name__ == "__main__":
     main(sys.argv[1])
