@@ -178,23 +178,44 @@ void FieldSimulation::_build_tiles() {
 		++_tiles.back().count;
 		_tiles.back().plants += _layout.chunks[chunk].count;
 	}
+	_chunk_kept.clear();
+	_merged_first.clear();
+	_merged_plants.clear();
 	if (_layout_params.tile_merge_distance > 0.0f) {
 		_merge_tiles();
 	}
 }
 
 void FieldSimulation::_merge_tiles() {
-	// Per chunk, how many of its plants each level keeps (level 0: all).
-	std::vector<std::array<uint32_t, MAX_TILE_LEVELS>> kept(_layout.chunks.size());
+	// Per chunk, how many of its plants each level keeps (level 0: all), and its plants kept at
+	// level 1 or above ordered by tile level, highest first (map order within a level), so that a
+	// merged tile of level L writes the first kept[c][L] of each chunk's.
+	std::vector<std::array<uint32_t, MAX_TILE_LEVELS>> &kept = _chunk_kept;
+	kept.assign(_layout.chunks.size(), {});
+	_merged_first.assign(_layout.chunks.size(), 0);
+	_merged_plants.clear();
+	std::vector<std::pair<uint32_t, uint32_t>> ordered; // (MAX_TILE_LEVELS − level, plant)
 	for (size_t c = 0; c < _layout.chunks.size(); ++c) {
 		const Chunk &chunk = _layout.chunks[c];
+		ordered.clear();
 		for (uint32_t k = 0; k < chunk.count; ++k) {
-			const uint32_t level = plant_tile_level(_layout.plants[_layout.chunk_plants[chunk.first + k]]);
+			const uint32_t plant = _layout.chunk_plants[chunk.first + k];
+			const uint32_t level = plant_tile_level(_layout.plants[plant]);
 			for (uint32_t l = 0; l <= level; ++l) {
 				++kept[c][l];
 			}
+			if (level > 0) {
+				ordered.emplace_back(MAX_TILE_LEVELS - level, plant);
+			}
+		}
+		std::stable_sort(ordered.begin(), ordered.end(),
+				[](const auto &p_a, const auto &p_b) { return p_a.first < p_b.first; });
+		_merged_first[c] = static_cast<uint32_t>(_merged_plants.size());
+		for (const auto &[order, plant] : ordered) {
+			_merged_plants.push_back(plant);
 		}
 	}
+	_merged_plants.shrink_to_fit();
 	size_t below_first = 0; // the level below's tiles: [below_first, below_end)
 	for (uint32_t level = 1; level < MAX_TILE_LEVELS; ++level) {
 		const size_t below_end = _tiles.size();
@@ -286,15 +307,14 @@ void FieldSimulation::write_tile_instances(uint32_t p_tile, float *r_out) const 
 			r_out += size_t(_layout.chunks[chunk].count) * FAR_FLOATS_PER_INSTANCE;
 			continue;
 		}
-		const Chunk &held = _layout.chunks[chunk];
-		for (uint32_t i = 0; i < held.count; ++i) {
-			const Plant &plant = _layout.plants[_layout.chunk_plants[held.first + i]];
-			if (plant_tile_level(plant) >= tile.level) {
-				FarInstance instance = _far_instance(plant, held.species);
-				instance.cell = _chunk_cells[chunk];
-				write_far_instance(r_out, instance);
-				r_out += FAR_FLOATS_PER_INSTANCE;
-			}
+		// A merged tile's plants are the first of each chunk's kept ones (ordered by tile level).
+		const uint32_t species = _layout.chunks[chunk].species;
+		const uint32_t *plants = _merged_plants.data() + _merged_first[chunk];
+		for (uint32_t i = 0; i < _chunk_kept[chunk][tile.level]; ++i) {
+			FarInstance instance = _far_instance(_layout.plants[plants[i]], species);
+			instance.cell = _chunk_cells[chunk];
+			write_far_instance(r_out, instance);
+			r_out += FAR_FLOATS_PER_INSTANCE;
 		}
 	}
 }
@@ -889,6 +909,7 @@ size_t FieldSimulation::get_memory_bytes() const {
 	}
 	bytes += _chunk_active.capacity() + _visit_mark.capacity() * sizeof(uint32_t);
 	bytes += (_chunk_cells.capacity() + _tile_chunks.capacity()) * sizeof(uint32_t) + _tiles.capacity() * sizeof(Tile);
+	bytes += (_merged_first.capacity() + _merged_plants.capacity()) * sizeof(uint32_t) + _chunk_kept.capacity() * sizeof(_chunk_kept[0]);
 	bytes += (_active_chunks.capacity() + _previous_active.capacity() + _changed_chunks.capacity()) * sizeof(uint32_t);
 	bytes += _layout.grid_chunks.capacity() * sizeof(uint32_t) + _layout.object_ground.capacity() * sizeof(float);
 	bytes += (_ground.grid.heights.capacity() + _ground.heights.capacity() + _ground.normals.capacity()) * sizeof(float);

@@ -295,6 +295,12 @@ private:
 	std::vector<uint32_t> _chunk_cells;
 	std::vector<Tile> _tiles;
 	std::vector<uint32_t> _tile_chunks;
+	// Per chunk (empty when tiles do not merge): how many of its plants each tile level keeps, and
+	// where its plants kept at level 1 or above start in _merged_plants, ordered by tile level,
+	// highest first, so that level L's are the first _chunk_kept[c][L] (1 B a plant on average).
+	std::vector<std::array<uint32_t, MAX_TILE_LEVELS>> _chunk_kept;
+	std::vector<uint32_t> _merged_first;
+	std::vector<uint32_t> _merged_plants;
 	uint32_t _mask_version = 0;
 	std::vector<uint32_t> _active_chunks;
 	std::vector<uint32_t> _previous_active;
