@@ -74,9 +74,7 @@ func make_tiles(budget_usec: int, max_draw_distance: float) -> bool:
 		var impostors: ImpostorSet = _impostors[simulation.get_tile_species(tile)]
 		var node: MultiMeshInstance3D = _make_node(_tile_node_name(tile), impostors.mesh(true), aabb, true)
 		node.visible = false  # shown when the whole field is ready
-		node.visibility_range_begin = simulation.get_tile_begin(tile)
-		if simulation.get_tile_level(tile) > 0:
-			node.set_instance_shader_parameter(&"tile_density", simulation.get_tile_density(tile))
+		_set_level(node, tile)
 		_set_range(node, max_draw_distance)
 		_tile_nodes.append(node)
 		simulation.set_tile_multimesh(tile, node.multimesh.get_rid())
@@ -97,8 +95,16 @@ func _take_previous(tile: int) -> bool:
 		return false
 	_tile_nodes.append(node)
 	simulation.adopt_tile_multimesh(tile, node.multimesh.get_rid())
+	_set_level(node, tile)  # the merge distance may have changed
 	tiles_kept += 1
 	return true
+
+
+## Where [param tile]'s level begins, and the share of its plants a merged tile holds.
+func _set_level(node: MultiMeshInstance3D, tile: int) -> void:
+	node.visibility_range_begin = simulation.get_tile_begin(tile)
+	if simulation.get_tile_level(tile) > 0:
+		node.set_instance_shader_parameter(&"tile_density", simulation.get_tile_density(tile))
 
 
 ## Hands [param tile]'s node to a field built on this one (and forgets it); null when it has none

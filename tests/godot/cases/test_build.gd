@@ -241,5 +241,18 @@ func test_a_small_change_of_a_large_map_makes_nodes_only_for_the_tiles_it_touche
 		)
 		check_eq(node.visibility_parent, expected, "%s's visibility parent" % node.name)
 	check_eq(instances[0], field.get_plant_count(), "far buffers hold every plant once")
+	# A new merge distance keeps every tile's node and buffer, and moves where the merged one begins.
+	field.tile_merge_distance = 500.0
+	field.finish_build()
+	check_eq(field.get_build_stats().tiles_kept, 5, "the same tiles: all kept")
+	simulation = field.get_simulation()
+	var merged: int = simulation.get_tile_count() - 1
+	check_eq(simulation.get_tile_begin(merged), 500.0, "the merged tile begins at the new distance")
+	var merged_node: GeometryInstance3D = null
+	for node: Node in field.get_children(true):
+		if node.name == "FarTile%d" % simulation.get_tile_key(merged):
+			merged_node = node
+	if check(merged_node != null, "the merged tile's node"):
+		check_eq(merged_node.visibility_range_begin, 500.0, "its node's range begins there")
 	var quarter: float = field.get_plant_count() / 4.0
 	check_near(instances[1], quarter, 5.0 * sqrt(quarter), "the merged tile holds about a quarter")
