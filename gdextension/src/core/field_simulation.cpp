@@ -308,14 +308,9 @@ void FieldSimulation::write_tile_instances(uint32_t p_tile, float *r_out) const 
 			continue;
 		}
 		// A merged tile's plants are the first of each chunk's kept ones (ordered by tile level).
-		const uint32_t species = _layout.chunks[chunk].species;
-		const uint32_t *plants = _merged_plants.data() + _merged_first[chunk];
-		for (uint32_t i = 0; i < _chunk_kept[chunk][tile.level]; ++i) {
-			FarInstance instance = _far_instance(_layout.plants[plants[i]], species);
-			instance.cell = _chunk_cells[chunk];
-			write_far_instance(r_out, instance);
-			r_out += FAR_FLOATS_PER_INSTANCE;
-		}
+		const uint32_t count = _chunk_kept[chunk][tile.level];
+		_write_records(chunk, _merged_plants.data() + _merged_first[chunk], count, r_out);
+		r_out += size_t(count) * FAR_FLOATS_PER_INSTANCE;
 	}
 }
 
@@ -831,8 +826,13 @@ void FieldSimulation::_write_impostor(float *r_out, const Plant &p_plant, float 
 
 void FieldSimulation::write_chunk_instances(uint32_t p_chunk, float *r_out) const {
 	const Chunk &chunk = _layout.chunks[p_chunk];
-	for (uint32_t k = 0; k < chunk.count; ++k) {
-		FarInstance instance = _far_instance(_layout.plants[_layout.chunk_plants[chunk.first + k]], chunk.species);
+	_write_records(p_chunk, _layout.chunk_plants.data() + chunk.first, chunk.count, r_out);
+}
+
+void FieldSimulation::_write_records(uint32_t p_chunk, const uint32_t *p_plants, uint32_t p_count, float *r_out) const {
+	const uint32_t species = _layout.chunks[p_chunk].species;
+	for (uint32_t k = 0; k < p_count; ++k) {
+		FarInstance instance = _far_instance(_layout.plants[p_plants[k]], species);
 		instance.cell = _chunk_cells[p_chunk];
 		write_far_instance(r_out + size_t(k) * FAR_FLOATS_PER_INSTANCE, instance);
 	}

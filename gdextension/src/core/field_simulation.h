@@ -260,6 +260,9 @@ private:
 	void _build_tiles();
 	// The merged levels above the level-0 tiles (see TILE_CHUNKS).
 	void _merge_tiles();
+	// The static records of p_count plants of chunk p_chunk (p_plants: their indices), each with the
+	// chunk's cell.
+	void _write_records(uint32_t p_chunk, const uint32_t *p_plants, uint32_t p_count, float *r_out) const;
 	void _select_lods();
 	void _select_chunk_lods(uint32_t p_chunk, bool p_forced, float p_enter, float p_leave);
 	uint8_t _static_chunk_lod(uint32_t p_chunk) const;

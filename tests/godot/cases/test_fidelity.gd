@@ -182,15 +182,10 @@ func _impostors_alone(eye: Vector3, target: Vector3, name: String) -> PackedFloa
 	black.albedo_color = Color.BLACK
 	black.cull_mode = BaseMaterial3D.CULL_DISABLED
 	Dressing.dress_parts(field, func(_level: int, _part: int) -> Material: return black)
-	stage.ground.visible = false
-	stage.environment.background_mode = Environment.BG_COLOR
-	stage.environment.background_color = Color.BLACK
-	var mask: PackedFloat32Array = await _render(eye, target, -1, name)
+	var mask: PackedFloat32Array = await _field_alone(eye, target, -1, name)
 	for level: int in SunflowerSimulation.MESH_LEVEL_COUNT:
 		for part: int in SunflowerSimulation.PART_COUNT:
 			field.set_part_mesh(level, part, null)
-	stage.ground.visible = true
-	stage.environment.background_mode = Environment.BG_SKY
 	return mask
 
 

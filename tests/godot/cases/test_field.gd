@@ -273,15 +273,18 @@ func _check_drawn_once_along(path: Array[Vector3]) -> Vector2i:
 func _drawn_from(node: GeometryInstance3D, camera: Vector3) -> bool:
 	if not node.visible or not _in_visibility_range(node, camera):
 		return false
-	var parent: Node = node.get_node_or_null(node.visibility_parent) if not node.visibility_parent.is_empty() else null
-	while parent is GeometryInstance3D:
-		var ancestor: GeometryInstance3D = parent
+	var ancestor: GeometryInstance3D = _visibility_parent_of(node)
+	while ancestor:
 		if ancestor.visible and _distance_to_box(ancestor, camera) >= ancestor.visibility_range_begin:
 			return false
-		parent = (
-			ancestor.get_node_or_null(ancestor.visibility_parent) if not ancestor.visibility_parent.is_empty() else null
-		)
+		ancestor = _visibility_parent_of(ancestor)
 	return true
+
+
+func _visibility_parent_of(node: GeometryInstance3D) -> GeometryInstance3D:
+	if node.visibility_parent.is_empty():
+		return null
+	return node.get_node_or_null(node.visibility_parent) as GeometryInstance3D
 
 
 func _in_any_box(position: Vector3, boxes: Array[AABB]) -> bool:
