@@ -5,10 +5,13 @@ extends RefCounted
 ## screen door) and the plant can be drawn whole ([code]whole_plant_mesh.gd[/code]). A plain
 ## [StandardMaterial3D] is carried over: albedo colour and texture, UV1 scale and offset (x, y),
 ## roughness and metallic (and their textures and channels), specular, a normal map and its scale,
-## alpha scissor, vertex colours as albedo and their encoding, back faces culled or not (the plant
-## material draws both). A material with anything else set (emission, other textures, transparency
-## other than alpha scissor, another shading mode, a next pass...) is kept as it is:
-## that part is drawn by its own material, without fades, and its plant part by part.
+## emission (colour, energy multiplier, texture and operator; not with physical light units), ambient
+## occlusion (texture, channel, light affect), alpha scissor, vertex colours as albedo and their
+## encoding, back faces culled or not (the plant material draws both). A material with anything else
+## set (other textures, anything read from UV2, transparency other than alpha scissor, another
+## shading mode, a next pass...) is kept as it is: that part is drawn by its own material, without
+## fades, and its plant part by part. (The far impostors are baked from the albedo: they do not
+## glow.)
 
 const PARTS_SHADER: Shader = preload("shaders/plant_parts.gdshader")
 ## The StandardMaterial3D properties carried over (or, for cull_mode, allowed either way).
@@ -27,6 +30,15 @@ const CARRIED: PackedStringArray = [
 	"normal_enabled",
 	"normal_texture",
 	"normal_scale",
+	"emission_enabled",
+	"emission",
+	"emission_energy_multiplier",
+	"emission_operator",
+	"emission_texture",
+	"ao_enabled",
+	"ao_texture",
+	"ao_texture_channel",
+	"ao_light_affect",
 	"transparency",
 	"alpha_scissor_threshold",
 	"vertex_color_use_as_albedo",
@@ -42,6 +54,8 @@ const CHANNELS: Array[Vector4] = [
 	Vector4(0.0, 0.0, 0.0, 1.0),
 	Vector4(0.333333, 0.333333, 0.333333, 0.0),
 ]
+
+const PHYSICAL_LIGHT_UNITS: String = "rendering/lights_and_shadows/use_physical_light_units"
 
 static var _plain: StandardMaterial3D
 
@@ -74,6 +88,8 @@ static func adopt(material: Material, has_vertex_colours: bool) -> ShaderMateria
 		return null
 	if standard.cull_mode == BaseMaterial3D.CULL_FRONT:
 		return null
+	if standard.emission_enabled and ProjectSettings.get_setting(PHYSICAL_LIGHT_UNITS, false):
+		return null  # its energy then depends on emission_intensity too
 	if has_vertex_colours and not standard.vertex_color_use_as_albedo:
 		return null  # the shader multiplies vertex and instance colours: it cannot leave the first out
 	var adopted: ShaderMaterial = ShaderMaterial.new()
@@ -95,6 +111,18 @@ static func adopt(material: Material, has_vertex_colours: bool) -> ShaderMateria
 	adopted.set_shader_parameter(&"use_normal_texture", standard.normal_enabled and standard.normal_texture != null)
 	adopted.set_shader_parameter(&"normal_texture", standard.normal_texture)
 	adopted.set_shader_parameter(&"normal_scale", standard.normal_scale)
+	if standard.emission_enabled:
+		adopted.set_shader_parameter(&"emission_colour", standard.emission)
+		adopted.set_shader_parameter(&"emission_energy", standard.emission_energy_multiplier)
+		adopted.set_shader_parameter(
+			&"emission_multiply", standard.emission_operator == BaseMaterial3D.EMISSION_OP_MULTIPLY
+		)
+		adopted.set_shader_parameter(&"emission_texture", standard.emission_texture)
+	if standard.ao_enabled and standard.ao_texture != null:
+		adopted.set_shader_parameter(&"use_ao_texture", true)
+		adopted.set_shader_parameter(&"ao_texture", standard.ao_texture)
+		adopted.set_shader_parameter(&"ao_channel", CHANNELS[standard.ao_texture_channel])
+		adopted.set_shader_parameter(&"ao_light_affect", standard.ao_light_affect)
 	var scissor: bool = standard.transparency == BaseMaterial3D.TRANSPARENCY_ALPHA_SCISSOR
 	adopted.set_shader_parameter(&"alpha_scissor", standard.alpha_scissor_threshold if scissor else 0.0)
 	adopted.set_shader_parameter(&"vertex_colour_is_srgb", standard.vertex_color_is_srgb)

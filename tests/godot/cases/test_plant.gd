@@ -250,13 +250,41 @@ func test_plain_standard_materials_are_taken_over_and_others_kept() -> void:
 		check_eq(taken.get_shader_parameter("roughness_channel"), Vector4(0, 1, 0, 0), "roughness from green")
 		check_eq(taken.get_shader_parameter("use_metallic_texture"), true, "the metallic texture is used")
 		check_eq(taken.get_shader_parameter("metallic_channel"), Vector4(0, 0, 1, 0), "metallic from blue")
-	# What the plant material cannot draw is kept: the part is drawn by its own material.
-	var occluded: StandardMaterial3D = leaf.duplicate()
-	occluded.ao_enabled = true
-	check(PlantMaterialScript.adopt(occluded, false) == null, "ambient occlusion is kept as it is")
+	# Emission and ambient occlusion carry over.
 	var glowing: StandardMaterial3D = leaf.duplicate()
 	glowing.emission_enabled = true
-	check(PlantMaterialScript.adopt(glowing, false) == null, "emission is kept as it is")
+	glowing.emission = Color(0.5, 0.25, 0.0)
+	glowing.emission_energy_multiplier = 2.5
+	glowing.emission_operator = BaseMaterial3D.EMISSION_OP_MULTIPLY
+	glowing.emission_texture = texture
+	glowing.ao_enabled = true
+	glowing.ao_texture = texture
+	glowing.ao_texture_channel = BaseMaterial3D.TEXTURE_CHANNEL_ALPHA
+	glowing.ao_light_affect = 0.6
+	var lit_up: ShaderMaterial = PlantMaterialScript.adopt(glowing, false)
+	if check(lit_up != null, "emission and ambient occlusion are taken over"):
+		check_eq(lit_up.get_shader_parameter("emission_colour"), glowing.emission, "emission colour")
+		check(is_equal_approx(lit_up.get_shader_parameter("emission_energy"), 2.5), "emission energy")
+		check_eq(lit_up.get_shader_parameter("emission_multiply"), true, "emission times its texture")
+		check_eq(lit_up.get_shader_parameter("emission_texture"), texture, "emission texture")
+		check_eq(lit_up.get_shader_parameter("use_ao_texture"), true, "the occlusion texture is used")
+		check_eq(lit_up.get_shader_parameter("ao_texture"), texture, "occlusion texture")
+		check_eq(lit_up.get_shader_parameter("ao_channel"), Vector4(0, 0, 0, 1), "occlusion from alpha")
+		check(is_equal_approx(lit_up.get_shader_parameter("ao_light_affect"), 0.6), "occlusion's light affect")
+	if taken:
+		check(not taken.get_shader_parameter("emission_energy"), "no emission unless enabled")
+		check(not taken.get_shader_parameter("use_ao_texture"), "no occlusion unless enabled")
+	# What the plant material cannot draw is kept: the part is drawn by its own material.
+	var second_uv: StandardMaterial3D = glowing.duplicate()
+	second_uv.ao_on_uv2 = true
+	check(PlantMaterialScript.adopt(second_uv, false) == null, "occlusion read from UV2 is kept as it is")
+	ProjectSettings.set_setting(PlantMaterialScript.PHYSICAL_LIGHT_UNITS, true)
+	var physical: ShaderMaterial = PlantMaterialScript.adopt(glowing, false)
+	ProjectSettings.set_setting(PlantMaterialScript.PHYSICAL_LIGHT_UNITS, false)
+	check(physical == null, "emission under physical light units is kept as it is")
+	var rimmed: StandardMaterial3D = leaf.duplicate()
+	rimmed.rim_enabled = true
+	check(PlantMaterialScript.adopt(rimmed, false) == null, "rim lighting is kept as it is")
 	var blended: StandardMaterial3D = leaf.duplicate()
 	blended.transparency = BaseMaterial3D.TRANSPARENCY_ALPHA
 	check(PlantMaterialScript.adopt(blended, false) == null, "alpha blending is kept as it is")
@@ -289,7 +317,7 @@ func test_plain_standard_materials_are_taken_over_and_others_kept() -> void:
 	check(not plant.drawn_whole(), "their own materials: drawn part by part")
 	plant.use_plant_material = true
 	var lit: ArrayMesh = plant.mesh_drawn(1, 0).duplicate() as ArrayMesh
-	lit.surface_set_material(0, glowing)
+	lit.surface_set_material(0, rimmed)
 	plant.set_part_mesh(1, 0, lit)
-	check(not plant.drawn_whole(), "a part with emission: drawn part by part")
-	check_eq(plant.mesh_for_field(1, 0).surface_get_material(0), glowing, "that part keeps its material")
+	check(not plant.drawn_whole(), "a part with rim lighting: drawn part by part")
+	check_eq(plant.mesh_for_field(1, 0).surface_get_material(0), rimmed, "that part keeps its material")
