@@ -6,9 +6,10 @@ repo=$(cd "$(dirname "$0")/.." && pwd)
 
 # Debian packages: compilers, GLM, doctest, clang for the fuzzer, Xvfb + Mesa for rendering.
 # LLVM's readers check the built libraries; Wine and QEMU run the core's tests built for Windows
-# and for Linux arm64; zip packs the release.
+# and for Linux arm64 (with Debian's arm64 C library); zip packs the release.
 debs=(g++ clang llvm libclang-rt-14-dev libglm-dev doctest-dev python3 python3-venv python3-pip
-  xvfb xauth libgl1-mesa-dri mesa-vulkan-drivers libvulkan1 ca-certificates wine64 qemu-user-static zip unzip)
+  xvfb xauth libgl1-mesa-dri mesa-vulkan-drivers libvulkan1 ca-certificates wine64 qemu-user-static
+  libc6-arm64-cross zip unzip)
 missing=()
 for p in "${debs[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "ok installed" || missing+=("$p")
@@ -20,13 +21,22 @@ if ((${#missing[@]})); then
   DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 fi
 
-# Python tools in a private virtual environment: SCons, gdtoolkit, Zig's C/C++ compiler (which
+# Python tools in a virtual environment: SCons, gdtoolkit, Zig's C/C++ compiler (which
 # cross-compiles the libraries for every desktop platform), numpy and Pillow (picture measurements).
+# It lives outside the clone ($SUNFLOWER_FIELD_CACHE, default ~/.cache/sunflower_field) and
+# .cache/venv links to it: Zig builds its C and C++ libraries once per target (1.5–2 min each here)
+# into its cache, which only a Zig at the same place finds again, so every clone on this machine
+# shares one.
 venv="$repo/.cache/venv"
+if [[ ! -e "$venv" && ! -L "$venv" ]]; then
+  shared="${SUNFLOWER_FIELD_CACHE:-${XDG_CACHE_HOME:-$HOME/.cache}/sunflower_field}/venv"
+  mkdir -p "$repo/.cache" "$(dirname "$shared")"
+  ln -s "$shared" "$venv"
+fi
 if [[ ! -x "$venv/bin/scons" || ! -x "$venv/bin/gdlint" ]] || ! "$venv/bin/python" -m ziglang version >/dev/null 2>&1 ||
   ! "$venv/bin/python" -c "import numpy, PIL" 2>/dev/null; then
-  echo "setup: creating $venv with scons, gdtoolkit, ziglang, numpy and pillow"
-  python3 -m venv "$venv"
+  echo "setup: creating $(readlink -f "$venv") with scons, gdtoolkit, ziglang, numpy and pillow"
+  python3 -m venv "$(readlink -f "$venv")"
   "$venv/bin/pip" install -q --disable-pip-version-check "scons>=4.5" "gdtoolkit>=4.3,<5" "ziglang>=0.13" numpy pillow
 fi
 

@@ -31,7 +31,8 @@ doctest_suite() {
 }
 doctest_suite "core unit tests (doctest)" "$repo/build/tests/core_tests"
 doctest_suite "core unit tests built for Windows x86_64, under Wine" /usr/lib/wine/wine64 "$repo/build/tests/core_tests.windows.x86_64.exe"
-doctest_suite "core unit tests built for Linux arm64, under QEMU" qemu-aarch64-static "$repo/build/tests/core_tests.linux.arm64"
+doctest_suite "core unit tests built for Linux arm64, under QEMU" qemu-aarch64-static -L /usr/aarch64-linux-gnu \
+  "$repo/build/tests/core_tests.linux.arm64"
 
 echo "== the libraries for every platform: format, architecture, dependencies, exports"
 python3 "$repo/tools/check_libraries.py" "$repo"/addons/sunflower_field/bin/*.{so,dll,dylib} | tee "$artifacts/libraries.log"
