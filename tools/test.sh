@@ -7,14 +7,18 @@ set -uo pipefail
 repo=$(cd "$(dirname "$0")/.." && pwd)
 cd "$repo"
 "$repo/tools/build.sh" --all || { echo "build: 0 passed, 1 failed"; exit 1; }
+build_seconds=$SECONDS
+echo "== build: $build_seconds s"
 godot=$("$repo/tools/find_godot.sh")
 artifacts="$repo/tests/artifacts"
 mkdir -p "$artifacts"
 passed=0
 failed=0
-record() { # $1 = passed count, $2 = failed count, $3 = what
+since=$SECONDS
+record() { # $1 = passed count, $2 = failed count, $3 = what; with the seconds since the last one
   passed=$((passed + $1)); failed=$((failed + $2))
-  printf '== %s: %d passed, %d failed\n' "$3" "$1" "$2"
+  printf '== %s: %d passed, %d failed (%d s)\n' "$3" "$1" "$2" $((SECONDS - since))
+  since=$SECONDS
 }
 
 # $1 = label, rest = the doctest program and how to start it
@@ -237,5 +241,6 @@ fi
 rm -rf "$corpus"
 
 echo "artifacts: $artifacts"
+echo "time: $SECONDS s ($build_seconds s of it the build)"
 echo "total: $passed passed, $failed failed"
 ((failed == 0 && passed > 0))
