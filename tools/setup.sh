@@ -26,18 +26,28 @@ fi
 # It lives outside the clone ($SUNFLOWER_FIELD_CACHE, default ~/.cache/sunflower_field) and
 # .cache/venv links to it: Zig builds its C and C++ libraries once per target (1.5–2 min each here)
 # into its cache, which only a Zig at the same place finds again, so every clone on this machine
-# shares one.
+# shares one (without a home: the clone's own .cache). Clones setting up at once take turns.
 venv="$repo/.cache/venv"
+home_cache=${XDG_CACHE_HOME:-${HOME:+$HOME/.cache}}
+shared_dir=${SUNFLOWER_FIELD_CACHE:-${home_cache:+$home_cache/sunflower_field}}
+shared_dir=${shared_dir:-$repo/.cache/shared}
+mkdir -p "$repo/.cache" "$shared_dir"
 if [[ ! -e "$venv" && ! -L "$venv" ]]; then
-  shared="${SUNFLOWER_FIELD_CACHE:-${XDG_CACHE_HOME:-$HOME/.cache}/sunflower_field}/venv"
-  mkdir -p "$repo/.cache" "$(dirname "$shared")"
-  ln -s "$shared" "$venv"
+  ln -s "$shared_dir/venv" "$venv"
 fi
-if [[ ! -x "$venv/bin/scons" || ! -x "$venv/bin/gdlint" ]] || ! "$venv/bin/python" -m ziglang version >/dev/null 2>&1 ||
-  ! "$venv/bin/python" -c "import numpy, PIL" 2>/dev/null; then
-  echo "setup: creating $(readlink -f "$venv") with scons, gdtoolkit, ziglang, numpy and pillow"
-  python3 -m venv "$(readlink -f "$venv")"
-  "$venv/bin/pip" install -q --disable-pip-version-check "scons>=4.5" "gdtoolkit>=4.3,<5" "ziglang>=0.13" numpy pillow
+venv_ready() {
+  [[ -x "$venv/bin/scons" && -x "$venv/bin/gdlint" ]] && "$venv/bin/python" -m ziglang version >/dev/null 2>&1 &&
+    "$venv/bin/python" -c "import numpy, PIL" 2>/dev/null
+}
+if ! venv_ready; then
+  exec 9>"$shared_dir/setup.lock"
+  flock 9
+  if ! venv_ready; then
+    echo "setup: creating $(readlink -f "$venv") with scons, gdtoolkit, ziglang, numpy and pillow"
+    python3 -m venv "$(readlink -f "$venv")"
+    "$venv/bin/pip" install -q --disable-pip-version-check "scons>=4.5" "gdtoolkit>=4.3,<5" "ziglang>=0.13" numpy pillow
+  fi
+  exec 9>&-
 fi
 
 # The engine.
