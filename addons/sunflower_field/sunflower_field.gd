@@ -260,7 +260,9 @@ const PartMeshes: GDScript = preload("part_meshes.gd")
 ## from mesh to impostor. Plants drawn whole ([member FieldPlant.draw_whole]) also dither from mesh 1
 ## into 2 and from 2 into 3, over as large a share of this as the switch distance is of the sprite
 ## switch's. Plant materials fade when they dither by the instance colour's alpha, as the addon's
-## [code]shaders/plant_parts.gdshader[/code] does (the built-in plants use it); other materials
+## [code]shaders/plant_parts.gdshader[/code] does (the built-in plants use it, and plain
+## StandardMaterial3D parts are drawn with it); a ShaderMaterial of your own fades with one line,
+## [code]plant_fade_discards[/code] of [code]shaders/screen_door.gdshaderinc[/code]; other materials
 ## switch at once. 0 turns the fades off.
 @export_range(0.0, 10.0, 0.1, "or_greater", "suffix:m") var lod_fade: float = 3.0:
 	set(value):

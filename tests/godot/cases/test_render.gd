@@ -6,6 +6,16 @@ const Picture: GDScript = preload("res://runner/picture.gd")
 const Stage: GDScript = preload("res://runner/stage.gd")
 const Dressing: GDScript = preload("res://runner/dressing.gd")
 const SHOT: String = "render_demo_field.png"
+## A part shader of a user's own: flat red; FADE; marks where the cross-fade's one line goes.
+const OWN_SHADER: String = """shader_type spatial;
+render_mode unshaded, cull_disabled;
+#include "res://addons/sunflower_field/shaders/screen_door.gdshaderinc"
+void fragment() {
+	FADE;
+	ALBEDO = vec3(1.0, 0.0, 0.0);
+}
+"""
+const FADE_CALL: String = "if (plant_fade_discards(FRAGCOORD.xy, COLOR.a)) { discard; }"
 
 var scene: Node3D
 
@@ -255,6 +265,71 @@ func test_plain_standard_materials_are_drawn_as_the_plant_material() -> void:
 		check(mapped_as_own > 0.99, "with the maps, emission and occlusion too (SSIM %.4f)" % mapped_as_own)
 	else:
 		print("     (not the same look on the Compatibility renderer: SSIM %.4f, not checked there)" % as_own)
+
+
+func test_a_shader_of_your_own_fades_with_one_line() -> void:
+	# One plant whose parts draw with a ShaderMaterial of their own (flat red, unshaded), seen from
+	# 12 m (mesh 3) and from 18 m, the middle of the mesh 3 → impostor fade (16.5–19.5 m): with the
+	# call to plant_fade_discards the mesh keeps about half its pixels there, the impostor the rest;
+	# without it the mesh keeps them all (so the check fails when the call does nothing).
+	var one: SunflowerFieldMap = SunflowerFieldMap.new()
+	one.source_path = "user://one_plant.field"
+	one.text = "1 1\n*\n".to_utf8_buffer()
+	var red: Dictionary = {}
+	for way: String in ["fading", "not fading"]:
+		var shader: Shader = Shader.new()
+		shader.code = OWN_SHADER.replace("FADE;", FADE_CALL if way == "fading" else "")
+		var material: ShaderMaterial = ShaderMaterial.new()
+		material.shader = shader
+		var own: FieldPlant = FieldPlant.default_plant().duplicate()
+		Dressing.dress_parts(own, func(_level: int, _part: int) -> Material: return material)
+		var field: SunflowerField = SunflowerField.new()
+		scene.add_child(field)
+		field.plant = own
+		field.map = one
+		field.wind_power = 0.0
+		field.set_process(false)
+		field.finish_build()
+		var root: Vector3 = field.get_plant_info(0)["position"]
+		var camera: Camera3D = Camera3D.new()
+		scene.add_child(camera)
+		camera.fov = 20.0  # the plant fills the picture's height from 18 m
+		for distance: float in [12.0, 18.0]:
+			camera.look_at_from_position(root + Vector3(0.0, 1.3, distance), root + Vector3(0.0, 1.3, 0.0))
+			camera.make_current()
+			for step: int in 3:
+				field.advance(0.3)  # past the LOD interval: a pass at this distance
+			await frames(4)
+			var image: Image = tree.root.get_viewport().get_texture().get_image()
+			image.save_png(_artifact_path("render_own_shader_%s_%d.png" % [way.replace(" ", "_"), distance]))
+			red["%s %d" % [way, distance]] = _red_pixels(image)
+		field.free()
+		camera.free()
+	# The share of the mesh's pixels kept mid-fade: the two ways' red at 18 m (without the call the mesh
+	# keeps all of them, less the few its impostor's share draws over).
+	var kept: float = red["fading 18"] / maxf(red["not fading 18"], 1.0)
+	print(
+		(
+			"     your own shader mid-fade keeps %.2f of the mesh's pixels with the call (%d red at 12 m, %d at 18 m without)"
+			% [kept, red["fading 12"], red["not fading 18"]]
+		)
+	)
+	check(red["fading 12"] > 2000.0, "the red mesh is seen from 12 m (%d pixels)" % red["fading 12"])
+	check(
+		absf(red["fading 12"] - red["not fading 12"]) < 0.02 * red["fading 12"],
+		"outside the fade the call changes nothing (%d against %d)" % [red["fading 12"], red["not fading 12"]]
+	)
+	check(kept > 0.3 and kept < 0.7, "mid-fade the mesh keeps about half its pixels (%.2f)" % kept)
+
+
+## Pixels of the flat red of [constant OWN_SHADER].
+func _red_pixels(image: Image) -> float:
+	var count: float = 0.0
+	for y: int in image.get_height():
+		for x: int in image.get_width():
+			var c: Color = image.get_pixel(x, y)
+			count += 1.0 if c.r > 0.5 and c.g < 0.15 and c.b < 0.15 else 0.0
+	return count
 
 
 func test_far_plants_sway_as_the_near_ones_do() -> void:
