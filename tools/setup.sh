@@ -26,12 +26,15 @@ fi
 # It lives outside the clone ($SUNFLOWER_FIELD_CACHE, default ~/.cache/sunflower_field) and
 # .cache/venv links to it: Zig builds its C and C++ libraries once per target (1.5–2 min each here)
 # into its cache, which only a Zig at the same place finds again, so every clone on this machine
-# shares one (without a home: the clone's own .cache). Clones setting up at once take turns.
+# shares one (without a writable home: the clone's own .cache). Clones setting up at once take turns.
 venv="$repo/.cache/venv"
 home_cache=${XDG_CACHE_HOME:-${HOME:+$HOME/.cache}}
 shared_dir=${SUNFLOWER_FIELD_CACHE:-${home_cache:+$home_cache/sunflower_field}}
-shared_dir=${shared_dir:-$repo/.cache/shared}
-mkdir -p "$repo/.cache" "$shared_dir"
+mkdir -p "$repo/.cache"
+if [[ -z "$shared_dir" ]] || ! mkdir -p "$shared_dir" 2>/dev/null; then
+  shared_dir=$repo/.cache/shared
+  mkdir -p "$shared_dir"
+fi
 if [[ ! -e "$venv" && ! -L "$venv" ]]; then
   ln -s "$shared_dir/venv" "$venv"
 fi
