@@ -55,6 +55,7 @@ const CHANNELS: Array[Vector4] = [
 	Vector4(0.333333, 0.333333, 0.333333, 0.0),
 ]
 
+## The project setting under which a material's emission energy also depends on emission_intensity.
 const PHYSICAL_LIGHT_UNITS: String = "rendering/lights_and_shadows/use_physical_light_units"
 
 static var _plain: StandardMaterial3D
