@@ -272,9 +272,7 @@ func test_a_shader_of_your_own_fades_with_one_line() -> void:
 	# 12 m (mesh 3) and from 18 m, the middle of the mesh 3 → impostor fade (16.5–19.5 m): with the
 	# call to plant_fade_discards the mesh keeps about half its pixels there, the impostor the rest;
 	# without it the mesh keeps them all (so the check fails when the call does nothing).
-	var one: SunflowerFieldMap = SunflowerFieldMap.new()
-	one.source_path = "user://one_plant.field"
-	one.text = "1 1\n*\n".to_utf8_buffer()
+	var one: SunflowerFieldMap = _one_plant_map()
 	var red: Dictionary = {}
 	for way: String in ["fading", "not fading"]:
 		var shader: Shader = Shader.new()
@@ -334,9 +332,7 @@ func _red_pixels(image: Image) -> float:
 
 func test_far_plants_sway_as_the_near_ones_do() -> void:
 	# One sunflower side on to a strong wind (blowing to +x), seen from its front.
-	var one: SunflowerFieldMap = SunflowerFieldMap.new()
-	one.source_path = "user://one_plant.field"
-	one.text = "1 1\n*\n".to_utf8_buffer()
+	var one: SunflowerFieldMap = _one_plant_map()
 	var field: SunflowerField = SunflowerField.new()
 	scene.add_child(field)
 	field.map = one
@@ -391,6 +387,14 @@ func test_far_impostors_stand_where_their_plants_do_on_a_moved_and_turned_field(
 	var similarity: float = picture.ssim(still, after)
 	print("     moved and turned field: SSIM %.4f to the picture before" % similarity)
 	check(similarity > 0.97, "the far field looks the same moved and turned (SSIM %.4f)" % similarity)
+
+
+## A map of one plant.
+func _one_plant_map() -> SunflowerFieldMap:
+	var one: SunflowerFieldMap = SunflowerFieldMap.new()
+	one.source_path = "user://one_plant.field"
+	one.text = "1 1\n*\n".to_utf8_buffer()
+	return one
 
 
 ## Lets the field run [param settle] frames, stops it, and finds its head as mesh 3, sprite and
