@@ -57,7 +57,21 @@ func set_texture(kind: String, texture: Texture2D) -> void:
 		)
 	_set_both(parameter, texture)
 	if kind == "views":
-		_set_both("view_bounds", view_bounds(texture, FieldPlant.ATLAS_VIEWS))
+		var layout: Vector2i = atlas_layout(texture)
+		_set_both("atlas_views", layout)
+		_set_both("view_bounds", view_bounds(texture, layout))
+
+
+## The views across and down the atlas [param texture]: [constant FieldPlant.ATLAS_VIEWS]'s columns,
+## and as many rows of elevation as its shape holds, so that an atlas baked with fewer rows (the
+## baker made 4, 30° apart, before it made 7) is still drawn right. [constant FieldPlant.ATLAS_VIEWS]
+## without a texture.
+static func atlas_layout(texture: Texture2D) -> Vector2i:
+	var columns: int = FieldPlant.ATLAS_VIEWS.x
+	if texture == null or texture.get_width() <= 0:
+		return FieldPlant.ATLAS_VIEWS
+	var rows: int = roundi(float(texture.get_height()) * columns / texture.get_width())
+	return Vector2i(columns, clampi(rows, 2, FieldPlant.ATLAS_VIEWS.y))
 
 
 ## Where each view of the atlas [param texture] ([param views] squares across and down) has

@@ -70,15 +70,16 @@ func test_far_levels_look_like_the_full_mesh_picture() -> void:
 				% [view, figures[view][0], figures[view][1], 100.0 * share, "%.3f" % brightness if share > 0 else "—"]
 			)
 		)
-	# The issue's targets: SSIM ≥ 0.99 at head height (met), ≥ 0.85 from above (not met: the full-mesh
-	# picture's single-pixel heads and gaps are aliased detail no filtered impostor repeats; main
-	# before the multi-view impostors measured 0.438 and 0.748), brightness within ±5 % (met at 45°;
-	# straight down 1.08 since far plants read sharper mips, session 13: the impostors' shadows miss
-	# what the meshes' reach, which the mips' averaged colour had hidden, 1.006 before).
-	# What is checked is what this code reaches, so that a regression fails.
+	# The issue's targets: SSIM ≥ 0.99 at head height (met), ≥ 0.85 from above (not met: 0.543 and
+	# 0.779; mesh 3, a model of a quarter of the triangles, reaches 0.915 and 0.963, so it is the
+	# impostor's look, not the plants' places; main before the multi-view impostors measured 0.438
+	# and 0.748, the atlas of 4 elevations 30° apart 0.495 and 0.770: between 30° and 60° it blended
+	# a head seen at a slant with one seen edge-on, and the alpha test cut both away), brightness
+	# within ±5 % (met at 45°; straight down 1.064: the impostors' shadows miss what the meshes'
+	# reach, session 11). What is checked is what this code reaches, so that a regression fails.
 	check(figures["inside"][0] >= 0.99, "at head height the picture is the full-mesh one (%.3f)" % figures["inside"][0])
-	check(figures["above45"][0] >= 0.48, "25 m up at 45°: SSIM %.3f, at least 0.48" % figures["above45"][0])
-	check(figures["down60"][0] >= 0.75, "60 m straight down: SSIM %.3f, at least 0.75" % figures["down60"][0])
+	check(figures["above45"][0] >= 0.52, "25 m up at 45°: SSIM %.3f, at least 0.52" % figures["above45"][0])
+	check(figures["down60"][0] >= 0.765, "60 m straight down: SSIM %.3f, at least 0.765" % figures["down60"][0])
 	check(
 		absf(figures["above45"][3] - 1.0) <= 0.05,
 		"25 m up at 45°: the impostors' brightness %.3f of the meshes', within ±5 %%" % figures["above45"][3]
@@ -111,7 +112,7 @@ func test_the_far_field_keeps_its_cover() -> void:
 	)
 	check(meshes_in.count(1) > 1000, "the field is in view (%d pixels)" % meshes_in.count(1))
 	check(cover >= 0.8 and cover <= 1.2, "the impostors cover %.2f of what the meshes cover, within 0.8–1.2" % cover)
-	check(brightness >= 0.85, "the far impostors' brightness %.3f of the meshes', at least 0.85" % brightness)
+	check(brightness >= 0.88, "the far impostors' brightness %.3f of the meshes', at least 0.88" % brightness)
 
 
 ## The field alone on black (no ground, no sky) drawn at [param force] (-1: automatic levels).

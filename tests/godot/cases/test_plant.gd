@@ -2,8 +2,8 @@ extends TestCase
 ## Plant types (FieldPlant): the built-in sunflower by default, shared unchanged; a field's own plant
 ## through set_part_mesh and the old properties; a plant's form (part lengths, height) and variety
 ## (size and yaw ranges) in the plants drawn; a shared plant's change rebuilds every field using it;
-## the impostor quads cut to what the plant's views show; plain StandardMaterial3D parts taken over
-## by the plant material.
+## the impostor quads cut to what the plant's views show; an atlas read with the rows it was baked
+## with; plain StandardMaterial3D parts taken over by the plant material.
 
 const DEMO_MAP: SunflowerFieldMap = preload("res://fields/demo.field")
 const ImpostorSetScript: GDScript = preload("res://addons/sunflower_field/impostor_set.gd")
@@ -212,6 +212,33 @@ func test_the_impostor_quad_covers_only_what_its_views_show() -> void:
 			area += (view.z - view.x) * (view.w - view.y) / drawn.size()
 		check_eq(drawn.size(), FieldPlant.ATLAS_VIEWS.x * FieldPlant.ATLAS_VIEWS.y, "%s: a rectangle per view" % name)
 		check(area > 0.1 and area < 0.4, "%s: the views fill %.2f of their squares" % [name, area])
+
+
+## The baker makes 7 rows of elevation (15° apart); an atlas baked with 4 (30° apart, before) is read
+## with its own rows, from its shape, so its views are still found where they are.
+func test_an_atlas_is_read_with_the_rows_it_was_baked_with() -> void:
+	var columns: int = FieldPlant.ATLAS_VIEWS.x
+	var old: ImageTexture = ImageTexture.create_from_image(Image.create(columns * 8, 4 * 8, false, Image.FORMAT_RGBA8))
+	var now: ImageTexture = ImageTexture.create_from_image(
+		Image.create(columns * 8, FieldPlant.ATLAS_VIEWS.y * 8, false, Image.FORMAT_RGBA8)
+	)
+	check_eq(FieldPlant.ATLAS_VIEWS, Vector2i(12, 7), "the baker's views: 12 around, 7 elevations")
+	check_eq(ImpostorSetScript.atlas_layout(old), Vector2i(columns, 4), "a 4-row atlas")
+	check_eq(ImpostorSetScript.atlas_layout(now), FieldPlant.ATLAS_VIEWS, "a 7-row atlas")
+	check_eq(ImpostorSetScript.atlas_layout(null), FieldPlant.ATLAS_VIEWS, "no atlas: the baker's layout")
+	var impostors: RefCounted = ImpostorSetScript.new()
+	for texture: ImageTexture in [old, now]:
+		impostors.set_texture("views", texture)
+		var rows: int = texture.get_height() / 8
+		for material: ShaderMaterial in [impostors.material, impostors.tile_material]:
+			check_eq(material.get_shader_parameter("atlas_views"), Vector2i(columns, rows), "%d rows drawn" % rows)
+			check_eq(material.get_shader_parameter("view_bounds").size(), columns * rows, "a rectangle per view")
+	# The shipped sunflower is baked with the baker's layout.
+	check_eq(
+		ImpostorSetScript.atlas_layout(FieldPlant.default_plant().impostor_views),
+		FieldPlant.ATLAS_VIEWS,
+		"the built-in sunflower's atlas"
+	)
 
 
 func test_plain_standard_materials_are_taken_over_and_others_kept() -> void:
