@@ -69,7 +69,7 @@ engine_suite() {
   echo "== $label"
   local launch=(xvfb-run -a -s "-screen 0 1280x720x24" "$godot" --rendering-driver "$driver")
   [[ "$driver" == headless ]] && launch=("$godot" --headless)
-  timeout 900 "${launch[@]}" --verbose --audio-driver Dummy --resolution 640x360 \
+  timeout 2400 "${launch[@]}" --verbose --audio-driver Dummy --resolution 640x360 \
     --path "$project" --script "res://$( [[ -d "$project/runner" ]] && echo runner || echo tests/runner )/run_tests.gd" \
     -- "$@" >"$log" 2>&1
   local status=$? line p f
