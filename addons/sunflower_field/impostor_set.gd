@@ -58,6 +58,14 @@ func set_texture(kind: String, texture: Texture2D) -> void:
 	_set_both(parameter, texture)
 	if kind == "views":
 		var layout: Vector2i = atlas_layout(texture)
+		var problem: String = atlas_problem(texture)
+		if not problem.is_empty():
+			push_warning(
+				(
+					"SunflowerField: the impostor views texture %s %s; it is read as %d × %d views (re-bake the plant's impostors)"
+					% [texture.resource_path if texture.resource_path else "(unsaved)", problem, layout.x, layout.y]
+				)
+			)
 		_set_both("atlas_views", layout)
 		_set_both("view_bounds", view_bounds(texture, layout))
 
@@ -72,6 +80,23 @@ static func atlas_layout(texture: Texture2D) -> Vector2i:
 		return FieldPlant.ATLAS_VIEWS
 	var rows: int = roundi(float(texture.get_height()) * columns / texture.get_width())
 	return Vector2i(columns, clampi(rows, 2, FieldPlant.ATLAS_VIEWS.y))
+
+
+## What is wrong with the shape of the atlas [param texture], or "" when it is one the baker makes:
+## [constant FieldPlant.ATLAS_VIEWS]'s columns of square views across, and 2 up to its rows down.
+static func atlas_problem(texture: Texture2D) -> String:
+	if texture == null:
+		return ""
+	var size: Vector2i = Vector2i(texture.get_width(), texture.get_height())
+	var columns: int = FieldPlant.ATLAS_VIEWS.x
+	var square: int = size.x / columns
+	var expected: String = "%d square views across and 2–%d rows down" % [columns, FieldPlant.ATLAS_VIEWS.y]
+	if square <= 0 or size.x % columns != 0 or size.y % square != 0:
+		return "is %d × %d pixels, not %s" % [size.x, size.y, expected]
+	var rows: int = size.y / square
+	if rows < 2 or rows > FieldPlant.ATLAS_VIEWS.y:
+		return "holds %d %s of %d-pixel views, not %s" % [rows, "row" if rows == 1 else "rows", square, expected]
+	return ""
 
 
 ## Where each view of the atlas [param texture] ([param views] squares across and down) has

@@ -233,7 +233,20 @@ func test_an_atlas_is_read_with_the_rows_it_was_baked_with() -> void:
 		for material: ShaderMaterial in [impostors.material, impostors.tile_material]:
 			check_eq(material.get_shader_parameter("atlas_views"), Vector2i(columns, rows), "%d rows drawn" % rows)
 			check_eq(material.get_shader_parameter("view_bounds").size(), columns * rows, "a rectangle per view")
+	# An atlas of another shape is named as such (and warned of when drawn).
+	check_eq(ImpostorSetScript.atlas_problem(old), "", "a 4-row atlas is one the baker made")
+	check_eq(ImpostorSetScript.atlas_problem(now), "", "a 7-row atlas is one the baker made")
+	for size: Vector2i in [
+		Vector2i(columns * 8 + 3, 32), Vector2i(columns * 8, 30), Vector2i(columns * 8, 8), Vector2i(512, 512)
+	]:
+		var odd: ImageTexture = ImageTexture.create_from_image(Image.create(size.x, size.y, false, Image.FORMAT_RGBA8))
+		var problem: String = ImpostorSetScript.atlas_problem(odd)
+		check(not problem.is_empty(), "a %d × %d atlas is not one the baker makes" % [size.x, size.y])
+		print("     %d × %d: %s" % [size.x, size.y, problem])
 	# The shipped sunflower is baked with the baker's layout.
+	check_eq(
+		ImpostorSetScript.atlas_problem(FieldPlant.default_plant().impostor_views), "", "the built-in atlas' shape"
+	)
 	check_eq(
 		ImpostorSetScript.atlas_layout(FieldPlant.default_plant().impostor_views),
 		FieldPlant.ATLAS_VIEWS,
