@@ -83,20 +83,19 @@ static func atlas_layout(texture: Texture2D) -> Vector2i:
 
 
 ## What is wrong with the shape of the atlas [param texture], or "" when it is one the baker makes:
-## [constant FieldPlant.ATLAS_VIEWS]'s columns of square views across, and 2 up to its rows down.
+## exactly the [method atlas_layout] it is read in, of square views.
 static func atlas_problem(texture: Texture2D) -> String:
 	if texture == null:
 		return ""
 	var size: Vector2i = Vector2i(texture.get_width(), texture.get_height())
-	var columns: int = FieldPlant.ATLAS_VIEWS.x
-	var square: int = size.x / columns
-	var expected: String = "%d square views across and 2–%d rows down" % [columns, FieldPlant.ATLAS_VIEWS.y]
-	if square <= 0 or size.x % columns != 0 or size.y % square != 0:
-		return "is %d × %d pixels, not %s" % [size.x, size.y, expected]
-	var rows: int = size.y / square
-	if rows < 2 or rows > FieldPlant.ATLAS_VIEWS.y:
-		return "holds %d %s of %d-pixel views, not %s" % [rows, "row" if rows == 1 else "rows", square, expected]
-	return ""
+	var layout: Vector2i = atlas_layout(texture)
+	var square: int = size.x / layout.x
+	if square > 0 and size == layout * square:
+		return ""
+	return (
+		"is %d × %d pixels, not %d square views across and 2–%d rows down"
+		% [size.x, size.y, layout.x, FieldPlant.ATLAS_VIEWS.y]
+	)
 
 
 ## Where each view of the atlas [param texture] ([param views] squares across and down) has
