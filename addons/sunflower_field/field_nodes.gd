@@ -1,10 +1,11 @@
 @tool
 extends RefCounted
 ## The internal nodes that draw one field (one native simulation): per far tile (4 × 4 chunks of one
-## species, or a merged tile of a level above: the visibility parent of the 2 × 2 tiles below) one
-## static MultiMeshInstance3D of its plants' impostors (sprite and billboard draw the same
-## multi-view impostor, so one GPU copy of a far plant serves both; its visibility range begins
-## where its level does and ends at the field's draw distance), the dynamic bucket nodes of the near
+## species, or a merged tile of a level above covering 2 × 2 tiles below) one static
+## MultiMeshInstance3D of its plants' impostors (sprite and billboard draw the same multi-view
+## impostor, so one GPU copy of a far plant serves both; its visibility range spans the distances at
+## which the shader gives any of its plants to its level, and ends at the field's draw distance;
+## in between the plants fade from level to level one by one), the dynamic bucket nodes of the near
 ## plants, and the scenes the legend places; and per species the active-chunk mask that keeps the
 ## tiles from drawing the plants the near buckets draw. The only script that makes MultiMeshes or
 ## sets visibility ranges. Tile nodes can be made a few at a time, hidden, and shown at once.
@@ -65,7 +66,7 @@ func make_tiles(budget_usec: int, max_draw_distance: float) -> bool:
 	while _tile_nodes.size() < tile_count:
 		var node_start: int = Time.get_ticks_usec()
 		var tile: int = _tile_nodes.size()
-		if _take_previous(tile):
+		if _take_previous(tile, max_draw_distance):
 			if budget_usec >= 0 and Time.get_ticks_usec() - start + slowest >= budget_usec:
 				break
 			continue
@@ -74,9 +75,9 @@ func make_tiles(budget_usec: int, max_draw_distance: float) -> bool:
 		var impostors: ImpostorSet = _impostors[simulation.get_tile_species(tile)]
 		var node: MultiMeshInstance3D = _make_node(_tile_node_name(tile), impostors.mesh(true), aabb, true)
 		node.visible = false  # shown when the whole field is ready
-		_set_level(node, tile)
-		_set_range(node, max_draw_distance)
 		_tile_nodes.append(node)
+		_set_level(node, tile)
+		_set_range(tile, max_draw_distance)
 		simulation.set_tile_multimesh(tile, node.multimesh.get_rid())
 		var now: int = Time.get_ticks_usec()
 		slowest = maxi(slowest, now - node_start)
@@ -86,7 +87,7 @@ func make_tiles(budget_usec: int, max_draw_distance: float) -> bool:
 
 
 ## Takes the previous field's node for [param tile] when it draws the same; true if it did.
-func _take_previous(tile: int) -> bool:
+func _take_previous(tile: int, max_draw_distance: float) -> bool:
 	var old: int = _previous_by_key.get(simulation.get_tile_key(tile), -1)
 	if old < 0 or _previous.simulation.get_tile_signature(old) != simulation.get_tile_signature(tile):
 		return false
@@ -96,15 +97,17 @@ func _take_previous(tile: int) -> bool:
 	_tile_nodes.append(node)
 	simulation.adopt_tile_multimesh(tile, node.multimesh.get_rid())
 	_set_level(node, tile)  # the merge distance may have changed
+	_set_range(tile, max_draw_distance)
 	tiles_kept += 1
 	return true
 
 
-## Where [param tile]'s level begins, and the share of its plants a merged tile holds.
+## [param tile]'s place among the merged levels, for the impostor shader, which picks the plants
+## its level draws from the observer; and where its level begins.
 func _set_level(node: MultiMeshInstance3D, tile: int) -> void:
-	node.visibility_range_begin = simulation.get_tile_begin(tile)
-	if simulation.get_tile_level(tile) > 0:
-		node.set_instance_shader_parameter(&"tile_density", simulation.get_tile_density(tile))
+	var merge: PackedFloat32Array = simulation.get_tile_merge(tile)
+	node.set_instance_shader_parameter(&"tile_merge", Vector4(merge[0], merge[1], merge[2], merge[3]))
+	node.visibility_range_begin = simulation.get_tile_range(tile).x
 
 
 ## Hands [param tile]'s node to a field built on this one (and forgets it); null when it has none
@@ -157,12 +160,6 @@ func finish(species_plants: Array, legend: Dictionary, cell_size: float, sway_ma
 		# node of that key was still there had a generated name until now.
 		if str(node.name).begins_with("@"):
 			node.name = _tile_node_name(tile)
-	# A merged tile hides its children while the camera is past its begin distance: one level is
-	# drawn at each place.
-	for tile: int in _tile_nodes.size():
-		var parent: int = simulation.get_tile_parent(tile)
-		var node: MultiMeshInstance3D = _tile_nodes[tile]
-		node.visibility_parent = node.get_path_to(_tile_nodes[parent]) if parent >= 0 else NodePath()
 	_previous = null  # its remaining nodes go with it
 
 
@@ -208,9 +205,9 @@ func show_filled_buckets() -> void:
 
 ## Sets where the tiles' impostors end (0: never).
 func apply_ranges(max_draw_distance: float) -> void:
-	for node: MultiMeshInstance3D in _tile_nodes:
-		if node:
-			_set_range(node, max_draw_distance)
+	for tile: int in _tile_nodes.size():
+		if _tile_nodes[tile]:
+			_set_range(tile, max_draw_distance)
 
 
 ## Draws [param species]' near plants with [param plant]'s meshes as drawn now (once the field is
@@ -326,12 +323,16 @@ func _tile_node_name(tile: int) -> String:
 	return "FarTile%d" % simulation.get_tile_key(tile)
 
 
-## A tile is hidden once its nearest plant may be past [param max_draw_distance] (the engine
-## measures to the box's centre); its plants fade out one by one before that (the impostor shader).
-static func _set_range(node: MultiMeshInstance3D, max_draw_distance: float) -> void:
-	node.visibility_range_end = (
-		max_draw_distance + 0.5 * node.custom_aabb.size.length() if max_draw_distance > 0.0 else 0.0
-	)
+## A tile is hidden once none of its plants is left to its level (the next level's tile draws them)
+## or its nearest plant may be past [param max_draw_distance] (the engine measures to the box's
+## centre); its plants fade out one by one before that (the impostor shader).
+func _set_range(tile: int, max_draw_distance: float) -> void:
+	var node: MultiMeshInstance3D = _tile_nodes[tile]
+	var end: float = simulation.get_tile_range(tile).y
+	if max_draw_distance > 0.0:
+		var drawn_to: float = max_draw_distance + 0.5 * node.custom_aabb.size.length()
+		end = drawn_to if end <= 0.0 else minf(end, drawn_to)
+	node.visibility_range_end = end
 
 
 func _field_aabb() -> AABB:

@@ -68,6 +68,9 @@ void SunflowerSimulation::bind_methods() {
 	gdx::bind_method(CLASS, "get_tile_parent", &SunflowerSimulation::get_tile_parent, { "tile" });
 	gdx::bind_method(CLASS, "get_tile_begin", &SunflowerSimulation::get_tile_begin, { "tile" });
 	gdx::bind_method(CLASS, "get_tile_density", &SunflowerSimulation::get_tile_density, { "tile" });
+	gdx::bind_method(CLASS, "get_tile_range", &SunflowerSimulation::get_tile_range, { "tile" });
+	gdx::bind_method(CLASS, "get_tile_merge", &SunflowerSimulation::get_tile_merge, { "tile" });
+	gdx::bind_method(CLASS, "choose_tile_level", &SunflowerSimulation::choose_tile_level, { "distance" });
 	gdx::bind_method(CLASS, "get_active_mask", &SunflowerSimulation::get_active_mask, { "species" });
 	gdx::bind_method(CLASS, "get_mask_version", &SunflowerSimulation::get_mask_version);
 	gdx::bind_method(CLASS, "get_tiles_drawn", &SunflowerSimulation::get_tiles_drawn);
@@ -487,6 +490,29 @@ double SunflowerSimulation::get_tile_begin(int64_t p_tile) const {
 
 double SunflowerSimulation::get_tile_density(int64_t p_tile) const {
 	return _is_tile(p_tile) ? double(FieldSimulation::tile_density(_sim.get_tile(uint32_t(p_tile)).level)) : 0.0;
+}
+
+gdx::Vector2 SunflowerSimulation::get_tile_range(int64_t p_tile) const {
+	return _is_tile(p_tile) ? gdx::to_godot(_sim.get_tile_range(uint32_t(p_tile))) : gdx::Vector2{};
+}
+
+gdx::PackedFloat32Array SunflowerSimulation::get_tile_merge(int64_t p_tile) const {
+	gdx::PackedFloat32Array out;
+	if (!_is_tile(p_tile)) {
+		return out;
+	}
+	// The impostor shader's tile_merge: the tile's level, 1 for the top level, where level 1 begins,
+	// the fade's share of an octave.
+	const FieldSimulation::Tile &tile = _sim.get_tile(uint32_t(p_tile));
+	const float values[] = { float(tile.level), tile.parent == FieldSimulation::NO_TILE ? 1.0f : 0.0f, _sim.merge_distance(1),
+		FieldSimulation::TILE_MERGE_FADE };
+	out.assign(values, std::size(values));
+	return out;
+}
+
+gdx::Vector2 SunflowerSimulation::choose_tile_level(double p_distance) const {
+	const FieldSimulation::TileChoice choice = _sim.choose_tile_level(float(p_distance));
+	return gdx::Vector2{ float(choice.level), choice.fade };
 }
 
 gdx::PackedByteArray SunflowerSimulation::get_active_mask(int64_t p_species) const {

@@ -50,23 +50,22 @@ int64_t total(const std::array<int64_t, LOD_COUNT> &p_counts) {
 }
 
 // Whether the engine draws far tile p_tile seen from p_camera: its node is shown (it has a plant
-// to draw), the camera is at least its begin distance from its box centre, and no shown ancestor is
-// (a node's visibility parent hides it while the parent is within its own range; a hidden node
-// leaves the chain).
+// to draw) and the camera's distance to its box centre is within its range.
 bool tile_drawn_from(const FieldSimulation &p_sim, uint32_t p_tile, const glm::vec3 &p_camera) {
-	const auto reached = [&](uint32_t p_t) {
-		return glm::distance(p_camera, p_sim.get_tile_bounds(p_t).center()) >= p_sim.get_tile_begin(p_t);
-	};
-	if (!p_sim.is_tile_drawn(p_tile) || !reached(p_tile)) {
-		return false;
+	const float distance = glm::distance(p_camera, p_sim.get_tile_bounds(p_tile).center());
+	const glm::vec2 range = p_sim.get_tile_range(p_tile);
+	return p_sim.is_tile_drawn(p_tile) && distance >= range.x && (range.y <= 0.0f || distance <= range.y);
+}
+
+// The tile level that draws a far plant at p_root from p_observer, as the impostor shader picks it
+// for a tile of p_tile's level (a top-level tile keeps every plant beyond it).
+FieldSimulation::TileChoice choice_in(const FieldSimulation &p_sim, uint32_t p_tile, const glm::vec3 &p_observer, const glm::vec3 &p_root) {
+	FieldSimulation::TileChoice choice = p_sim.choose_tile_level(glm::distance(p_observer, p_root));
+	const FieldSimulation::Tile &tile = p_sim.get_tile(p_tile);
+	if (tile.parent == FieldSimulation::NO_TILE && choice.level >= tile.level) {
+		choice = { tile.level, 0.0f };
 	}
-	for (uint32_t t = p_sim.get_tile(p_tile).parent; t != FieldSimulation::NO_TILE && p_sim.is_tile_drawn(t);
-			t = p_sim.get_tile(t).parent) {
-		if (reached(t)) {
-			return false;
-		}
-	}
-	return true;
+	return choice;
 }
 
 // Plants drawn by the dynamic buckets plus the records of the tiles drawn from the observer that
@@ -74,10 +73,13 @@ bool tile_drawn_from(const FieldSimulation &p_sim, uint32_t p_tile, const glm::v
 // every plant must be drawn exactly once, or, in a cross-fade, twice with complementary shares that
 // add up to one: mesh 3 and its impostor (the instance colours' alpha, the patterns each level's
 // shader keeps), or, drawn whole, two adjacent mesh levels (the finer with a positive alpha, the
-// coarser with a negative one: the other pixels); or, where a merged tile is drawn, not at all when
-// the tile's level leaves it out (counted as drawn once: the merged tile stands in for it).
-// Returns the plants drawn or stood in for; r_thinned (if given) gets those stood in for.
-int64_t drawn(const FieldSimulation &p_sim, int64_t *r_thinned = nullptr) {
+// coarser with a negative one: the other pixels); or, where its distance gives it to a merged
+// level that leaves it out, not at all (counted as drawn once: the merged tile stands in for it). A
+// far tile draws the plants the observer's distance gives to its level (choose_tile_level, the
+// impostor shader's rule; one it leaves out while fading to the next level counts as drawn), and
+// the engine must draw it then. Returns the plants drawn or stood in for; r_thinned (if given) gets
+// those stood in for, r_fading those fading out.
+int64_t drawn(const FieldSimulation &p_sim, int64_t *r_thinned = nullptr, int64_t *r_fading = nullptr) {
 	struct Drawn {
 		float share = 0.0f;
 		int representations = 0;
@@ -113,36 +115,44 @@ int64_t drawn(const FieldSimulation &p_sim, int64_t *r_thinned = nullptr) {
 	std::vector<uint8_t> mask(size_t(layout.grid_x) * size_t(layout.grid_z));
 	p_sim.write_active_mask(0, mask.data());
 	int64_t thinned = 0;
+	int64_t fading = 0;
+	const glm::vec3 observer = p_sim.get_observer();
 	for (uint32_t t = 0; t < p_sim.get_tile_count(); ++t) {
-		if (!tile_drawn_from(p_sim, t, p_sim.get_observer())) {
-			continue;
-		}
 		const FieldSimulation::Tile &tile = p_sim.get_tile(t);
 		std::vector<float> records(size_t(tile.plants) * FAR_FLOATS_PER_INSTANCE);
 		p_sim.write_tile_instances(t, records.data());
 		for (size_t k = 0; k < tile.plants; ++k) {
 			const FarInstance record = read_far_instance(records.data() + k * FAR_FLOATS_PER_INSTANCE);
 			REQUIRE(record.cell < mask.size());
-			if (mask[record.cell] == 0) {
-				Drawn &plant = plants[{ record.root.x, record.root.z }];
+			const FieldSimulation::TileChoice choice = choice_in(p_sim, t, observer, record.root);
+			if (mask[record.cell] != 0 || choice.level != tile.level) {
+				continue;
+			}
+			CAPTURE(t);
+			CHECK(tile_drawn_from(p_sim, t, observer)); // else the plant would vanish
+			fading += choice.fade > 0.0f && !record.kept_above ? 1 : 0;
+			Drawn &plant = plants[{ record.root.x, record.root.z }];
+			plant.share += 1.0f;
+			plant.representations += 1;
+			plant.levels |= 1 << LOD_SPRITE;
+		}
+	}
+	// The plants of static chunks their distance gives to a level that leaves them out: no other
+	// representation may draw them.
+	for (uint32_t c = 0; c < layout.chunks.size(); ++c) {
+		const Chunk &chunk = layout.chunks[c];
+		for (uint32_t i = 0; i < chunk.count && !p_sim.is_chunk_active(c); ++i) {
+			const Plant &left_out = layout.plants[layout.chunk_plants[chunk.first + i]];
+			if (p_sim.plant_tile_level(left_out) < p_sim.choose_tile_level(glm::distance(observer, left_out.root())).level) {
+				Drawn &plant = plants[{ left_out.position.x, left_out.position.y }];
 				plant.share += 1.0f;
 				plant.representations += 1;
-				plant.levels |= 1 << LOD_SPRITE;
+				++thinned;
 			}
 		}
-		// The plants of its static chunks its level leaves out: no other representation may draw them.
-		for (uint32_t c = 0; c < tile.count && tile.level > 0; ++c) {
-			const Chunk &chunk = layout.chunks[p_sim.get_tile_chunk(t, c)];
-			for (uint32_t i = 0; i < chunk.count && !p_sim.is_chunk_active(p_sim.get_tile_chunk(t, c)); ++i) {
-				const Plant &left_out = layout.plants[layout.chunk_plants[chunk.first + i]];
-				if (p_sim.plant_tile_level(left_out) < tile.level) {
-					Drawn &plant = plants[{ left_out.position.x, left_out.position.y }];
-					plant.share += 1.0f;
-					plant.representations += 1;
-					++thinned;
-				}
-			}
-		}
+	}
+	if (r_fading) {
+		*r_fading = fading;
 	}
 	if (r_thinned) {
 		*r_thinned = thinned;
@@ -306,6 +316,9 @@ TEST_CASE("far tiles merge with distance: nested quarters, parents covering thei
 	LayoutParams params = sim.get_layout_params();
 	params.tile_merge_distance = 10.0f;
 	sim.set_layout_params(params);
+	LodParams near;
+	near.distances = { 1.0f, 2.0f, 3.0f, 4.0f }; // few active chunks: the tiles draw nearly every plant
+	sim.set_lod(near);
 	const FieldLayout &layout = sim.get_layout();
 	REQUIRE(layout.grid_x == 60);
 	std::array<uint32_t, FieldSimulation::MAX_TILE_LEVELS> tiles_at{};
@@ -321,6 +334,23 @@ TEST_CASE("far tiles merge with distance: nested quarters, parents covering thei
 		CHECK((t == 0 || sim.get_tile(t - 1).level <= tile.level)); // level by level
 		const float side = float(FieldSimulation::TILE_CHUNKS << tile.level) * layout.chunk_size;
 		CHECK(sim.get_tile_begin(t) == (tile.level == 0 ? 0.0f : std::max(10.0f * float(1u << (tile.level - 1)), 1.5f * side)));
+		// Its records mark the plants the next level keeps too (every plant at the top level).
+		{
+			std::vector<float> records(size_t(tile.plants) * FAR_FLOATS_PER_INSTANCE);
+			sim.write_tile_instances(t, records.data());
+			std::map<std::pair<float, float>, uint32_t> levels;
+			for (const Plant &plant : layout.plants) {
+				levels[{ plant.position.x, plant.position.y }] = sim.plant_tile_level(plant);
+			}
+			uint32_t marked = 0;
+			for (size_t k = 0; k < tile.plants; ++k) {
+				const FarInstance record = read_far_instance(records.data() + k * FAR_FLOATS_PER_INSTANCE);
+				const uint32_t level = levels[{ record.root.x, record.root.z }];
+				CHECK(record.kept_above == (tile.parent == FieldSimulation::NO_TILE || level > tile.level));
+				marked += record.kept_above ? 1 : 0;
+			}
+			CHECK((tile.parent == FieldSimulation::NO_TILE ? marked == tile.plants : marked < tile.plants));
+		}
 		if (tile.parent != FieldSimulation::NO_TILE) {
 			CHECK(sim.get_tile(tile.parent).level == tile.level + 1);
 			CHECK(sim.get_tile(tile.parent).species == tile.species);
@@ -378,6 +408,7 @@ TEST_CASE("far tiles merge with distance: nested quarters, parents covering thei
 	// Every place drawn by one level: from inside, from the edge, from far and from high above, every
 	// plant is drawn once or stood in for by the merged tile drawn there; the farther, the fewer drawn.
 	int64_t previous_thinned = -1;
+	int64_t faded = 0;
 	for (const glm::vec3 &camera : { glm::vec3(60.0f, 1.7f, 60.0f), glm::vec3(-10.0f, 1.7f, 60.0f),
 				 glm::vec3(-80.0f, 1.7f, 60.0f), glm::vec3(-250.0f, 1.7f, 60.0f) }) {
 		CAPTURE(camera.x);
@@ -386,16 +417,31 @@ TEST_CASE("far tiles merge with distance: nested quarters, parents covering thei
 			sim.update(0.016f);
 		}
 		int64_t thinned = 0;
-		CHECK(drawn(sim, &thinned) == plant_count);
+		int64_t fading = 0;
+		CHECK(drawn(sim, &thinned, &fading) == plant_count);
+		faded += fading;
 		CHECK(thinned > previous_thinned);
 		previous_thinned = thinned;
 		uint32_t tiles_drawn = 0;
 		for (uint32_t t = 0; t < sim.get_tile_count(); ++t) {
 			tiles_drawn += tile_drawn_from(sim, t, camera) ? 1 : 0;
 		}
-		CHECK(tiles_drawn < 60); // of 225 level-0 tiles
+		// Of 310 tiles (225 at level 0): where plants fade from one level to the next both levels' tiles
+		// are drawn, a ring as wide as a tile's reach on each side (111 from the middle).
+		CHECK(tiles_drawn < 130);
+	}
+	// Along a line across the field and out: each tile holding a plant its distance gives to the
+	// tile's level is drawn by the engine (checked in drawn()).
+	for (float x = -47.0f; x < 170.0f; x += 13.0f) {
+		CAPTURE(x);
+		sim.set_observer(glm::vec3(x, 1.7f, 41.0f));
+		for (int frame = 0; frame < 40; ++frame) {
+			sim.update(0.016f);
+		}
+		CHECK(drawn(sim) == plant_count);
 	}
 	CHECK(double(previous_thinned) > 0.9 * plant_count); // from 250 m away, level 3 or 4 stands in
+	CHECK(faded > 0); // plants the next level leaves out, fading out one by one
 	// Without merging: the level-0 tiles alone.
 	params.tile_merge_distance = 0.0f;
 	sim.set_layout_params(params);

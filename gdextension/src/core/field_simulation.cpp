@@ -280,12 +280,40 @@ uint32_t FieldSimulation::plant_tile_level(const Plant &p_plant) const {
 }
 
 float FieldSimulation::get_tile_begin(uint32_t p_tile) const {
-	const uint32_t level = _tiles[p_tile].level;
-	if (level == 0) {
+	return merge_distance(_tiles[p_tile].level);
+}
+
+float FieldSimulation::merge_distance(uint32_t p_level) const {
+	if (p_level == 0) {
 		return 0.0f;
 	}
-	const float side = float(TILE_CHUNKS << level) * _layout.chunk_size;
-	return std::max(_layout_params.tile_merge_distance * float(1u << (level - 1)), 1.5f * side);
+	const float side = float(TILE_CHUNKS << p_level) * _layout.chunk_size;
+	return std::max(_layout_params.tile_merge_distance * float(1u << (p_level - 1)), 1.5f * side);
+}
+
+FieldSimulation::TileChoice FieldSimulation::choose_tile_level(float p_distance) const {
+	// Both terms of merge_distance double per level, so level L begins where
+	// 1 + log2(distance / merge_distance(1)) reaches L.
+	const uint32_t top = get_top_tile_level();
+	if (top == 0) {
+		return {};
+	}
+	const float octaves = std::max(1.0f + std::log2(std::max(p_distance, 1e-3f) / merge_distance(1)), 0.0f);
+	const float level = std::floor(octaves);
+	if (level >= float(top)) {
+		return { top, 0.0f };
+	}
+	const float into = octaves - level; // 0 … 1 between this level's merge distance and the next's
+	return { uint32_t(level), std::clamp((into - (1.0f - TILE_MERGE_FADE)) / TILE_MERGE_FADE, 0.0f, 1.0f) };
+}
+
+glm::vec2 FieldSimulation::get_tile_range(uint32_t p_tile) const {
+	const Tile &tile = _tiles[p_tile];
+	const ChunkBounds bounds = get_tile_bounds(p_tile);
+	const float reach = 0.5f * glm::length(bounds.max - bounds.min); // box centre to its farthest plant
+	const float begin = tile.level == 0 ? 0.0f : merge_distance(tile.level) / std::exp2(TILE_MERGE_FADE) - reach;
+	const float end = tile.parent == NO_TILE ? 0.0f : merge_distance(tile.level + 1) + reach;
+	return { std::max(begin, 0.0f), end };
 }
 
 ChunkBounds FieldSimulation::get_tile_bounds(uint32_t p_tile) const {
@@ -300,23 +328,32 @@ ChunkBounds FieldSimulation::get_tile_bounds(uint32_t p_tile) const {
 
 void FieldSimulation::write_tile_instances(uint32_t p_tile, float *r_out) const {
 	const Tile &tile = _tiles[p_tile];
+	const bool top = tile.parent == NO_TILE; // nothing above: every plant stays
 	for (uint32_t k = 0; k < tile.count; ++k) {
 		const uint32_t chunk = get_tile_chunk(p_tile, k);
-		if (tile.level == 0) {
-			write_chunk_instances(chunk, r_out);
-			r_out += size_t(_layout.chunks[chunk].count) * FAR_FLOATS_PER_INSTANCE;
-			continue;
+		const uint32_t first = _layout.chunks[chunk].first;
+		// A merged tile's plants are the first of each chunk's kept ones (ordered by tile level), and
+		// the first of those the ones kept a level up.
+		const uint32_t count = tile.level == 0 ? _layout.chunks[chunk].count : _chunk_kept[chunk][tile.level];
+		const uint32_t *plants = tile.level == 0 ? _layout.chunk_plants.data() + first : _merged_plants.data() + _merged_first[chunk];
+		_write_records(chunk, plants, count, r_out);
+		for (uint32_t i = 0; i < count; ++i) {
+			const bool above = top ||
+					(tile.level == 0 ? plant_tile_level(_layout.plants[plants[i]]) > 0 : i < _chunk_kept[chunk][tile.level + 1]);
+			if (above) {
+				float &cell = r_out[size_t(i) * FAR_FLOATS_PER_INSTANCE + FAR_CELL_OR_SHARE];
+				cell = -1.0f - cell;
+			}
 		}
-		// A merged tile's plants are the first of each chunk's kept ones (ordered by tile level).
-		const uint32_t count = _chunk_kept[chunk][tile.level];
-		_write_records(chunk, _merged_plants.data() + _merged_first[chunk], count, r_out);
 		r_out += size_t(count) * FAR_FLOATS_PER_INSTANCE;
 	}
 }
 
 uint64_t FieldSimulation::get_tile_signature(uint32_t p_tile) const {
 	// FNV-1a over the chunks' keys and signatures, never 0 (the level picks which plants it holds).
-	uint64_t hash = 1469598103934665603ull ^ _tiles[p_tile].count ^ (uint64_t(_tiles[p_tile].level) << 40);
+	// Whether it is the top level, too: its records keep every plant.
+	const uint64_t top = _tiles[p_tile].parent == NO_TILE ? 1 : 0;
+	uint64_t hash = 1469598103934665603ull ^ _tiles[p_tile].count ^ (uint64_t(_tiles[p_tile].level) << 40) ^ (top << 48);
 	for (uint32_t k = 0; k < _tiles[p_tile].count; ++k) {
 		const uint32_t chunk = get_tile_chunk(p_tile, k);
 		for (uint64_t value : { get_chunk_key(chunk), get_chunk_signature(chunk) }) {

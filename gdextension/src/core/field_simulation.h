@@ -197,10 +197,30 @@ public:
 	void write_tile_instances(uint32_t p_tile, float *r_out) const;
 	// Two tiles with equal keys and signatures draw the same (see get_chunk_signature).
 	uint64_t get_tile_signature(uint32_t p_tile) const;
-	// The camera distance (to the tile's box centre) from which a tile is drawn instead of its
-	// children: 0 for level 0; for level L the merge distance × 2^(L − 1), but at least 1.5 × the
-	// tile's side, so that no merged tile is drawn around the camera.
+	// The distance from the observer at which a far plant's place turns to level L
+	// (merge_distance(L)): 0 for level 0; for level L the merge distance × 2^(L − 1), but at least
+	// 1.5 × a level-L tile's side, so that no merged tile is drawn around the camera.
 	float get_tile_begin(uint32_t p_tile) const;
+	float merge_distance(uint32_t p_level) const;
+	// Plants fade from one tile level to the next over the last TILE_MERGE_FADE octave before each
+	// merge distance (from merge_distance(L) / 2^TILE_MERGE_FADE to merge_distance(L)), one by one:
+	// a plant the next level leaves out fades out (dithered by its own random), the others widen to
+	// keep the cover, and at the merge distance the next level's tile draws those same plants at the
+	// same width. So no tile's worth of plants switches at once.
+	static constexpr float TILE_MERGE_FADE = 0.5f;
+	// The tile level that draws a far plant p_distance from the observer, and how far its fade to the
+	// next level has come (0 … 1: the share of the plants that level leaves out already gone).
+	// Mirrored by the impostor shader (tile_choice): keep the two in step.
+	struct TileChoice {
+		uint32_t level = 0;
+		float fade = 0.0f;
+	};
+	TileChoice choose_tile_level(float p_distance) const;
+	// The camera distances (to the tile's box centre) between which the engine draws a tile: every
+	// plant choose_tile_level gives to its level lies there; end 0 for a tile of the highest level.
+	glm::vec2 get_tile_range(uint32_t p_tile) const;
+	// The highest tile level (0: tiles never merge).
+	uint32_t get_top_tile_level() const { return _tiles.empty() ? 0 : _tiles.back().level; }
 	// The share of its chunks' plants a tile of p_level holds on average: 4^−level.
 	static float tile_density(uint32_t p_level) { return 1.0f / float(1u << (2u * std::min(p_level, 15u))); }
 	// The highest tile level a plant is kept at (0 … MAX_TILE_LEVELS − 1), from its seeded place:

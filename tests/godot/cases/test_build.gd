@@ -163,23 +163,24 @@ func test_parameter_changes_during_a_build_reach_the_new_field() -> void:
 	field.wind_power = 4.0
 	await frames_until(func() -> bool: return not field.is_building(), 2000)
 	# Each tile ends once its nearest plant may be past the draw distance (the engine measures to the
-	# box's centre); its plants dither out one by one before that, in the impostor shader.
-	# A merged tile's range begins where its level does.
-	var begins: Dictionary = {}  # node name → the range begin of its tile
+	# box's centre), or none of its plants is left to its level; its plants dither out one by one
+	# before that, in the impostor shader. A merged tile's range begins where its level's fade does.
+	var ranges: Dictionary = {}  # node name → the range of its tile
 	var simulation: RefCounted = field.get_simulation()
 	for tile: int in simulation.get_tile_count():
-		begins["FarTile%d" % simulation.get_tile_key(tile)] = simulation.get_tile_begin(tile)
-	check(begins.values().max() > 0.0, "the field has merged tiles")
+		ranges["FarTile%d" % simulation.get_tile_key(tile)] = simulation.get_tile_range(tile)
+	check(ranges.values().any(func(span: Vector2) -> bool: return span.x > 0.0), "the field has merged tiles")
 	var wrong_ends: int = 0
 	var impostor_material: ShaderMaterial = null
 	for node: Node in field.get_children(true):
 		var instance: MultiMeshInstance3D = node as MultiMeshInstance3D
 		if instance and instance.name.begins_with("FarTile"):
+			var span: Vector2 = ranges.get(str(instance.name), -Vector2.ONE)
 			var end: float = 123.0 + 0.5 * instance.custom_aabb.size.length()
-			var begin: float = begins.get(str(instance.name), -1.0)
+			end = end if span.y <= 0.0 else minf(end, span.y)
 			wrong_ends += (
 				0
-				if instance.visibility_range_begin == begin and is_equal_approx(instance.visibility_range_end, end)
+				if instance.visibility_range_begin == span.x and is_equal_approx(instance.visibility_range_end, end)
 				else 1
 			)
 			impostor_material = instance.multimesh.mesh.surface_get_material(0) as ShaderMaterial
@@ -221,7 +222,7 @@ func test_a_small_change_of_a_large_map_makes_nodes_only_for_the_tiles_it_touche
 	check_eq(stats.tiles_made, 2, "nodes made only for the touched tile and the merged one")
 	check_eq(stats.tiles_kept, 3, "the others kept their nodes and buffers")
 	# Every plant is still in exactly one level-0 buffer: the kept ones hold what the new field says;
-	# the merged tile holds its share, and is the visibility parent of the other four.
+	# the merged tile holds its share. Each node tells the shader its tile's place among the levels.
 	var by_name: Dictionary = {}
 	for tile: int in simulation.get_tile_count():
 		by_name["FarTile%d" % simulation.get_tile_key(tile)] = tile
@@ -235,11 +236,15 @@ func test_a_small_change_of_a_large_map_makes_nodes_only_for_the_tiles_it_touche
 			(node as MultiMeshInstance3D).multimesh.get_rid()
 		)
 		instances[level] += buffer.size() / SunflowerSimulation.FAR_FLOATS_PER_INSTANCE
-		var parent: int = simulation.get_tile_parent(tile)
-		var expected: NodePath = (
-			NodePath() if parent < 0 else NodePath("../FarTile%d" % simulation.get_tile_key(parent))
+		var merge: PackedFloat32Array = simulation.get_tile_merge(tile)
+		check_eq(
+			(node as GeometryInstance3D).get_instance_shader_parameter(&"tile_merge"),
+			Vector4(merge[0], merge[1], merge[2], merge[3]),
+			"%s's place among the levels" % node.name
 		)
-		check_eq(node.visibility_parent, expected, "%s's visibility parent" % node.name)
+		check_eq(
+			merge[1], 1.0 if simulation.get_tile_parent(tile) < 0 else 0.0, "%s is the top level or not" % node.name
+		)
 	check_eq(instances[0], field.get_plant_count(), "far buffers hold every plant once")
 	# A new merge distance keeps every tile's node and buffer, and moves where the merged one begins.
 	field.tile_merge_distance = 500.0
@@ -253,6 +258,9 @@ func test_a_small_change_of_a_large_map_makes_nodes_only_for_the_tiles_it_touche
 		if node.name == "FarTile%d" % simulation.get_tile_key(merged):
 			merged_node = node
 	if check(merged_node != null, "the merged tile's node"):
-		check_eq(merged_node.visibility_range_begin, 500.0, "its node's range begins there")
+		# From where the nearest of its plants may begin to fade to it (half an octave before).
+		var reach: float = 0.5 * merged_node.custom_aabb.size.length()
+		check_near(merged_node.visibility_range_begin, 500.0 / sqrt(2.0) - reach, 1e-3, "its node's range begins there")
+		check_eq(merged_node.get_instance_shader_parameter(&"tile_merge").z, 500.0, "its shader knows the distance")
 	var quarter: float = field.get_plant_count() / 4.0
 	check_near(instances[1], quarter, 5.0 * sqrt(quarter), "the merged tile holds about a quarter")

@@ -7,6 +7,8 @@ const STRIDE: int = SunflowerSimulation.FLOATS_PER_INSTANCE
 
 var field: SunflowerField
 var observer: Node3D
+## Far-tile records in a fade to the next level that leaves them out, along the last path checked.
+var faded: int = 0
 
 
 func before_each() -> void:
@@ -174,10 +176,12 @@ func test_every_plant_is_drawn_exactly_once_along_a_camera_path() -> void:
 
 func test_merged_far_tiles_draw_each_place_once_across_levels() -> void:
 	# 2 m chunks make 8 m tiles, 16 m merged ones and one of 32 m over the demo field; with a 10 m
-	# merge distance they are drawn from 24 m and 48 m (1.5 × their side). Each place is drawn by one
-	# level: every plant once, or left out by the merged tile drawn where it stands.
+	# merge distance plants turn to them at 24 m and 48 m from the observer (1.5 × their side),
+	# fading over the half octave before. Each plant is drawn by the level its distance gives it, or
+	# left out by that level, and the engine draws each tile that holds a plant given to its level.
 	field.chunk_size = 2.0
 	field.tile_merge_distance = 10.0
+	field.lod_distances = PackedFloat32Array([1.0, 2.0, 3.0, 4.0])  # the far tiles draw nearly all
 	field.finish_build()
 	var simulation: RefCounted = field.get_simulation()
 	var levels: Dictionary = {}
@@ -187,20 +191,28 @@ func test_merged_far_tiles_draw_each_place_once_across_levels() -> void:
 	var path: Array[Vector3] = [Vector3(10, 1.7, 7), Vector3(-25, 1.7, 7), Vector3(-30, 20, -30), Vector3(-70, 10, 7)]
 	var counted: Vector2i = _check_drawn_once_along(path)
 	check(counted.y > 0, "merged tiles left plants out along the path")
+	check(faded > 0, "plants the next level leaves out were fading along the path")
 	field.tile_merge_distance = 0.0
 	field.finish_build()
 	check_eq(_check_drawn_once_along(path).y, 0, "without merging every plant is drawn")
 
 
 ## Checks, at each of [param path]'s stops, that every plant is drawn once (or twice in a cross-fade,
-## shares adding up to one) or left out by a merged tile drawn there; returns the plants seen in
-## cross-fades and those left out, summed over the stops.
+## shares adding up to one) or left out where a merged level stands in for it; returns the plants
+## seen in cross-fades and those left out, summed over the stops. A far tile draws the plants the
+## simulation's choose_tile_level gives to its level (the impostor shader's rule), and the engine must
+## draw every tile holding such a plant: a plant whose tile is out of its range would vanish.
 func _check_drawn_once_along(path: Array[Vector3]) -> Vector2i:
 	var positions: Dictionary = {}
 	for i: int in field.get_plant_count():
 		positions[_key(field.get_plant_info(i)["position"])] = i
+	var simulation: RefCounted = field.get_simulation()
+	var tile_of_node: Dictionary = {}  # node name → tile
+	for tile: int in simulation.get_tile_count():
+		tile_of_node["FarTile%d" % simulation.get_tile_key(tile)] = tile
 	var crossfades: int = 0
 	var left_out: int = 0
+	faded = 0
 	for stop: Vector3 in path:
 		observer.position = stop
 		field.advance(0.3)
@@ -210,52 +222,69 @@ func _check_drawn_once_along(path: Array[Vector3]) -> Vector2i:
 		shares.resize(field.get_plant_count())
 		var fading: PackedInt32Array = PackedInt32Array()  # representations drawn in a cross-fade
 		fading.resize(field.get_plant_count())
-		var merged_boxes: Array[AABB] = []  # the merged tiles drawn from here
+		var unseen_tiles: int = 0  # plants given to a level whose tile the engine does not draw
 		for node: MultiMeshInstance3D in _field_nodes():
 			var rid: RID = node.multimesh.get_rid()
 			var visible: int = RenderingServer.multimesh_get_visible_instances(rid)
 			var instances: int = visible if visible >= 0 else RenderingServer.multimesh_get_instance_count(rid)
-			if instances == 0 or not _drawn_from(node, stop):
+			var tile: bool = node.name.begins_with("FarTile")
+			var shown: bool = node.visible and _in_visibility_range(node, stop)
+			if instances == 0 or not (shown or tile):
 				continue
 			if node.name.contains("Middle") or node.name.contains("Head"):
 				continue  # one part per plant: the bottom part's origin is the plant's root
 			var buffer: PackedFloat32Array = RenderingServer.multimesh_get_buffer(rid)
 			# Impostors are 8-float records: a far tile's carry their chunk's cell, the near bucket's a share.
 			var compact: bool = node.multimesh.transform_format == MultiMesh.TRANSFORM_2D
-			var tile: bool = node.name.begins_with("FarTile")
-			var density: Variant = node.get_instance_shader_parameter(&"tile_density")  # set on merged tiles
-			if tile and density != null and float(density) < 1.0:
-				merged_boxes.append(node.custom_aabb)
 			# Near plants drawn whole: one instance each, with custom data.
 			var stride: int = (
 				SunflowerSimulation.WHOLE_FLOATS_PER_INSTANCE if node.multimesh.use_custom_data else STRIDE
 			)
 			# A tile skips the plants of the chunks its material's mask marks (the near buckets draw them).
 			var mask: PackedByteArray = _mask_of(node) if tile else PackedByteArray()
+			var merge: Vector4 = node.get_instance_shader_parameter(&"tile_merge") if tile else Vector4()
+			if tile:
+				var expected: PackedFloat32Array = simulation.get_tile_merge(tile_of_node[str(node.name)])
+				check_eq(merge, Vector4(expected[0], expected[1], expected[2], expected[3]), "%s's merge" % node.name)
 			var far: int = SunflowerSimulation.FAR_FLOATS_PER_INSTANCE
 			for k: int in instances:
-				if tile and mask[roundi(buffer[k * far + 6])] != 0:
-					continue
 				var root: Vector3 = _root(buffer, k, compact, stride)
+				var share: float = 1.0
+				if tile:
+					# The cell, as −1 − cell for a plant kept a level up (instance_buffer.h).
+					var stored: int = roundi(buffer[k * far + 6])
+					if mask[-1 - stored if stored < 0 else stored] != 0:
+						continue
+					var choice: Vector2 = simulation.choose_tile_level(stop.distance_to(root))
+					if merge.y > 0.5 and choice.x >= merge.x:
+						choice = Vector2(merge.x, 0.0)  # the top level keeps every plant beyond it
+					if int(choice.x) != int(merge.x):
+						continue
+					if not shown:
+						unseen_tiles += 1
+						continue
+					# In the fade to the next level a plant it leaves out is drawn or not by its own
+					# random (the widened others stand in): counted as drawn.
+					faded += 1 if choice.y > 0.0 and stored >= 0 else 0
+				else:
+					# The instance colour's alpha: the share of the pixels drawn (negative: the other
+					# pixels, a coarser mesh fading in).
+					share = absf(buffer[k * far + 6] if compact else buffer[k * stride + 15])
 				var index: int = positions.get(_key(root), -1)
 				if check(index >= 0, "%s instance %d at %s is no plant" % [node.name, k, root]):
-					# The instance colour's alpha: the share of the pixels drawn (negative: the other pixels,
-					# a coarser mesh fading in).
-					var share: float = (
-						1.0 if tile else absf(buffer[k * far + 6] if compact else buffer[k * stride + 15])
-					)
 					drawn[index] += 1
 					shares[index] += share
-					var may_fade: bool = not tile
-					fading[index] += 1 if may_fade and share < 1.0 else 0
+					fading[index] += 1 if not tile and share < 1.0 else 0
+		check_eq(unseen_tiles, 0, "from %s every plant given to a level is in a tile the engine draws" % stop)
 		var wrong: int = 0
 		var crossfading: int = 0
 		for i: int in drawn.size():
 			var once: bool = drawn[i] == 1 and is_equal_approx(shares[i], 1.0)
 			var complementary: bool = drawn[i] == 2 and fading[i] == 2 and absf(shares[i] - 1.0) < 1e-4
 			crossfading += 1 if complementary else 0
-			if drawn[i] == 0 and _in_any_box(field.get_plant_info(i)["position"], merged_boxes):
-				left_out += 1
+			var position: Vector3 = field.get_plant_info(i)["position"]
+			if drawn[i] == 0 and simulation.choose_tile_level(stop.distance_to(position)).x >= 1.0:
+				left_out += 1  # a merged level draws where it stands, and leaves it out
 				continue
 			if not once and not complementary:
 				wrong += 1
@@ -265,38 +294,6 @@ func _check_drawn_once_along(path: Array[Vector3]) -> Vector2i:
 		crossfades += crossfading
 		check_eq(_sum(field.get_lod_counts()), field.get_plant_count(), "LOD counts from %s" % stop)
 	return Vector2i(crossfades, left_out)
-
-
-## Whether the engine draws [param node] from [param camera]: it is shown, within its visibility
-## range, and no shown visibility ancestor is past its own range's begin (a merged tile drawn there
-## stands in for its children).
-func _drawn_from(node: GeometryInstance3D, camera: Vector3) -> bool:
-	if not node.visible or not _in_visibility_range(node, camera):
-		return false
-	var ancestor: GeometryInstance3D = _visibility_parent_of(node)
-	while ancestor:
-		if ancestor.visible and _distance_to_box(ancestor, camera) >= ancestor.visibility_range_begin:
-			return false
-		ancestor = _visibility_parent_of(ancestor)
-	return true
-
-
-func _visibility_parent_of(node: GeometryInstance3D) -> GeometryInstance3D:
-	if node.visibility_parent.is_empty():
-		return null
-	return node.get_node_or_null(node.visibility_parent) as GeometryInstance3D
-
-
-func _in_any_box(position: Vector3, boxes: Array[AABB]) -> bool:
-	for box: AABB in boxes:
-		if (
-			position.x >= box.position.x
-			and position.x <= box.end.x
-			and position.z >= box.position.z
-			and position.z <= box.end.z
-		):
-			return true
-	return false
 
 
 func test_a_bad_map_keeps_the_field_and_reports_file_line_column() -> void:
