@@ -13,6 +13,9 @@ extends RefCounted
 const Native: GDScript = preload("native.gd")
 const ImpostorSet: GDScript = preload("impostor_set.gd")
 const PartMeshes: GDScript = preload("part_meshes.gd")
+## Godot's default DirectionalLight3D.directional_shadow_max_distance: merged far tiles whose plants
+## all lie beyond it cast no shadows.
+const SUN_SHADOW_DISTANCE: float = 100.0
 ## The parts of a plant, bottom to top, as node names use them.
 const PART_NAMES: PackedStringArray = PartMeshes.PART_NAMES
 
@@ -108,6 +111,13 @@ func _set_level(node: MultiMeshInstance3D, tile: int) -> void:
 	var merge: PackedFloat32Array = simulation.get_tile_merge(tile)
 	node.set_instance_shader_parameter(&"tile_merge", Vector4(merge[0], merge[1], merge[2], merge[3]))
 	node.visibility_range_begin = simulation.get_tile_range(tile).x
+	# A merged level's plants are at least its begin distance away (200 m by default): beyond the
+	# sun's shadows (DirectionalLight3D.directional_shadow_max_distance, 100 m unless set), its tiles
+	# cast none, which keeps them out of every shadow pass their boxes reach into.
+	var shadowed: bool = simulation.get_tile_begin(tile) < SUN_SHADOW_DISTANCE
+	node.cast_shadow = (
+		GeometryInstance3D.SHADOW_CASTING_SETTING_ON if shadowed else GeometryInstance3D.SHADOW_CASTING_SETTING_OFF
+	)
 
 
 ## Hands [param tile]'s node to a field built on this one (and forgets it); null when it has none

@@ -311,7 +311,8 @@ glm::vec2 FieldSimulation::get_tile_range(uint32_t p_tile) const {
 	const Tile &tile = _tiles[p_tile];
 	const ChunkBounds bounds = get_tile_bounds(p_tile);
 	const float reach = 0.5f * glm::length(bounds.max - bounds.min); // box centre to its farthest plant
-	const float begin = tile.level == 0 ? 0.0f : merge_distance(tile.level) / std::exp2(TILE_MERGE_FADE) - reach;
+	// Its level draws plants from its merge distance on (the level below fades into it before).
+	const float begin = tile.level == 0 ? 0.0f : merge_distance(tile.level) - reach;
 	const float end = tile.parent == NO_TILE ? 0.0f : merge_distance(tile.level + 1) + reach;
 	return { std::max(begin, 0.0f), end };
 }

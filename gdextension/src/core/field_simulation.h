@@ -169,10 +169,12 @@ public:
 	// from one buffer (level 0). While the field's tile merge distance is above 0, tiles merge with
 	// distance: a level-L tile covers the square of 2 × 2 level-(L − 1) tiles (its children, whose
 	// parent it is) and holds the plants of its chunks whose tile level (plant_tile_level) is at least
-	// L: a quarter of the plants per level, each level's a subset of the one below. A tile is drawn
-	// from get_tile_begin on, its children nearer (the engine's visibility parents), so each place is
-	// drawn by one level; the impostor shader widens a merged tile's plants by 1 / √density to keep
-	// the field's cover. Levels stop once one tile per species covers the field. Level-0 tiles come
+	// L: a quarter of the plants per level, each level's a subset of the one below. Each far plant is
+	// drawn by the level its distance from the observer gives it (choose_tile_level: level L from
+	// get_tile_begin of a level-L tile on, fading in over the half octave before), so no tile's worth
+	// of plants switches at once; the engine draws a tile over the distances where any of its plants
+	// may be given to its level (get_tile_range), and the impostor shader widens the plants by
+	// 1 / √density to keep the field's cover. Levels stop once one tile per species covers the field. Level-0 tiles come
 	// first, ordered by where they lie, then species; then level 1's, and so on.
 	static constexpr int TILE_CHUNKS = 4;
 	static constexpr uint32_t MAX_TILE_LEVELS = 8;
@@ -217,7 +219,9 @@ public:
 	};
 	TileChoice choose_tile_level(float p_distance) const;
 	// The camera distances (to the tile's box centre) between which the engine draws a tile: every
-	// plant choose_tile_level gives to its level lies there; end 0 for a tile of the highest level.
+	// plant choose_tile_level gives to its level lies there (level L from merge_distance(L) to
+	// merge_distance(L + 1), the fade to L + 1 drawn by level L's tiles), widened by the box's reach;
+	// end 0 for a tile of the highest level.
 	glm::vec2 get_tile_range(uint32_t p_tile) const;
 	// The highest tile level (0: tiles never merge).
 	uint32_t get_top_tile_level() const { return _tiles.empty() ? 0 : _tiles.back().level; }

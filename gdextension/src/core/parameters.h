@@ -78,9 +78,9 @@ inline constexpr ParameterSpec FORCE_LOD{ "SunflowerField.force_lod", -1.0, -1.0
 inline constexpr ParameterSpec ALPHA_SCISSOR{ "SunflowerField.alpha_scissor", 190.0 / 255.0, 0.0, 1.0, ParameterSpec::CLAMP, 190.0 / 255.0 };
 inline constexpr ParameterSpec THINNING_DISTANCE{ "SunflowerField.thinning_distance", 0.0, 0.0, NO_MAX, ParameterSpec::CLAMP, 0.0 };
 inline constexpr ParameterSpec THINNING_MIN_DENSITY{ "SunflowerField.thinning_min_density", 0.25, 0.01, 1.0, ParameterSpec::CLAMP, 0.25 };
-// Far tiles merge with distance: from this distance (camera to a merged tile's centre) 2 × 2 tiles
-// are drawn as one holding a quarter of their plants, from twice it 4 × 4 with a sixteenth, and so
-// on (FieldSimulation::get_tile_begin); 0: tiles never merge.
+// Far tiles merge with distance: plants this far from the observer are drawn by tiles of 2 × 2
+// tiles holding a quarter of their plants, from twice it 4 × 4 with a sixteenth, and so on, fading
+// in over the half octave before (FieldSimulation::choose_tile_level); 0: tiles never merge.
 inline constexpr ParameterSpec TILE_MERGE_DISTANCE{ "SunflowerField.tile_merge_distance", 200.0, 0.0, NO_MAX, ParameterSpec::CLAMP, 200.0 };
 inline constexpr ParameterSpec MAX_DRAW_DISTANCE{ "SunflowerField.max_draw_distance", 0.0, 0.0, NO_MAX, ParameterSpec::CLAMP, 0.0 };
 

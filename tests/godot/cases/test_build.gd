@@ -164,7 +164,8 @@ func test_parameter_changes_during_a_build_reach_the_new_field() -> void:
 	await frames_until(func() -> bool: return not field.is_building(), 2000)
 	# Each tile ends once its nearest plant may be past the draw distance (the engine measures to the
 	# box's centre), or none of its plants is left to its level; its plants dither out one by one
-	# before that, in the impostor shader. A merged tile's range begins where its level's fade does.
+	# before that, in the impostor shader. A merged tile's range begins where its nearest plant may
+	# be its level's.
 	var ranges: Dictionary = {}  # node name → the range of its tile
 	var simulation: RefCounted = field.get_simulation()
 	for tile: int in simulation.get_tile_count():
@@ -245,6 +246,11 @@ func test_a_small_change_of_a_large_map_makes_nodes_only_for_the_tiles_it_touche
 		check_eq(
 			merge[1], 1.0 if simulation.get_tile_parent(tile) < 0 else 0.0, "%s is the top level or not" % node.name
 		)
+		# The merged level begins 200 m away, beyond the sun's shadows: it casts none.
+		var shadows: int = GeometryInstance3D.SHADOW_CASTING_SETTING_ON
+		if level > 0:
+			shadows = GeometryInstance3D.SHADOW_CASTING_SETTING_OFF
+		check_eq((node as GeometryInstance3D).cast_shadow, shadows, "%s's shadows" % node.name)
 	check_eq(instances[0], field.get_plant_count(), "far buffers hold every plant once")
 	# A new merge distance keeps every tile's node and buffer, and moves where the merged one begins.
 	field.tile_merge_distance = 500.0
@@ -258,9 +264,9 @@ func test_a_small_change_of_a_large_map_makes_nodes_only_for_the_tiles_it_touche
 		if node.name == "FarTile%d" % simulation.get_tile_key(merged):
 			merged_node = node
 	if check(merged_node != null, "the merged tile's node"):
-		# From where the nearest of its plants may begin to fade to it (half an octave before).
+		# From where the nearest of its plants may be 500 m away.
 		var reach: float = 0.5 * merged_node.custom_aabb.size.length()
-		check_near(merged_node.visibility_range_begin, 500.0 / sqrt(2.0) - reach, 1e-3, "its node's range begins there")
+		check_near(merged_node.visibility_range_begin, 500.0 - reach, 1e-3, "its node's range begins there")
 		check_eq(merged_node.get_instance_shader_parameter(&"tile_merge").z, 500.0, "its shader knows the distance")
 	var quarter: float = field.get_plant_count() / 4.0
 	check_near(instances[1], quarter, 5.0 * sqrt(quarter), "the merged tile holds about a quarter")
