@@ -333,19 +333,10 @@ void FieldSimulation::write_tile_instances(uint32_t p_tile, float *r_out) const 
 	for (uint32_t k = 0; k < tile.count; ++k) {
 		const uint32_t chunk = get_tile_chunk(p_tile, k);
 		const uint32_t first = _layout.chunks[chunk].first;
-		// A merged tile's plants are the first of each chunk's kept ones (ordered by tile level), and
-		// the first of those the ones kept a level up.
+		// A merged tile's plants are the first of each chunk's kept ones (ordered by tile level).
 		const uint32_t count = tile.level == 0 ? _layout.chunks[chunk].count : _chunk_kept[chunk][tile.level];
 		const uint32_t *plants = tile.level == 0 ? _layout.chunk_plants.data() + first : _merged_plants.data() + _merged_first[chunk];
-		_write_records(chunk, plants, count, r_out);
-		for (uint32_t i = 0; i < count; ++i) {
-			const bool above = top ||
-					(tile.level == 0 ? plant_tile_level(_layout.plants[plants[i]]) > 0 : i < _chunk_kept[chunk][tile.level + 1]);
-			if (above) {
-				float &cell = r_out[size_t(i) * FAR_FLOATS_PER_INSTANCE + FAR_CELL_OR_SHARE];
-				cell = -1.0f - cell;
-			}
-		}
+		_write_records(chunk, plants, count, r_out, top ? -1 : int(tile.level));
 		r_out += size_t(count) * FAR_FLOATS_PER_INSTANCE;
 	}
 }
@@ -867,11 +858,13 @@ void FieldSimulation::write_chunk_instances(uint32_t p_chunk, float *r_out) cons
 	_write_records(p_chunk, _layout.chunk_plants.data() + chunk.first, chunk.count, r_out);
 }
 
-void FieldSimulation::_write_records(uint32_t p_chunk, const uint32_t *p_plants, uint32_t p_count, float *r_out) const {
+void FieldSimulation::_write_records(uint32_t p_chunk, const uint32_t *p_plants, uint32_t p_count, float *r_out, int p_kept_above) const {
 	const uint32_t species = _layout.chunks[p_chunk].species;
 	for (uint32_t k = 0; k < p_count; ++k) {
-		FarInstance instance = _far_instance(_layout.plants[p_plants[k]], species);
+		const Plant &plant = _layout.plants[p_plants[k]];
+		FarInstance instance = _far_instance(plant, species);
 		instance.cell = _chunk_cells[p_chunk];
+		instance.kept_above = p_kept_above < 0 || (p_kept_above < int(MAX_TILE_LEVELS) && int(plant_tile_level(plant)) > p_kept_above);
 		write_far_instance(r_out + size_t(k) * FAR_FLOATS_PER_INSTANCE, instance);
 	}
 }

@@ -286,7 +286,9 @@ private:
 	void _merge_tiles();
 	// The static records of p_count plants of chunk p_chunk (p_plants: their indices), each with the
 	// chunk's cell.
-	void _write_records(uint32_t p_chunk, const uint32_t *p_plants, uint32_t p_count, float *r_out) const;
+	// A chunk's plants' far records; p_kept_above: a tile level, marking the plants kept above it
+	// (FarInstance::kept_above); −1: every plant; MAX_TILE_LEVELS or more: none.
+	void _write_records(uint32_t p_chunk, const uint32_t *p_plants, uint32_t p_count, float *r_out, int p_kept_above = int(MAX_TILE_LEVELS)) const;
 	void _select_lods();
 	void _select_chunk_lods(uint32_t p_chunk, bool p_forced, float p_enter, float p_leave);
 	uint8_t _static_chunk_lod(uint32_t p_chunk) const;
