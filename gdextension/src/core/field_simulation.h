@@ -174,8 +174,8 @@ public:
 	// get_tile_begin of a level-L tile on, fading in over the half octave before), so no tile's worth
 	// of plants switches at once; the engine draws a tile over the distances where any of its plants
 	// may be given to its level (get_tile_range), and the impostor shader widens the plants by
-	// 1 / √density to keep the field's cover. Levels stop once one tile per species covers the field. Level-0 tiles come
-	// first, ordered by where they lie, then species; then level 1's, and so on.
+	// 1 / √density to keep the field's cover. Levels stop once one tile per species covers the field.
+	// Level-0 tiles come first, ordered by where they lie, then species; then level 1's, and so on.
 	static constexpr int TILE_CHUNKS = 4;
 	static constexpr uint32_t MAX_TILE_LEVELS = 8;
 	static constexpr uint32_t NO_TILE = UINT32_MAX;
@@ -285,8 +285,7 @@ private:
 	// The merged levels above the level-0 tiles (see TILE_CHUNKS).
 	void _merge_tiles();
 	// The static records of p_count plants of chunk p_chunk (p_plants: their indices), each with the
-	// chunk's cell.
-	// A chunk's plants' far records; p_kept_above: a tile level, marking the plants kept above it
+	// chunk's cell; p_kept_above: a tile level, marking the plants kept above it
 	// (FarInstance::kept_above); −1: every plant; MAX_TILE_LEVELS or more: none.
 	void _write_records(uint32_t p_chunk, const uint32_t *p_plants, uint32_t p_count, float *r_out, int p_kept_above = int(MAX_TILE_LEVELS)) const;
 	void _select_lods();
