@@ -5,7 +5,7 @@ extends RefCounted
 ## MultiMeshInstance3D of its plants' impostors (sprite and billboard draw the same multi-view
 ## impostor, so one GPU copy of a far plant serves both; its visibility range spans the distances at
 ## which the shader gives any of its plants to its level, and ends at the field's draw distance;
-## in between the plants fade from level to level one by one), the dynamic bucket nodes of the near
+## in between the plants fade from level to level one after another), the dynamic bucket nodes of the near
 ## plants, and the scenes the legend places; and per species the active-chunk mask that keeps the
 ## tiles from drawing the plants the near buckets draw. The only script that makes MultiMeshes or
 ## sets visibility ranges. Tile nodes can be made a few at a time, hidden, and shown at once.
@@ -335,7 +335,7 @@ func _tile_node_name(tile: int) -> String:
 
 ## A tile is hidden once none of its plants is left to its level (the next level's tile draws them)
 ## or its nearest plant may be past [param max_draw_distance] (the engine measures to the box's
-## centre); its plants fade out one by one before that (the impostor shader).
+## centre); its plants dither out one after another before that (the impostor shader).
 func _set_range(tile: int, max_draw_distance: float) -> void:
 	var node: MultiMeshInstance3D = _tile_nodes[tile]
 	var end: float = simulation.get_tile_range(tile).y

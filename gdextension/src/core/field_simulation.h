@@ -205,9 +205,10 @@ public:
 	float get_tile_begin(uint32_t p_tile) const;
 	float merge_distance(uint32_t p_level) const;
 	// Plants fade from one tile level to the next over the last TILE_MERGE_FADE octave before each
-	// merge distance (from merge_distance(L) / 2^TILE_MERGE_FADE to merge_distance(L)), one by one:
-	// a plant the next level leaves out fades out (dithered by its own random), the others widen to
-	// keep the cover, and at the merge distance the next level's tile draws those same plants at the
+	// merge distance (from merge_distance(L) / 2^TILE_MERGE_FADE to merge_distance(L)), one after
+	// another: a plant the next level leaves out dithers away, in the order of its own random and
+	// over a quarter of the band (the impostor shader's MERGE_PLANT_FADE), the others widen to keep
+	// the cover, and at the merge distance the next level's tile draws those same plants at the
 	// same width. So no tile's worth of plants switches at once.
 	static constexpr float TILE_MERGE_FADE = 0.5f;
 	// The tile level that draws a far plant p_distance from the observer, and how far its fade to the

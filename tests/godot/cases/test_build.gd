@@ -163,7 +163,7 @@ func test_parameter_changes_during_a_build_reach_the_new_field() -> void:
 	field.wind_power = 4.0
 	await frames_until(func() -> bool: return not field.is_building(), 2000)
 	# Each tile ends once its nearest plant may be past the draw distance (the engine measures to the
-	# box's centre), or none of its plants is left to its level; its plants dither out one by one
+	# box's centre), or none of its plants is left to its level; its plants dither out one after another
 	# before that, in the impostor shader. A merged tile's range begins where its nearest plant may
 	# be its level's.
 	var ranges: Dictionary = {}  # node name → the range of its tile

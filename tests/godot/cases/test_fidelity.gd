@@ -25,6 +25,13 @@ const QUICK_VIEWS: PackedStringArray = ["inside", "above45", "down60"]
 ## The switch distances walked across (the field's defaults: mesh 1 → 2 → 3 → sprite → billboard).
 const QUICK_SWITCHES: Array[int] = [2]
 const WALK_FRAMES: int = 100
+## The first merged level's distance in the merge walk, the walk's frames (twice in the full
+## measurement), where it starts (8 m up, 42 m south of the field) and where it looks (the ground
+## 45 m ahead, 3 m into the field).
+const MERGE_DISTANCE: float = 50.0
+const MERGE_WALK_FRAMES: int = 30
+const MERGE_EYE: Vector3 = Vector3(30.0, 8.0, 102.0)
+const MERGE_LOOK: Vector3 = Vector3(0.0, -8.0, -45.0)
 const STEP: float = 0.02
 
 var stage: RefCounted
@@ -140,6 +147,52 @@ func test_no_pops_where_plants_switch_level() -> void:
 		)
 		check(changes[0].size() > 0 and changes[1].size() > 0, "frames of both kinds at %.0f m" % distances[switch])
 		check(ratio <= 1.3, "no pop at the %.0f m switch: ratio %.2f, at most 1.3" % [distances[switch], ratio])
+
+
+## Far tiles merge plant by plant: walking towards the band where the first merged level begins, no
+## frame changes more than on the same walk with tiles that never merge. The field's chunks are made
+## 4 m so that the first merge falls at 50 m, within the field (with the default 16 m chunks it is
+## at 200 m, where a plant is a few pixels), and the view is a telephoto one (12°) from 8 m up onto
+## that band, so the plants are drawn four times larger than a player at head height would see them.
+func test_no_pops_where_far_tiles_merge() -> void:
+	var frames: int = MERGE_WALK_FRAMES * (2 if full else 1)
+	var merged: Array[PackedFloat32Array] = await _walk_onto_merge(MERGE_DISTANCE, frames)
+	var fade: float = field.get_simulation().choose_tile_level(MERGE_LOOK.length()).y
+	var never: Array[PackedFloat32Array] = await _walk_onto_merge(0.0, frames)
+	var ratio: float = _largest(merged[0]) / maxf(_largest(never[0]), 1e-6)
+	print(
+		(
+			"     merge at %.0f m: largest 16 × 16 change %.4f over %d frames, %.4f with tiles that never merge: ratio %.2f"
+			% [MERGE_DISTANCE, _largest(merged[0]), merged[0].size(), _largest(never[0]), ratio]
+		)
+	)
+	check(fade > 0.0 and fade < 1.0, "the walk looks into the fade to the first merged level (%.2f)" % fade)
+	var apart: float = picture.mean_difference(merged[1], never[1])
+	check(apart > 0.01, "merged tiles are drawn: the walks' first pictures differ by %.4f" % apart)
+	check(ratio <= 1.3, "no pop where far tiles merge: ratio %.2f, at most 1.3" % ratio)
+
+
+## Walks 2 cm a frame from MERGE_EYE towards the field, looking down along MERGE_LOOK,
+## with 4 m chunks and [param merge] as the tile merge distance; the largest 16 × 16 change of each
+## frame (first) and the first picture (second).
+func _walk_onto_merge(merge: float, frames: int) -> Array[PackedFloat32Array]:
+	field.chunk_size = 4.0
+	field.tile_merge_distance = merge
+	field.finish_build()
+	camera.fov = 12.0
+	var changes: PackedFloat32Array = []
+	var first: PackedFloat32Array = []
+	var before: PackedFloat32Array = []
+	for frame: int in frames:
+		var eye: Vector3 = MERGE_EYE + Vector3(0.0, 0.0, -frame * STEP)
+		var name: String = "merge_walk_%s" % ("merged" if merge > 0.0 else "never") if frame == 0 else ""
+		var now: PackedFloat32Array = await _render(eye, eye + MERGE_LOOK, -1, name, 10 if frame == 0 else 1)
+		if frame == 0:
+			first = now
+		else:
+			changes.append(picture.largest_block_change(before, now))
+		before = now
+	return [changes, first]
 
 
 ## Walks towards the field's south edge at head height, 2 cm a frame, so that its nearest plants
