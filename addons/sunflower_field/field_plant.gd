@@ -10,8 +10,9 @@ extends Resource
 ## units up it). The whole plant is [member height] metres from the root to the top of its parts.
 ## The far levels draw a multi-view impostor: the level-1 parts rendered from [constant ATLAS_VIEWS]
 ## directions (around the plant, and from the side up to straight above) into [member impostor_views],
-## [member impostor_normals] and [member impostor_depths] (the editor's "Bake impostors"); each view
-## frames the cylinder [member impostor_width] wide and [member height_units] tall that holds the plant.
+## [member impostor_normals], [member impostor_depths] and, for a plant that glows,
+## [member impostor_emission] (the editor's "Bake impostors"); each view frames the cylinder
+## [member impostor_width] wide and [member height_units] tall that holds the plant.
 ## The built-in sunflower is [method default_plant]; [code]null[/code] mesh or texture slots use it.
 
 const Native: GDScript = preload("native.gd")
@@ -25,6 +26,11 @@ const PlantMaterial: GDScript = preload("plant_material.gd")
 const ATLAS_VIEWS: Vector2i = Vector2i(12, 7)
 ## The impostor textures, as [method texture_drawn] names them.
 const IMPOSTOR_TEXTURES: PackedStringArray = ["views", "normals", "depths"]
+## The optional impostor texture of the light a plant's parts give off (see [member impostor_emission]).
+const EMISSION_TEXTURE: String = "emission"
+## [member impostor_emission] holds the emitted light divided by this, so that 8-bit colours keep
+## energies up to it (above it the far levels glow less than the meshes).
+const EMISSION_RANGE: float = 8.0
 
 static var _default: FieldPlant
 
@@ -161,6 +167,13 @@ static var _default: FieldPlant
 @export var impostor_depths: Texture2D:
 	set(value):
 		impostor_depths = value
+		emit_changed()
+## The light the plant's parts give off (their materials' emission) in the same views, divided by
+## [constant EMISSION_RANGE], so that the far levels glow as the meshes do; none ([code]null[/code])
+## when no part gives off light. Baked with the others, only for a plant that glows.
+@export var impostor_emission: Texture2D:
+	set(value):
+		impostor_emission = value
 		emit_changed()
 
 var _whole_meshes: Dictionary = {}  # level → [what it was merged from, the merged mesh]

@@ -3,11 +3,13 @@ extends RefCounted
 ## Bakes a [FieldPlant]'s multi-view impostor: renders its level-1 parts, stacked as the plant
 ## stands, from [constant FieldPlant.ATLAS_VIEWS] directions (around it, and from the side up to
 ## straight above), orthographic, on a transparent background, each view framing the square of
-## [method FieldPlant.impostor_frame] about the plant's middle, into two atlases: the colours
+## [method FieldPlant.impostor_frame] about the plant's middle, into atlases: the colours
 ## (materials drawn unshaded, albedo only: the field's lights shade the impostors once, like the
-## meshes) and the normals in the plant's own frame. All views render at once: one copy of the plant
-## per view, turned so that a single camera sees it from that view's direction. Needs a renderer
-## (not [code]--headless[/code]); the work takes a few frames, so [method bake] is awaited.
+## meshes), the normals in the plant's own frame, the depths along the view and, when any part
+## gives off light, the light given off (the parts' own materials lit by nothing). All views render
+## at once: one copy of the plant per view, turned so that a single camera sees it from that view's
+## direction. Needs a renderer (not [code]--headless[/code]); the work takes a few frames, so
+## [method bake] is awaited.
 
 ## Pixels per view square.
 const CELL_PIXELS: int = 128
@@ -44,8 +46,9 @@ void fragment() {
 
 ## Renders [param plant]'s impostor atlases in a viewport under [param host] (any node in a tree
 ## that draws: the editor's base control, the field), saves them as
-## [code]<folder>/<base_name>_views.png[/code] and [code]_normals.png[/code] (default: beside the
-## plant's resource file, named after it), and gives them to the plant (reimported in the editor;
+## [code]<folder>/<base_name>_views.png[/code], [code]_normals.png[/code], [code]_depths.png[/code]
+## and, for a plant that glows, [code]_emission.png[/code] (default: beside the plant's resource
+## file, named after it), and gives them to the plant (reimported in the editor;
 ## loaded from the files elsewhere). Returns OK, or an error after pushing what went wrong.
 static func bake(plant: FieldPlant, host: Node, folder: String = "", base_name: String = "") -> Error:
 	# The editor draws a frame only when something on screen changed; the bake waits for drawn frames
@@ -79,6 +82,7 @@ static func _bake(plant: FieldPlant, host: Node, folder: String, base_name: Stri
 	var viewport: SubViewport = _stage(plant)
 	host.add_child(viewport)
 	var images: Array[Image] = []
+	var kinds: PackedStringArray = FieldPlant.IMPOSTOR_TEXTURES.duplicate()
 	for kind: String in FieldPlant.IMPOSTOR_TEXTURES:
 		if kind != "views":
 			var coded: ShaderMaterial = ShaderMaterial.new()
@@ -100,17 +104,52 @@ static func _bake(plant: FieldPlant, host: Node, folder: String, base_name: Stri
 		# mipmaps do not pull dark fringes into the alpha-tested edges.
 		image.fix_alpha_edges()
 		images.append(image)
+	var emission: Image = await _emission(viewport)
 	viewport.queue_free()
+	if emission:
+		kinds.append(FieldPlant.EMISSION_TEXTURE)
+		images.append(emission)
 	var paths: PackedStringArray = []
 	for i: int in images.size():
-		var path: String = folder.path_join("%s_%s.png" % [base_name, FieldPlant.IMPOSTOR_TEXTURES[i]])
+		var path: String = folder.path_join("%s_%s.png" % [base_name, kinds[i]])
 		var saved: Error = images[i].save_png(path)
 		if saved != OK:
 			push_error("Bake impostors: cannot write %s (%s)" % [path, error_string(saved)])
 			return saved
 		paths.append(path)
-	_give_textures(plant, paths, images)
+	_give_textures(plant, kinds, paths, images)
 	return OK
+
+
+## The light the parts give off, from the stage of [method _stage] with the parts' own materials,
+## lit by nothing (no lights, no ambient or reflected light), scaled by 1 / [constant
+## FieldPlant.EMISSION_RANGE] through the exposure; null when no pixel glows.
+static func _emission(viewport: SubViewport) -> Image:
+	for instance: Node in viewport.find_children("*", "MeshInstance3D", true, false):
+		(instance as MeshInstance3D).material_override = null
+	viewport.debug_draw = Viewport.DEBUG_DRAW_DISABLED
+	for world: Node in viewport.find_children("*", "WorldEnvironment", false, false):
+		var environment: Environment = (world as WorldEnvironment).environment
+		environment.ambient_light_source = Environment.AMBIENT_SOURCE_COLOR
+		environment.ambient_light_color = Color.BLACK
+		environment.ambient_light_energy = 0.0
+		environment.reflected_light_source = Environment.REFLECTION_SOURCE_DISABLED
+		environment.tonemap_mode = Environment.TONE_MAPPER_LINEAR
+		environment.tonemap_exposure = 1.0 / FieldPlant.EMISSION_RANGE
+	for i: int in SETTLE_FRAMES:
+		await RenderingServer.frame_post_draw
+	var image: Image = viewport.get_texture().get_image()
+	if image == null or image.is_empty():
+		return null
+	image.convert(Image.FORMAT_RGBA8)
+	# The brightest colour channel, from a comparison with black (the alpha left out).
+	var colours: Image = image.duplicate() as Image
+	colours.convert(Image.FORMAT_RGB8)
+	var black: Image = Image.create(colours.get_width(), colours.get_height(), false, Image.FORMAT_RGB8)
+	if float(colours.compute_image_metrics(black, false)["max"]) < 2.0:
+		return null
+	image.fix_alpha_edges()
+	return image
 
 
 ## The direction view (column, row) of the atlas sees the plant from, and the image's right and up,
@@ -169,9 +208,12 @@ static func _stage(plant: FieldPlant) -> SubViewport:
 	return viewport
 
 
-## Hands the textures to the plant: in the editor reimported from the files (and the plant saved
-## when it is a file), elsewhere made from the images.
-static func _give_textures(plant: FieldPlant, paths: PackedStringArray, images: Array[Image]) -> void:
+## Hands the textures of [param kinds] to the plant (and no emission texture when they hold none): in
+## the editor reimported from the files (and the plant saved when it is a file), elsewhere made from
+## the images.
+static func _give_textures(
+	plant: FieldPlant, kinds: PackedStringArray, paths: PackedStringArray, images: Array[Image]
+) -> void:
 	var textures: Array[Texture2D] = []
 	var in_project: bool = Engine.is_editor_hint() and paths[0].begins_with("res://")
 	if in_project:
@@ -189,8 +231,9 @@ static func _give_textures(plant: FieldPlant, paths: PackedStringArray, images: 
 			var texture: ImageTexture = ImageTexture.create_from_image(image)
 			texture.resource_name = plant.name
 			textures.append(texture)
+	plant.impostor_emission = null
 	for i: int in textures.size():
-		plant.set("impostor_" + FieldPlant.IMPOSTOR_TEXTURES[i], textures[i])
+		plant.set("impostor_" + kinds[i], textures[i])
 	if in_project and plant.resource_path.begins_with("res://") and not plant.resource_path.contains("::"):
 		ResourceSaver.save(plant)
 

@@ -33,6 +33,7 @@ func _init() -> void:
 func configure(plant: Resource) -> void:
 	for kind: String in FieldPlant.IMPOSTOR_TEXTURES:
 		set_texture(kind, plant.texture_drawn(kind))
+	set_emission(plant.texture_drawn(FieldPlant.EMISSION_TEXTURE))
 	_stiffness = plant.stiffness
 	# Model units of the bottom part, and of the middle and head above it (how the wind bends them).
 	_set_both("part_reach", Vector2(plant.part_lengths.x, plant.part_lengths.y + plant.part_lengths.z))
@@ -68,6 +69,13 @@ func set_texture(kind: String, texture: Texture2D) -> void:
 			)
 		_set_both("atlas_views", layout)
 		_set_both("view_bounds", view_bounds(texture, layout))
+
+
+## Makes the impostors glow with the light [param texture] holds ([member FieldPlant.impostor_emission]);
+## null: none.
+func set_emission(texture: Texture2D) -> void:
+	_set_both("emission_atlas", texture)
+	_set_both("emission_range", FieldPlant.EMISSION_RANGE if texture else 0.0)
 
 
 ## The views across and down the atlas [param texture]: [constant FieldPlant.ATLAS_VIEWS]'s columns,

@@ -7,6 +7,10 @@ const ImpostorBaker: GDScript = preload("res://addons/sunflower_field/impostor_b
 const FOLDER: String = "user://bake_test"
 const RED: Color = Color(0.85, 0.1, 0.1)
 const GREEN: Color = Color(0.1, 0.6, 0.15)
+const GLOW: Color = Color(1.0, 0.55, 0.0)
+const Stage: GDScript = preload("res://runner/stage.gd")
+const Picture: GDScript = preload("res://runner/picture.gd")
+const Maps: GDScript = preload("res://runner/maps.gd")
 
 
 ## A part as a glTF file would bring it: a coloured box written to glTF, read back.
@@ -90,6 +94,8 @@ func test_a_gltf_plant_gets_impostors_in_its_own_colours() -> void:
 	check_eq(result, OK, "baked")
 	for kind: String in FieldPlant.IMPOSTOR_TEXTURES:
 		check(FileAccess.file_exists(FOLDER.path_join("red_plant_%s.png" % kind)), "%s atlas written" % kind)
+	check(plant.impostor_emission == null, "a plant that gives off no light gets no emission atlas")
+	check(not FileAccess.file_exists(FOLDER.path_join("red_plant_emission.png")), "and no emission file")
 	if not check(
 		plant.impostor_views != null and plant.impostor_normals != null and plant.impostor_depths != null,
 		"the plant has its atlases"
@@ -159,6 +165,96 @@ func test_a_gltf_plant_gets_impostors_in_its_own_colours() -> void:
 	check(field.impostor_views == plant.impostor_views, "the field draws them")
 	check(field.impostor_depths == plant.impostor_depths, "and their depths")
 	field.free()
+
+
+## A plant whose head gives off light (a StandardMaterial3D's emission, energy 2) gets an emission
+## atlas holding that light over the range where the head stands, none where the stalk does; a
+## field of it in the dark seen from 45 m, all impostors, glows as brightly as the same field drawn
+## with every plant as mesh 1 (and stays dark without the atlas: what the far levels did before).
+func test_a_glowing_plant_glows_as_far_impostors() -> void:
+	DirAccess.make_dir_recursive_absolute(FOLDER)
+	var stalk: Mesh = _gltf_part(GREEN, Vector3(0.15, 1.0, 0.15), "stalk.gltf")
+	var head: Mesh = _gltf_part(RED, Vector3(0.9, 1.0, 0.9), "glowing_head.gltf")
+	if not check(stalk != null and head != null, "the glTF parts load"):
+		return
+	var glowing: StandardMaterial3D = (
+		(head.surface_get_material(0) as StandardMaterial3D).duplicate() as StandardMaterial3D
+	)
+	glowing.emission_enabled = true
+	glowing.emission = GLOW
+	glowing.emission_energy_multiplier = 2.0
+	head.surface_set_material(0, glowing)
+	var plant: FieldPlant = FieldPlant.new()
+	plant.name = "Glowing plant"
+	plant.mesh_level_1 = [stalk, stalk, head]
+	plant.height_units = 3.0
+	check_eq(await plant.bake_impostors(tree.root, FOLDER, "glowing_plant"), OK, "baked")
+	check(FileAccess.file_exists(FOLDER.path_join("glowing_plant_emission.png")), "emission atlas written")
+	if not check(plant.impostor_emission != null, "the plant has an emission atlas"):
+		return
+	var emission: Image = plant.impostor_emission.get_image()
+	emission.clear_mipmaps()
+	var cell: int = ImpostorBaker.CELL_PIXELS
+	var pixels_per_unit: float = cell / plant.impostor_frame().x
+	var expected: Color = GLOW.srgb_to_linear() * (2.0 / FieldPlant.EMISSION_RANGE)
+	for column: int in [0, 5]:
+		var side: Image = _view(emission, column, 0)
+		var lit: Color = side.get_pixel(cell / 2, roundi(cell / 2 - 1.0 * pixels_per_unit)).srgb_to_linear()
+		var dark: Color = side.get_pixel(cell / 2, roundi(cell / 2 + 1.0 * pixels_per_unit))
+		check(
+			absf(lit.r - expected.r) < 0.03 and absf(lit.g - expected.g) < 0.03 and lit.b < 0.03,
+			"view %d: the head's light, %s, is the material's over the range, %s" % [column, lit, expected]
+		)
+		check(dark.a > 0.5 and maxf(dark.r, dark.g) < 0.02, "view %d: the stalk gives off none: %s" % [column, dark])
+	# The field in the dark: no sun, no sky light, a black background.
+	var stage: RefCounted = Stage.new(tree.root, 200.0, Vector3(5.0, 0.0, 5.0))
+	stage.environment.background_mode = Environment.BG_COLOR
+	stage.environment.background_color = Color.BLACK
+	stage.environment.ambient_light_source = Environment.AMBIENT_SOURCE_COLOR
+	stage.environment.ambient_light_color = Color.BLACK
+	stage.environment.reflected_light_source = Environment.REFLECTION_SOURCE_DISABLED
+	for sun: Node in stage.root.find_children("*", "DirectionalLight3D", false, false):
+		(sun as DirectionalLight3D).visible = false
+	var field: SunflowerField = SunflowerField.new()
+	field.plant = plant
+	stage.root.add_child(field)
+	field.map = Maps.filled(20, 20, "user://glowing.field")
+	field.wind_power = 0.0
+	field.finish_build()
+	var camera: Camera3D = Camera3D.new()
+	stage.root.add_child(camera)
+	camera.make_current()
+	camera.fov = 15.0  # the field's 10 m fill the picture
+	camera.look_at_from_position(Vector3(5.0, 3.0, 55.0), Vector3(5.0, 1.0, 5.0))
+	var brightness: Array[float] = []
+	for step: int in 3:  # impostors with the atlas, every plant as mesh 1, impostors without it
+		field.force_lod = 0 if step == 1 else -1
+		if step == 2:
+			plant.impostor_emission = null
+		for i: int in 5:
+			field.advance(1.0 / 60.0)
+		await RenderingServer.frame_post_draw
+		await RenderingServer.frame_post_draw
+		var image: Image = tree.root.get_viewport().get_texture().get_image()
+		var folder: String = ProjectSettings.globalize_path("res://").path_join("../artifacts").simplify_path()
+		image.save_png(folder.path_join("glowing_%s.png" % ["impostors", "meshes", "no_emission"][step]))
+		var pixels: PackedFloat32Array = Picture.new(image.get_width(), image.get_height()).luminance(image)
+		var sum: float = 0.0
+		for value: float in pixels:
+			sum += value
+		brightness.append(sum / pixels.size())
+	stage.root.free()
+	var ratio: float = brightness[0] / maxf(brightness[1], 1e-6)
+	var without: float = brightness[2] / maxf(brightness[1], 1e-6)
+	print(
+		(
+			"     glowing far plants in the dark: %.3f of the meshes' brightness (%.3f without the emission atlas)"
+			% [ratio, without]
+		)
+	)
+	check(brightness[1] > 0.005, "the meshes glow: mean brightness %.4f" % brightness[1])
+	check(ratio > 0.8 and ratio < 1.25, "the impostors glow as the meshes do: %.3f of their brightness" % ratio)
+	check(without < 0.2, "without the atlas they would stay dark: %.3f" % without)
 
 
 func test_the_built_in_sunflower_baked_again_matches_the_shipped_textures() -> void:
