@@ -504,7 +504,7 @@ gdx::PackedFloat32Array SunflowerSimulation::get_tile_merge(int64_t p_tile) cons
 	// The impostor shader's tile_merge: the tile's level, 1 for the top level, where level 1 begins,
 	// the fade's share of an octave.
 	const FieldSimulation::Tile &tile = _sim.get_tile(uint32_t(p_tile));
-	const float values[] = { float(tile.level), tile.parent == FieldSimulation::NO_TILE ? 1.0f : 0.0f, _sim.merge_distance(1),
+	const float values[] = { float(tile.level), tile.is_top() ? 1.0f : 0.0f, _sim.merge_distance(1),
 		FieldSimulation::TILE_MERGE_FADE };
 	out.assign(values, std::size(values));
 	return out;

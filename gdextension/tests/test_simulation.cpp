@@ -62,7 +62,7 @@ bool tile_drawn_from(const FieldSimulation &p_sim, uint32_t p_tile, const glm::v
 FieldSimulation::TileChoice choice_in(const FieldSimulation &p_sim, uint32_t p_tile, const glm::vec3 &p_observer, const glm::vec3 &p_root) {
 	FieldSimulation::TileChoice choice = p_sim.choose_tile_level(glm::distance(p_observer, p_root));
 	const FieldSimulation::Tile &tile = p_sim.get_tile(p_tile);
-	if (tile.parent == FieldSimulation::NO_TILE && choice.level >= tile.level) {
+	if (tile.is_top() && choice.level >= tile.level) {
 		choice = { tile.level, 0.0f };
 	}
 	return choice;
@@ -346,12 +346,12 @@ TEST_CASE("far tiles merge with distance: nested quarters, parents covering thei
 			for (size_t k = 0; k < tile.plants; ++k) {
 				const FarInstance record = read_far_instance(records.data() + k * FAR_FLOATS_PER_INSTANCE);
 				const uint32_t level = levels[{ record.root.x, record.root.z }];
-				CHECK(record.kept_above == (tile.parent == FieldSimulation::NO_TILE || level > tile.level));
+				CHECK(record.kept_above == (tile.is_top() || level > tile.level));
 				marked += record.kept_above ? 1 : 0;
 			}
-			CHECK((tile.parent == FieldSimulation::NO_TILE ? marked == tile.plants : marked < tile.plants));
+			CHECK((tile.is_top() ? marked == tile.plants : marked < tile.plants));
 		}
-		if (tile.parent != FieldSimulation::NO_TILE) {
+		if (!tile.is_top()) {
 			CHECK(sim.get_tile(tile.parent).level == tile.level + 1);
 			CHECK(sim.get_tile(tile.parent).species == tile.species);
 		}

@@ -313,7 +313,7 @@ glm::vec2 FieldSimulation::get_tile_range(uint32_t p_tile) const {
 	const float reach = 0.5f * glm::length(bounds.max - bounds.min); // box centre to its farthest plant
 	// Its level draws plants from its merge distance on (the level below fades into it before).
 	const float begin = tile.level == 0 ? 0.0f : merge_distance(tile.level) - reach;
-	const float end = tile.parent == NO_TILE ? 0.0f : merge_distance(tile.level + 1) + reach;
+	const float end = tile.is_top() ? 0.0f : merge_distance(tile.level + 1) + reach;
 	return { std::max(begin, 0.0f), end };
 }
 
@@ -329,7 +329,7 @@ ChunkBounds FieldSimulation::get_tile_bounds(uint32_t p_tile) const {
 
 void FieldSimulation::write_tile_instances(uint32_t p_tile, float *r_out) const {
 	const Tile &tile = _tiles[p_tile];
-	const bool top = tile.parent == NO_TILE; // nothing above: every plant stays
+	const bool top = tile.is_top(); // nothing above: every plant stays
 	for (uint32_t k = 0; k < tile.count; ++k) {
 		const uint32_t chunk = get_tile_chunk(p_tile, k);
 		const uint32_t first = _layout.chunks[chunk].first;
@@ -344,7 +344,7 @@ void FieldSimulation::write_tile_instances(uint32_t p_tile, float *r_out) const 
 uint64_t FieldSimulation::get_tile_signature(uint32_t p_tile) const {
 	// FNV-1a over the chunks' keys and signatures, never 0 (the level picks which plants it holds).
 	// Whether it is the top level, too: its records keep every plant.
-	const uint64_t top = _tiles[p_tile].parent == NO_TILE ? 1 : 0;
+	const uint64_t top = _tiles[p_tile].is_top() ? 1 : 0;
 	uint64_t hash = 1469598103934665603ull ^ _tiles[p_tile].count ^ (uint64_t(_tiles[p_tile].level) << 40) ^ (top << 48);
 	for (uint32_t k = 0; k < _tiles[p_tile].count; ++k) {
 		const uint32_t chunk = get_tile_chunk(p_tile, k);

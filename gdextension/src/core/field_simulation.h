@@ -189,6 +189,8 @@ public:
 		// Where it lies: (level << 56) | tile cell × MAX_SPECIES + species (the same in any layout of the
 		// map's size).
 		uint64_t key = 0;
+		// No level lies above it: it keeps every plant beyond its merge distance.
+		bool is_top() const { return parent == NO_TILE; }
 	};
 	uint32_t get_tile_count() const { return static_cast<uint32_t>(_tiles.size()); }
 	const Tile &get_tile(uint32_t p_tile) const { return _tiles[p_tile]; }
