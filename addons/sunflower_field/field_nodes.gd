@@ -13,8 +13,8 @@ extends RefCounted
 const Native: GDScript = preload("native.gd")
 const ImpostorSet: GDScript = preload("impostor_set.gd")
 const PartMeshes: GDScript = preload("part_meshes.gd")
-## Godot's default DirectionalLight3D.directional_shadow_max_distance: merged far tiles whose plants
-## all lie beyond it cast no shadows.
+## Godot's default DirectionalLight3D.directional_shadow_max_distance: how far the sun's shadows
+## reach when the field's viewport has no shadow-casting directional light (yet).
 const SUN_SHADOW_DISTANCE: float = 100.0
 ## The parts of a plant, bottom to top, as node names use them.
 const PART_NAMES: PackedStringArray = PartMeshes.PART_NAMES
@@ -36,6 +36,7 @@ var _mask_version: int = -1  # the simulation's mask version the textures show
 ## The field drawn before this one: tiles that draw the same here take its nodes and GPU buffers.
 var _previous: RefCounted
 var _previous_by_key: Dictionary = {}  # tile key → the previous field's tile
+var _shadow_reach: float = -1.0  # see _sun_shadow_reach (−1: not looked up yet)
 
 
 ## Nodes of [param owner] for [param field_simulation], its far levels drawn with [param impostors]
@@ -112,12 +113,29 @@ func _set_level(node: MultiMeshInstance3D, tile: int) -> void:
 	node.set_instance_shader_parameter(&"tile_merge", Vector4(merge[0], merge[1], merge[2], merge[3]))
 	node.visibility_range_begin = simulation.get_tile_range(tile).x
 	# A merged level's plants are at least its begin distance away (200 m by default): beyond the
-	# sun's shadows (DirectionalLight3D.directional_shadow_max_distance, 100 m unless set), its tiles
-	# cast none, which keeps them out of every shadow pass their boxes reach into.
-	var shadowed: bool = simulation.get_tile_begin(tile) < SUN_SHADOW_DISTANCE
+	# sun's shadows its tiles cast none, which keeps them out of every shadow pass their boxes reach
+	# into.
+	var shadowed: bool = simulation.get_tile_begin(tile) < _sun_shadow_reach()
 	node.cast_shadow = (
 		GeometryInstance3D.SHADOW_CASTING_SETTING_ON if shadowed else GeometryInstance3D.SHADOW_CASTING_SETTING_OFF
 	)
+
+
+## How far the sun's shadows reach: the farthest directional_shadow_max_distance of the shadow-casting
+## DirectionalLight3D nodes in the field's viewport, looked up once per build; SUN_SHADOW_DISTANCE
+## when there is none.
+func _sun_shadow_reach() -> float:
+	if _shadow_reach >= 0.0:
+		return _shadow_reach
+	_shadow_reach = 0.0
+	var viewport: Viewport = _owner.get_viewport() if _owner.is_inside_tree() else null
+	var suns: Array[Node] = viewport.find_children("*", "DirectionalLight3D", true, false) if viewport else []
+	for sun: DirectionalLight3D in suns:
+		if sun.shadow_enabled and sun.is_visible_in_tree():
+			_shadow_reach = maxf(_shadow_reach, sun.directional_shadow_max_distance)
+	if _shadow_reach == 0.0:
+		_shadow_reach = SUN_SHADOW_DISTANCE
+	return _shadow_reach
 
 
 ## Hands [param tile]'s node to a field built on this one (and forgets it); null when it has none

@@ -111,10 +111,11 @@ const PartMeshes: GDScript = preload("part_meshes.gd")
 ## sixteenth; and so on, until one tile covers the field. A level starts no nearer than 1.5 × its
 ## tiles' side. Over the half octave before each of these distances the plants the next level leaves
 ## out dither away one after another, each over a few metres, and the others widen, so no tile of
-## plants switches at once and no plant vanishes in a frame. A merged level that begins past 100 m
-## (Godot's default directional shadow distance) casts no shadows. The merged tiles' copies of their
-## plants add a third to the far plants' GPU memory on a field large enough to have them. 0: tiles
-## never merge.
+## plants switches at once and no plant vanishes in a frame. A merged level that begins beyond the
+## sun's shadows casts none: beyond the farthest [member DirectionalLight3D.directional_shadow_max_distance]
+## of the shadow-casting directional lights in the field's viewport when it is built (100 m, Godot's
+## default, without one). The merged tiles' copies of their plants add a third to the far plants' GPU
+## memory on a field large enough to have them. 0: tiles never merge.
 @export_range(0.0, 2000.0, 1.0, "or_greater", "suffix:m") var tile_merge_distance: float = 200.0:
 	set(value):
 		value = Native.accept("SunflowerField.tile_merge_distance", value, tile_merge_distance)
