@@ -80,16 +80,25 @@ func _normal(normals: Image, point: Vector2i) -> Vector3:
 	return Vector3(c.r, c.g, c.b) * 2.0 - Vector3.ONE
 
 
-func test_a_gltf_plant_gets_impostors_in_its_own_colours() -> void:
+## A plant named [param plant_name] of glTF parts: a thin green stalk (bottom and middle) and a red
+## head written to [param head_file], 3 units tall; null (after a failed check) when they do not load.
+func _gltf_plant(plant_name: String, head_file: String) -> FieldPlant:
 	DirAccess.make_dir_recursive_absolute(FOLDER)
 	var stalk: Mesh = _gltf_part(GREEN, Vector3(0.15, 1.0, 0.15), "stalk.gltf")
-	var head: Mesh = _gltf_part(RED, Vector3(0.9, 1.0, 0.9), "head.gltf")
+	var head: Mesh = _gltf_part(RED, Vector3(0.9, 1.0, 0.9), head_file)
 	if not check(stalk != null and head != null, "the glTF parts load"):
-		return
+		return null
 	var plant: FieldPlant = FieldPlant.new()
-	plant.name = "Red plant"
+	plant.name = plant_name
 	plant.mesh_level_1 = [stalk, stalk, head]
 	plant.height_units = 3.0
+	return plant
+
+
+func test_a_gltf_plant_gets_impostors_in_its_own_colours() -> void:
+	var plant: FieldPlant = _gltf_plant("Red plant", "head.gltf")
+	if plant == null:
+		return
 	var result: Error = await plant.bake_impostors(tree.root, FOLDER, "red_plant")
 	check_eq(result, OK, "baked")
 	for kind: String in FieldPlant.IMPOSTOR_TEXTURES:
@@ -172,11 +181,10 @@ func test_a_gltf_plant_gets_impostors_in_its_own_colours() -> void:
 ## field of it in the dark seen from 45 m, all impostors, glows as brightly as the same field drawn
 ## with every plant as mesh 1 (and stays dark without the atlas: what the far levels did before).
 func test_a_glowing_plant_glows_as_far_impostors() -> void:
-	DirAccess.make_dir_recursive_absolute(FOLDER)
-	var stalk: Mesh = _gltf_part(GREEN, Vector3(0.15, 1.0, 0.15), "stalk.gltf")
-	var head: Mesh = _gltf_part(RED, Vector3(0.9, 1.0, 0.9), "glowing_head.gltf")
-	if not check(stalk != null and head != null, "the glTF parts load"):
+	var plant: FieldPlant = _gltf_plant("Glowing plant", "glowing_head.gltf")
+	if plant == null:
 		return
+	var head: Mesh = plant.mesh_level_1[2]
 	var glowing: StandardMaterial3D = (
 		(head.surface_get_material(0) as StandardMaterial3D).duplicate() as StandardMaterial3D
 	)
@@ -184,10 +192,6 @@ func test_a_glowing_plant_glows_as_far_impostors() -> void:
 	glowing.emission = GLOW
 	glowing.emission_energy_multiplier = 2.0
 	head.surface_set_material(0, glowing)
-	var plant: FieldPlant = FieldPlant.new()
-	plant.name = "Glowing plant"
-	plant.mesh_level_1 = [stalk, stalk, head]
-	plant.height_units = 3.0
 	check_eq(await plant.bake_impostors(tree.root, FOLDER, "glowing_plant"), OK, "baked")
 	check(FileAccess.file_exists(FOLDER.path_join("glowing_plant_emission.png")), "emission atlas written")
 	if not check(plant.impostor_emission != null, "the plant has an emission atlas"):
