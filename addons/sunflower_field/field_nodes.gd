@@ -7,8 +7,9 @@ extends RefCounted
 ## which the shader gives any of its plants to its level, and ends at the field's draw distance;
 ## in between the plants fade from level to level one after another), the dynamic bucket nodes of
 ## the near plants, and the scenes the legend places; and per species the active-chunk mask that
-## keeps the tiles from drawing the plants the near buckets draw. The only script that makes MultiMeshes or
-## sets visibility ranges. Tile nodes can be made a few at a time, hidden, and shown at once.
+## keeps the tiles from drawing the plants the near buckets draw. The only script that makes
+## MultiMeshes or sets visibility ranges. Tile nodes can be made a few at a time, hidden, and shown
+## at once.
 
 const Native: GDScript = preload("native.gd")
 const ImpostorSet: GDScript = preload("impostor_set.gd")
