@@ -29,7 +29,7 @@ const WALK_FRAMES: int = 100
 ## measurement), where it starts (8 m up, 42 m south of the field) and where it looks (the ground
 ## 45 m ahead, 3 m into the field).
 const MERGE_DISTANCE: float = 50.0
-const MERGE_WALK_FRAMES: int = 30
+const MERGE_WALK_FRAMES: int = 20
 const MERGE_EYE: Vector3 = Vector3(30.0, 8.0, 102.0)
 const MERGE_LOOK: Vector3 = Vector3(0.0, -8.0, -45.0)
 const STEP: float = 0.02
