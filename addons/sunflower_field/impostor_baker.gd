@@ -92,17 +92,11 @@ static func _bake(plant: FieldPlant, host: Node, folder: String, base_name: Stri
 				coded.set_shader_parameter("square", plant.impostor_frame().x)
 			for instance: Node in viewport.find_children("*", "MeshInstance3D", true, false):
 				(instance as MeshInstance3D).material_override = coded
-		for i: int in SETTLE_FRAMES:
-			await RenderingServer.frame_post_draw
-		var image: Image = viewport.get_texture().get_image()
-		if image == null or image.is_empty():
+		var image: Image = await _read_pass(viewport)
+		if image == null:
 			viewport.queue_free()
 			push_error("Bake impostors: the %s rendered nothing (no renderer?)" % kind)
 			return ERR_CANT_CREATE
-		image.convert(Image.FORMAT_RGBA8)
-		# Colours of covered pixels bleed into their transparent neighbours, so filtering and
-		# mipmaps do not pull dark fringes into the alpha-tested edges.
-		image.fix_alpha_edges()
 		images.append(image)
 	var emission: Image = await _emission(viewport)
 	viewport.queue_free()
@@ -136,18 +130,28 @@ static func _emission(viewport: SubViewport) -> Image:
 		environment.reflected_light_source = Environment.REFLECTION_SOURCE_DISABLED
 		environment.tonemap_mode = Environment.TONE_MAPPER_LINEAR
 		environment.tonemap_exposure = 1.0 / FieldPlant.EMISSION_RANGE
-	for i: int in SETTLE_FRAMES:
-		await RenderingServer.frame_post_draw
-	var image: Image = viewport.get_texture().get_image()
-	if image == null or image.is_empty():
+	var image: Image = await _read_pass(viewport)
+	if image == null:
 		return null
-	image.convert(Image.FORMAT_RGBA8)
 	# The brightest colour channel, from a comparison with black (the alpha left out).
 	var colours: Image = image.duplicate() as Image
 	colours.convert(Image.FORMAT_RGB8)
 	var black: Image = Image.create(colours.get_width(), colours.get_height(), false, Image.FORMAT_RGB8)
 	if float(colours.compute_image_metrics(black, false)["max"]) < 2.0:
 		return null
+	return image
+
+
+## The picture of a pass once its frames have settled, as 8-bit RGBA with the colours of covered
+## pixels bled into their transparent neighbours (so filtering and mipmaps do not pull dark fringes
+## into the alpha-tested edges); null when nothing was rendered.
+static func _read_pass(viewport: SubViewport) -> Image:
+	for i: int in SETTLE_FRAMES:
+		await RenderingServer.frame_post_draw
+	var image: Image = viewport.get_texture().get_image()
+	if image == null or image.is_empty():
+		return null
+	image.convert(Image.FORMAT_RGBA8)
 	image.fix_alpha_edges()
 	return image
 
