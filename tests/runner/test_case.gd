@@ -20,6 +20,14 @@ func after_each() -> void:
 
 
 ## The warnings the engine logged since the last call (or since the test began).
+## Where a test writes [param file] (a path under tests/artifacts/, which is made as needed), for a
+## reader to look at after the run.
+func artifact_path(file: String) -> String:
+	var path: String = ProjectSettings.globalize_path("res://").path_join("../artifacts").path_join(file).simplify_path()
+	DirAccess.make_dir_recursive_absolute(path.get_base_dir())
+	return path
+
+
 ## A field of [param map] in the tree, measuring distances from [param observer] (which joins the
 ## tree first), built and updated once.
 func field_in_tree(observer: Node3D, map: SunflowerFieldMap) -> SunflowerField:

@@ -240,8 +240,7 @@ func test_a_glowing_plant_glows_as_far_impostors() -> void:
 		await RenderingServer.frame_post_draw
 		await RenderingServer.frame_post_draw
 		var image: Image = tree.root.get_viewport().get_texture().get_image()
-		var folder: String = ProjectSettings.globalize_path("res://").path_join("../artifacts").simplify_path()
-		image.save_png(folder.path_join("glowing_%s.png" % ["impostors", "meshes", "no_emission"][step]))
+		image.save_png(artifact_path("glowing_%s.png" % ["impostors", "meshes", "no_emission"][step]))
 		var pixels: PackedFloat32Array = Picture.new(image.get_width(), image.get_height()).luminance(image)
 		var sum: float = 0.0
 		for value: float in pixels:

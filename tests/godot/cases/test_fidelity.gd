@@ -231,9 +231,7 @@ func _render(eye: Vector3, target: Vector3, force: int, name: String, updates: i
 		await RenderingServer.frame_post_draw  # shadows and the first impostor frames settle
 	var image: Image = tree.root.get_viewport().get_texture().get_image()
 	if not name.is_empty():
-		var folder: String = ProjectSettings.globalize_path("res://").path_join("../artifacts/fidelity").simplify_path()
-		DirAccess.make_dir_recursive_absolute(folder)
-		image.save_png(folder.path_join(name + ".png"))
+		image.save_png(artifact_path("fidelity/%s.png" % name))
 	return picture.luminance(image)
 
 

@@ -37,7 +37,7 @@ func test_demo_field_renders_as_sunflowers() -> void:
 	var counts: PackedInt32Array = field.get_lod_counts()
 	check(counts[0] > 0 and counts[2] > 0 and counts[3] + counts[4] > 0, "several representations in view: %s" % counts)
 	var image: Image = tree.root.get_viewport().get_texture().get_image()
-	var path: String = _artifact_path(SHOT)
+	var path: String = artifact_path(SHOT)
 	check_eq(image.save_png(path), OK, "saving " + path)
 	print("     screenshot: " + path)
 	var shares: Dictionary = _colour_shares(image, 0, image.get_height())
@@ -63,12 +63,6 @@ func _is_yellow(c: Color) -> bool:
 	return c.r > 0.55 and c.g > 0.42 and c.b < 0.45 * minf(c.r, c.g)
 
 
-func _artifact_path(file: String) -> String:
-	var folder: String = ProjectSettings.globalize_path("res://").path_join("../artifacts").simplify_path()
-	DirAccess.make_dir_recursive_absolute(folder)
-	return folder.path_join(file)
-
-
 func test_density_thinning_draws_fewer_far_impostors() -> void:
 	var field: SunflowerField = _still_field(
 		"res://fields/large.field", Vector3(100.0, 25.0, 190.0), Vector3(100.0, 0.0, 60.0)
@@ -80,7 +74,7 @@ func test_density_thinning_draws_fewer_far_impostors() -> void:
 	field.thinning_min_density = 0.1
 	await frames(6)
 	var thinned_image: Image = tree.root.get_viewport().get_texture().get_image()
-	thinned_image.save_png(_artifact_path("render_thinning.png"))
+	thinned_image.save_png(artifact_path("render_thinning.png"))
 	var thinned: float = _plant_pixels(thinned_image)
 	print("     plant pixels: %.1f%% without thinning, %.1f%% with" % [100.0 * full, 100.0 * thinned])
 	check(full > 0.05, "the far field covers the picture without thinning (%s)" % full)
@@ -299,7 +293,7 @@ func test_a_shader_of_your_own_fades_with_one_line() -> void:
 				field.advance(0.3)  # past the LOD interval: a pass at this distance
 			await frames(4)
 			var image: Image = tree.root.get_viewport().get_texture().get_image()
-			image.save_png(_artifact_path("render_own_shader_%s_%d.png" % [way.replace(" ", "_"), distance]))
+			image.save_png(artifact_path("render_own_shader_%s_%d.png" % [way.replace(" ", "_"), distance]))
 			red["%s %d" % [way, distance]] = _red_pixels(image)
 		field.free()
 		camera.free()
@@ -382,7 +376,7 @@ func test_far_impostors_stand_where_their_plants_do_on_a_moved_and_turned_field(
 	field.advance(0.0)
 	await frames(6)
 	var image: Image = tree.root.get_viewport().get_texture().get_image()
-	image.save_png(_artifact_path("render_moved_field.png"))
+	image.save_png(artifact_path("render_moved_field.png"))
 	var after: PackedFloat32Array = picture.luminance(image)
 	var similarity: float = picture.ssim(still, after)
 	print("     moved and turned field: SSIM %.4f to the picture before" % similarity)
@@ -428,7 +422,7 @@ func _yellow_centre(image: Image) -> Vector2:
 ## The picture drawn now, saved to the artifacts as [param file]; its luminance for [param picture].
 func _snapshot(picture: Picture, file: String) -> PackedFloat32Array:
 	var image: Image = tree.root.get_viewport().get_texture().get_image()
-	image.save_png(_artifact_path(file))
+	image.save_png(artifact_path(file))
 	return picture.luminance(image)
 
 

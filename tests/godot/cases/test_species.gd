@@ -157,9 +157,7 @@ func test_a_hilly_field_of_two_plant_types_renders_both_on_the_hills() -> void:
 	field.observer = camera.get_path()
 	await frames(8)
 	var image: Image = tree.root.get_viewport().get_texture().get_image()
-	var folder: String = ProjectSettings.globalize_path("res://").path_join("../artifacts").simplify_path()
-	DirAccess.make_dir_recursive_absolute(folder)
-	image.save_png(folder.path_join(SHOT))
+	image.save_png(artifact_path(SHOT))
 	var yellow: int = 0
 	var red: int = 0
 	for y: int in range(0, image.get_height(), 2):
