@@ -19,11 +19,11 @@ func after_each() -> void:
 	pass
 
 
-## The warnings the engine logged since the last call (or since the test began).
 ## Where a test writes [param file] (a path under tests/artifacts/, which is made as needed), for a
 ## reader to look at after the run.
 func artifact_path(file: String) -> String:
-	var path: String = ProjectSettings.globalize_path("res://").path_join("../artifacts").path_join(file).simplify_path()
+	var folder: String = ProjectSettings.globalize_path("res://").path_join("../artifacts")
+	var path: String = folder.path_join(file).simplify_path()
 	DirAccess.make_dir_recursive_absolute(path.get_base_dir())
 	return path
 
@@ -40,6 +40,7 @@ func field_in_tree(observer: Node3D, map: SunflowerFieldMap) -> SunflowerField:
 	return field
 
 
+## The warnings the engine logged since the last call (or since the test began).
 func take_warnings() -> PackedStringArray:
 	return log.call("take_warnings")
 
