@@ -40,6 +40,7 @@ func configure(plant: Resource) -> void:
 	var frame: Vector2 = plant.impostor_frame()
 	_set_both("frame_size", frame.x)
 	_set_both("frame_centre", frame.y)
+	_set_both("shadow_caster_shift", plant.impostor_shadow_shift)
 
 
 ## Shows [param texture] as the impostor's [param kind] (one of [constant FieldPlant.IMPOSTOR_TEXTURES]);

@@ -111,6 +111,12 @@ func test_bad_values_are_rejected_or_clamped_with_a_warning() -> void:
 	field.plant_height = NAN
 	check_eq(field.plant_height, 2.0, "NaN plant height is rejected")
 	check(warned("FieldPlant.height"), "bad height warns")
+	var plant: FieldPlant = FieldPlant.new()
+	plant.impostor_shadow_shift = NAN
+	check_near(plant.impostor_shadow_shift, 0.15, 1e-6, "a NaN shadow shift is the default")
+	check(warned("FieldPlant.impostor_shadow_shift: nan"), "a NaN shadow shift warns")
+	plant.impostor_shadow_shift = 2.0
+	check_eq(plant.impostor_shadow_shift, 0.5, "a shadow shift past its range is clamped")
 	field.lod_distances = PackedFloat32Array([6.0, 5.0, 20.0, 25.0])
 	check_eq(field.lod_distances, PackedFloat32Array([6.0, 10.0, 20.0, 25.0]), "decreasing distances are rejected")
 	check(warned("distances must increase"), "decreasing distances warn")
