@@ -67,7 +67,6 @@ void SunflowerSimulation::bind_methods() {
 	gdx::bind_method(CLASS, "get_tile_level", &SunflowerSimulation::get_tile_level, { "tile" });
 	gdx::bind_method(CLASS, "get_tile_parent", &SunflowerSimulation::get_tile_parent, { "tile" });
 	gdx::bind_method(CLASS, "get_tile_begin", &SunflowerSimulation::get_tile_begin, { "tile" });
-	gdx::bind_method(CLASS, "get_tile_density", &SunflowerSimulation::get_tile_density, { "tile" });
 	gdx::bind_method(CLASS, "get_tile_range", &SunflowerSimulation::get_tile_range, { "tile" });
 	gdx::bind_method(CLASS, "get_tile_merge", &SunflowerSimulation::get_tile_merge, { "tile" });
 	gdx::bind_method(CLASS, "choose_tile_level", &SunflowerSimulation::choose_tile_level, { "distance" });
@@ -486,10 +485,6 @@ int64_t SunflowerSimulation::get_tile_parent(int64_t p_tile) const {
 
 double SunflowerSimulation::get_tile_begin(int64_t p_tile) const {
 	return _is_tile(p_tile) ? double(_sim.get_tile_begin(uint32_t(p_tile))) : 0.0;
-}
-
-double SunflowerSimulation::get_tile_density(int64_t p_tile) const {
-	return _is_tile(p_tile) ? double(FieldSimulation::tile_density(_sim.get_tile(uint32_t(p_tile)).level)) : 0.0;
 }
 
 gdx::Vector2 SunflowerSimulation::get_tile_range(int64_t p_tile) const {

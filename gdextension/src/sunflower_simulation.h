@@ -74,7 +74,6 @@ public:
 	int64_t get_tile_level(int64_t p_tile) const;
 	int64_t get_tile_parent(int64_t p_tile) const;
 	double get_tile_begin(int64_t p_tile) const;
-	double get_tile_density(int64_t p_tile) const;
 	gdx::Vector2 get_tile_range(int64_t p_tile) const;
 	gdx::PackedFloat32Array get_tile_merge(int64_t p_tile) const;
 	gdx::Vector2 choose_tile_level(double p_distance) const;
