@@ -168,6 +168,7 @@ func update_field(delta: float) -> void:
 	native_simulation.update(delta)
 	drawn.show_filled_buckets()
 	drawn.update_masks()
+	drawn.follow_sun()
 	var wind_state: PackedFloat32Array = native_simulation.get_wind_state()
 	for impostors: ImpostorSet in impostor_sets:
 		impostors.sway(wind_state, _field.wind, _field.global_transform)

@@ -37,7 +37,9 @@ var _mask_version: int = -1  # the simulation's mask version the textures show
 ## The field drawn before this one: tiles that draw the same here take its nodes and GPU buffers.
 var _previous: RefCounted
 var _previous_by_key: Dictionary = {}  # tile key → the previous field's tile
-var _shadow_reach: float = -1.0  # see _sun_shadow_reach (−1: not looked up yet)
+var _shadow_reach: float = -1.0  # what the tiles' shadows follow (see _sun_shadow_reach; −1: not looked up yet)
+var _suns: Array = []  # DirectionalLight3D nodes, some perhaps freed since (see _find_suns)
+var _suns_stale: bool = true
 
 
 ## Nodes of [param owner] for [param field_simulation], its far levels drawn with [param impostors]
@@ -113,30 +115,68 @@ func _set_level(node: MultiMeshInstance3D, tile: int) -> void:
 	var merge: PackedFloat32Array = simulation.get_tile_merge(tile)
 	node.set_instance_shader_parameter(&"tile_merge", Vector4(merge[0], merge[1], merge[2], merge[3]))
 	node.visibility_range_begin = simulation.get_tile_range(tile).x
-	# A merged level's plants are at least its begin distance away (200 m by default): beyond the
-	# sun's shadows its tiles cast none, which keeps them out of every shadow pass their boxes reach
-	# into.
-	var shadowed: bool = simulation.get_tile_begin(tile) < _sun_shadow_reach()
+	_set_shadow(node, tile)
+
+
+## A merged level's plants are at least its begin distance away (200 m by default): beyond the sun's
+## shadows its tiles cast none, which keeps them out of every shadow pass their boxes reach into.
+func _set_shadow(node: MultiMeshInstance3D, tile: int) -> void:
+	if _shadow_reach < 0.0:
+		_shadow_reach = _sun_shadow_reach()
+	var shadowed: bool = simulation.get_tile_begin(tile) < _shadow_reach
 	node.cast_shadow = (
 		GeometryInstance3D.SHADOW_CASTING_SETTING_ON if shadowed else GeometryInstance3D.SHADOW_CASTING_SETTING_OFF
 	)
 
 
+## Keeps the tiles' shadows as far as the sun's when a sun's shadows change (its distance, turned on
+## or off, hidden, added or removed; in a running game or in the editor). Once a frame: it reads a
+## few properties of the suns it knows, and looks for suns again only when the scene tree gained or
+## lost a DirectionalLight3D.
+func follow_sun() -> void:
+	var reach: float = _sun_shadow_reach()
+	if reach == _shadow_reach:
+		return
+	_shadow_reach = reach
+	for tile: int in _tile_nodes.size():
+		if _tile_nodes[tile]:
+			_set_shadow(_tile_nodes[tile], tile)
+
+
 ## How far the sun's shadows reach: the farthest directional_shadow_max_distance of the shadow-casting
-## DirectionalLight3D nodes in the field's viewport, looked up once per build; SUN_SHADOW_DISTANCE
-## when there is none.
+## DirectionalLight3D nodes in the field's viewport; SUN_SHADOW_DISTANCE when there is none.
 func _sun_shadow_reach() -> float:
-	if _shadow_reach >= 0.0:
-		return _shadow_reach
-	_shadow_reach = 0.0
-	var viewport: Viewport = _owner.get_viewport() if _owner.is_inside_tree() else null
-	var suns: Array[Node] = viewport.find_children("*", "DirectionalLight3D", true, false) if viewport else []
-	for sun: DirectionalLight3D in suns:
+	if _suns_stale:
+		_find_suns()
+	var reach: float = 0.0
+	for entry: Variant in _suns:
+		if not is_instance_valid(entry):
+			continue
+		var sun: DirectionalLight3D = entry
 		if sun.shadow_enabled and sun.is_visible_in_tree():
-			_shadow_reach = maxf(_shadow_reach, sun.directional_shadow_max_distance)
-	if _shadow_reach == 0.0:
-		_shadow_reach = SUN_SHADOW_DISTANCE
-	return _shadow_reach
+			reach = maxf(reach, sun.directional_shadow_max_distance)
+	return reach if reach > 0.0 else SUN_SHADOW_DISTANCE
+
+
+## The DirectionalLight3D nodes in the field's viewport, looked up again after the tree gains or
+## loses one.
+func _find_suns() -> void:
+	_suns_stale = false
+	_suns.clear()
+	if not _owner.is_inside_tree():
+		_suns_stale = true  # look again once the field is in a tree
+		return
+	var tree: SceneTree = _owner.get_tree()
+	if not tree.node_added.is_connected(_on_tree_changed):
+		tree.node_added.connect(_on_tree_changed)
+		tree.node_removed.connect(_on_tree_changed)
+	for sun: Node in _owner.get_viewport().find_children("*", "DirectionalLight3D", true, false):
+		_suns.append(sun)
+
+
+func _on_tree_changed(node: Node) -> void:
+	if node is DirectionalLight3D:
+		_suns_stale = true
 
 
 ## Hands [param tile]'s node to a field built on this one (and forgets it); null when it has none

@@ -113,8 +113,8 @@ const PartMeshes: GDScript = preload("part_meshes.gd")
 ## out dither away one after another, each over a few metres, and the others widen, so no tile of
 ## plants switches at once and no plant vanishes in a frame. A merged level that begins beyond the
 ## sun's shadows casts none: beyond the farthest [member DirectionalLight3D.directional_shadow_max_distance]
-## of the shadow-casting directional lights in the field's viewport when it is built (100 m, Godot's
-## default, without one). The merged tiles' copies of their plants add a third to the far plants' GPU
+## of the shadow-casting directional lights in the field's viewport (100 m, Godot's default, without
+## one), followed from frame to frame when a light changes. The merged tiles' copies of their plants add a third to the far plants' GPU
 ## memory on a field large enough to have them. 0: tiles never merge.
 @export_range(0.0, 2000.0, 1.0, "or_greater", "suffix:m") var tile_merge_distance: float = 200.0:
 	set(value):

@@ -269,20 +269,36 @@ func test_a_small_change_of_a_large_map_makes_nodes_only_for_the_tiles_it_touche
 		check_near(merged_node.visibility_range_begin, 500.0 - reach, 1e-3, "its node's range begins there")
 		check_eq(merged_node.get_instance_shader_parameter(&"tile_merge").z, 500.0, "its shader knows the distance")
 		check_eq(merged_node.cast_shadow, GeometryInstance3D.SHADOW_CASTING_SETTING_OFF, "beyond the sun's shadows")
-		# A sun whose shadows reach farther than the merged level begins: the next build lets it cast.
+		# The tiles follow the sun's shadows from frame to frame, without a rebuild: a sun added whose
+		# shadows reach past where the merged level begins lets it cast; shorter shadows, shadows
+		# turned off or the sun gone take them away again.
 		var sun: DirectionalLight3D = DirectionalLight3D.new()
 		sun.shadow_enabled = true
 		sun.directional_shadow_max_distance = 600.0
 		tree.root.add_child(sun)
+		var on: int = GeometryInstance3D.SHADOW_CASTING_SETTING_ON
+		var off: int = GeometryInstance3D.SHADOW_CASTING_SETTING_OFF
+		await frames(2)
+		check_eq(merged_node.cast_shadow, on, "a merged tile within a sun's 600 m of shadows casts them")
+		sun.directional_shadow_max_distance = 300.0
+		await frames(2)
+		check_eq(merged_node.cast_shadow, off, "the sun's shadows shortened to 300 m")
+		sun.directional_shadow_max_distance = 600.0
+		sun.shadow_enabled = false
+		await frames(2)
+		check_eq(merged_node.cast_shadow, off, "the sun's shadows turned off")
+		sun.shadow_enabled = true
+		await frames(2)
+		check_eq(merged_node.cast_shadow, on, "and on again")
+		# A build with the sun there sets it from the start.
 		field.tile_merge_distance = 450.0
 		field.finish_build()
 		for node: Node in field.get_children(true):
 			if node.name == "FarTile%d" % simulation.get_tile_key(merged):
-				check_eq(
-					(node as GeometryInstance3D).cast_shadow,
-					GeometryInstance3D.SHADOW_CASTING_SETTING_ON,
-					"a merged tile within a sun's 600 m of shadows casts them"
-				)
+				merged_node = node
+				check_eq(merged_node.cast_shadow, on, "a merged tile built within a sun's shadows casts them")
 		sun.free()
+		await frames(2)
+		check_eq(merged_node.cast_shadow, off, "the sun gone")
 	var quarter: float = field.get_plant_count() / 4.0
 	check_near(instances[1], quarter, 5.0 * sqrt(quarter), "the merged tile holds about a quarter")
