@@ -28,9 +28,6 @@ const ATLAS_VIEWS: Vector2i = Vector2i(12, 7)
 const IMPOSTOR_TEXTURES: PackedStringArray = ["views", "normals", "depths"]
 ## The optional impostor texture of the light a plant's parts give off (see [member impostor_emission]).
 const EMISSION_TEXTURE: String = "emission"
-## [member impostor_emission] holds the emitted light divided by this, so that 8-bit colours keep
-## energies up to it (above it the far levels glow less than the meshes).
-const EMISSION_RANGE: float = 8.0
 
 static var _default: FieldPlant
 
@@ -169,11 +166,19 @@ static var _default: FieldPlant
 		impostor_depths = value
 		emit_changed()
 ## The light the plant's parts give off (their materials' emission) in the same views, divided by
-## [constant EMISSION_RANGE], so that the far levels glow as the meshes do; none ([code]null[/code])
-## when no part gives off light. Baked with the others, only for a plant that glows.
+## [member impostor_emission_range], so that the far levels glow as the meshes do; none
+## ([code]null[/code]) when no part gives off light. Baked with the others, only for a plant that
+## glows.
 @export var impostor_emission: Texture2D:
 	set(value):
 		impostor_emission = value
+		emit_changed()
+## What [member impostor_emission] was divided by: 8-bit colours keep energies up to it. The baker sets
+## it, the smallest of 8, 64, 512 … in which no pixel of the atlas saturates (a brighter light would
+## make the far levels glow less than the meshes); set it yourself for an atlas made elsewhere.
+@export_range(1.0, 32768.0, 1.0) var impostor_emission_range: float = 8.0:
+	set(value):
+		impostor_emission_range = Native.accept("FieldPlant.impostor_emission_range", value, impostor_emission_range)
 		emit_changed()
 
 ## How far the far levels' shadow casters stand out towards the light, as a share of the impostor's

@@ -15,6 +15,11 @@ extends RefCounted
 const CELL_PIXELS: int = 128
 ## Rendered frames before a pass is read back (the first ones may not have the meshes yet).
 const SETTLE_FRAMES: int = 3
+## The emission pass is rendered again with a range this many times wider while a pixel saturates,
+## at most this many times in all: 8 to 8 × 8⁴ = 32 768, [member FieldPlant.impostor_emission_range]'s
+## top.
+const EMISSION_RANGE_STEP: float = 8.0
+const EMISSION_RANGE_STEPS: int = 5
 ## Draws the plant's normals in its own frame as colours (0–1 for −1–1); the viewport converts
 ## what it draws to sRGB, so the shader hands it the linear value that converts to the code.
 const NORMALS_SHADER: String = """
@@ -42,6 +47,13 @@ void fragment() {
 	ALBEDO = mix(pow((code + 0.055) / 1.055, vec3(2.4)), code / 12.92, low);
 }
 """
+
+
+## The emission pass: its picture (null when nothing glows) and the range its light was divided by
+## (the default when nothing glows).
+class Glow:
+	var image: Image
+	var energy_range: float = 0.0
 
 
 ## Renders [param plant]'s impostor atlases in a viewport under [param host] (any node in a tree
@@ -98,11 +110,11 @@ static func _bake(plant: FieldPlant, host: Node, folder: String, base_name: Stri
 			push_error("Bake impostors: the %s rendered nothing (no renderer?)" % kind)
 			return ERR_CANT_CREATE
 		images.append(image)
-	var emission: Image = await _emission(viewport)
+	var glow: Glow = await _emission(viewport, plant)
 	viewport.queue_free()
-	if emission:
+	if glow.image:
 		kinds.append(FieldPlant.EMISSION_TEXTURE)
-		images.append(emission)
+		images.append(glow.image)
 	var paths: PackedStringArray = []
 	for i: int in images.size():
 		var path: String = folder.path_join("%s_%s.png" % [base_name, kinds[i]])
@@ -111,17 +123,26 @@ static func _bake(plant: FieldPlant, host: Node, folder: String, base_name: Stri
 			push_error("Bake impostors: cannot write %s (%s)" % [path, error_string(saved)])
 			return saved
 		paths.append(path)
+	plant.impostor_emission_range = glow.energy_range
 	_give_textures(plant, kinds, paths, images)
 	return OK
 
 
 ## The light the parts give off, from the stage of [method _stage] with the parts' own materials,
-## lit by nothing (no lights, no ambient or reflected light), scaled by 1 / [constant
-## FieldPlant.EMISSION_RANGE] through the exposure; null when no pixel glows.
-static func _emission(viewport: SubViewport) -> Image:
+## lit by nothing (no lights, no ambient or reflected light), divided by the smallest range of
+## [member FieldPlant.impostor_emission_range]'s default (8) × [constant EMISSION_RANGE_STEP]^k in
+## which no pixel saturates (through the exposure; rendered again with the next range while one
+## does). No image when no pixel glows, or, without rendering, when no part's material can give off
+## light.
+static func _emission(viewport: SubViewport, plant: FieldPlant) -> Glow:
+	var glow: Glow = Glow.new()
+	glow.energy_range = (FieldPlant as Script).get_property_default_value(&"impostor_emission_range")
+	if not _can_glow(plant):
+		return glow
 	for instance: Node in viewport.find_children("*", "MeshInstance3D", true, false):
 		(instance as MeshInstance3D).material_override = null
 	viewport.debug_draw = Viewport.DEBUG_DRAW_DISABLED
+	var environments: Array[Environment] = []
 	for world: Node in viewport.find_children("*", "WorldEnvironment", false, false):
 		var environment: Environment = (world as WorldEnvironment).environment
 		environment.ambient_light_source = Environment.AMBIENT_SOURCE_COLOR
@@ -129,17 +150,42 @@ static func _emission(viewport: SubViewport) -> Image:
 		environment.ambient_light_energy = 0.0
 		environment.reflected_light_source = Environment.REFLECTION_SOURCE_DISABLED
 		environment.tonemap_mode = Environment.TONE_MAPPER_LINEAR
-		environment.tonemap_exposure = 1.0 / FieldPlant.EMISSION_RANGE
-	var image: Image = await _read_pass(viewport)
-	if image == null:
-		return null
-	# The brightest colour channel, from a comparison with black (the alpha left out).
-	var colours: Image = image.duplicate() as Image
-	colours.convert(Image.FORMAT_RGB8)
-	var black: Image = Image.create(colours.get_width(), colours.get_height(), false, Image.FORMAT_RGB8)
-	if float(colours.compute_image_metrics(black, false)["max"]) < 2.0:
-		return null
-	return image
+		environments.append(environment)
+	for step: int in EMISSION_RANGE_STEPS:
+		for environment: Environment in environments:
+			environment.tonemap_exposure = 1.0 / glow.energy_range
+		var image: Image = await _read_pass(viewport)
+		if image == null:
+			return glow
+		# The brightest colour channel, from a comparison with black (the alpha left out).
+		var colours: Image = image.duplicate() as Image
+		colours.convert(Image.FORMAT_RGB8)
+		var black: Image = Image.create(colours.get_width(), colours.get_height(), false, Image.FORMAT_RGB8)
+		var brightest: float = float(colours.compute_image_metrics(black, false)["max"])
+		if brightest < 2.0:
+			return glow
+		glow.image = image
+		if brightest < 255.0 or step == EMISSION_RANGE_STEPS - 1:
+			return glow
+		glow.energy_range *= EMISSION_RANGE_STEP
+	return glow
+
+
+## Whether any of the parts' materials (or their next passes) may give off light: anything but a
+## StandardMaterial3D or ORMMaterial3D with its emission off (a shader's is not known without
+## rendering it).
+static func _can_glow(plant: FieldPlant) -> bool:
+	for part: int in 3:
+		var mesh: Mesh = plant.mesh_drawn(0, part)
+		if mesh == null:
+			continue
+		for surface: int in mesh.get_surface_count():
+			var material: Material = mesh.surface_get_material(surface)
+			while material:
+				if not (material is BaseMaterial3D) or (material as BaseMaterial3D).emission_enabled:
+					return true
+				material = material.next_pass
+	return false
 
 
 ## The picture of a pass once its frames have settled, as 8-bit RGBA with the colours of covered

@@ -33,7 +33,10 @@ func _init() -> void:
 func configure(plant: Resource) -> void:
 	for kind: String in FieldPlant.IMPOSTOR_TEXTURES:
 		set_texture(kind, plant.texture_drawn(kind))
-	set_emission(plant.texture_drawn(FieldPlant.EMISSION_TEXTURE))
+	var emission: Texture2D = plant.texture_drawn(FieldPlant.EMISSION_TEXTURE)
+	# The built-in plant's atlas (drawn for a plant without meshes of its own) has its own range.
+	var range_of: Resource = plant if emission == plant.impostor_emission else FieldPlant.default_plant()
+	set_emission(emission, range_of.impostor_emission_range)
 	_stiffness = plant.stiffness
 	# Model units of the bottom part, and of the middle and head above it (how the wind bends them).
 	_set_both("part_reach", Vector2(plant.part_lengths.x, plant.part_lengths.y + plant.part_lengths.z))
@@ -72,11 +75,11 @@ func set_texture(kind: String, texture: Texture2D) -> void:
 		_set_both("view_bounds", view_bounds(texture, layout))
 
 
-## Makes the impostors glow with the light [param texture] holds ([member FieldPlant.impostor_emission]);
-## null: none.
-func set_emission(texture: Texture2D) -> void:
+## Makes the impostors glow with the light [param texture] holds ([member FieldPlant.impostor_emission]),
+## divided by [param energy_range] ([member FieldPlant.impostor_emission_range]); null: none.
+func set_emission(texture: Texture2D, energy_range: float) -> void:
 	_set_both("emission_atlas", texture)
-	_set_both("emission_range", FieldPlant.EMISSION_RANGE if texture else 0.0)
+	_set_both("emission_range", energy_range if texture else 0.0)
 
 
 ## The views across and down the atlas [param texture]: [constant FieldPlant.ATLAS_VIEWS]'s columns,

@@ -65,6 +65,10 @@ inline constexpr ParameterSpec PLANT_STIFFNESS{ "FieldPlant.stiffness", 1.0, 0.0
 // towards the light, to the foremost leaves and head that shade the rest of the plant (0: a flat
 // caster through the plant's middle; 0.15 suits the sunflower, fidelity measurements of session 16).
 inline constexpr ParameterSpec PLANT_IMPOSTOR_SHADOW_SHIFT{ "FieldPlant.impostor_shadow_shift", 0.15, 0.0, 0.5, ParameterSpec::CLAMP, 0.15 };
+// A plant type's far glow: its emission atlas holds the light its parts give off divided by this, so
+// that 8-bit colours keep energies up to it. The baker picks the smallest of 8, 64, 512 … in which no
+// pixel of the atlas saturates.
+inline constexpr ParameterSpec PLANT_IMPOSTOR_EMISSION_RANGE{ "FieldPlant.impostor_emission_range", 8.0, 1.0, 32768.0, ParameterSpec::CLAMP, 8.0 };
 inline constexpr ParameterSpec PLANT_MIDDLE_VARIATION{ "FieldPlant.middle_variation", 0.1, 0.0, 10.0, ParameterSpec::CLAMP, 0.1 };
 inline constexpr ParameterSpec CHUNK_SIZE{ "SunflowerField.chunk_size", 16.0, 0.5, 4096.0, ParameterSpec::KEEP, 0.0 };
 // 0 means the parser's own limit (MapLimits::max_plants).
@@ -108,14 +112,14 @@ inline constexpr ParameterSpec GROUND_TILT{ "SunflowerField.ground_tilt", 0.0, 0
 inline constexpr ParameterSpec GROUND_RAY_ABOVE{ "SunflowerField.ground_ray_above", 100.0, 0.0, NO_MAX, ParameterSpec::CLAMP, 100.0 };
 inline constexpr ParameterSpec GROUND_RAY_BELOW{ "SunflowerField.ground_ray_below", 100.0, 0.0, NO_MAX, ParameterSpec::CLAMP, 100.0 };
 
-inline constexpr std::array<const ParameterSpec *, 41> ALL{ { &WIND_MODEL, &WIND_POWER, &WIND_INCREMENT, &WIND_STIFFNESS_MIDDLE,
+inline constexpr std::array<const ParameterSpec *, 42> ALL{ { &WIND_MODEL, &WIND_POWER, &WIND_INCREMENT, &WIND_STIFFNESS_MIDDLE,
 		&WIND_STIFFNESS_BOTTOM, &WIND_BEND_PER_POWER, &WIND_MAX_BEND, &WIND_FLIP_INTERVAL, &WIND_FLIP_CHANCE,
 		&WIND_GUST_SPEED, &WIND_GUST_SHARE, &CELL_SIZE, &PLANT_HEIGHT, &CHUNK_SIZE, &MAX_PLANTS, &LOD_HYSTERESIS,
 		&LOD_INTERVAL, &LOD_FADE, &FORCE_LOD, &ALPHA_SCISSOR, &THINNING_DISTANCE, &THINNING_MIN_DENSITY, &TILE_MERGE_DISTANCE, &MAX_DRAW_DISTANCE,
 		&BUILD_BUDGET_MS, &WORKER_THREADS, &PUSH_STRENGTH, &PUSH_RECOVERY, &PUSHER_RADIUS,
 		&COLLISION_REACH, &GROUND_TILT, &GROUND_RAY_ABOVE, &GROUND_RAY_BELOW, &PLANT_YAW_RANGE, &PLANT_SCALE_MIN, &PLANT_SCALE_MAX,
 		&PLANT_MIDDLE_VARIATION, &PLANT_BRIGHTNESS_VARIATION, &PLANT_TINT_VARIATION, &PLANT_STIFFNESS,
-		&PLANT_IMPOSTOR_SHADOW_SHIFT } };
+		&PLANT_IMPOSTOR_SHADOW_SHIFT, &PLANT_IMPOSTOR_EMISSION_RANGE } };
 
 } // namespace param
 

@@ -176,31 +176,36 @@ func test_a_gltf_plant_gets_impostors_in_its_own_colours() -> void:
 	field.free()
 
 
-## A plant whose head gives off light (a StandardMaterial3D's emission, energy 2) gets an emission
-## atlas holding that light over the range where the head stands, none where the stalk does; a
-## field of it in the dark seen from 45 m, all impostors, glows as brightly as the same field drawn
-## with every plant as mesh 1 (and stays dark without the atlas: what the far levels did before).
-func test_a_glowing_plant_glows_as_far_impostors() -> void:
-	var plant: FieldPlant = _gltf_plant("Glowing plant", "glowing_head.gltf")
+## A plant made by [method _gltf_plant] whose head gives off [constant GLOW] light (a
+## StandardMaterial3D's emission) of [param energy], baked; null when it could not be.
+func _glowing_plant(plant_name: String, head_file: String, energy: float) -> FieldPlant:
+	var plant: FieldPlant = _gltf_plant(plant_name, head_file)
 	if plant == null:
-		return
+		return null
 	var head: Mesh = plant.mesh_level_1[2]
 	var glowing: StandardMaterial3D = (
 		(head.surface_get_material(0) as StandardMaterial3D).duplicate() as StandardMaterial3D
 	)
 	glowing.emission_enabled = true
 	glowing.emission = GLOW
-	glowing.emission_energy_multiplier = 2.0
+	glowing.emission_energy_multiplier = energy
 	head.surface_set_material(0, glowing)
-	check_eq(await plant.bake_impostors(tree.root, FOLDER, "glowing_plant"), OK, "baked")
-	check(FileAccess.file_exists(FOLDER.path_join("glowing_plant_emission.png")), "emission atlas written")
+	var base_name: String = plant_name.to_snake_case()
+	check_eq(await plant.bake_impostors(tree.root, FOLDER, base_name), OK, "baked")
+	check(FileAccess.file_exists(FOLDER.path_join(base_name + "_emission.png")), "emission atlas written")
 	if not check(plant.impostor_emission != null, "the plant has an emission atlas"):
-		return
+		return null
+	return plant
+
+
+## Checks that [param plant]'s emission atlas holds the head's light of [param energy] over the
+## plant's range where the head stands, and none where the stalk does, from two sides.
+func _check_glow(plant: FieldPlant, energy: float) -> void:
 	var emission: Image = plant.impostor_emission.get_image()
 	emission.clear_mipmaps()
 	var cell: int = ImpostorBaker.CELL_PIXELS
 	var pixels_per_unit: float = cell / plant.impostor_frame().x
-	var expected: Color = GLOW.srgb_to_linear() * (2.0 / FieldPlant.EMISSION_RANGE)
+	var expected: Color = GLOW.srgb_to_linear() * (energy / plant.impostor_emission_range)
 	for column: int in [0, 5]:
 		var side: Image = _view(emission, column, 0)
 		var lit: Color = side.get_pixel(cell / 2, roundi(cell / 2 - 1.0 * pixels_per_unit)).srgb_to_linear()
@@ -210,6 +215,19 @@ func test_a_glowing_plant_glows_as_far_impostors() -> void:
 			"view %d: the head's light, %s, is the material's over the range, %s" % [column, lit, expected]
 		)
 		check(dark.a > 0.5 and maxf(dark.r, dark.g) < 0.02, "view %d: the stalk gives off none: %s" % [column, dark])
+
+
+## A plant whose head gives off light (a StandardMaterial3D's emission, energy 2) gets an emission
+## atlas holding that light over the range (8: no pixel saturates in it) where the head stands, none
+## where the stalk does; a field of it in the dark seen from 45 m, all impostors, glows as brightly
+## as the same field drawn with every plant as mesh 1 (and stays dark without the atlas: what the
+## far levels did before).
+func test_a_glowing_plant_glows_as_far_impostors() -> void:
+	var plant: FieldPlant = await _glowing_plant("Glowing plant", "glowing_head.gltf", 2.0)
+	if plant == null:
+		return
+	check_eq(plant.impostor_emission_range, 8.0, "the light fits the first range")
+	_check_glow(plant, 2.0)
 	# The field in the dark: no sun, no sky light, a black background.
 	var stage: RefCounted = Stage.new(tree.root, 200.0, Vector3(5.0, 0.0, 5.0))
 	stage.environment.background_mode = Environment.BG_COLOR
@@ -258,6 +276,29 @@ func test_a_glowing_plant_glows_as_far_impostors() -> void:
 	check(brightness[1] > 0.005, "the meshes glow: mean brightness %.4f" % brightness[1])
 	check(ratio > 0.8 and ratio < 1.25, "the impostors glow as the meshes do: %.3f of their brightness" % ratio)
 	check(without < 0.2, "without the atlas they would stay dark: %.3f" % without)
+
+
+## A light brighter than the first range (energy 24 against 8, which clipped it to a third) is
+## baked in the next one, 64, where it keeps its value; the field's far levels multiply it back.
+func test_a_bright_glow_gets_a_wider_range() -> void:
+	var plant: FieldPlant = await _glowing_plant("Bright plant", "bright_head.gltf", 24.0)
+	if plant == null:
+		return
+	check_eq(plant.impostor_emission_range, 64.0, "the range widened once")
+	_check_glow(plant, 24.0)
+	var field: SunflowerField = SunflowerField.new()
+	field.plant = plant
+	tree.root.add_child(field)
+	field.map = Maps.filled(4, 4, "user://bright.field")
+	field.finish_build()
+	var tile: MultiMeshInstance3D = null
+	for node: Node in field.get_children(true):
+		if node.name.begins_with("FarTile"):
+			tile = node
+	if check(tile != null, "a far tile"):
+		var material: ShaderMaterial = tile.multimesh.mesh.surface_get_material(0) as ShaderMaterial
+		check_eq(material.get_shader_parameter("emission_range"), 64.0, "the far levels multiply it back")
+	field.free()
 
 
 func test_the_built_in_sunflower_baked_again_matches_the_shipped_textures() -> void:

@@ -117,6 +117,11 @@ func test_bad_values_are_rejected_or_clamped_with_a_warning() -> void:
 	check(warned("FieldPlant.impostor_shadow_shift: nan"), "a NaN shadow shift warns")
 	plant.impostor_shadow_shift = 2.0
 	check_eq(plant.impostor_shadow_shift, 0.5, "a shadow shift past its range is clamped")
+	plant.impostor_emission_range = NAN
+	check_eq(plant.impostor_emission_range, 8.0, "a NaN emission range is the default")
+	check(warned("FieldPlant.impostor_emission_range: nan"), "a NaN emission range warns")
+	plant.impostor_emission_range = 0.0
+	check_eq(plant.impostor_emission_range, 1.0, "an emission range below 1 is clamped (no division by 0)")
 	field.lod_distances = PackedFloat32Array([6.0, 5.0, 20.0, 25.0])
 	check_eq(field.lod_distances, PackedFloat32Array([6.0, 10.0, 20.0, 25.0]), "decreasing distances are rejected")
 	check(warned("distances must increase"), "decreasing distances warn")
