@@ -114,8 +114,9 @@ const PartMeshes: GDScript = preload("part_meshes.gd")
 ## plants switches at once and no plant vanishes in a frame. A merged level that begins beyond the
 ## sun's shadows casts none: beyond the farthest [member DirectionalLight3D.directional_shadow_max_distance]
 ## of the shadow-casting directional lights in the field's viewport (100 m, Godot's default, without
-## one), followed from frame to frame when a light changes. The merged tiles' copies of their plants add a third to the far plants' GPU
-## memory on a field large enough to have them. 0: tiles never merge.
+## one), followed from frame to frame when a light changes. The merged tiles' copies of their
+## plants add a third to the far plants' GPU memory on a field large enough to have them. 0: tiles
+## never merge.
 @export_range(0.0, 2000.0, 1.0, "or_greater", "suffix:m") var tile_merge_distance: float = 200.0:
 	set(value):
 		value = Native.accept("SunflowerField.tile_merge_distance", value, tile_merge_distance)
