@@ -125,6 +125,9 @@ func test_the_far_field_keeps_its_cover() -> void:
 ## The 45° view at 1 280 × 720 (the window resized): a plant 20–35 m away then samples a mip one
 ## level finer than at 640 × 360. While the far reads' thresholds were plain mip levels, those
 ## plants were read unsharpened there, a darker ring: the impostors' brightness 0.942 of the meshes'.
+## And the plants seen from 50–55° above, midway between two rows of views: while their blend was
+## alpha-tested as one, they were drawn with the intersection of the views' outlines, a darker band
+## (0.93 of the meshes' brightness; session 21).
 func test_far_levels_keep_their_brightness_at_twice_the_resolution() -> void:
 	tree.root.size = window_size * 2
 	await RenderingServer.frame_post_draw
@@ -142,6 +145,27 @@ func test_far_levels_keep_their_brightness_at_twice_the_resolution() -> void:
 	check(large == window_size * 2, "the window is twice as large (%s)" % large)
 	check(inside.count(1) > 40000, "the impostors are in view (%d pixels)" % inside.count(1))
 	check(absf(brightness - 1.0) <= 0.05, "the impostors' brightness %.3f of the meshes', within ±5 %%" % brightness)
+	var midway: PackedByteArray = _seen_from(inside, large, 50.0, 55.0)
+	var band: float = picture.mean_in(auto, midway) / picture.mean_in(mesh_1, midway)
+	print("     seen from 50–55° above (%d pixels): %.3f" % [midway.count(1), band])
+	check(midway.count(1) > 20000, "plants seen from 50–55° above are in view (%d pixels)" % midway.count(1))
+	check(band >= 0.95, "those seen from 50–55° above: brightness %.3f of the meshes', at least 0.95" % band)
+
+
+## The pixels of [param inside] (a picture of [param size]) that the camera sees from
+## [param lowest]–[param highest] degrees above the horizontal.
+func _seen_from(inside: PackedByteArray, size: Vector2i, lowest: float, highest: float) -> PackedByteArray:
+	var seen: PackedByteArray = []
+	seen.resize(inside.size())
+	for y: int in size.y:
+		for x: int in size.x:
+			var i: int = y * size.x + x
+			if inside[i] == 0:
+				continue
+			var elevation: float = rad_to_deg(-asin(camera.project_ray_normal(Vector2(x + 0.5, y + 0.5)).y))
+			if elevation >= lowest and elevation < highest:
+				seen[i] = 1
+	return seen
 
 
 ## The field alone on black (no ground, no sky) drawn at [param force] (-1: automatic levels).
