@@ -17,6 +17,8 @@ const PartMeshes: GDScript = preload("part_meshes.gd")
 ## Godot's default DirectionalLight3D.directional_shadow_max_distance: how far the sun's shadows
 ## reach when the field's viewport has no shadow-casting directional light (yet).
 const SUN_SHADOW_DISTANCE: float = 100.0
+## The name of the child of each impostor node that draws its shadows.
+const CASTER_NAME: String = "ShadowCaster"
 ## The parts of a plant, bottom to top, as node names use them.
 const PART_NAMES: PackedStringArray = PartMeshes.PART_NAMES
 
@@ -81,6 +83,7 @@ func make_tiles(budget_usec: int, max_draw_distance: float) -> bool:
 		var aabb: AABB = simulation.get_tile_aabb(tile)
 		var impostors: ImpostorSet = _impostors[simulation.get_tile_species(tile)]
 		var node: MultiMeshInstance3D = _make_node(_tile_node_name(tile), impostors.mesh(true), aabb, true)
+		_add_caster(node, impostors.caster(true))
 		node.visible = false  # shown when the whole field is ready
 		_tile_nodes.append(node)
 		_set_level(node, tile)
@@ -113,8 +116,9 @@ func _take_previous(tile: int, max_draw_distance: float) -> bool:
 ## its level draws from the observer; and where its level begins.
 func _set_level(node: MultiMeshInstance3D, tile: int) -> void:
 	var merge: PackedFloat32Array = simulation.get_tile_merge(tile)
-	node.set_instance_shader_parameter(&"tile_merge", Vector4(merge[0], merge[1], merge[2], merge[3]))
-	node.visibility_range_begin = simulation.get_tile_range(tile).x
+	for drawn: GeometryInstance3D in [node, _caster_of(node)]:
+		drawn.set_instance_shader_parameter(&"tile_merge", Vector4(merge[0], merge[1], merge[2], merge[3]))
+		drawn.visibility_range_begin = simulation.get_tile_range(tile).x
 	_set_shadow(node, tile)
 
 
@@ -123,10 +127,7 @@ func _set_level(node: MultiMeshInstance3D, tile: int) -> void:
 func _set_shadow(node: MultiMeshInstance3D, tile: int) -> void:
 	if _shadow_reach < 0.0:
 		_shadow_reach = _sun_shadow_reach()
-	var shadowed: bool = simulation.get_tile_begin(tile) < _shadow_reach
-	node.cast_shadow = (
-		GeometryInstance3D.SHADOW_CASTING_SETTING_ON if shadowed else GeometryInstance3D.SHADOW_CASTING_SETTING_OFF
-	)
+	_caster_of(node).visible = simulation.get_tile_begin(tile) < _shadow_reach
 
 
 ## Keeps the tiles' shadows as far as the sun's when a sun's shadows change (its distance, turned on
@@ -221,6 +222,7 @@ func finish(species_plants: Array, legend: Dictionary, cell_size: float, sway_ma
 		# The near sprites and billboards: one multi-view impostor draws both.
 		var impostors: MultiMeshInstance3D = _make_node(prefix + "Impostors", _impostors[species].mesh(), aabb, true)
 		_add_dynamic(impostors, first + Native.constant(&"BUCKET_IMPOSTOR"))
+		_add_caster(impostors, _impostors[species].caster())
 	_place_objects(legend, cell_size)
 	for tile: int in _tile_nodes.size():
 		var node: MultiMeshInstance3D = _tile_nodes[tile]
@@ -402,6 +404,27 @@ func _set_range(tile: int, max_draw_distance: float) -> void:
 		var drawn_to: float = max_draw_distance + 0.5 * node.custom_aabb.size.length()
 		end = drawn_to if end <= 0.0 else minf(end, drawn_to)
 	node.visibility_range_end = end
+	_caster_of(node).visibility_range_end = end
+
+
+## Gives an impostor [param node] a child that draws its shadows from the same MultiMesh with
+## [param material] (ImpostorSet.caster: each pixel casts from the depth the plant has there); the
+## node itself casts none. The child follows the node's visibility; ranges and shader parameters are
+## set on both.
+func _add_caster(node: MultiMeshInstance3D, material: ShaderMaterial) -> void:
+	node.cast_shadow = GeometryInstance3D.SHADOW_CASTING_SETTING_OFF
+	var caster: MultiMeshInstance3D = MultiMeshInstance3D.new()
+	caster.name = CASTER_NAME
+	caster.multimesh = node.multimesh
+	caster.custom_aabb = node.custom_aabb
+	caster.material_override = material
+	caster.cast_shadow = GeometryInstance3D.SHADOW_CASTING_SETTING_SHADOWS_ONLY
+	node.add_child(caster, false, Node.INTERNAL_MODE_BACK)
+
+
+## The shadow caster of an impostor node (see [method _add_caster]).
+static func _caster_of(node: MultiMeshInstance3D) -> MultiMeshInstance3D:
+	return node.get_child(0, true) as MultiMeshInstance3D
 
 
 func _field_aabb() -> AABB:

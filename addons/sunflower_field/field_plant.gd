@@ -182,10 +182,9 @@ static var _default: FieldPlant
 		emit_changed()
 
 ## How far the far levels' shadow casters stand out towards the light, as a share of the impostor's
-## frame: a flat caster through the plant's middle (0) shadows only what lies behind the middle,
-## while a bushy plant's foremost leaves and head shade the rest of it. 0.15 suits the sunflower
-## (its impostors then are as bright as its meshes from above); a thin or flat plant wants less.
-@export_range(0.0, 0.5, 0.01) var impostor_shadow_shift: float = 0.15:
+## frame, beyond the depth the plant has at each pixel: a little shades a field of it as its meshes
+## shade each other (0.03 suits the sunflower; more shades a lone plant's own leaves with specks).
+@export_range(0.0, 0.5, 0.01) var impostor_shadow_shift: float = 0.03:
 	set(value):
 		impostor_shadow_shift = Native.accept("FieldPlant.impostor_shadow_shift", value, impostor_shadow_shift)
 		emit_changed()

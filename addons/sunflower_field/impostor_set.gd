@@ -6,10 +6,12 @@ extends RefCounted
 ## observer's direction, blended from the plant's baked views, shaded through its baked normals.
 ## Both draw it from compact 8-float instance records: the near bucket's carry each plant's share
 ## of the pixels ([code]records_hold_shares[/code]), the far tiles' their chunk's cell, which the
-## tiles' twin of the material looks up in the mask of active chunks; every other parameter is set
-## on both.
+## tiles' twin of the material looks up in the mask of active chunks. Each has a shadow caster's
+## twin (shaders/impostor_shadow.gdshader), drawn from the same records by nodes that cast shadows
+## only; every other parameter is set on all four.
 
 const SHADER: Shader = preload("shaders/impostor.gdshader")
+const SHADOW_SHADER: Shader = preload("shaders/impostor_shadow.gdshader")
 ## The shader's sampler of each of [constant FieldPlant.IMPOSTOR_TEXTURES].
 const ATLAS_PARAMETERS: Dictionary = {"views": "view_atlas", "normals": "normal_atlas", "depths": "depth_atlas"}
 
@@ -17,6 +19,9 @@ const ATLAS_PARAMETERS: Dictionary = {"views": "view_atlas", "normals": "normal_
 var material: ShaderMaterial = ShaderMaterial.new()
 ## The material of the far tiles' impostors (records with their chunk's cell).
 var tile_material: ShaderMaterial = ShaderMaterial.new()
+## Their shadow casters' materials.
+var caster_material: ShaderMaterial = ShaderMaterial.new()
+var tile_caster_material: ShaderMaterial = ShaderMaterial.new()
 var _quads: Array[ArrayMesh] = [null, null]  # [near, tiles]
 var _stiffness: float = 1.0  # the plant type's
 var _field_transform: Transform3D = Transform3D.IDENTITY
@@ -26,7 +31,10 @@ func _init() -> void:
 	material.shader = SHADER
 	material.set_shader_parameter("records_hold_shares", true)
 	tile_material.shader = SHADER
-	_set_both("atlas_views", FieldPlant.ATLAS_VIEWS)
+	caster_material.shader = SHADOW_SHADER
+	caster_material.set_shader_parameter("records_hold_shares", true)
+	tile_caster_material.shader = SHADOW_SHADER
+	_set_all("atlas_views", FieldPlant.ATLAS_VIEWS)
 
 
 ## Frames the quad and shows the views as [param plant] (a FieldPlant) says.
@@ -39,11 +47,11 @@ func configure(plant: Resource) -> void:
 	set_emission(emission, range_of.impostor_emission_range)
 	_stiffness = plant.stiffness
 	# Model units of the bottom part, and of the middle and head above it (how the wind bends them).
-	_set_both("part_reach", Vector2(plant.part_lengths.x, plant.part_lengths.y + plant.part_lengths.z))
+	_set_all("part_reach", Vector2(plant.part_lengths.x, plant.part_lengths.y + plant.part_lengths.z))
 	var frame: Vector2 = plant.impostor_frame()
-	_set_both("frame_size", frame.x)
-	_set_both("frame_centre", frame.y)
-	_set_both("shadow_caster_shift", plant.impostor_shadow_shift)
+	_set_all("frame_size", frame.x)
+	_set_all("frame_centre", frame.y)
+	_set_all("shadow_caster_shift", plant.impostor_shadow_shift)
 
 
 ## Shows [param texture] as the impostor's [param kind] (one of [constant FieldPlant.IMPOSTOR_TEXTURES]);
@@ -60,7 +68,7 @@ func set_texture(kind: String, texture: Texture2D) -> void:
 				% [kind, effect]
 			)
 		)
-	_set_both(parameter, texture)
+	_set_all(parameter, texture)
 	if kind == "views":
 		var layout: Vector2i = atlas_layout(texture)
 		var problem: String = atlas_problem(texture)
@@ -71,15 +79,15 @@ func set_texture(kind: String, texture: Texture2D) -> void:
 					% [texture.resource_path if texture.resource_path else "(unsaved)", problem, layout.x, layout.y]
 				)
 			)
-		_set_both("atlas_views", layout)
-		_set_both("view_bounds", view_bounds(texture, layout))
+		_set_all("atlas_views", layout)
+		_set_all("view_bounds", view_bounds(texture, layout))
 
 
 ## Makes the impostors glow with the light [param texture] holds ([member FieldPlant.impostor_emission]),
 ## divided by [param energy_range] ([member FieldPlant.impostor_emission_range]); null: none.
 func set_emission(texture: Texture2D, energy_range: float) -> void:
-	_set_both("emission_atlas", texture)
-	_set_both("emission_range", energy_range if texture else 0.0)
+	_set_all("emission_atlas", texture)
+	_set_all("emission_range", energy_range if texture else 0.0)
 
 
 ## The views across and down the atlas [param texture]: [constant FieldPlant.ATLAS_VIEWS]'s columns,
@@ -134,24 +142,25 @@ static func view_bounds(texture: Texture2D, views: Vector2i) -> PackedVector4Arr
 ## Sets a shader parameter of the impostor material ([code]alpha_scissor[/code],
 ## [code]thinning_start[/code], [code]thinning_min_density[/code]).
 func set_shared(parameter: StringName, value: Variant) -> void:
-	_set_both(parameter, value)
+	_set_all(parameter, value)
 
 
 ## Sways the far plants this frame: the field-wide wind [param state] (the simulation's
 ## [code]get_wind_state()[/code]), the [param wind]'s stiffnesses and the field's
 ## [param field_transform] (the wind is computed in the field's own frame, as the core does).
 func sway(state: PackedFloat32Array, wind: SunflowerWind, field_transform: Transform3D) -> void:
-	_set_both("wind_state_a", Vector4(state[0], state[1], state[2], state[3]))
-	_set_both("wind_state_b", Vector4(state[4], state[5], state[6], state[7]))
-	_set_both("bend_stiffness", Vector2(wind.stiffness_bottom, wind.stiffness_middle) * _stiffness)
+	_set_all("wind_state_a", Vector4(state[0], state[1], state[2], state[3]))
+	_set_all("wind_state_b", Vector4(state[4], state[5], state[6], state[7]))
+	_set_all("bend_stiffness", Vector2(wind.stiffness_bottom, wind.stiffness_middle) * _stiffness)
 	place(field_transform)
 
 
 ## Hides the far tiles' plants in the chunks the near buckets draw: [param mask] holds a byte per
 ## chunk cell (rows of [param grid_width]), non-zero where the chunk is active.
 func set_active_chunks(mask: Texture2D, grid_width: int) -> void:
-	tile_material.set_shader_parameter("active_chunks", mask)
-	tile_material.set_shader_parameter("chunk_grid_width", grid_width)
+	for tiles: ShaderMaterial in [tile_material, tile_caster_material]:
+		tiles.set_shader_parameter("active_chunks", mask)
+		tiles.set_shader_parameter("chunk_grid_width", grid_width)
 
 
 ## Places the impostors with the field node's [param field_transform] (the far tiles' records
@@ -159,8 +168,8 @@ func set_active_chunks(mask: Texture2D, grid_width: int) -> void:
 func place(field_transform: Transform3D) -> void:
 	if field_transform != _field_transform:
 		_field_transform = field_transform
-		_set_both("world_from_field", Projection(field_transform))
-		_set_both("field_from_world", Projection(field_transform.affine_inverse()))
+		_set_all("world_from_field", Projection(field_transform))
+		_set_all("field_from_world", Projection(field_transform.affine_inverse()))
 
 
 ## A unit square the shader turns to the observer and scales to the frame, with [member material],
@@ -184,6 +193,11 @@ func mesh(for_tiles: bool = false) -> ArrayMesh:
 	return _quads[index]
 
 
-func _set_both(parameter: StringName, value: Variant) -> void:
-	material.set_shader_parameter(parameter, value)
-	tile_material.set_shader_parameter(parameter, value)
+## The shadow casters' material of [method mesh]'s nodes.
+func caster(for_tiles: bool = false) -> ShaderMaterial:
+	return tile_caster_material if for_tiles else caster_material
+
+
+func _set_all(parameter: StringName, value: Variant) -> void:
+	for each: ShaderMaterial in [material, tile_material, caster_material, tile_caster_material]:
+		each.set_shader_parameter(parameter, value)

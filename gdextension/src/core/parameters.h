@@ -61,10 +61,10 @@ inline constexpr ParameterSpec PLANT_SCALE_MAX{ "FieldPlant.scale_max", 1.0, 0.0
 inline constexpr ParameterSpec PLANT_BRIGHTNESS_VARIATION{ "FieldPlant.brightness_variation", 0.0, 0.0, 1.0, ParameterSpec::CLAMP, 0.0 };
 inline constexpr ParameterSpec PLANT_TINT_VARIATION{ "FieldPlant.tint_variation", 0.0, 0.0, 1.0, ParameterSpec::CLAMP, 0.0 };
 inline constexpr ParameterSpec PLANT_STIFFNESS{ "FieldPlant.stiffness", 1.0, 0.05, 20.0, ParameterSpec::CLAMP, 1.0 };
-// A plant type's far shadows: in the shadow pass its impostor quad moves this share of its frame
-// towards the light, to the foremost leaves and head that shade the rest of the plant (0: a flat
-// caster through the plant's middle; 0.15 suits the sunflower, fidelity measurements of session 16).
-inline constexpr ParameterSpec PLANT_IMPOSTOR_SHADOW_SHIFT{ "FieldPlant.impostor_shadow_shift", 0.15, 0.0, 0.5, ParameterSpec::CLAMP, 0.15 };
+// A plant type's far shadows: in the shadow pass its impostor casts from the depth the plant has at
+// each pixel, moved this share of its frame towards the light (0.03 suits the sunflower: a field of
+// its impostors is then about as bright as its meshes; fidelity measurements of session 21).
+inline constexpr ParameterSpec PLANT_IMPOSTOR_SHADOW_SHIFT{ "FieldPlant.impostor_shadow_shift", 0.03, 0.0, 0.5, ParameterSpec::CLAMP, 0.03 };
 // A plant type's far glow: its emission atlas holds the light its parts give off divided by this, so
 // that 8-bit colours keep energies up to it. The baker picks the smallest of 8, 64, 512 … in which no
 // pixel of the atlas saturates.

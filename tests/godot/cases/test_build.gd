@@ -200,6 +200,24 @@ func test_parameter_changes_during_a_build_reach_the_new_field() -> void:
 	check(not after.is_equal_approx(before), "the wind set during the build sways the new field")
 
 
+## Whether the impostor [param node]'s shadows are drawn: it casts none itself; its caster child,
+## drawing from the same MultiMesh, casts them (and nothing else) while it is visible.
+func _casts(node: Node) -> bool:
+	var caster: GeometryInstance3D = node.get_child(0, true) as GeometryInstance3D
+	if not check(caster != null and caster.name == "ShadowCaster", "%s has a shadow caster" % node.name):
+		return false
+	check_eq(
+		(node as GeometryInstance3D).cast_shadow,
+		GeometryInstance3D.SHADOW_CASTING_SETTING_OFF,
+		"%s casts none itself" % node.name
+	)
+	check_eq(caster.cast_shadow, GeometryInstance3D.SHADOW_CASTING_SETTING_SHADOWS_ONLY, "its caster only casts")
+	check(
+		(caster as MultiMeshInstance3D).multimesh == (node as MultiMeshInstance3D).multimesh, "from the same MultiMesh"
+	)
+	return caster.visible
+
+
 func test_a_small_change_of_a_large_map_makes_nodes_only_for_the_tiles_it_touched() -> void:
 	field.map = _square_map(200)  # 100 × 100 m: 7 × 7 chunks of 16 m, 2 × 2 tiles of 4 × 4 chunks
 	field.finish_build()
@@ -247,10 +265,7 @@ func test_a_small_change_of_a_large_map_makes_nodes_only_for_the_tiles_it_touche
 			merge[1], 1.0 if simulation.get_tile_parent(tile) < 0 else 0.0, "%s is the top level or not" % node.name
 		)
 		# The merged level begins 200 m away, beyond the sun's shadows: it casts none.
-		var shadows: int = GeometryInstance3D.SHADOW_CASTING_SETTING_ON
-		if level > 0:
-			shadows = GeometryInstance3D.SHADOW_CASTING_SETTING_OFF
-		check_eq((node as GeometryInstance3D).cast_shadow, shadows, "%s's shadows" % node.name)
+		check_eq(_casts(node), level == 0, "%s's shadows" % node.name)
 	check_eq(instances[0], field.get_plant_count(), "far buffers hold every plant once")
 	# A new merge distance keeps every tile's node and buffer, and moves where the merged one begins.
 	field.tile_merge_distance = 500.0
@@ -268,7 +283,7 @@ func test_a_small_change_of_a_large_map_makes_nodes_only_for_the_tiles_it_touche
 		var reach: float = 0.5 * merged_node.custom_aabb.size.length()
 		check_near(merged_node.visibility_range_begin, 500.0 - reach, 1e-3, "its node's range begins there")
 		check_eq(merged_node.get_instance_shader_parameter(&"tile_merge").z, 500.0, "its shader knows the distance")
-		check_eq(merged_node.cast_shadow, GeometryInstance3D.SHADOW_CASTING_SETTING_OFF, "beyond the sun's shadows")
+		check(not _casts(merged_node), "beyond the sun's shadows")
 		# The tiles follow the sun's shadows from frame to frame, without a rebuild: a sun added whose
 		# shadows reach past where the merged level begins lets it cast; shorter shadows, shadows
 		# turned off or the sun gone take them away again.
@@ -276,29 +291,27 @@ func test_a_small_change_of_a_large_map_makes_nodes_only_for_the_tiles_it_touche
 		sun.shadow_enabled = true
 		sun.directional_shadow_max_distance = 600.0
 		tree.root.add_child(sun)
-		var on: int = GeometryInstance3D.SHADOW_CASTING_SETTING_ON
-		var off: int = GeometryInstance3D.SHADOW_CASTING_SETTING_OFF
 		await frames(2)
-		check_eq(merged_node.cast_shadow, on, "a merged tile within a sun's 600 m of shadows casts them")
+		check(_casts(merged_node), "a merged tile within a sun's 600 m of shadows casts them")
 		sun.directional_shadow_max_distance = 300.0
 		await frames(2)
-		check_eq(merged_node.cast_shadow, off, "the sun's shadows shortened to 300 m")
+		check(not _casts(merged_node), "the sun's shadows shortened to 300 m")
 		sun.directional_shadow_max_distance = 600.0
 		sun.shadow_enabled = false
 		await frames(2)
-		check_eq(merged_node.cast_shadow, off, "the sun's shadows turned off")
+		check(not _casts(merged_node), "the sun's shadows turned off")
 		sun.shadow_enabled = true
 		await frames(2)
-		check_eq(merged_node.cast_shadow, on, "and on again")
+		check(_casts(merged_node), "and on again")
 		# A build with the sun there sets it from the start.
 		field.tile_merge_distance = 450.0
 		field.finish_build()
 		for node: Node in field.get_children(true):
 			if node.name == "FarTile%d" % simulation.get_tile_key(merged):
 				merged_node = node
-				check_eq(merged_node.cast_shadow, on, "a merged tile built within a sun's shadows casts them")
+				check(_casts(merged_node), "a merged tile built within a sun's shadows casts them")
 		sun.free()
 		await frames(2)
-		check_eq(merged_node.cast_shadow, off, "the sun gone")
+		check(not _casts(merged_node), "the sun gone")
 	var quarter: float = field.get_plant_count() / 4.0
 	check_near(instances[1], quarter, 5.0 * sqrt(quarter), "the merged tile holds about a quarter")

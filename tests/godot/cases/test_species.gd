@@ -54,7 +54,7 @@ func test_a_legend_plant_is_a_species_with_its_own_buckets_impostors_and_counts(
 	maize.height_units = 3.5
 	var box: BoxMesh = BoxMesh.new()
 	maize.mesh_level_1 = [box, box, box]
-	maize.impostor_shadow_shift = 0.0  # a flat caster, where the sunflower's stands 0.15 out
+	maize.impostor_shadow_shift = 0.0  # at the plant's own depths, where the sunflower's stand 0.03 out
 	var field: SunflowerField = SunflowerField.new()
 	field.legend = {"m": maize, "S": stone}
 	field.map = _mixed_map(60)
@@ -79,15 +79,17 @@ func test_a_legend_plant_is_a_species_with_its_own_buckets_impostors_and_counts(
 		framed.append((quad.surface_get_material(0) as ShaderMaterial).get_shader_parameter("frame_size"))
 	check_near(framed[1], frames[1], 1e-3, "the second type's impostor frame")
 	check_near(framed[0], frames[0], 1e-3, "the sunflower's impostor frame")
-	# Each type's shadow casters stand out as far as it says, and a change is drawn without a rebuild.
+	# Each type's shadow casters (the impostor nodes' caster children) stand out as far as it says,
+	# and a change is drawn without a rebuild.
+	var casters: Array[ShaderMaterial] = []
+	for node_name: String in ["Impostors", "Plant1Impostors"]:
+		casters.append(_node_named(field, node_name).get_child(0, true).material_override as ShaderMaterial)
 	var shifts: Array[float] = []
-	for quad: Mesh in [sunflower_quad, maize_quad]:
-		shifts.append((quad.surface_get_material(0) as ShaderMaterial).get_shader_parameter("shadow_caster_shift"))
-	check_eq(shifts, [0.15, 0.0] as Array[float], "each type's shadow shift")
+	for caster: ShaderMaterial in casters:
+		shifts.append(caster.get_shader_parameter("shadow_caster_shift"))
+	check_eq(shifts, [0.03, 0.0] as Array[float], "each type's shadow shift")
 	maize.impostor_shadow_shift = 0.3
-	var shift: float = (maize_quad.surface_get_material(0) as ShaderMaterial).get_shader_parameter(
-		"shadow_caster_shift"
-	)
+	var shift: float = casters[1].get_shader_parameter("shadow_caster_shift")
 	check_near(shift, 0.3, 1e-6, "the new shift is drawn")
 	check(not field.is_building(), "without a rebuild")
 	# Tiles hold one type each, with that type's impostor quads.
