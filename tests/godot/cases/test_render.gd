@@ -383,6 +383,50 @@ func test_far_impostors_stand_where_their_plants_do_on_a_moved_and_turned_field(
 	check(similarity > 0.97, "the far field looks the same moved and turned (SSIM %.4f)" % similarity)
 
 
+## A lone sunflower 40 m away (a narrow view, nearly orthographic), 45° above its front, drawn as
+## mesh 1 and as a sprite: its leaves as bright. The impostor's shadow caster casts from the depth
+## the plant has at each pixel; the flat caster moved towards the light that it replaced shaded all
+## of the plant behind it, and a lone plant's leaves were dark (0.86 of the mesh's brightness; 0.99 now).
+func test_a_lone_far_plant_shades_itself_as_its_mesh_does() -> void:
+	var field: SunflowerField = SunflowerField.new()
+	scene.add_child(field)
+	field.map = _one_plant_map()
+	field.wind_power = 0.0
+	field.finish_build()
+	field.set_process(false)
+	var target: Vector3 = field.get_plant_info(0)["position"] + Vector3(0.0, 1.0, 0.0)
+	var camera: Camera3D = Camera3D.new()
+	scene.add_child(camera)
+	camera.fov = 4.0
+	camera.look_at_from_position(target + Vector3(0.0, 1.0, 1.0).normalized() * 40.0, target)
+	camera.make_current()
+	var leaves: Array[float] = []
+	for level: int in [0, 3]:  # mesh 1, sprite
+		field.force_lod = level
+		field.advance(0.0)
+		await frames(3)
+		var image: Image = tree.root.get_viewport().get_texture().get_image()
+		image.save_png(artifact_path("render_lone_plant_%s.png" % ["mesh1", "", "", "sprite"][level]))
+		leaves.append(_mean_green_luminance(image))
+	var ratio: float = leaves[1] / maxf(leaves[0], 1e-6)
+	print("     a lone plant's leaves as a sprite: %.3f of the mesh's brightness" % ratio)
+	check(leaves[0] > 0.05, "the mesh's leaves are in view and lit (%.3f)" % leaves[0])
+	check(ratio > 0.9 and ratio < 1.1, "the sprite's leaves are as bright as the mesh's: %.3f" % ratio)
+
+
+## The mean luminance of the pixels where green leads (leaves and stalk), 0 when there are none.
+func _mean_green_luminance(image: Image) -> float:
+	var sum: float = 0.0
+	var count: int = 0
+	for y: int in image.get_height():
+		for x: int in image.get_width():
+			var c: Color = image.get_pixel(x, y)
+			if c.g > c.r + 0.02 and c.g > c.b + 0.02:
+				sum += c.get_luminance()
+				count += 1
+	return sum / maxf(count, 1.0)
+
+
 ## A map of one plant.
 func _one_plant_map() -> SunflowerFieldMap:
 	var one: SunflowerFieldMap = SunflowerFieldMap.new()
