@@ -324,6 +324,10 @@ TEST_CASE("far tiles merge with distance: nested quarters, parents covering thei
 	std::array<uint32_t, FieldSimulation::MAX_TILE_LEVELS> tiles_at{};
 	std::array<uint32_t, FieldSimulation::MAX_TILE_LEVELS> plants_at{};
 	uint32_t top = 0;
+	std::map<std::pair<float, float>, uint32_t> levels; // each plant's level, by where it stands
+	for (const Plant &plant : layout.plants) {
+		levels[{ plant.position.x, plant.position.y }] = sim.plant_tile_level(plant);
+	}
 	for (uint32_t t = 0; t < sim.get_tile_count(); ++t) {
 		const FieldSimulation::Tile &tile = sim.get_tile(t);
 		CAPTURE(t);
@@ -338,10 +342,6 @@ TEST_CASE("far tiles merge with distance: nested quarters, parents covering thei
 		{
 			std::vector<float> records(size_t(tile.plants) * FAR_FLOATS_PER_INSTANCE);
 			sim.write_tile_instances(t, records.data());
-			std::map<std::pair<float, float>, uint32_t> levels;
-			for (const Plant &plant : layout.plants) {
-				levels[{ plant.position.x, plant.position.y }] = sim.plant_tile_level(plant);
-			}
 			uint32_t marked = 0;
 			for (size_t k = 0; k < tile.plants; ++k) {
 				const FarInstance record = read_far_instance(records.data() + k * FAR_FLOATS_PER_INSTANCE);
