@@ -33,6 +33,26 @@ doctest_suite() {
   ((status != 0 && f == 0)) && f=1
   record "$p" "$f" "$label"
 }
+# The fuzzer and the core's tests under Wine and QEMU each keep one core busy: the fuzzer runs beside
+# them (started here, its result recorded at the end).
+fuzz_seconds=${FUZZ_SECONDS:-60}
+fuzz_corpus=$(mktemp -d)
+(
+  "$repo/.cache/venv/bin/scons" -Q -j1 fuzz >"$artifacts/fuzz_build.log" 2>&1 &&
+    "$repo/build/fuzz/fuzz_field_map" -max_total_time="$fuzz_seconds" -max_len=4096 -print_final_stats=1 \
+      -artifact_prefix="$artifacts/fuzz-" "$fuzz_corpus" "$repo/gdextension/fuzz/corpus" >"$artifacts/fuzz.log" 2>&1
+) &
+fuzz_pid=$!
+fuzz_finish() {
+  echo "== fuzzing the map parser and layout for ${fuzz_seconds} s (libFuzzer, ASan + UBSan; run beside the core's tests)"
+  if wait "$fuzz_pid"; then
+    grep -E "^Done|stat::number_of_executed_units" "$artifacts/fuzz.log" | head -n 2
+    record 1 0 "fuzzing"
+  else
+    tail -n 30 "$artifacts/fuzz_build.log" "$artifacts/fuzz.log"; record 0 1 "fuzzing"
+  fi
+  rm -rf "$fuzz_corpus"
+}
 doctest_suite "core unit tests (doctest)" "$repo/build/tests/core_tests"
 doctest_suite "core unit tests built for Windows x86_64, under Wine" /usr/lib/wine/wine64 "$repo/build/tests/core_tests.windows.x86_64.exe"
 doctest_suite "core unit tests built for Linux arm64, under QEMU" qemu-aarch64-static -L /usr/aarch64-linux-gnu \
@@ -227,19 +247,7 @@ else
 fi
 rm -rf "$badproject"
 
-fuzz_seconds=${FUZZ_SECONDS:-60}
-echo "== fuzzing the map parser and layout for ${fuzz_seconds} s (libFuzzer, ASan + UBSan)"
-corpus=$(mktemp -d)
-if "$repo/.cache/venv/bin/scons" -Q -j"$(nproc)" fuzz >"$artifacts/fuzz_build.log" 2>&1 &&
-  "$repo/build/fuzz/fuzz_field_map" -max_total_time="$fuzz_seconds" -max_len=4096 -print_final_stats=1 \
-    -artifact_prefix="$artifacts/fuzz-" "$corpus" "$repo/gdextension/fuzz/corpus" >"$artifacts/fuzz.log" 2>&1; then
-  grep -E "^Done|stat::number_of_executed_units" "$artifacts/fuzz.log" | head -n 2
-  record 1 0 "fuzzing"
-else
-  tail -n 30 "$artifacts/fuzz_build.log" "$artifacts/fuzz.log"; record 0 1 "fuzzing"
-fi
-rm -rf "$corpus"
-
+fuzz_finish
 echo "artifacts: $artifacts"
 echo "time: $SECONDS s ($build_seconds s of it the build)"
 echo "total: $passed passed, $failed failed"
