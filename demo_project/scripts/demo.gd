@@ -29,6 +29,8 @@ const HILLS_MAP: String = "hills.field"
 const INCREMENTS: PackedFloat32Array = [0.1, 10.0]
 const TRIANGLES_SPRITE: int = 4
 const TRIANGLES_BILLBOARD: int = 2
+## How long a recording waits after its last frame before it quits (see _finish_recording).
+const RECORDING_EXIT_SETTLE_SECONDS: float = 3.0
 ## Below this eye height the camera is a pusher: the flowers part around it.
 const PUSHER_HEIGHT: float = 2.5
 ## How far around the low camera the flowers part, metres (wide enough to see the parting ahead).
@@ -438,6 +440,9 @@ func _finish_recording() -> void:
 	)
 	if not _stats_path.is_empty():
 		_write_stats()
+	# A recording ends a few frames after its first: the renderer may still compile a pipeline in the
+	# background, and quitting then can deadlock the engine's exit (godot#117064).
+	await get_tree().create_timer(RECORDING_EXIT_SETTLE_SECONDS).timeout
 	get_tree().quit(_exit_code)
 
 
