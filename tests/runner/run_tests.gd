@@ -113,7 +113,7 @@ func _run() -> void:
 	print("godot: %d passed, %d failed" % [passed, failed])
 	OS.remove_logger(_log)
 	# Quitting while the renderer still compiles a pipeline in the background can deadlock the
-	# engine's exit (godot#117064): here a run of one fidelity test hung after its summary line in 4
-	# of 7 runs, and in none of 5 with this wait (session 24).
+	# engine's exit (godot#117064): here a run of one fidelity test hung after its summary line in 3
+	# of 5 runs (3 of 6 with three frames drawn first), and in none of 9 with this wait (session 24).
 	await create_timer(EXIT_SETTLE_SECONDS).timeout
 	quit(1 if failed > 0 or passed == 0 else 0)
