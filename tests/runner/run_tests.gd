@@ -46,7 +46,7 @@ class ErrorLog:
 		return warnings
 
 
-## How long the emptied tree keeps drawing before the runner quits (see the end of _initialize).
+## How long the emptied tree keeps drawing before the runner quits (see the end of _run).
 const EXIT_SETTLE_SECONDS: float = 3.0
 
 var _log: ErrorLog = ErrorLog.new()
