@@ -24,6 +24,8 @@ from PIL import Image
 folder = pathlib.Path(sys.argv[1])
 for auto in sorted(folder.glob("*.auto.png")):
     full = auto.with_name(auto.name.replace(".auto.", ".mesh1."))
+    if not full.exists():  # a picture of another run, without its full-mesh one
+        continue
     a, b = Image.open(auto), Image.open(full)
     pair = Image.new("RGB", (a.width + b.width + 8, a.height), "white")
     pair.paste(a, (0, 0))
