@@ -23,7 +23,7 @@ const WholePlantMesh: GDScript = preload("whole_plant_mesh.gd")
 const PlantMaterial: GDScript = preload("plant_material.gd")
 ## The impostor atlases' views: columns around the plant (the first from its front, +z, turning
 ## towards +x), rows of elevation from the side (0°, top row) to straight above (90°, bottom row).
-const ATLAS_VIEWS: Vector2i = Vector2i(12, 7)
+const ATLAS_VIEWS: Vector2i = Vector2i(12, 10)
 ## The impostor textures, as [method texture_drawn] names them.
 const IMPOSTOR_TEXTURES: PackedStringArray = ["views", "normals", "depths"]
 ## The optional impostor texture of the light a plant's parts give off (see [member impostor_emission]).

@@ -92,8 +92,8 @@ func set_emission(texture: Texture2D, energy_range: float) -> void:
 
 ## The views across and down the atlas [param texture]: [constant FieldPlant.ATLAS_VIEWS]'s columns,
 ## and as many rows of elevation as its shape holds, so that an atlas baked with fewer rows (the
-## baker made 4, 30° apart, before it made 7) is still drawn right. [constant FieldPlant.ATLAS_VIEWS]
-## without a texture.
+## baker made 4, 30° apart, then 7, 15° apart, before it made 10) is still drawn right.
+## [constant FieldPlant.ATLAS_VIEWS] without a texture.
 static func atlas_layout(texture: Texture2D) -> Vector2i:
 	var columns: int = FieldPlant.ATLAS_VIEWS.x
 	if texture == null or texture.get_width() <= 0:

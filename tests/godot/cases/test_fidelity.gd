@@ -84,17 +84,19 @@ func test_far_levels_look_like_the_full_mesh_picture() -> void:
 				% [view, figures[view][0], figures[view][1], 100.0 * share, "%.3f" % brightness if share > 0 else "—"]
 			)
 		)
-	# The issue's targets: SSIM ≥ 0.99 at head height (met), ≥ 0.85 from above (not met at 45°: see
-	# the README; mesh 3, a model of a quarter of the triangles, reaches 0.915 and 0.963, so it is the
-	# impostor's look, not the plants' places; main before the multi-view impostors measured 0.438
-	# and 0.748, session 15's reads from the footprint's mip 0.543 and 0.779: a texel averaging a head
-	# with its leaves blurs the pattern the meshes draw a pixel each; each view read at one shared
-	# place, not where the pixel's point lies in it, 0.606 and 0.820 in session 25), brightness within
-	# ±5 % (met; straight down it was 1.064 with the shadow caster through the plant's middle,
-	# session 15). What is checked is what this code reaches, so that a regression fails.
+	# The issue's targets: SSIM ≥ 0.99 at head height (met), ≥ 0.85 from above (met straight down
+	# since session 26, not at 45°: see the README; mesh 3, a model of a quarter of the triangles,
+	# reaches 0.915 and 0.963, so it is the impostor's look, not the plants' places; main before the
+	# multi-view impostors measured 0.438 and 0.748, session 15's reads from the footprint's mip 0.543
+	# and 0.779: a texel averaging a head with its leaves blurs the pattern the meshes draw a pixel
+	# each; each view read at one shared place, not where the pixel's point lies in it, 0.606 and
+	# 0.820 in session 25; the views the quad's middle is seen from, with 7 rows of them 15° apart,
+	# 0.683 and 0.848), brightness within ±5 % (met; straight down it was 1.064 with the shadow caster
+	# through the plant's middle, session 15). What is checked is what this code reaches, so that a
+	# regression fails.
 	check(figures["inside"][0] >= 0.99, "at head height the picture is the full-mesh one (%.3f)" % figures["inside"][0])
-	check(figures["above45"][0] >= 0.65, "25 m up at 45°: SSIM %.3f, at least 0.65" % figures["above45"][0])
-	check(figures["down60"][0] >= 0.83, "60 m straight down: SSIM %.3f, at least 0.83" % figures["down60"][0])
+	check(figures["above45"][0] >= 0.72, "25 m up at 45°: SSIM %.3f, at least 0.72" % figures["above45"][0])
+	check(figures["down60"][0] >= 0.86, "60 m straight down: SSIM %.3f, at least 0.86" % figures["down60"][0])
 	for view: String in ["above45", "down60"]:
 		check(
 			absf(figures[view][3] - 1.0) <= 0.05,

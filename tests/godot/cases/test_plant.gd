@@ -214,28 +214,34 @@ func test_the_impostor_quad_covers_only_what_its_views_show() -> void:
 		check(area > 0.1 and area < 0.4, "%s: the views fill %.2f of their squares" % [name, area])
 
 
-## The baker makes 7 rows of elevation (15° apart); an atlas baked with 4 (30° apart, before) is read
-## with its own rows, from its shape, so its views are still found where they are.
+## The baker makes 10 rows of elevation (10° apart); an atlas baked with 4 (30° apart) or 7 (15°
+## apart, until session 25) is read with its own rows, from its shape, so its views are still found
+## where they are.
 func test_an_atlas_is_read_with_the_rows_it_was_baked_with() -> void:
 	var columns: int = FieldPlant.ATLAS_VIEWS.x
-	var old: ImageTexture = ImageTexture.create_from_image(Image.create(columns * 8, 4 * 8, false, Image.FORMAT_RGBA8))
+	var oldest: ImageTexture = ImageTexture.create_from_image(
+		Image.create(columns * 8, 4 * 8, false, Image.FORMAT_RGBA8)
+	)
+	var old: ImageTexture = ImageTexture.create_from_image(Image.create(columns * 8, 7 * 8, false, Image.FORMAT_RGBA8))
 	var now: ImageTexture = ImageTexture.create_from_image(
 		Image.create(columns * 8, FieldPlant.ATLAS_VIEWS.y * 8, false, Image.FORMAT_RGBA8)
 	)
-	check_eq(FieldPlant.ATLAS_VIEWS, Vector2i(12, 7), "the baker's views: 12 around, 7 elevations")
-	check_eq(ImpostorSetScript.atlas_layout(old), Vector2i(columns, 4), "a 4-row atlas")
-	check_eq(ImpostorSetScript.atlas_layout(now), FieldPlant.ATLAS_VIEWS, "a 7-row atlas")
+	check_eq(FieldPlant.ATLAS_VIEWS, Vector2i(12, 10), "the baker's views: 12 around, 10 elevations")
+	check_eq(ImpostorSetScript.atlas_layout(oldest), Vector2i(columns, 4), "a 4-row atlas")
+	check_eq(ImpostorSetScript.atlas_layout(old), Vector2i(columns, 7), "a 7-row atlas")
+	check_eq(ImpostorSetScript.atlas_layout(now), FieldPlant.ATLAS_VIEWS, "a 10-row atlas")
 	check_eq(ImpostorSetScript.atlas_layout(null), FieldPlant.ATLAS_VIEWS, "no atlas: the baker's layout")
 	var impostors: RefCounted = ImpostorSetScript.new()
-	for texture: ImageTexture in [old, now]:
+	for texture: ImageTexture in [oldest, old, now]:
 		impostors.set_texture("views", texture)
 		var rows: int = texture.get_height() / 8
 		for material: ShaderMaterial in [impostors.material, impostors.tile_material]:
 			check_eq(material.get_shader_parameter("atlas_views"), Vector2i(columns, rows), "%d rows drawn" % rows)
 			check_eq(material.get_shader_parameter("view_bounds").size(), columns * rows, "a rectangle per view")
 	# An atlas of another shape is named as such (and warned of when drawn).
-	check_eq(ImpostorSetScript.atlas_problem(old), "", "a 4-row atlas is one the baker made")
-	check_eq(ImpostorSetScript.atlas_problem(now), "", "a 7-row atlas is one the baker made")
+	check_eq(ImpostorSetScript.atlas_problem(oldest), "", "a 4-row atlas is one the baker made")
+	check_eq(ImpostorSetScript.atlas_problem(old), "", "a 7-row atlas is one the baker made")
+	check_eq(ImpostorSetScript.atlas_problem(now), "", "a 10-row atlas is one the baker made")
 	for size: Vector2i in [
 		Vector2i(columns * 8 + 3, 32), Vector2i(columns * 8, 30), Vector2i(columns * 8, 8), Vector2i(512, 512)
 	]:
