@@ -324,39 +324,49 @@ func _red_pixels(image: Image) -> float:
 	return count
 
 
+## One sunflower side on to a strong wind (blowing to +x), seen from its front 6 m away: at 14
+## moments of a gust, a sixth of a second apart, the head of the sprite and of the billboard moves
+## as the head of mesh 3 does. The field is advanced by hand, so every run sees the same moments.
+## Each representation's head is taken relative to its own in calm air, so that how each draws the
+## head does not count, but how it is lit does: on the Compatibility renderer, which finds shadows
+## from the vertices, the sprite's head shaded its own lower half in calm air and not when bent
+## (5.4 cm off at worst; 1.5 cm with the quad forward for the shadow lookup).
 func test_far_plants_sway_as_the_near_ones_do() -> void:
-	# One sunflower side on to a strong wind (blowing to +x), seen from its front.
-	var one: SunflowerFieldMap = _one_plant_map()
 	var field: SunflowerField = SunflowerField.new()
 	scene.add_child(field)
-	field.map = one
-	field.wind_power = 5.0
+	field.map = _one_plant_map()
 	field.force_lod = 2  # mesh 3
 	field.finish_build()
+	field.set_process(false)
 	var root: Vector3 = field.get_plant_info(0)["position"]
 	var camera: Camera3D = Camera3D.new()
 	scene.add_child(camera)
 	camera.look_at_from_position(root + Vector3(0.0, 1.3, 6.0), root + Vector3(0.0, 1.3, 0.0))
 	camera.make_current()
-	# The head of mesh 3, the sprite and the billboard at one instant of the wind, then in calm air: each
-	# representation's own displacement by the wind (so that how each draws the head does not count).
-	var windy: Array[Vector2] = await _heads(field, 40)
-	field.wind_power = 0.0
-	var calm: Array[Vector2] = await _heads(field, 60)  # the wind eases down in half a second
 	# 6 m away, 360 rows over the camera's field of view.
 	var metres_per_pixel: float = 2.0 * 6.0 * tan(deg_to_rad(camera.fov * 0.5)) / 360.0
-	var bent: Vector2 = (windy[0] - calm[0]) * metres_per_pixel
-	var sprite_off: float = ((windy[1] - calm[1]) * metres_per_pixel).distance_to(bent)
-	var billboard_off: float = ((windy[2] - calm[2]) * metres_per_pixel).distance_to(bent)
+	field.wind_power = 0.0
+	_run_field(field, 120)
+	var calm: Array[Vector2] = await _heads(field)
+	field.wind_power = 5.0
+	var strongest: Vector2 = Vector2.ZERO
+	var worst: PackedFloat32Array = [0.0, 0.0]  # sprite, billboard
+	for _moment: int in 14:
+		_run_field(field, 10)
+		var windy: Array[Vector2] = await _heads(field)
+		var bent: Vector2 = (windy[0] - calm[0]) * metres_per_pixel
+		strongest = bent if bent.length() > strongest.length() else strongest
+		for i: int in 2:
+			worst[i] = maxf(worst[i], ((windy[i + 1] - calm[i + 1]) * metres_per_pixel).distance_to(bent))
 	print(
 		(
-			"     head bent %.3f m by the wind; the impostor's bent within %.3f m of the mesh's (sprite), %.3f m (billboard)"
-			% [bent.length(), sprite_off, billboard_off]
+			"     head bent up to %.3f m; at 14 moments the impostor's within %.3f m of the mesh's (sprite), %.3f m (billboard)"
+			% [strongest.length(), worst[0], worst[1]]
 		)
 	)
-	check(bent.x > 0.15, "the wind bends the plant downwind (%.3f m)" % bent.x)
-	check(sprite_off < 0.05, "the sprite's head moves as the mesh's (%.3f m off)" % sprite_off)
-	check(billboard_off < 0.05, "the billboard's head moves as the mesh's (%.3f m off)" % billboard_off)
+	check(strongest.x > 0.3, "the wind bends the plant downwind (%.3f m)" % strongest.x)
+	check(worst[0] < 0.03, "the sprite's head moves as the mesh's (%.3f m off)" % worst[0])
+	check(worst[1] < 0.03, "the billboard's head moves as the mesh's (%.3f m off)" % worst[1])
 
 
 func test_far_impostors_stand_where_their_plants_do_on_a_moved_and_turned_field() -> void:
@@ -435,19 +445,20 @@ func _one_plant_map() -> SunflowerFieldMap:
 	return one
 
 
-## Lets the field run [param settle] frames, stops it, and finds its head as mesh 3, sprite and
-## billboard at that instant.
-func _heads(field: SunflowerField, settle: int) -> Array[Vector2]:
-	field.set_process(true)
-	await frames(settle)
-	field.set_process(false)
+## Advances [param field] by [param count] frames of 1/60 s.
+func _run_field(field: SunflowerField, count: int) -> void:
+	for _i: int in count:
+		field.advance(1.0 / 60.0)
+
+
+## The head of [param field]'s plant as mesh 3, sprite and billboard at this instant.
+func _heads(field: SunflowerField) -> Array[Vector2]:
 	var heads: Array[Vector2] = []
 	for level: int in [2, 3, 4]:
 		field.force_lod = level
 		field.advance(0.0)
 		await frames(3)
 		heads.append(_yellow_centre(tree.root.get_viewport().get_texture().get_image()))
-	field.set_process(true)
 	return heads
 
 
