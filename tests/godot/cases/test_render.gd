@@ -398,16 +398,11 @@ func test_far_impostors_stand_where_their_plants_do_on_a_moved_and_turned_field(
 ## the plant has at each pixel; the flat caster moved towards the light that it replaced shaded all
 ## of the plant behind it, and a lone plant's leaves were dark (0.86 of the mesh's brightness; 0.99 now).
 func test_a_lone_far_plant_shades_itself_as_its_mesh_does() -> void:
-	var field: SunflowerField = SunflowerField.new()
-	scene.add_child(field)
-	field.map = _one_plant_map()
-	field.wind_power = 0.0
-	field.finish_build()
-	field.set_process(false)
+	var field: SunflowerField = _lone_still_plant()
 	var target: Vector3 = field.get_plant_info(0)["position"] + Vector3(0.0, 1.0, 0.0)
 	var camera: Camera3D = Camera3D.new()
 	scene.add_child(camera)
-	camera.fov = 4.0
+	camera.fov = 4.0  # nearly orthographic
 	camera.look_at_from_position(target + Vector3(0.0, 1.0, 1.0).normalized() * 40.0, target)
 	camera.make_current()
 	var leaves: Array[float] = []
@@ -433,16 +428,11 @@ func test_a_lone_far_plant_shades_itself_as_its_mesh_does() -> void:
 ## with the views mirrored it fails at 6 of the 32 places, read 29° round from where they are seen
 ## at 7.
 func test_a_lone_far_plant_looks_like_its_mesh_from_every_side() -> void:
-	var field: SunflowerField = SunflowerField.new()
-	scene.add_child(field)
-	field.map = _one_plant_map()
-	field.wind_power = 0.0
-	field.finish_build()
-	field.set_process(false)
+	var field: SunflowerField = _lone_still_plant()
 	var target: Vector3 = field.get_plant_info(0)["position"] + Vector3(0.0, 1.0, 0.0)
 	var camera: Camera3D = Camera3D.new()
 	scene.add_child(camera)
-	camera.fov = 4.0
+	camera.fov = 4.0  # nearly orthographic
 	camera.make_current()
 	var crop: Rect2i = Rect2i(250, 20, 140, 320)  # the plant
 	var picture: Picture = Picture.new(crop.size.x, crop.size.y)
@@ -508,6 +498,18 @@ func _mean_green_luminance(image: Image) -> float:
 				sum += c.get_luminance()
 				count += 1
 	return sum / maxf(count, 1.0)
+
+
+## One sunflower in calm air, built, its field stopped (drawn as [member SunflowerField.force_lod] says
+## after an [method SunflowerField.advance]).
+func _lone_still_plant() -> SunflowerField:
+	var field: SunflowerField = SunflowerField.new()
+	scene.add_child(field)
+	field.map = _one_plant_map()
+	field.wind_power = 0.0
+	field.finish_build()
+	field.set_process(false)
+	return field
 
 
 ## A map of one plant.
