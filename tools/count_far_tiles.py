@@ -1,14 +1,18 @@
 #!/usr/bin/env python3
 """Counts the far tiles the engine draws from 40 m outside a square field (the demo's "outside40"
-view), per tile level, for a tiling: a model of FieldSimulation's tiles and ranges, to weigh tile
-sizes without the engine (README, "Does another tile size meet it?").
+view), per tile level, for a tiling: a model of FieldSimulation's tiles and the nodes' ranges, to
+weigh tile sizes without the engine (README, "Does another tile size meet it?").
 
-A tile is counted when its range (FieldSimulation::get_tile_range: from its merge distance less its
-reach to the next level's plus its reach, measured to the box's centre) holds the camera, or with
---box when its box reaches into the distances its level draws, and its box reaches into the view
-(107 degrees across, Godot's 75-degree camera at 16:9). Usage:
+By default the model is the addon's cut (session 27): a tile is drawn when the camera's distance to
+its box's centre reaches its range's begin (FieldSimulation::get_tile_shown_from: its merge distance
+plus its reach) and that of no tile above it does (the nodes' visibility parents). With --overlap it
+is sessions 17-26's rule: each tile drawn from its merge distance less its reach to the next
+level's plus its reach, two levels overlapping around each merge distance. Either way a tile must
+also reach into the view (107 degrees across, Godot's 75-degree camera at 16:9). Prints the tiles
+drawn and the instances they hold (square metres of plants times the level's density), whose vertex
+shader runs whether the level draws them or not. Usage:
 
-    tools/count_far_tiles.py [--tile-chunks 4] [--floor 1.5] [--box] SIDE...
+    tools/count_far_tiles.py [--tile-chunks 8] [--floor 0] [--overlap] SIDE...
 """
 import argparse
 import math
@@ -17,9 +21,11 @@ CHUNK = 16.0  # metres, the default chunk size
 MERGE = 200.0  # the default tile merge distance
 HALF_VIEW = math.radians(53.5)
 
+Tile = tuple[int, float, float, float, float]  # level, x0, z0, x1, z1
 
-def tiles(side: float, tile_chunks: int) -> tuple[list[tuple[int, float, float, float, float]], int]:
-    """(level, x0, z0, x1, z1) of every tile of a side × side field, and the top level."""
+
+def tiles(side: float, tile_chunks: int) -> list[Tile]:
+    """Every tile of a side × side field, level by level until one covers it."""
     out = []
     level, size = 0, tile_chunks * CHUNK
     while True:
@@ -28,7 +34,7 @@ def tiles(side: float, tile_chunks: int) -> tuple[list[tuple[int, float, float, 
             for j in range(count):
                 out.append((level, i * size, j * size, min((i + 1) * size, side), min((j + 1) * size, side)))
         if count == 1:
-            return out, level
+            return out
         level, size = level + 1, size * 2
 
 
@@ -38,8 +44,8 @@ def merge_distance(level: int, tile_chunks: int, floor: float) -> float:
     return max(MERGE * 2 ** (level - 1), floor * tile_chunks * CHUNK * 2**level)
 
 
-def in_view(camera: tuple[float, float], box: tuple[float, float, float, float]) -> bool:
-    x0, z0, x1, z1 = box
+def in_view(camera: tuple[float, float], tile: Tile) -> bool:
+    _, x0, z0, x1, z1 = tile
     for a in range(9):
         for b in range(9):
             dx = x0 + (x1 - x0) * a / 8 - camera[0]
@@ -49,39 +55,61 @@ def in_view(camera: tuple[float, float], box: tuple[float, float, float, float])
     return False
 
 
-def count(side: float, tile_chunks: int, floor: float, by_box: bool) -> dict[int, int]:
-    all_tiles, top = tiles(side, tile_chunks)
+def count(side: float, tile_chunks: int, floor: float, overlap: bool) -> tuple[dict[int, int], float]:
+    all_tiles = tiles(side, tile_chunks)
+    top = all_tiles[-1][0]
     camera = (side / 2, side + 40.0)
+
+    def centre(tile: Tile) -> float:
+        return math.hypot((tile[1] + tile[3]) / 2 - camera[0], (tile[2] + tile[4]) / 2 - camera[1])
+
+    def reach(tile: Tile) -> float:
+        return 0.5 * math.hypot(tile[3] - tile[1], tile[4] - tile[2])
+
+    def parent(tile: Tile) -> Tile | None:
+        level, x0, z0 = tile[0], tile[1], tile[2]
+        size = 2 * tile_chunks * CHUNK * 2**level
+        for other in all_tiles:
+            if other[0] == level + 1 and other[1] <= x0 < other[1] + size and other[2] <= z0 < other[2] + size:
+                return other
+        return None
+
+    def in_range(tile: Tile) -> bool:
+        return tile[0] == 0 or centre(tile) >= merge_distance(tile[0], tile_chunks, floor) + reach(tile)
+
     drawn: dict[int, int] = {}
-    for level, x0, z0, x1, z1 in all_tiles:
-        if not in_view(camera, (x0, z0, x1, z1)):
+    instances = 0.0
+    for tile in all_tiles:
+        if not in_view(camera, tile):
             continue
-        begin = merge_distance(level, tile_chunks, floor)
-        end = merge_distance(level + 1, tile_chunks, floor) if level < top else math.inf
-        if by_box:
-            near = math.hypot(max(x0 - camera[0], 0, camera[0] - x1), max(z0 - camera[1], 0, camera[1] - z1))
-            far = max(math.hypot(x - camera[0], z - camera[1]) for x in (x0, x1) for z in (z0, z1))
-            shown = far >= begin and near < end
+        level = tile[0]
+        if overlap:
+            begin = merge_distance(level, tile_chunks, floor) - reach(tile)
+            end = merge_distance(level + 1, tile_chunks, floor) + reach(tile) if level < top else math.inf
+            shown = (level == 0 or centre(tile) >= begin) and centre(tile) <= end
         else:
-            reach = 0.5 * math.hypot(x1 - x0, z1 - z0)
-            centre = math.hypot((x0 + x1) / 2 - camera[0], (z0 + z1) / 2 - camera[1])
-            shown = (level == 0 or centre >= begin - reach) and centre <= end + reach
+            shown = in_range(tile)
+            above = parent(tile)
+            while shown and above is not None:
+                shown = not in_range(above)
+                above = parent(above)
         if shown:
             drawn[level] = drawn.get(level, 0) + 1
-    return drawn
+            instances += (tile[3] - tile[1]) * (tile[4] - tile[2]) * 4.0**-level
+    return drawn, instances
 
 
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("sides", type=float, nargs="+", help="field sides in metres (1000: a million plants)")
-    parser.add_argument("--tile-chunks", type=int, default=4, help="chunks along a level-0 tile's side")
-    parser.add_argument("--floor", type=float, default=1.5, help="a merge distance's least multiple of the side")
-    parser.add_argument("--box", action="store_true", help="show a tile by its box's distances, not its centre's")
+    parser.add_argument("--tile-chunks", type=int, default=8, help="chunks along a level-0 tile's side")
+    parser.add_argument("--floor", type=float, default=0.0, help="a merge distance's least multiple of the side")
+    parser.add_argument("--overlap", action="store_true", help="sessions 17-26's overlapping ranges")
     args = parser.parse_args()
     for side in args.sides:
-        drawn = count(side, args.tile_chunks, args.floor, args.box)
+        drawn, instances = count(side, args.tile_chunks, args.floor, args.overlap)
         levels = ", ".join(f"level {level}: {n}" for level, n in sorted(drawn.items()))
-        print(f"{side:.0f} m field: {sum(drawn.values())} tiles ({levels})")
+        print(f"{side:.0f} m field: {sum(drawn.values())} tiles ({levels}), {instances / 1e3:.0f} k m² of instances")
 
 
 if __name__ == "__main__":

@@ -1,11 +1,13 @@
 @tool
 extends RefCounted
-## The internal nodes that draw one field (one native simulation): per far tile (4 × 4 chunks of one
+## The internal nodes that draw one field (one native simulation): per far tile (8 × 8 chunks of one
 ## species, or a merged tile of a level above covering 2 × 2 tiles below) one static
 ## MultiMeshInstance3D of its plants' impostors (sprite and billboard draw the same multi-view
-## impostor, so one GPU copy of a far plant serves both; its visibility range spans the distances at
-## which the shader gives any of its plants to its level, and ends at the field's draw distance;
-## in between the plants fade from level to level one after another), the dynamic bucket nodes of
+## impostor, so one GPU copy of a far plant serves both; its visibility range begins where the
+## shader gives all its plants its level or a higher one and ends at the field's draw distance, and
+## its visibility parent, its parent tile's node, hides it where that one is drawn: the engine draws
+## a cut through the tree of tiles, each place once; the plants fade from level to level one after
+## another by their own distance, whichever tile draws them), the dynamic bucket nodes of
 ## the near plants, and the scenes the legend places; and per species the active-chunk mask that
 ## keeps the tiles from drawing the plants the near buckets draw. The only script that makes
 ## MultiMeshes or sets visibility ranges. Tile nodes can be made a few at a time, hidden, and shown
@@ -118,8 +120,19 @@ func _set_level(node: MultiMeshInstance3D, tile: int) -> void:
 	var merge: PackedFloat32Array = simulation.get_tile_merge(tile)
 	for drawn: GeometryInstance3D in [node, _caster_of(node)]:
 		drawn.set_instance_shader_parameter(&"tile_merge", Vector4(merge[0], merge[1], merge[2], merge[3]))
-		drawn.visibility_range_begin = simulation.get_tile_range(tile).x
+		drawn.visibility_range_begin = simulation.get_tile_shown_from(tile)
 	_set_shadow(node, tile)
+
+
+## Hides each tile (and its shadow caster) where its parent tile is drawn (the parent's visibility
+## range begins where all its plants are given to its level or a higher one), once every tile has
+## its node; a tile's node taken from the previous field gets its new parent.
+func _link_parents() -> void:
+	for tile: int in _tile_nodes.size():
+		var parent: int = simulation.get_tile_parent(tile)
+		var node: MultiMeshInstance3D = _tile_nodes[tile]
+		for drawn: GeometryInstance3D in [node, _caster_of(node)]:
+			drawn.visibility_parent = drawn.get_path_to(_tile_nodes[parent]) if parent >= 0 else NodePath()
 
 
 ## A merged level's plants are at least its begin distance away (200 m by default): beyond the sun's
@@ -231,6 +244,7 @@ func finish(species_plants: Array, legend: Dictionary, cell_size: float, sway_ma
 		# node of that key was still there had a generated name until now.
 		if str(node.name).begins_with("@"):
 			node.name = _tile_node_name(tile)
+	_link_parents()
 	_previous = null  # its remaining nodes go with it
 
 
@@ -394,15 +408,14 @@ func _tile_node_name(tile: int) -> String:
 	return "FarTile%d" % simulation.get_tile_key(tile)
 
 
-## A tile is hidden once none of its plants is left to its level (the next level's tile draws them)
-## or its nearest plant may be past [param max_draw_distance] (the engine measures to the box's
-## centre); its plants dither out one after another before that (the impostor shader).
+## A tile is hidden once its nearest plant may be past [param max_draw_distance] (the engine
+## measures to the box's centre); its plants dither out one after another before that (the impostor
+## shader).
 func _set_range(tile: int, max_draw_distance: float) -> void:
 	var node: MultiMeshInstance3D = _tile_nodes[tile]
-	var end: float = simulation.get_tile_range(tile).y
+	var end: float = 0.0
 	if max_draw_distance > 0.0:
-		var drawn_to: float = max_draw_distance + 0.5 * node.custom_aabb.size.length()
-		end = drawn_to if end <= 0.0 else minf(end, drawn_to)
+		end = max_draw_distance + 0.5 * node.custom_aabb.size.length()
 	node.visibility_range_end = end
 	_caster_of(node).visibility_range_end = end
 

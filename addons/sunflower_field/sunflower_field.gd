@@ -97,7 +97,7 @@ const PartMeshes: GDScript = preload("part_meshes.gd")
 			max_plants = value
 			_queue_rebuild()
 ## Side of the square chunks the field is cut into: a chunk's plants turn near (each with its own
-## level of detail and sway) or far together; far plants are drawn in tiles of 4 × 4 chunks, one
+## level of detail and sway) or far together; far plants are drawn in tiles of 8 × 8 chunks, one
 ## draw call each. (A field of more than 65 536 chunks gets larger ones.)
 @export_range(2.0, 256.0, 1.0, "or_greater", "suffix:m") var chunk_size: float = 16.0:
 	set(value):
@@ -108,10 +108,11 @@ const PartMeshes: GDScript = preload("part_meshes.gd")
 ## Far tiles merge with distance, so a wide field costs few draw calls: plants this far from the
 ## observer are drawn by merged tiles, 2 × 2 tiles as one MultiMesh holding a quarter of their
 ## plants, each drawn twice as wide to keep the field's cover; from twice it, 4 × 4 tiles with a
-## sixteenth; and so on, until one tile covers the field. A level starts no nearer than 1.5 × its
-## tiles' side. Over the half octave before each of these distances the plants the next level leaves
-## out dither away one after another, each over a few metres, and the others widen, so no tile of
-## plants switches at once and no plant vanishes in a frame. A merged level that begins beyond the
+## sixteenth; and so on, until one tile covers the field. Over the half octave before each of these
+## distances the plants the next level leaves out dither away one after another, each over a few
+## metres, and the others widen, so no tile of plants switches at once and no plant vanishes in a
+## frame. Each place is drawn by one tile: a merged tile once all its plants are at its distance,
+## its children nearer (the tile draws each plant as its own distance says). A merged level that begins beyond the
 ## sun's shadows casts none: beyond the farthest [member DirectionalLight3D.directional_shadow_max_distance]
 ## of the shadow-casting directional lights in the field's viewport (100 m, Godot's default, without
 ## one), followed from frame to frame when a light changes. The merged tiles' copies of their

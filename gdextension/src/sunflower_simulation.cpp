@@ -67,7 +67,7 @@ void SunflowerSimulation::bind_methods() {
 	gdx::bind_method(CLASS, "get_tile_level", &SunflowerSimulation::get_tile_level, { "tile" });
 	gdx::bind_method(CLASS, "get_tile_parent", &SunflowerSimulation::get_tile_parent, { "tile" });
 	gdx::bind_method(CLASS, "get_tile_begin", &SunflowerSimulation::get_tile_begin, { "tile" });
-	gdx::bind_method(CLASS, "get_tile_range", &SunflowerSimulation::get_tile_range, { "tile" });
+	gdx::bind_method(CLASS, "get_tile_shown_from", &SunflowerSimulation::get_tile_shown_from, { "tile" });
 	gdx::bind_method(CLASS, "get_tile_merge", &SunflowerSimulation::get_tile_merge, { "tile" });
 	gdx::bind_method(CLASS, "choose_tile_level", &SunflowerSimulation::choose_tile_level, { "distance" });
 	gdx::bind_method(CLASS, "get_active_mask", &SunflowerSimulation::get_active_mask, { "species" });
@@ -86,6 +86,7 @@ void SunflowerSimulation::bind_methods() {
 	gdx::bind_method(CLASS, "get_chunk_species", &SunflowerSimulation::get_chunk_species, { "chunk" });
 	gdx::bind_method(CLASS, "get_plant_position", &SunflowerSimulation::get_plant_position, { "plant" });
 	gdx::bind_method(CLASS, "get_plant_lod", &SunflowerSimulation::get_plant_lod, { "plant" });
+	gdx::bind_method(CLASS, "get_plant_tile_level", &SunflowerSimulation::get_plant_tile_level, { "plant" });
 	gdx::bind_method(CLASS, "get_plant_parts", &SunflowerSimulation::get_plant_parts, { "plant" });
 	gdx::bind_method(CLASS, "get_bucket_instance_count", &SunflowerSimulation::get_bucket_instance_count, { "bucket" });
 	gdx::bind_method(CLASS, "get_filled_buckets", &SunflowerSimulation::get_filled_buckets);
@@ -487,8 +488,8 @@ double SunflowerSimulation::get_tile_begin(int64_t p_tile) const {
 	return _is_tile(p_tile) ? double(_sim.get_tile_begin(uint32_t(p_tile))) : 0.0;
 }
 
-gdx::Vector2 SunflowerSimulation::get_tile_range(int64_t p_tile) const {
-	return _is_tile(p_tile) ? gdx::to_godot(_sim.get_tile_range(uint32_t(p_tile))) : gdx::Vector2{};
+double SunflowerSimulation::get_tile_shown_from(int64_t p_tile) const {
+	return _is_tile(p_tile) ? double(_sim.get_tile_shown_from(uint32_t(p_tile))) : 0.0;
 }
 
 gdx::PackedFloat32Array SunflowerSimulation::get_tile_merge(int64_t p_tile) const {
@@ -496,10 +497,10 @@ gdx::PackedFloat32Array SunflowerSimulation::get_tile_merge(int64_t p_tile) cons
 	if (!_is_tile(p_tile)) {
 		return out;
 	}
-	// The impostor shader's tile_merge: the tile's level, 1 for the top level, where level 1 begins,
-	// the fade's share of an octave.
+	// The impostor shader's tile_merge: the tile's level, the field's top level, where level 1
+	// begins, the fade's share of an octave.
 	const FieldSimulation::Tile &tile = _sim.get_tile(uint32_t(p_tile));
-	const float values[] = { float(tile.level), tile.is_top() ? 1.0f : 0.0f, _sim.merge_distance(1),
+	const float values[] = { float(tile.level), float(_sim.get_top_tile_level()), _sim.merge_distance(1),
 		FieldSimulation::TILE_MERGE_FADE };
 	out.assign(values, std::size(values));
 	return out;
@@ -688,6 +689,10 @@ gdx::Vector3 SunflowerSimulation::get_plant_position(int64_t p_plant) const {
 
 int64_t SunflowerSimulation::get_plant_lod(int64_t p_plant) const {
 	return _is_plant(p_plant) ? _sim.get_plant_lod(uint32_t(p_plant)) : -1;
+}
+
+int64_t SunflowerSimulation::get_plant_tile_level(int64_t p_plant) const {
+	return _is_plant(p_plant) ? int64_t(_sim.plant_tile_level(_sim.get_layout().plants[size_t(p_plant)])) : -1;
 }
 
 gdx::PackedFloat32Array SunflowerSimulation::get_plant_parts(int64_t p_plant) const {

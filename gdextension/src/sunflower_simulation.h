@@ -74,7 +74,7 @@ public:
 	int64_t get_tile_level(int64_t p_tile) const;
 	int64_t get_tile_parent(int64_t p_tile) const;
 	double get_tile_begin(int64_t p_tile) const;
-	gdx::Vector2 get_tile_range(int64_t p_tile) const;
+	double get_tile_shown_from(int64_t p_tile) const;
 	gdx::PackedFloat32Array get_tile_merge(int64_t p_tile) const;
 	gdx::Vector2 choose_tile_level(double p_distance) const;
 	gdx::PackedByteArray get_active_mask(int64_t p_species) const;
@@ -96,6 +96,7 @@ public:
 	int64_t get_chunk_species(int64_t p_chunk) const;
 	gdx::Vector3 get_plant_position(int64_t p_plant) const;
 	int64_t get_plant_lod(int64_t p_plant) const;
+	int64_t get_plant_tile_level(int64_t p_plant) const;
 	gdx::PackedFloat32Array get_plant_parts(int64_t p_plant) const;
 	int64_t get_bucket_instance_count(int64_t p_bucket) const;
 	gdx::PackedByteArray get_filled_buckets() const;

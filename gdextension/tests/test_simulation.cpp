@@ -50,22 +50,22 @@ int64_t total(const std::array<int64_t, LOD_COUNT> &p_counts) {
 }
 
 // Whether the engine draws far tile p_tile seen from p_camera: its node is shown (it has a plant
-// to draw) and the camera's distance to its box centre is within its range.
+// to draw), the camera's distance to its box centre is within its range, and no tile above it is
+// (each tile's node has its parent's as visibility parent: a node is drawn only where its parent's
+// range has not begun).
 bool tile_drawn_from(const FieldSimulation &p_sim, uint32_t p_tile, const glm::vec3 &p_camera) {
-	const float distance = glm::distance(p_camera, p_sim.get_tile_bounds(p_tile).center());
-	const glm::vec2 range = p_sim.get_tile_range(p_tile);
-	return p_sim.is_tile_drawn(p_tile) && distance >= range.x && (range.y <= 0.0f || distance <= range.y);
-}
-
-// The tile level that draws a far plant at p_root from p_observer, as the impostor shader picks it
-// for a tile of p_tile's level (a top-level tile keeps every plant beyond it).
-FieldSimulation::TileChoice choice_in(const FieldSimulation &p_sim, uint32_t p_tile, const glm::vec3 &p_observer, const glm::vec3 &p_root) {
-	FieldSimulation::TileChoice choice = p_sim.choose_tile_level(glm::distance(p_observer, p_root));
-	const FieldSimulation::Tile &tile = p_sim.get_tile(p_tile);
-	if (tile.is_top() && choice.level >= tile.level) {
-		choice = { tile.level, 0.0f };
+	const auto shown_from = [&](uint32_t p_t) {
+		return glm::distance(p_camera, p_sim.get_tile_bounds(p_t).center()) >= p_sim.get_tile_shown_from(p_t);
+	};
+	if (!p_sim.is_tile_drawn(p_tile) || !shown_from(p_tile)) {
+		return false;
 	}
-	return choice;
+	for (uint32_t above = p_sim.get_tile(p_tile).parent; above != FieldSimulation::NO_TILE; above = p_sim.get_tile(above).parent) {
+		if (shown_from(above)) {
+			return false;
+		}
+	}
+	return true;
 }
 
 // Plants drawn by the dynamic buckets plus the records of the tiles drawn from the observer that
@@ -75,10 +75,10 @@ FieldSimulation::TileChoice choice_in(const FieldSimulation &p_sim, uint32_t p_t
 // shader keeps), or, drawn whole, two adjacent mesh levels (the finer with a positive alpha, the
 // coarser with a negative one: the other pixels); or, where its distance gives it to a merged
 // level that leaves it out, not at all (counted as drawn once: the merged tile stands in for it). A
-// far tile draws the plants the observer's distance gives to its level (choose_tile_level, the
-// impostor shader's rule; one it leaves out while fading to the next level counts as drawn), and
-// the engine must draw it then. Returns the plants drawn or stood in for; r_thinned (if given) gets
-// those stood in for, r_fading those fading out.
+// far tile the engine draws draws each plant it holds at the level the observer's distance gives
+// the plant (choose_tile_level, the impostor shader's rule), never below its own, if that level
+// keeps it (one it leaves out while fading to the next level counts as drawn). Returns the plants
+// drawn or stood in for; r_thinned (if given) gets those stood in for, r_fading those fading out.
 int64_t drawn(const FieldSimulation &p_sim, int64_t *r_thinned = nullptr, int64_t *r_fading = nullptr) {
 	struct Drawn {
 		float share = 0.0f;
@@ -119,18 +119,25 @@ int64_t drawn(const FieldSimulation &p_sim, int64_t *r_thinned = nullptr, int64_
 	const glm::vec3 observer = p_sim.get_observer();
 	for (uint32_t t = 0; t < p_sim.get_tile_count(); ++t) {
 		const FieldSimulation::Tile &tile = p_sim.get_tile(t);
+		if (!tile_drawn_from(p_sim, t, observer)) {
+			continue;
+		}
 		std::vector<float> records(size_t(tile.plants) * FAR_FLOATS_PER_INSTANCE);
 		p_sim.write_tile_instances(t, records.data());
 		for (size_t k = 0; k < tile.plants; ++k) {
 			const FarInstance record = read_far_instance(records.data() + k * FAR_FLOATS_PER_INSTANCE);
 			REQUIRE(record.cell < mask.size());
-			const FieldSimulation::TileChoice choice = choice_in(p_sim, t, observer, record.root);
-			if (mask[record.cell] != 0 || choice.level != tile.level) {
+			const FieldSimulation::TileChoice choice = p_sim.choose_tile_level(glm::distance(observer, record.root));
+			const uint32_t plant_level = tile.level + record.levels_above;
+			if (mask[record.cell] != 0) {
 				continue;
 			}
 			CAPTURE(t);
-			CHECK(tile_drawn_from(p_sim, t, observer)); // else the plant would vanish
-			fading += choice.fade > 0.0f && !record.kept_above ? 1 : 0;
+			CHECK(choice.level >= tile.level); // else the shader leaves it out: its level's tile is not drawn
+			if (choice.level < tile.level || plant_level < choice.level) {
+				continue;
+			}
+			fading += choice.fade > 0.0f && plant_level == choice.level ? 1 : 0;
 			Drawn &plant = plants[{ record.root.x, record.root.z }];
 			plant.share += 1.0f;
 			plant.representations += 1;
@@ -218,7 +225,7 @@ TEST_CASE("every plant is drawn exactly once along a path, and LOD counts follow
 	CHECK(sim.get_bucket(mesh_bucket(0, 0)).get_count() == 0);
 }
 
-TEST_CASE("far tiles: every chunk in one tile of its species, at most 4 × 4 cells; records carry their chunk's cell") {
+TEST_CASE("far tiles: every chunk in one tile of its species, at most TILE_CHUNKS × TILE_CHUNKS cells; records carry their chunk's cell") {
 	FieldSimulation sim;
 	MapError error;
 	std::string text = "90 70\n";
@@ -256,8 +263,8 @@ TEST_CASE("far tiles: every chunk in one tile of its species, at most 4 × 4 cel
 			x0 = std::min(x0, x), x1 = std::max(x1, x), z0 = std::min(z0, z), z1 = std::max(z1, z);
 		}
 		CHECK(in_chunks == tile.plants);
-		CHECK(x0 / 4 == x1 / 4); // one 4 × 4 square of cells
-		CHECK(z0 / 4 == z1 / 4);
+		CHECK(x0 / FieldSimulation::TILE_CHUNKS == x1 / FieldSimulation::TILE_CHUNKS); // one square of cells
+		CHECK(z0 / FieldSimulation::TILE_CHUNKS == z1 / FieldSimulation::TILE_CHUNKS);
 		// The records are the tile's chunks' plants, each with its chunk's cell and within its bounds.
 		std::vector<float> records(size_t(tile.plants) * FAR_FLOATS_PER_INSTANCE);
 		sim.write_tile_instances(t, records.data());
@@ -277,7 +284,7 @@ TEST_CASE("far tiles: every chunk in one tile of its species, at most 4 × 4 cel
 	}
 	CHECK(plants == sim.get_plant_count());
 	CHECK(std::count(tile_of.begin(), tile_of.end(), -1) == 0);
-	CHECK(sim.get_tile_count() < sim.get_chunk_count() / 4); // merged: 12 × 9 cells make 3 × 3 tiles per species
+	CHECK(sim.get_tile_count() < sim.get_chunk_count() / 4); // merged: 12 × 9 cells make 2 × 2 tiles per species
 	// The mask marks exactly the active chunks' cells, per species, and its version moves with them.
 	const uint32_t version = sim.get_mask_version();
 	sim.set_observer({ 20.0f, 1.7f, 15.0f });
@@ -311,7 +318,7 @@ TEST_CASE("far tiles: every chunk in one tile of its species, at most 4 × 4 cel
 
 TEST_CASE("far tiles merge with distance: nested quarters, parents covering their children, one level drawn at each place") {
 	FieldSimulation sim;
-	load(sim, rect_map(240, 240), 2.0f); // 120 m square, 57 600 plants; 60 × 60 chunk cells, 15 × 15 tiles
+	load(sim, rect_map(240, 240), 2.0f); // 120 m square, 57 600 plants; 60 × 60 chunk cells, 8 × 8 tiles
 	const uint32_t plant_count = sim.get_plant_count();
 	LayoutParams params = sim.get_layout_params();
 	params.tile_merge_distance = 10.0f;
@@ -336,20 +343,23 @@ TEST_CASE("far tiles merge with distance: nested quarters, parents covering thei
 		top = std::max(top, tile.level);
 		CHECK((tile.key >> 56) == uint64_t(tile.level));
 		CHECK((t == 0 || sim.get_tile(t - 1).level <= tile.level)); // level by level
-		const float side = float(FieldSimulation::TILE_CHUNKS << tile.level) * layout.chunk_size;
-		CHECK(sim.get_tile_begin(t) == (tile.level == 0 ? 0.0f : std::max(10.0f * float(1u << (tile.level - 1)), 1.5f * side)));
-		// Its records mark the plants the next level keeps too (every plant at the top level).
+		CHECK(sim.get_tile_begin(t) == (tile.level == 0 ? 0.0f : 10.0f * float(1u << (tile.level - 1))));
+		// Shown from where its farthest corner from the camera is at its level's distance at least.
+		const ChunkBounds bounds = sim.get_tile_bounds(t);
+		CHECK(sim.get_tile_shown_from(t) ==
+				doctest::Approx(tile.level == 0 ? 0.0f : sim.get_tile_begin(t) + 0.5f * glm::length(bounds.max - bounds.min)));
+		// Its records tell the levels above its own that keep each plant too.
 		{
 			std::vector<float> records(size_t(tile.plants) * FAR_FLOATS_PER_INSTANCE);
 			sim.write_tile_instances(t, records.data());
-			uint32_t marked = 0;
+			uint32_t above = 0;
 			for (size_t k = 0; k < tile.plants; ++k) {
 				const FarInstance record = read_far_instance(records.data() + k * FAR_FLOATS_PER_INSTANCE);
 				const uint32_t level = levels[{ record.root.x, record.root.z }];
-				CHECK(record.kept_above == (tile.is_top() || level > tile.level));
-				marked += record.kept_above ? 1 : 0;
+				CHECK(record.levels_above == level - tile.level);
+				above += record.levels_above > 0 ? 1 : 0;
 			}
-			CHECK((tile.is_top() ? marked == tile.plants : marked < tile.plants));
+			CHECK(above < tile.plants);
 		}
 		if (!tile.is_top()) {
 			CHECK(sim.get_tile(tile.parent).level == tile.level + 1);
@@ -393,11 +403,12 @@ TEST_CASE("far tiles merge with distance: nested quarters, parents covering thei
 		std::sort(held.begin(), held.end());
 		CHECK(held == kept);
 	}
-	// 15 × 15 tiles, then 8 × 8, 4 × 4, 2 × 2 and one; each level a quarter of the one below.
-	CHECK(top == 4);
-	CHECK(tiles_at[0] == 225);
-	CHECK(tiles_at[1] == 64);
-	CHECK(tiles_at[4] == 1);
+	// 8 × 8 tiles, then 4 × 4, 2 × 2 and one; each level a quarter of the one below.
+	static_assert(FieldSimulation::TILE_CHUNKS == 8);
+	CHECK(top == 3);
+	CHECK(tiles_at[0] == 64);
+	CHECK(tiles_at[1] == 16);
+	CHECK(tiles_at[3] == 1);
 	CHECK(plants_at[0] == plant_count);
 	for (uint32_t level = 1; level <= top; ++level) {
 		const double p = FieldSimulation::tile_density(level);
@@ -420,15 +431,21 @@ TEST_CASE("far tiles merge with distance: nested quarters, parents covering thei
 		int64_t fading = 0;
 		CHECK(drawn(sim, &thinned, &fading) == plant_count);
 		faded += fading;
-		CHECK(thinned > previous_thinned);
+		CHECK(thinned >= previous_thinned);
+		CHECK((camera.x < -200.0f || thinned > previous_thinned)); // from 80 m on, all at the top level
 		previous_thinned = thinned;
+		// A cut through the tree of tiles: the level-0 squares of the tiles drawn add up to at most
+		// the 64 of the field (each place drawn by one tile), and from afar a few large tiles draw it.
 		uint32_t tiles_drawn = 0;
+		uint32_t squares = 0;
 		for (uint32_t t = 0; t < sim.get_tile_count(); ++t) {
-			tiles_drawn += tile_drawn_from(sim, t, camera) ? 1 : 0;
+			if (tile_drawn_from(sim, t, camera)) {
+				++tiles_drawn;
+				squares += 1u << (2u * sim.get_tile(t).level);
+			}
 		}
-		// Of 310 tiles (225 at level 0): where plants fade from one level to the next both levels' tiles
-		// are drawn, a ring as wide as a tile's reach on each side (111 from the middle).
-		CHECK(tiles_drawn < 130);
+		CHECK(squares <= 64);
+		CHECK(tiles_drawn <= (camera.x < -200.0f ? 1u : 64u));
 	}
 	// Along a line across the field and out: each tile holding a plant its distance gives to the
 	// tile's level is drawn by the engine (checked in drawn()).
@@ -440,12 +457,12 @@ TEST_CASE("far tiles merge with distance: nested quarters, parents covering thei
 		}
 		CHECK(drawn(sim) == plant_count);
 	}
-	CHECK(double(previous_thinned) > 0.9 * plant_count); // from 250 m away, level 3 or 4 stands in
+	CHECK(double(previous_thinned) > 0.9 * plant_count); // from 250 m away, level 3 stands in
 	CHECK(faded > 0); // plants the next level leaves out, fading out one by one
 	// Without merging: the level-0 tiles alone.
 	params.tile_merge_distance = 0.0f;
 	sim.set_layout_params(params);
-	CHECK(sim.get_tile_count() == 225);
+	CHECK(sim.get_tile_count() == 64);
 	CHECK(drawn(sim) == plant_count);
 }
 

@@ -287,13 +287,12 @@ float FieldSimulation::merge_distance(uint32_t p_level) const {
 	if (p_level == 0) {
 		return 0.0f;
 	}
-	const float side = float(TILE_CHUNKS << p_level) * _layout.chunk_size;
-	return std::max(_layout_params.tile_merge_distance * float(1u << (p_level - 1)), 1.5f * side);
+	return _layout_params.tile_merge_distance * float(1u << (p_level - 1));
 }
 
 FieldSimulation::TileChoice FieldSimulation::choose_tile_level(float p_distance) const {
-	// Both terms of merge_distance double per level, so level L begins where
-	// 1 + log2(distance / merge_distance(1)) reaches L.
+	// merge_distance doubles per level, so level L begins where 1 + log2(distance / merge_distance(1))
+	// reaches L.
 	const uint32_t top = get_top_tile_level();
 	if (top == 0) {
 		return {};
@@ -307,14 +306,14 @@ FieldSimulation::TileChoice FieldSimulation::choose_tile_level(float p_distance)
 	return { uint32_t(level), std::clamp((into - (1.0f - TILE_MERGE_FADE)) / TILE_MERGE_FADE, 0.0f, 1.0f) };
 }
 
-glm::vec2 FieldSimulation::get_tile_range(uint32_t p_tile) const {
+float FieldSimulation::get_tile_shown_from(uint32_t p_tile) const {
 	const Tile &tile = _tiles[p_tile];
+	if (tile.level == 0) {
+		return 0.0f;
+	}
 	const ChunkBounds bounds = get_tile_bounds(p_tile);
 	const float reach = 0.5f * glm::length(bounds.max - bounds.min); // box centre to its farthest plant
-	// Its level draws plants from its merge distance on (the level below fades into it before).
-	const float begin = tile.level == 0 ? 0.0f : merge_distance(tile.level) - reach;
-	const float end = tile.is_top() ? 0.0f : merge_distance(tile.level + 1) + reach;
-	return { std::max(begin, 0.0f), end };
+	return merge_distance(tile.level) + reach;
 }
 
 ChunkBounds FieldSimulation::get_tile_bounds(uint32_t p_tile) const {
@@ -329,23 +328,20 @@ ChunkBounds FieldSimulation::get_tile_bounds(uint32_t p_tile) const {
 
 void FieldSimulation::write_tile_instances(uint32_t p_tile, float *r_out) const {
 	const Tile &tile = _tiles[p_tile];
-	const bool top = tile.is_top(); // nothing above: every plant stays
 	for (uint32_t k = 0; k < tile.count; ++k) {
 		const uint32_t chunk = get_tile_chunk(p_tile, k);
 		const uint32_t first = _layout.chunks[chunk].first;
 		// A merged tile's plants are the first of each chunk's kept ones (ordered by tile level).
 		const uint32_t count = tile.level == 0 ? _layout.chunks[chunk].count : _chunk_kept[chunk][tile.level];
 		const uint32_t *plants = tile.level == 0 ? _layout.chunk_plants.data() + first : _merged_plants.data() + _merged_first[chunk];
-		_write_records(chunk, plants, count, r_out, top ? -1 : int(tile.level));
+		_write_records(chunk, plants, count, r_out, int(tile.level));
 		r_out += size_t(count) * FAR_FLOATS_PER_INSTANCE;
 	}
 }
 
 uint64_t FieldSimulation::get_tile_signature(uint32_t p_tile) const {
 	// FNV-1a over the chunks' keys and signatures, never 0 (the level picks which plants it holds).
-	// Whether it is the top level, too: its records keep every plant.
-	const uint64_t top = _tiles[p_tile].is_top() ? 1 : 0;
-	uint64_t hash = 1469598103934665603ull ^ _tiles[p_tile].count ^ (uint64_t(_tiles[p_tile].level) << 40) ^ (top << 48);
+	uint64_t hash = 1469598103934665603ull ^ _tiles[p_tile].count ^ (uint64_t(_tiles[p_tile].level) << 40);
 	for (uint32_t k = 0; k < _tiles[p_tile].count; ++k) {
 		const uint32_t chunk = get_tile_chunk(p_tile, k);
 		for (uint64_t value : { get_chunk_key(chunk), get_chunk_signature(chunk) }) {
@@ -858,13 +854,13 @@ void FieldSimulation::write_chunk_instances(uint32_t p_chunk, float *r_out) cons
 	_write_records(p_chunk, _layout.chunk_plants.data() + chunk.first, chunk.count, r_out);
 }
 
-void FieldSimulation::_write_records(uint32_t p_chunk, const uint32_t *p_plants, uint32_t p_count, float *r_out, int p_kept_above) const {
+void FieldSimulation::_write_records(uint32_t p_chunk, const uint32_t *p_plants, uint32_t p_count, float *r_out, int p_tile_level) const {
 	const uint32_t species = _layout.chunks[p_chunk].species;
 	for (uint32_t k = 0; k < p_count; ++k) {
 		const Plant &plant = _layout.plants[p_plants[k]];
 		FarInstance instance = _far_instance(plant, species);
 		instance.cell = _chunk_cells[p_chunk];
-		instance.kept_above = p_kept_above < 0 || (p_kept_above < int(MAX_TILE_LEVELS) && int(plant_tile_level(plant)) > p_kept_above);
+		instance.levels_above = p_tile_level < 0 ? 0 : uint32_t(std::max(int(plant_tile_level(plant)) - p_tile_level, 0));
 		write_far_instance(r_out + size_t(k) * FAR_FLOATS_PER_INSTANCE, instance);
 	}
 }

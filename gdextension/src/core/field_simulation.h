@@ -169,14 +169,17 @@ public:
 	// from one buffer (level 0). While the field's tile merge distance is above 0, tiles merge with
 	// distance: a level-L tile covers the square of 2 × 2 level-(L − 1) tiles (its children, whose
 	// parent it is) and holds the plants of its chunks whose tile level (plant_tile_level) is at least
-	// L: a quarter of the plants per level, each level's a subset of the one below. Each far plant is
-	// drawn by the level its distance from the observer gives it (choose_tile_level: level L from
-	// get_tile_begin of a level-L tile on, fading in over the half octave before), so no tile's worth
-	// of plants switches at once; the engine draws a tile over the distances where any of its plants
-	// may be given to its level (get_tile_range), and the impostor shader widens the plants by
-	// 1 / √density to keep the field's cover. Levels stop once one tile per species covers the field.
-	// Level-0 tiles come first, ordered by where they lie, then species; then level 1's, and so on.
-	static constexpr int TILE_CHUNKS = 4;
+	// L: a quarter of the plants per level, each level's a subset of the one below. Each far plant
+	// takes the look of the level its distance from the observer gives it (choose_tile_level: level L
+	// from merge_distance(L) on, fading in over the half octave before), so no tile's worth of plants
+	// switches at once, and the impostor shader widens the plants by 1 / √density to keep the field's
+	// cover. Which tile draws it is a cut through the tree of tiles: a tile is drawn from
+	// get_tile_shown_from on, where all its plants are given to its level or above, unless its parent
+	// is drawn (the engine's visibility parent); a tile draws each of its plants at the level given to
+	// it, so whether a tile or its children draw a place changes nothing on screen. Levels stop once
+	// one tile per species covers the field. Level-0 tiles come first, ordered by where they lie, then
+	// species; then level 1's, and so on.
+	static constexpr int TILE_CHUNKS = 8;
 	static constexpr uint32_t MAX_TILE_LEVELS = 8;
 	static constexpr uint32_t NO_TILE = UINT32_MAX;
 	struct Tile {
@@ -202,8 +205,7 @@ public:
 	// Two tiles with equal keys and signatures draw the same (see get_chunk_signature).
 	uint64_t get_tile_signature(uint32_t p_tile) const;
 	// The distance from the observer at which a far plant's place turns to level L
-	// (merge_distance(L)): 0 for level 0; for level L the merge distance × 2^(L − 1), but at least
-	// 1.5 × a level-L tile's side, so that no merged tile is drawn around the camera.
+	// (merge_distance(L)): 0 for level 0; for level L the merge distance × 2^(L − 1).
 	float get_tile_begin(uint32_t p_tile) const;
 	float merge_distance(uint32_t p_level) const;
 	// Plants fade from one tile level to the next over the last TILE_MERGE_FADE octave before each
@@ -221,11 +223,11 @@ public:
 		float fade = 0.0f;
 	};
 	TileChoice choose_tile_level(float p_distance) const;
-	// The camera distances (to the tile's box centre) between which the engine draws a tile: every
-	// plant choose_tile_level gives to its level lies there (level L from merge_distance(L) to
-	// merge_distance(L + 1), the fade to L + 1 drawn by level L's tiles), widened by the box's reach;
-	// end 0 for a tile of the highest level.
-	glm::vec2 get_tile_range(uint32_t p_tile) const;
+	// The camera distance (to the tile's box centre) from which the engine may draw a tile: its
+	// merge distance plus the box's reach, so that choose_tile_level gives every plant in it its
+	// level or a higher one (0 for level 0). Nearer, its children draw its place; from there on it
+	// does, unless its parent is shown from there too.
+	float get_tile_shown_from(uint32_t p_tile) const;
 	// The highest tile level (0: tiles never merge).
 	uint32_t get_top_tile_level() const { return _tiles.empty() ? 0 : _tiles.back().level; }
 	// The share of its chunks' plants a tile of p_level holds on average: 4^−level.
@@ -288,9 +290,9 @@ private:
 	// The merged levels above the level-0 tiles (see TILE_CHUNKS).
 	void _merge_tiles();
 	// The static records of p_count plants of chunk p_chunk (p_plants: their indices), each with the
-	// chunk's cell; p_kept_above: a tile level, marking the plants kept above it
-	// (FarInstance::kept_above); −1: every plant; MAX_TILE_LEVELS or more: none.
-	void _write_records(uint32_t p_chunk, const uint32_t *p_plants, uint32_t p_count, float *r_out, int p_kept_above = int(MAX_TILE_LEVELS)) const;
+	// chunk's cell and, for a tile of level p_tile_level, the levels above it that keep the plant
+	// (FarInstance::levels_above); a negative p_tile_level: none.
+	void _write_records(uint32_t p_chunk, const uint32_t *p_plants, uint32_t p_count, float *r_out, int p_tile_level = -1) const;
 	void _select_lods();
 	void _select_chunk_lods(uint32_t p_chunk, bool p_forced, float p_enter, float p_leave);
 	uint8_t _static_chunk_lod(uint32_t p_chunk) const;

@@ -84,15 +84,16 @@ inline WholePlant read_whole_instance(const float *p_in) {
 // the record back (shaders/impostor.gdshader: keep the two in step):
 //   0: scale·cos(yaw)   1: scale·sin(yaw)   2: root z       3: root x
 //   4: lean x, lean z   5: tone             6: cell / share 7: root y
-// In a far tile's record float 6 is the grid cell of the plant's chunk (FieldLayout: z·grid_x + x),
-// which tells the shader whether the dynamic buckets draw the plant now, as −1 − cell when the
-// plant is kept above the tile's level (FarInstance::kept_above); in the near impostor
-// bucket's it is the plant's share of the pixels (1, or less in its cross-fade with mesh 3: the
-// material's `records_hold_shares`). Floats 4 and 5 hold two 8-bit steps each, as
-// low + 256·high: the lean in 1/127 steps of [−1, 1] (0 exact); the tone's brightness in 1/128
-// steps of [0, 2) (1 exact) and its warmth in 1/127 steps of [−1, 1] (0 exact). Below 65 536 these
-// whole numbers survive the node's transform and its inverse (float rounding there stays under
-// 0.02).
+// In a far tile's record float 6 is cell + 65 536 × levels above: the grid cell of the plant's
+// chunk (FieldLayout: z·grid_x + x), which tells the shader whether the dynamic buckets draw the
+// plant now, and how many tile levels above the tile's own keep the plant too
+// (FarInstance::levels_above); in the near impostor bucket's it is the plant's share of the pixels
+// (1, or less in its cross-fade with mesh 3: the material's `records_hold_shares`). Floats 4 and 5
+// hold two 8-bit steps each, as low + 256·high: the lean in 1/127 steps of [−1, 1] (0 exact); the
+// tone's brightness in 1/128 steps of [0, 2) (1 exact) and its warmth in 1/127 steps of [−1, 1]
+// (0 exact). These whole numbers survive the node's transform and its inverse: float rounding there
+// stays under 0.02 below 65 536, and grows with the value, to about 0.16 at float 6's largest
+// (524 287), within the 0.5 the reader's rounding allows.
 constexpr uint32_t FAR_FLOATS_PER_INSTANCE = 8;
 
 struct FarInstance {
@@ -102,9 +103,12 @@ struct FarInstance {
 	glm::vec2 lean{ 0.0f }; // the up axis' horizontal part (x, z), as Plant::lean
 	glm::vec2 tone{ 1.0f, 0.0f }; // brightness, warmth, as Plant::tone
 	uint32_t cell = 0; // < 65 536 (FieldLayout::MAX_CHUNK_CELLS)
-	// In a far tile: the plant is also drawn by the tile of the next level (or the tile has none),
-	// so it stays in the fade towards that level (FieldSimulation::choose_tile_level).
-	bool kept_above = false;
+	// In a far tile: how many tile levels above the tile's own keep the plant too (its
+	// FieldSimulation::plant_tile_level less the tile's level, at most MAX_LEVELS_ABOVE). The tile
+	// draws it where the observer's distance gives it to any of those levels, and fades it out
+	// towards the level above the last (FieldSimulation::choose_tile_level).
+	uint32_t levels_above = 0;
+	static constexpr uint32_t MAX_LEVELS_ABOVE = 7;
 };
 
 namespace far_steps {
@@ -128,8 +132,8 @@ inline void write_far_instance(float *r_out, const FarInstance &p_instance) {
 	r_out[3] = p_instance.root.x;
 	r_out[4] = far_steps::signed_unit(p_instance.lean.x) + 256.0f * far_steps::signed_unit(p_instance.lean.y);
 	r_out[5] = far_steps::brightness(p_instance.tone.x) + 256.0f * far_steps::signed_unit(p_instance.tone.y);
-	const float cell = float(std::min(p_instance.cell, 65535u));
-	r_out[FAR_CELL_OR_SHARE] = p_instance.kept_above ? -1.0f - cell : cell;
+	const uint32_t above = std::min(p_instance.levels_above, FarInstance::MAX_LEVELS_ABOVE);
+	r_out[FAR_CELL_OR_SHARE] = float(std::min(p_instance.cell, 65535u) + (above << 16u));
 	r_out[7] = p_instance.root.y;
 }
 
@@ -144,9 +148,9 @@ inline FarInstance read_far_instance(const float *p_in) {
 	using far_steps::SIGNED_STEPS;
 	instance.lean = (glm::vec2(low(p_in[4]), high(p_in[4])) - SIGNED_STEPS) / SIGNED_STEPS;
 	instance.tone = glm::vec2(low(p_in[5]) / 128.0f, (high(p_in[5]) - SIGNED_STEPS) / SIGNED_STEPS);
-	const long cell = std::lround(p_in[FAR_CELL_OR_SHARE]);
-	instance.kept_above = cell < 0;
-	instance.cell = uint32_t(cell < 0 ? -1 - cell : cell);
+	const uint32_t stored = uint32_t(std::max(std::lround(p_in[FAR_CELL_OR_SHARE]), 0l));
+	instance.cell = stored & 65535u;
+	instance.levels_above = stored >> 16u;
 	return instance;
 }
 

@@ -163,29 +163,39 @@ func test_parameter_changes_during_a_build_reach_the_new_field() -> void:
 	field.wind_power = 4.0
 	await frames_until(func() -> bool: return not field.is_building(), 2000)
 	# Each tile ends once its nearest plant may be past the draw distance (the engine measures to the
-	# box's centre), or none of its plants is left to its level; its plants dither out one after another
-	# before that, in the impostor shader. A merged tile's range begins where its nearest plant may
-	# be its level's.
-	var ranges: Dictionary = {}  # node name → the range of its tile
+	# box's centre); its plants dither out one after another before that, in the impostor shader. A
+	# merged tile's range begins where its nearest plant may be its level's, and its children's
+	# nodes (and their shadow casters) have its node as visibility parent.
+	var begins: Dictionary = {}  # node name → where its tile is shown from
+	var parents: Dictionary = {}  # node name → its tile's parent's node name ("" for none)
 	var simulation: RefCounted = field.get_simulation()
 	for tile: int in simulation.get_tile_count():
-		ranges["FarTile%d" % simulation.get_tile_key(tile)] = simulation.get_tile_range(tile)
-	check(ranges.values().any(func(span: Vector2) -> bool: return span.x > 0.0), "the field has merged tiles")
-	var wrong_ends: int = 0
+		var parent: int = simulation.get_tile_parent(tile)
+		var node_name: String = "FarTile%d" % simulation.get_tile_key(tile)
+		begins[node_name] = simulation.get_tile_shown_from(tile)
+		parents[node_name] = "FarTile%d" % simulation.get_tile_key(parent) if parent >= 0 else ""
+	check(begins.values().any(func(begin: float) -> bool: return begin > 0.0), "the field has merged tiles")
+	var wrong_ranges: int = 0
+	var wrong_parents: int = 0
 	var impostor_material: ShaderMaterial = null
 	for node: Node in field.get_children(true):
 		var instance: MultiMeshInstance3D = node as MultiMeshInstance3D
 		if instance and instance.name.begins_with("FarTile"):
-			var span: Vector2 = ranges.get(str(instance.name), -Vector2.ONE)
 			var end: float = 123.0 + 0.5 * instance.custom_aabb.size.length()
-			end = end if span.y <= 0.0 else minf(end, span.y)
-			wrong_ends += (
+			var begin: float = begins.get(str(instance.name), -1.0)
+			wrong_ranges += (
 				0
-				if instance.visibility_range_begin == span.x and is_equal_approx(instance.visibility_range_end, end)
+				if instance.visibility_range_begin == begin and is_equal_approx(instance.visibility_range_end, end)
 				else 1
 			)
+			for drawn: GeometryInstance3D in [instance, instance.get_child(0, true)]:
+				var parent: Node = (
+					null if drawn.visibility_parent.is_empty() else drawn.get_node(drawn.visibility_parent)
+				)
+				wrong_parents += 0 if (str(parent.name) if parent else "") == parents[str(instance.name)] else 1
 			impostor_material = instance.multimesh.mesh.surface_get_material(0) as ShaderMaterial
-	check_eq(wrong_ends, 0, "every tile's range follows the draw distance set during the build")
+	check_eq(wrong_ranges, 0, "every tile's range follows the draw distance set during the build")
+	check_eq(wrong_parents, 0, "every tile's node and shadow caster hide where its parent tile is drawn")
 	if check(impostor_material != null, "tiles draw the impostor material"):
 		check_eq(impostor_material.get_shader_parameter("draw_distance"), 123.0, "the plants fade out at it")
 		check_near(impostor_material.get_shader_parameter("draw_fade"), 12.3, 1e-4, "over its last tenth")
@@ -219,10 +229,11 @@ func _casts(node: Node) -> bool:
 
 
 func test_a_small_change_of_a_large_map_makes_nodes_only_for_the_tiles_it_touched() -> void:
-	field.map = _square_map(200)  # 100 × 100 m: 7 × 7 chunks of 16 m, 2 × 2 tiles of 4 × 4 chunks
+	field.chunk_size = 8.0
+	field.map = _square_map(200)  # 100 × 100 m: 13 × 13 chunks of 8 m, 2 × 2 tiles of 8 × 8 chunks
 	field.finish_build()
 	var simulation: RefCounted = field.get_simulation()
-	check_eq(simulation.get_chunk_count(), 49)
+	check_eq(simulation.get_chunk_count(), 169)
 	check_eq(simulation.get_tile_count(), 5, "2 × 2 tiles and the merged tile over them")
 	check_eq(field.get_build_stats().tiles_made, 5, "a new map makes every tile")
 	# The same map with a 10 × 10-cell hole in the north-west corner: one tile touched, and the
@@ -261,9 +272,7 @@ func test_a_small_change_of_a_large_map_makes_nodes_only_for_the_tiles_it_touche
 			Vector4(merge[0], merge[1], merge[2], merge[3]),
 			"%s's place among the levels" % node.name
 		)
-		check_eq(
-			merge[1], 1.0 if simulation.get_tile_parent(tile) < 0 else 0.0, "%s is the top level or not" % node.name
-		)
+		check_eq(merge[1], 1.0, "%s knows the field's top level" % node.name)
 		# The merged level begins 200 m away, beyond the sun's shadows: it casts none.
 		check_eq(_casts(node), level == 0, "%s's shadows" % node.name)
 	check_eq(instances[0], field.get_plant_count(), "far buffers hold every plant once")
@@ -279,9 +288,9 @@ func test_a_small_change_of_a_large_map_makes_nodes_only_for_the_tiles_it_touche
 		if node.name == "FarTile%d" % simulation.get_tile_key(merged):
 			merged_node = node
 	if check(merged_node != null, "the merged tile's node"):
-		# From where the nearest of its plants may be 500 m away.
+		# From where all its plants are at least 500 m away.
 		var reach: float = 0.5 * merged_node.custom_aabb.size.length()
-		check_near(merged_node.visibility_range_begin, 500.0 - reach, 1e-3, "its node's range begins there")
+		check_near(merged_node.visibility_range_begin, 500.0 + reach, 1e-3, "its node's range begins there")
 		check_eq(merged_node.get_instance_shader_parameter(&"tile_merge").z, 500.0, "its shader knows the distance")
 		check(not _casts(merged_node), "beyond the sun's shadows")
 		# The tiles follow the sun's shadows from frame to frame, without a rebuild: a sun added whose

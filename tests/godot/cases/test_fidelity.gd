@@ -224,10 +224,10 @@ func test_no_pops_where_plants_switch_level() -> void:
 
 
 ## Far tiles merge plant by plant: walking towards the band where the first merged level begins, no
-## frame changes more than on the same walk with tiles that never merge. The field's chunks are made
-## 4 m so that the first merge falls at 50 m, within the field (with the default 16 m chunks it is
-## at 200 m, where a plant is a few pixels), and the view is a telephoto one (12°) from 8 m up onto
-## that band, so the plants are drawn four times larger than a player at head height would see them.
+## frame changes more than on the same walk with tiles that never merge. The merge distance is made
+## 50 m, within the field (the default 200 m is where a plant is a few pixels), with 4 m chunks (32 m
+## tiles), and the view is a telephoto one (12°) from 8 m up onto that band, so the plants are drawn
+## four times larger than a player at head height would see them.
 func test_no_pops_where_far_tiles_merge() -> void:
 	var frames: int = MERGE_WALK_FRAMES * (2 if full else 1)
 	var merged: Array[PackedFloat32Array] = await _walk_onto_merge(MERGE_DISTANCE, frames)

@@ -175,11 +175,13 @@ func test_every_plant_is_drawn_exactly_once_along_a_camera_path() -> void:
 
 
 func test_merged_far_tiles_draw_each_place_once_across_levels() -> void:
-	# 2 m chunks make 8 m tiles, 16 m merged ones and one of 32 m over the demo field; with a 10 m
-	# merge distance plants turn to them at 24 m and 48 m from the observer (1.5 × their side),
-	# fading over the half octave before. Each plant is drawn by the level its distance gives it, or
-	# left out by that level, and the engine draws each tile that holds a plant given to its level.
-	field.chunk_size = 2.0
+	# 1 m chunks make 8 m tiles, 16 m merged ones and one of 32 m over the demo field; with a 10 m
+	# merge distance plants turn to them at 10 m and 20 m from the observer, fading over the half
+	# octave before. Each plant is drawn at the level its distance gives it, or left out by that
+	# level, by the one tile over it that the engine draws: the tiles' ranges and visibility parents
+	# cut the tree of tiles so that each place is drawn by one tile, whose plants are all at its level
+	# or a higher one.
+	field.chunk_size = 1.0
 	field.tile_merge_distance = 10.0
 	field.lod_distances = PackedFloat32Array([1.0, 2.0, 3.0, 4.0])  # the far tiles draw nearly all
 	field.finish_build()
@@ -199,9 +201,10 @@ func test_merged_far_tiles_draw_each_place_once_across_levels() -> void:
 
 ## Checks, at each of [param path]'s stops, that every plant is drawn once (or twice in a cross-fade,
 ## shares adding up to one) or left out where a merged level stands in for it; returns the plants
-## seen in cross-fades and those left out, summed over the stops. A far tile draws the plants the
-## simulation's choose_tile_level gives to its level (the impostor shader's rule), and the engine must
-## draw every tile holding such a plant: a plant whose tile is out of its range would vanish.
+## seen in cross-fades and those left out, summed over the stops. A far tile the engine draws (in its
+## range, and its visibility parents not) draws each plant it holds at the level the simulation's
+## choose_tile_level gives the plant, if that level keeps it (the impostor shader's rule); a plant
+## given to a level below the tile's would vanish, as would one under no drawn tile.
 func _check_drawn_once_along(path: Array[Vector3]) -> Vector2i:
 	var positions: Dictionary = {}
 	for i: int in field.get_plant_count():
@@ -222,13 +225,13 @@ func _check_drawn_once_along(path: Array[Vector3]) -> Vector2i:
 		shares.resize(field.get_plant_count())
 		var fading: PackedInt32Array = PackedInt32Array()  # representations drawn in a cross-fade
 		fading.resize(field.get_plant_count())
-		var unseen_tiles: int = 0  # plants given to a level whose tile the engine does not draw
+		var below: int = 0  # plants a drawn tile holds whose distance gives them a level below it
 		for node: MultiMeshInstance3D in _field_nodes():
 			var rid: RID = node.multimesh.get_rid()
 			var visible: int = RenderingServer.multimesh_get_visible_instances(rid)
 			var instances: int = visible if visible >= 0 else RenderingServer.multimesh_get_instance_count(rid)
 			var tile: bool = node.name.begins_with("FarTile")
-			var shown: bool = node.visible and _in_visibility_range(node, stop)
+			var shown: bool = node.visible and _in_visibility_range(node, stop) and not _hidden_by_parent(node, stop)
 			if instances == 0 or not (shown or tile):
 				continue
 			if node.name.contains("Middle") or node.name.contains("Head"):
@@ -251,21 +254,23 @@ func _check_drawn_once_along(path: Array[Vector3]) -> Vector2i:
 				var root: Vector3 = _root(buffer, k, compact, stride)
 				var share: float = 1.0
 				if tile:
-					# The cell, as −1 − cell for a plant kept a level up (instance_buffer.h).
-					var stored: int = roundi(buffer[k * far + 6])
-					if mask[-1 - stored if stored < 0 else stored] != 0:
-						continue
-					var choice: Vector2 = simulation.choose_tile_level(stop.distance_to(root))
-					if merge.y > 0.5 and choice.x >= merge.x:
-						choice = Vector2(merge.x, 0.0)  # the top level keeps every plant beyond it
-					if int(choice.x) != int(merge.x):
-						continue
 					if not shown:
-						unseen_tiles += 1
 						continue
+					# The cell + 65 536 × the levels above the tile's that keep the plant (instance_buffer.h).
+					var stored: int = roundi(buffer[k * far + 6])
+					if mask[stored & 65535] != 0:
+						continue
+					var plant_level: int = int(merge.x) + (stored >> 16)
+					# Its level from here (the top level keeps every plant beyond it).
+					var choice: Vector2 = simulation.choose_tile_level(stop.distance_to(root))
+					if int(choice.x) < int(merge.x):
+						below += 1  # the shader leaves it out: its level's tile is not drawn
+						continue
+					if plant_level < int(choice.x):
+						continue  # its level leaves it out
 					# In the fade to the next level a plant it leaves out is drawn or not by its own
 					# random (the widened others stand in): counted as drawn.
-					faded += 1 if choice.y > 0.0 and stored >= 0 else 0
+					faded += 1 if choice.y > 0.0 and plant_level == int(choice.x) else 0
 				else:
 					# The instance colour's alpha: the share of the pixels drawn (negative: the other
 					# pixels, a coarser mesh fading in).
@@ -275,7 +280,7 @@ func _check_drawn_once_along(path: Array[Vector3]) -> Vector2i:
 					drawn[index] += 1
 					shares[index] += share
 					fading[index] += 1 if not tile and share < 1.0 else 0
-		check_eq(unseen_tiles, 0, "from %s every plant given to a level is in a tile the engine draws" % stop)
+		check_eq(below, 0, "from %s no drawn tile holds a plant given to a level below its own" % stop)
 		var wrong: int = 0
 		var crossfading: int = 0
 		for i: int in drawn.size():
@@ -283,7 +288,8 @@ func _check_drawn_once_along(path: Array[Vector3]) -> Vector2i:
 			var complementary: bool = drawn[i] == 2 and fading[i] == 2 and absf(shares[i] - 1.0) < 1e-4
 			crossfading += 1 if complementary else 0
 			var position: Vector3 = field.get_plant_info(i)["position"]
-			if drawn[i] == 0 and simulation.choose_tile_level(stop.distance_to(position)).x >= 1.0:
+			var level: int = int(simulation.choose_tile_level(stop.distance_to(position)).x)
+			if drawn[i] == 0 and simulation.get_plant_tile_level(i) < level:
 				left_out += 1  # a merged level draws where it stands, and leaves it out
 				continue
 			if not once and not complementary:
@@ -380,6 +386,26 @@ func _node(node_name: String) -> MultiMeshInstance3D:
 ## to the centre of the instance's world-space bounding box (0 disables a bound).
 func _distance_to_box(node: GeometryInstance3D, camera: Vector3) -> float:
 	return camera.distance_to(node.global_transform * node.custom_aabb.get_center())
+
+
+## Whether a tile's node is hidden from [param camera] by its visibility parents: the engine draws a
+## node only while the camera is nearer to its parent than the parent's range begins, and that
+## parent drawn by the same rule (a hidden parent's node leaves the tile to its own range).
+func _hidden_by_parent(node: GeometryInstance3D, camera: Vector3) -> bool:
+	var parent: GeometryInstance3D = _visibility_parent_of(node)
+	while parent and parent.visible:
+		if not (
+			parent.visibility_range_begin > 0.0 and _distance_to_box(parent, camera) < parent.visibility_range_begin
+		):
+			return true
+		parent = _visibility_parent_of(parent)
+	return false
+
+
+static func _visibility_parent_of(node: GeometryInstance3D) -> GeometryInstance3D:
+	if node.visibility_parent.is_empty():
+		return null
+	return node.get_node_or_null(node.visibility_parent) as GeometryInstance3D
 
 
 func _in_visibility_range(node: GeometryInstance3D, camera: Vector3) -> bool:
