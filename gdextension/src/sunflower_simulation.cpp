@@ -438,6 +438,8 @@ void SunflowerSimulation::set_tile_multimesh(int64_t p_tile, gdx::Rid p_multimes
 	_tiles.resize(_sim.get_tile_count());
 	_tiles[static_cast<size_t>(p_tile)] = p_multimesh;
 	_upload_tile(static_cast<uint32_t>(p_tile));
+	_tile_visible.resize(_tiles.size(), -1);
+	_tile_visible[static_cast<size_t>(p_tile)] = -1; // allocating the data drew every instance
 }
 
 void SunflowerSimulation::adopt_tile_multimesh(int64_t p_tile, gdx::Rid p_multimesh) {
@@ -446,6 +448,8 @@ void SunflowerSimulation::adopt_tile_multimesh(int64_t p_tile, gdx::Rid p_multim
 	}
 	_tiles.resize(_sim.get_tile_count());
 	_tiles[static_cast<size_t>(p_tile)] = p_multimesh; // its data is this tile's already
+	_tile_visible.resize(_tiles.size(), -1);
+	_tile_visible[static_cast<size_t>(p_tile)] = -1; // its count is the previous field's
 }
 
 int64_t SunflowerSimulation::get_tile_count() const {
@@ -558,6 +562,7 @@ void SunflowerSimulation::compute_chunk_signatures() {
 void SunflowerSimulation::release_multimeshes() {
 	_buckets.assign(_sim.get_bucket_count(), BucketTarget{});
 	_tiles.clear();
+	_tile_visible.clear();
 }
 
 int64_t SunflowerSimulation::get_chunk_count() const {
@@ -624,6 +629,14 @@ void SunflowerSimulation::update(double p_delta) {
 	_sim.update(static_cast<float>(p_delta));
 	for (uint32_t b = 0; b < _buckets.size(); ++b) {
 		_push_bucket(b);
+	}
+	// Each tile draws only its records kept at the nearest level its plants may be given.
+	for (size_t t = 0; t < _tiles.size() && t < _tile_visible.size(); ++t) {
+		const int64_t visible = _sim.get_tile_visible_count(uint32_t(t));
+		if (_tiles[t].is_valid() && visible != _tile_visible[t]) {
+			gdx::RenderingServer::multimesh_set_visible_instances(_tiles[t], visible);
+			_tile_visible[t] = visible;
+		}
 	}
 	_last_update_usec = std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::steady_clock::now() - start).count();
 }

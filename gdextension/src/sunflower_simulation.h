@@ -136,6 +136,7 @@ private:
 	std::array<int32_t, 3> _checked{}; // columns, rows and plants of the map check_map() last passed
 	std::vector<BucketTarget> _buckets; // BUCKET_COUNT per species of the map
 	std::vector<gdx::Rid> _tiles; // each tile's impostors (sprite and billboard are one multi-view impostor)
+	std::vector<int64_t> _tile_visible; // each tile's MultiMesh's visible instances as last set (−1: not yet)
 	std::vector<sunflower::Pusher> _pushers; // reused between frames
 	int64_t _last_update_usec = 0;
 };

@@ -122,9 +122,12 @@ int64_t drawn(const FieldSimulation &p_sim, int64_t *r_thinned = nullptr, int64_
 		if (!tile_drawn_from(p_sim, t, observer)) {
 			continue;
 		}
+		// The engine draws the first get_tile_visible_count records; the others must be ones the
+		// shader would leave out.
 		std::vector<float> records(size_t(tile.plants) * FAR_FLOATS_PER_INSTANCE);
 		p_sim.write_tile_instances(t, records.data());
-		for (size_t k = 0; k < tile.plants; ++k) {
+		REQUIRE(p_sim.get_tile_visible_count(t) <= tile.plants);
+		for (size_t k = 0; k < p_sim.get_tile_visible_count(t); ++k) {
 			const FarInstance record = read_far_instance(records.data() + k * FAR_FLOATS_PER_INSTANCE);
 			REQUIRE(record.cell < mask.size());
 			const FieldSimulation::TileChoice choice = p_sim.choose_tile_level(glm::distance(observer, record.root));
@@ -265,22 +268,32 @@ TEST_CASE("far tiles: every chunk in one tile of its species, at most TILE_CHUNK
 		CHECK(in_chunks == tile.plants);
 		CHECK(x0 / FieldSimulation::TILE_CHUNKS == x1 / FieldSimulation::TILE_CHUNKS); // one square of cells
 		CHECK(z0 / FieldSimulation::TILE_CHUNKS == z1 / FieldSimulation::TILE_CHUNKS);
-		// The records are the tile's chunks' plants, each with its chunk's cell and within its bounds.
+		// The records are the tile's chunks' plants (highest tile level first), each with its chunk's
+		// cell and within its bounds.
 		std::vector<float> records(size_t(tile.plants) * FAR_FLOATS_PER_INSTANCE);
 		sim.write_tile_instances(t, records.data());
 		const ChunkBounds bounds = sim.get_tile_bounds(t);
-		size_t k = 0;
+		std::map<std::pair<float, float>, uint32_t> cells; // by root (x, z)
 		for (uint32_t c = 0; c < tile.count; ++c) {
 			const uint32_t chunk = sim.get_tile_chunk(t, c);
-			for (uint32_t p = 0; p < layout.chunks[chunk].count; ++p, ++k) {
-				const FarInstance record = read_far_instance(records.data() + k * FAR_FLOATS_PER_INSTANCE);
+			for (uint32_t p = 0; p < layout.chunks[chunk].count; ++p) {
 				const Plant &plant = layout.plants[layout.chunk_plants[layout.chunks[chunk].first + p]];
-				CHECK(record.cell == sim.get_chunk_cell(chunk));
-				CHECK(record.root == plant.root());
-				CHECK(glm::all(glm::lessThanEqual(bounds.min, record.root)));
-				CHECK(glm::all(glm::lessThanEqual(record.root, bounds.max)));
+				cells[{ plant.root().x, plant.root().z }] = sim.get_chunk_cell(chunk);
 			}
 		}
+		uint32_t previous_level = FieldSimulation::MAX_TILE_LEVELS;
+		for (size_t k = 0; k < tile.plants; ++k) {
+			const FarInstance record = read_far_instance(records.data() + k * FAR_FLOATS_PER_INSTANCE);
+			const auto cell = cells.find({ record.root.x, record.root.z });
+			REQUIRE(cell != cells.end());
+			CHECK(record.cell == cell->second);
+			cells.erase(cell);
+			CHECK(record.levels_above <= previous_level);
+			previous_level = record.levels_above;
+			CHECK(glm::all(glm::lessThanEqual(bounds.min, record.root)));
+			CHECK(glm::all(glm::lessThanEqual(record.root, bounds.max)));
+		}
+		CHECK(cells.empty());
 	}
 	CHECK(plants == sim.get_plant_count());
 	CHECK(std::count(tile_of.begin(), tile_of.end(), -1) == 0);
@@ -420,6 +433,7 @@ TEST_CASE("far tiles merge with distance: nested quarters, parents covering thei
 	// plant is drawn once or stood in for by the merged tile drawn there; the farther, the fewer drawn.
 	int64_t previous_thinned = -1;
 	int64_t faded = 0;
+	int64_t records_left = 0; // records of drawn tiles past their visible count
 	for (const glm::vec3 &camera : { glm::vec3(60.0f, 1.7f, 60.0f), glm::vec3(-10.0f, 1.7f, 60.0f),
 				 glm::vec3(-80.0f, 1.7f, 60.0f), glm::vec3(-250.0f, 1.7f, 60.0f) }) {
 		CAPTURE(camera.x);
@@ -442,6 +456,7 @@ TEST_CASE("far tiles merge with distance: nested quarters, parents covering thei
 			if (tile_drawn_from(sim, t, camera)) {
 				++tiles_drawn;
 				squares += 1u << (2u * sim.get_tile(t).level);
+				records_left += sim.get_tile(t).plants - sim.get_tile_visible_count(t);
 			}
 		}
 		CHECK(squares <= 64);
@@ -459,6 +474,7 @@ TEST_CASE("far tiles merge with distance: nested quarters, parents covering thei
 	}
 	CHECK(double(previous_thinned) > 0.9 * plant_count); // from 250 m away, level 3 stands in
 	CHECK(faded > 0); // plants the next level leaves out, fading out one by one
+	CHECK(records_left > 0); // tiles whose plants are all beyond a merge distance draw fewer records
 	// Without merging: the level-0 tiles alone.
 	params.tile_merge_distance = 0.0f;
 	sim.set_layout_params(params);

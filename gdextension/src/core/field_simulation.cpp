@@ -184,6 +184,43 @@ void FieldSimulation::_build_tiles() {
 	if (_layout_params.tile_merge_distance > 0.0f) {
 		_merge_tiles();
 	}
+	_finish_tiles();
+}
+
+void FieldSimulation::_finish_tiles() {
+	for (Tile &tile : _tiles) {
+		const Chunk &first = _layout.chunks[_tile_chunks[tile.first]];
+		tile.area_min = first.min;
+		tile.area_max = first.max;
+		tile.kept_from.fill(0);
+		for (uint32_t k = 0; k < tile.count; ++k) {
+			const uint32_t chunk = _tile_chunks[tile.first + k];
+			tile.area_min = glm::min(tile.area_min, _layout.chunks[chunk].min);
+			tile.area_max = glm::max(tile.area_max, _layout.chunks[chunk].max);
+			for (uint32_t level = 0; level < MAX_TILE_LEVELS; ++level) {
+				tile.kept_from[level] += _chunk_kept.empty() ? _layout.chunks[chunk].count : _chunk_kept[chunk][std::max(level, tile.level)];
+			}
+		}
+	}
+	_tile_visible.resize(_tiles.size());
+	for (size_t t = 0; t < _tiles.size(); ++t) {
+		_tile_visible[t] = _tiles[t].plants;
+	}
+	_tile_counts_due = true;
+}
+
+void FieldSimulation::_count_tile_records() {
+	_tile_count_observer = _observer;
+	_tile_counts_due = false;
+	const glm::vec2 eye(_observer.x, _observer.z);
+	for (size_t t = 0; t < _tiles.size(); ++t) {
+		const Tile &tile = _tiles[t];
+		// The ground distance is at most the distance the shader measures to a root; the observer
+		// may move TILE_COUNT_SLACK before the next count.
+		const float nearest = glm::length(eye - glm::clamp(eye, tile.area_min, tile.area_max)) - TILE_COUNT_SLACK;
+		const uint32_t level = std::max(choose_tile_level(std::max(nearest, 0.0f)).level, tile.level);
+		_tile_visible[t] = tile.kept_from[level];
+	}
 }
 
 void FieldSimulation::_merge_tiles() {
@@ -328,14 +365,40 @@ ChunkBounds FieldSimulation::get_tile_bounds(uint32_t p_tile) const {
 
 void FieldSimulation::write_tile_instances(uint32_t p_tile, float *r_out) const {
 	const Tile &tile = _tiles[p_tile];
-	for (uint32_t k = 0; k < tile.count; ++k) {
-		const uint32_t chunk = get_tile_chunk(p_tile, k);
-		const uint32_t first = _layout.chunks[chunk].first;
-		// A merged tile's plants are the first of each chunk's kept ones (ordered by tile level).
-		const uint32_t count = tile.level == 0 ? _layout.chunks[chunk].count : _chunk_kept[chunk][tile.level];
-		const uint32_t *plants = tile.level == 0 ? _layout.chunk_plants.data() + first : _merged_plants.data() + _merged_first[chunk];
-		_write_records(chunk, plants, count, r_out, int(tile.level));
-		r_out += size_t(count) * FAR_FLOATS_PER_INSTANCE;
+	if (_chunk_kept.empty()) { // tiles do not merge
+		for (uint32_t k = 0; k < tile.count; ++k) {
+			const Chunk &chunk = _layout.chunks[get_tile_chunk(p_tile, k)];
+			_write_records(get_tile_chunk(p_tile, k), _layout.chunk_plants.data() + chunk.first, chunk.count, r_out);
+			r_out += size_t(chunk.count) * FAR_FLOATS_PER_INSTANCE;
+		}
+		return;
+	}
+	std::vector<uint32_t> level_zero; // a chunk's plants no merged level keeps
+	for (uint32_t level = MAX_TILE_LEVELS; level-- > tile.level;) {
+		for (uint32_t k = 0; k < tile.count; ++k) {
+			const uint32_t chunk = get_tile_chunk(p_tile, k);
+			const uint32_t *plants = nullptr;
+			uint32_t count = 0;
+			if (level > 0) {
+				// A chunk's merged plants come highest level first: level L's follow those above it.
+				const std::array<uint32_t, MAX_TILE_LEVELS> &kept = _chunk_kept[chunk];
+				const uint32_t above = level + 1 < MAX_TILE_LEVELS ? kept[level + 1] : 0;
+				plants = _merged_plants.data() + _merged_first[chunk] + above;
+				count = kept[level] - above;
+			} else {
+				level_zero.clear();
+				const Chunk &own = _layout.chunks[chunk];
+				for (uint32_t p = own.first; p < own.first + own.count; ++p) {
+					if (plant_tile_level(_layout.plants[_layout.chunk_plants[p]]) == 0) {
+						level_zero.push_back(_layout.chunk_plants[p]);
+					}
+				}
+				plants = level_zero.data();
+				count = uint32_t(level_zero.size());
+			}
+			_write_records(chunk, plants, count, r_out, level - tile.level);
+			r_out += size_t(count) * FAR_FLOATS_PER_INSTANCE;
+		}
 	}
 }
 
@@ -558,6 +621,10 @@ void FieldSimulation::update(float p_delta) {
 	const glm::vec3 moved = _observer - _lod_observer;
 	if (glm::dot(moved, moved) > JUMP_DISTANCE * JUMP_DISTANCE) {
 		_lod_due = true; // the observer jumped: do not wait for the interval
+	}
+	const glm::vec2 walked(_observer.x - _tile_count_observer.x, _observer.z - _tile_count_observer.z);
+	if (_tile_counts_due || glm::dot(walked, walked) > TILE_COUNT_SLACK * TILE_COUNT_SLACK) {
+		_count_tile_records();
 	}
 	if (_lod_due || _since_lod >= _lod.get_params().interval) {
 		_lod_due = false; // _select_lods() sets it again when chunks are left for the next update
@@ -854,13 +921,13 @@ void FieldSimulation::write_chunk_instances(uint32_t p_chunk, float *r_out) cons
 	_write_records(p_chunk, _layout.chunk_plants.data() + chunk.first, chunk.count, r_out);
 }
 
-void FieldSimulation::_write_records(uint32_t p_chunk, const uint32_t *p_plants, uint32_t p_count, float *r_out, int p_tile_level) const {
+void FieldSimulation::_write_records(uint32_t p_chunk, const uint32_t *p_plants, uint32_t p_count, float *r_out, uint32_t p_levels_above) const {
 	const uint32_t species = _layout.chunks[p_chunk].species;
 	for (uint32_t k = 0; k < p_count; ++k) {
 		const Plant &plant = _layout.plants[p_plants[k]];
 		FarInstance instance = _far_instance(plant, species);
 		instance.cell = _chunk_cells[p_chunk];
-		instance.levels_above = p_tile_level < 0 ? 0 : uint32_t(std::max(int(plant_tile_level(plant)) - p_tile_level, 0));
+		instance.levels_above = p_levels_above;
 		write_far_instance(r_out + size_t(k) * FAR_FLOATS_PER_INSTANCE, instance);
 	}
 }

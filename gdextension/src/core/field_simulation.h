@@ -192,6 +192,11 @@ public:
 		// Where it lies: (level << 56) | tile cell × MAX_SPECIES + species (the same in any layout of the
 		// map's size).
 		uint64_t key = 0;
+		glm::vec2 area_min{ 0.0f }; // x, z bounds of its plants' roots
+		glm::vec2 area_max{ 0.0f };
+		// kept_from[M]: how many of its plants a level M keeps (all of them below its own level).
+		// Its records come highest level first, so these are its first kept_from[M] records.
+		std::array<uint32_t, MAX_TILE_LEVELS> kept_from{};
 		// No level lies above it: it keeps every plant beyond its merge distance.
 		bool is_top() const { return parent == NO_TILE; }
 	};
@@ -200,8 +205,15 @@ public:
 	// The k-th chunk of a tile (k < Tile::count), in chunk order within each child.
 	uint32_t get_tile_chunk(uint32_t p_tile, uint32_t p_k) const { return _tile_chunks[_tiles[p_tile].first + p_k]; }
 	ChunkBounds get_tile_bounds(uint32_t p_tile) const;
-	// The tile's plants' records, chunk after chunk: Tile::plants × FAR_FLOATS_PER_INSTANCE floats.
+	// The tile's plants' records: Tile::plants × FAR_FLOATS_PER_INSTANCE floats; while tiles merge,
+	// level by level, highest first (chunk after chunk within a level), else chunk after chunk.
 	void write_tile_instances(uint32_t p_tile, float *r_out) const;
+	// How many of the tile's first records the engine must draw: those kept at the lowest level the
+	// observer's distance may give any of its plants (Tile::kept_from), counted again whenever the
+	// observer has moved TILE_COUNT_SLACK metres across the ground, from a distance that much
+	// nearer. A level-0 tile seen from beyond the first merge distance draws a quarter of its records.
+	uint32_t get_tile_visible_count(uint32_t p_tile) const { return _tile_visible[p_tile]; }
+	static constexpr float TILE_COUNT_SLACK = 1.0f;
 	// Two tiles with equal keys and signatures draw the same (see get_chunk_signature).
 	uint64_t get_tile_signature(uint32_t p_tile) const;
 	// The distance from the observer at which a far plant's place turns to level L
@@ -290,9 +302,12 @@ private:
 	// The merged levels above the level-0 tiles (see TILE_CHUNKS).
 	void _merge_tiles();
 	// The static records of p_count plants of chunk p_chunk (p_plants: their indices), each with the
-	// chunk's cell and, for a tile of level p_tile_level, the levels above it that keep the plant
-	// (FarInstance::levels_above); a negative p_tile_level: none.
-	void _write_records(uint32_t p_chunk, const uint32_t *p_plants, uint32_t p_count, float *r_out, int p_tile_level = -1) const;
+	// chunk's cell and p_levels_above (FarInstance::levels_above: the plants are all of one level).
+	void _write_records(uint32_t p_chunk, const uint32_t *p_plants, uint32_t p_count, float *r_out, uint32_t p_levels_above = 0) const;
+	// Each tile's area and kept_from, once its plants are known.
+	void _finish_tiles();
+	// Tile::visible counts from the observer's place now (get_tile_visible_count).
+	void _count_tile_records();
 	void _select_lods();
 	void _select_chunk_lods(uint32_t p_chunk, bool p_forced, float p_enter, float p_leave);
 	uint8_t _static_chunk_lod(uint32_t p_chunk) const;
@@ -334,6 +349,9 @@ private:
 	std::vector<std::array<uint32_t, MAX_TILE_LEVELS>> _chunk_kept;
 	std::vector<uint32_t> _merged_first;
 	std::vector<uint32_t> _merged_plants;
+	std::vector<uint32_t> _tile_visible; // per tile: get_tile_visible_count
+	glm::vec3 _tile_count_observer{ 0.0f }; // where the observer was when they were counted
+	bool _tile_counts_due = true;
 	uint32_t _mask_version = 0;
 	std::vector<uint32_t> _active_chunks;
 	std::vector<uint32_t> _previous_active;
