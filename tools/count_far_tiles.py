@@ -9,8 +9,9 @@ plus its reach) and that of no tile above it does (the nodes' visibility parents
 is sessions 17-26's rule: each tile drawn from its merge distance less its reach to the next
 level's plus its reach, two levels overlapping around each merge distance. Either way a tile must
 also reach into the view (107 degrees across, Godot's 75-degree camera at 16:9). Prints the tiles
-drawn and the instances they hold (square metres of plants times the level's density), whose vertex
-shader runs whether the level draws them or not. Usage:
+drawn and the instances they draw (square metres of plants times the density of the lowest level
+its plants may be given: FieldSimulation::get_tile_visible_count), whose vertex shader runs
+whether the level draws them or not. Usage:
 
     tools/count_far_tiles.py [--tile-chunks 8] [--floor 0] [--overlap] SIDE...
 """
@@ -95,7 +96,11 @@ def count(side: float, tile_chunks: int, floor: float, overlap: bool) -> tuple[d
                 above = parent(above)
         if shown:
             drawn[level] = drawn.get(level, 0) + 1
-            instances += (tile[3] - tile[1]) * (tile[4] - tile[2]) * 4.0**-level
+            nearest = math.hypot(max(tile[1] - camera[0], 0, camera[0] - tile[3]), max(tile[2] - camera[1], 0, camera[1] - tile[4]))
+            kept = level
+            while kept < top and nearest >= merge_distance(kept + 1, tile_chunks, floor):
+                kept += 1
+            instances += (tile[3] - tile[1]) * (tile[4] - tile[2]) * 4.0**-kept
     return drawn, instances
 
 
