@@ -468,11 +468,8 @@ func test_far_impostors_stand_where_their_plants_do_on_a_moved_and_turned_field(
 func test_a_lone_far_plant_shades_itself_as_its_mesh_does() -> void:
 	var field: SunflowerField = _lone_still_plant()
 	var target: Vector3 = field.get_plant_info(0)["position"] + Vector3(0.0, 1.0, 0.0)
-	var camera: Camera3D = Camera3D.new()
-	scene.add_child(camera)
-	camera.fov = 4.0  # nearly orthographic
+	var camera: Camera3D = _narrow_camera()
 	camera.look_at_from_position(target + Vector3(0.0, 1.0, 1.0).normalized() * 40.0, target)
-	camera.make_current()
 	var leaves: Array[float] = []
 	for level: int in [0, 3]:  # mesh 1, sprite
 		field.force_lod = level
@@ -498,10 +495,7 @@ func test_a_lone_far_plant_shades_itself_as_its_mesh_does() -> void:
 func test_a_lone_far_plant_looks_like_its_mesh_from_every_side() -> void:
 	var field: SunflowerField = _lone_still_plant()
 	var target: Vector3 = field.get_plant_info(0)["position"] + Vector3(0.0, 1.0, 0.0)
-	var camera: Camera3D = Camera3D.new()
-	scene.add_child(camera)
-	camera.fov = 4.0  # nearly orthographic
-	camera.make_current()
+	var camera: Camera3D = _narrow_camera()
 	var crop: Rect2i = Rect2i(250, 20, 140, 320)  # the plant
 	var picture: Picture = Picture.new(crop.size.x, crop.size.y)
 	var sides: int = 8
@@ -578,6 +572,15 @@ func _lone_still_plant() -> SunflowerField:
 	field.finish_build()
 	field.set_process(false)
 	return field
+
+
+## The current camera, a 4° view (nearly orthographic), for a lone plant seen from 40 m.
+func _narrow_camera() -> Camera3D:
+	var camera: Camera3D = Camera3D.new()
+	scene.add_child(camera)
+	camera.fov = 4.0
+	camera.make_current()
+	return camera
 
 
 ## A map of one plant.
