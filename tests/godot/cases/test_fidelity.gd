@@ -86,6 +86,8 @@ func test_far_levels_look_like_the_full_mesh_picture() -> void:
 		)
 		if full and view in ["above45", "down60"]:
 			await _print_pixel_noise(eye, target, mesh_1, view)
+	if full:
+		await _check_anti_aliased()
 	# The issue's targets: SSIM ≥ 0.99 at head height (met), ≥ 0.85 from above (met straight down
 	# since session 26, not at 45°: see the README; mesh 3, a model of a quarter of the triangles,
 	# reaches 0.915 and 0.963, so it is the impostor's look, not the plants' places; main before the
@@ -104,6 +106,28 @@ func test_far_levels_look_like_the_full_mesh_picture() -> void:
 			absf(figures[view][3] - 1.0) <= 0.05,
 			"%s: the impostors' brightness %.3f of the meshes', within ±5 %%" % [view, figures[view][3]]
 		)
+
+
+## The aerial views anti-aliased: drawn with the window 4 times as wide and high (16 samples a
+## pixel) and box-filtered back to its size, automatic LOD against every plant as mesh 1. This is
+## where the issue's 0.85 from above is met (session 26: 0.877 at 45°, 0.931 straight down); at one
+## sample a pixel the meshes' own aliasing bounds what any impostor can score (see below).
+func _check_anti_aliased() -> void:
+	tree.root.size = window_size * 4
+	await RenderingServer.frame_post_draw
+	var large: Vector2i = tree.root.get_visible_rect().size
+	check(large == window_size * 4, "the window is 4 times as large (%s)" % large)
+	for view: String in ["above45", "down60"]:
+		var eye: Vector3 = VIEWS[view][0]
+		var target: Vector3 = VIEWS[view][1]
+		var auto: Image = await _render_image(eye, target, -1, view + "_x4.auto")
+		var mesh_1: Image = await _render_image(eye, target, 0, view + "_x4.mesh1")
+		var figure: float = _ssim_anti_aliased(auto, mesh_1, 2)
+		print(
+			"     %s anti-aliased (%d × %d box-filtered 4 × 4): SSIM to mesh 1 %.3f" % [view, large.x, large.y, figure]
+		)
+		check(figure >= 0.85, "%s anti-aliased: SSIM %.3f, at least 0.85" % [view, figure])
+	tree.root.size = window_size
 
 
 ## What SSIM at one sample a pixel makes of two equally right pictures: the full-mesh picture
@@ -160,13 +184,21 @@ func test_far_levels_keep_their_brightness_at_twice_the_resolution() -> void:
 	picture = Picture.new(large.x, large.y)
 	var eye: Vector3 = VIEWS["above45"][0]
 	var target: Vector3 = VIEWS["above45"][1]
-	var auto: PackedFloat32Array = await _render(eye, target, -1, "above45_x2.auto")
-	var mesh_1: PackedFloat32Array = await _render(eye, target, 0, "above45_x2.mesh1")
+	var auto_image: Image = await _render_image(eye, target, -1, "above45_x2.auto")
+	var mesh_1_image: Image = await _render_image(eye, target, 0, "above45_x2.mesh1")
+	var auto: PackedFloat32Array = picture.luminance(auto_image)
+	var mesh_1: PackedFloat32Array = picture.luminance(mesh_1_image)
 	var inside: PackedByteArray = picture.region(await _impostors_alone(eye, target, "above45_x2.mask"))
 	var brightness: float = picture.mean_in(auto, inside) / picture.mean_in(mesh_1, inside)
+	var anti_aliased: float = _ssim_anti_aliased(auto_image, mesh_1_image, 1)
 	print(
-		"     25 m up at 45°, %d × %d: the impostors' brightness %.3f of the meshes'" % [large.x, large.y, brightness]
+		(
+			"     25 m up at 45°, %d × %d: the impostors' brightness %.3f of the meshes'; SSIM %.3f, box-filtered 2 × 2 %.3f"
+			% [large.x, large.y, brightness, picture.ssim(auto, mesh_1), anti_aliased]
+		)
 	)
+	# Two samples a pixel each way: 0.826 (session 28); 0.85 is reached with four (FIDELITY_FULL).
+	check(anti_aliased >= 0.80, "anti-aliased (2 × 2 samples a pixel): SSIM %.3f, at least 0.80" % anti_aliased)
 	check(large == window_size * 2, "the window is twice as large (%s)" % large)
 	check(inside.count(1) > 40000, "the impostors are in view (%d pixels)" % inside.count(1))
 	check(absf(brightness - 1.0) <= 0.05, "the impostors' brightness %.3f of the meshes', within ±5 %%" % brightness)
@@ -175,6 +207,19 @@ func test_far_levels_keep_their_brightness_at_twice_the_resolution() -> void:
 	print("     seen from 50–55° above (%d pixels): %.3f" % [midway.count(1), band])
 	check(midway.count(1) > 20000, "plants seen from 50–55° above are in view (%d pixels)" % midway.count(1))
 	check(band >= 0.95, "those seen from 50–55° above: brightness %.3f of the meshes', at least 0.95" % band)
+
+
+## The SSIM of [param a] and [param b] after [param halvings] halvings of each (2 × 2 pixels
+## averaged each time): pictures rendered 2^halvings times as wide and high, compared anti-aliased
+## as supersampling draws them.
+func _ssim_anti_aliased(a: Image, b: Image, halvings: int) -> float:
+	var small_a: Image = a.duplicate() as Image
+	var small_b: Image = b.duplicate() as Image
+	for i: int in halvings:
+		small_a.shrink_x2()
+		small_b.shrink_x2()
+	var small: RefCounted = Picture.new(small_a.get_width(), small_a.get_height())
+	return small.ssim(small.luminance(small_a), small.luminance(small_b))
 
 
 ## The pixels of [param inside] (a picture of [param size]) that the camera sees from
@@ -297,6 +342,11 @@ func _walk_across(distance: float) -> Array[PackedFloat32Array]:
 ## The picture from [param eye] towards [param target] with [param force] (-1: automatic LOD),
 ## after [param updates] updates of a 60th of a second; saved to the artifacts as [param name].
 func _render(eye: Vector3, target: Vector3, force: int, name: String, updates: int = 10) -> PackedFloat32Array:
+	return picture.luminance(await _render_image(eye, target, force, name, updates))
+
+
+## The picture of [method _render] as an image, at the window's size.
+func _render_image(eye: Vector3, target: Vector3, force: int, name: String, updates: int = 10) -> Image:
 	camera.look_at_from_position(eye, target)
 	field.force_lod = force
 	for i: int in updates:  # a jump turns chunks active a budget's worth per update
@@ -307,7 +357,7 @@ func _render(eye: Vector3, target: Vector3, force: int, name: String, updates: i
 	var image: Image = tree.root.get_viewport().get_texture().get_image()
 	if not name.is_empty():
 		image.save_png(artifact_path("fidelity/%s.png" % name))
-	return picture.luminance(image)
+	return image
 
 
 ## The view with every mesh part black and unshaded, no ground and a black sky: what is not black
