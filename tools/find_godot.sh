@@ -30,6 +30,14 @@ if [[ -x "$wrapper" && -f "$marker" ]] && version_ok "$wrapper"; then
   echo "$wrapper"; exit 0
 fi
 
+# One fetch at a time: tools/demo.sh starts this beside the rest of the set-up, and the build asks
+# again when it dumps the engine's interface; the second waits for the first and then finds its result.
+mkdir -p "$(dirname "$cache")"
+exec 8>"$cache.lock"
+flock 8
+if [[ -x "$wrapper" && -f "$marker" ]] && version_ok "$wrapper"; then
+  echo "$wrapper"; exit 0
+fi
 echo "find_godot: fetching Godot 4 from Debian unstable into $cache" >&2
 rm -rf "$cache"
 mkdir -p "$cache"/apt/{lists/partial,cache/archives/partial,etc} "$cache/debs" "$cache/root"

@@ -1,15 +1,25 @@
 #!/usr/bin/env bash
-# Installs everything the build, the demo and the tests need, on a fresh Debian 12 (as root).
+# Installs what the build, the demo and the tests need, on a fresh Debian 12 (as root).
+#   tools/setup.sh          everything: every platform's build, the tests, the release zip
+#   tools/setup.sh --demo   only what the demo needs: the host's library and the engine
 # Idempotent: a second run only checks. Prints the engine it will use.
 set -euo pipefail
 repo=$(cd "$(dirname "$0")/.." && pwd)
+mode=all
+[[ "${1:-}" == --demo ]] && mode=demo
 
-# Debian packages: compilers, GLM, doctest, clang for the fuzzer, Xvfb + Mesa for rendering.
-# LLVM's readers check the built libraries; Wine and QEMU run the core's tests built for Windows
-# and for Linux arm64 (with Debian's arm64 C library); zip packs the release.
-debs=(g++ clang llvm libclang-rt-14-dev libglm-dev doctest-dev python3 python3-venv python3-pip
-  xvfb xauth libgl1-mesa-dri mesa-vulkan-drivers libvulkan1 ca-certificates wine64 qemu-user-static
-  libc6-arm64-cross zip unzip)
+# The engine is fetched (tools/find_godot.sh) while the packages below install: the two share nothing.
+godot_log=$(mktemp)
+"$repo/tools/find_godot.sh" >"$godot_log" 2>&1 &
+godot_pid=$!
+
+# Debian packages. The demo: GLM, Python for SCons, Xvfb to draw without a display (the engine brings
+# its own Mesa). Everything: compilers and doctest for the core's tests, clang for the fuzzer, Mesa's
+# OpenGL and Vulkan drivers, LLVM's readers and strip for the libraries, Wine and QEMU to run the core's
+# tests built for Windows and for Linux arm64 (with Debian's arm64 C library), zip for the release.
+debs=(libglm-dev python3 python3-venv xvfb xauth ca-certificates)
+[[ $mode == all ]] && debs+=(g++ clang llvm libclang-rt-14-dev doctest-dev python3-pip libgl1-mesa-dri
+  mesa-vulkan-drivers libvulkan1 wine64 qemu-user-static libc6-arm64-cross zip unzip)
 missing=()
 for p in "${debs[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "ok installed" || missing+=("$p")
@@ -38,21 +48,28 @@ fi
 if [[ ! -e "$venv" && ! -L "$venv" ]]; then
   ln -s "$shared_dir/venv" "$venv"
 fi
+# The demo needs SCons and Zig; the tests also gdtoolkit, numpy and Pillow.
+pips=("scons>=4.5" "ziglang>=0.13")
+[[ $mode == all ]] && pips+=("gdtoolkit>=4.3,<5" numpy pillow)
 venv_ready() {
-  [[ -x "$venv/bin/scons" && -x "$venv/bin/gdlint" ]] && "$venv/bin/python" -m ziglang version >/dev/null 2>&1 &&
-    "$venv/bin/python" -c "import numpy, PIL" 2>/dev/null
+  [[ -x "$venv/bin/scons" ]] && "$venv/bin/python" -m ziglang version >/dev/null 2>&1 || return 1
+  [[ $mode == demo ]] || { [[ -x "$venv/bin/gdlint" ]] && "$venv/bin/python" -c "import numpy, PIL" 2>/dev/null; }
 }
 if ! venv_ready; then
   exec 9>"$shared_dir/setup.lock"
   flock 9
   if ! venv_ready; then
-    echo "setup: creating $(readlink -f "$venv") with scons, gdtoolkit, ziglang, numpy and pillow"
-    python3 -m venv "$(readlink -f "$venv")"
-    "$venv/bin/pip" install -q --disable-pip-version-check "scons>=4.5" "gdtoolkit>=4.3,<5" "ziglang>=0.13" numpy pillow
+    echo "setup: installing ${pips[*]} into $(readlink -f "$venv")"
+    [[ -x "$venv/bin/pip" ]] || python3 -m venv "$(readlink -f "$venv")"
+    "$venv/bin/pip" install -q --disable-pip-version-check "${pips[@]}"
   fi
   exec 9>&-
 fi
 
-# The engine.
+# The engine, fetched since the start.
+if ! wait "$godot_pid"; then
+  cat "$godot_log" >&2; rm -f "$godot_log"; echo "setup: could not fetch the engine (above)" >&2; exit 1
+fi
+rm -f "$godot_log"
 godot=$("$repo/tools/find_godot.sh")
 echo "setup: engine $godot ($("$godot" --version | head -n 1))"

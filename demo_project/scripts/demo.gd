@@ -69,7 +69,7 @@ var _buffer_memory: Dictionary = {}
 
 func _ready() -> void:
 	_field.field_built.connect(_on_field_built)
-	_field.map_error.connect(func(message: String) -> void: _hud.show_message(message))
+	_field.map_error.connect(_on_map_error)
 	_hud.map_chosen.connect(load_map)
 	var parts: PackedStringArray = []
 	var path_file: String = ""
@@ -115,7 +115,7 @@ func _ready() -> void:
 				_hud.visible = false
 				i -= 1
 			_:
-				_hud.show_message("unknown argument '%s' (see demo.gd for the options)" % args[i])
+				_fail("unknown argument '%s' (see demo.gd for the options)" % args[i])
 				i -= 1
 		i += 2
 	if _frames_total < 0 and not (_screenshot.is_empty() and _stats_path.is_empty()):
@@ -373,14 +373,12 @@ func _start_recording(path_file: String) -> void:
 		var errors: Array[String] = []
 		_camera_path = CameraPath.from_file(path_file, errors)
 		if _camera_path == null:
-			_hud.show_message(errors[0])
-			_exit_code = 1
+			_fail(errors[0])
 			_camera_path = CameraPath.built_in(size, _camera.ground_below)
 	if not _view.is_empty():
 		_camera_path = CameraPath.view(_view, size)
 		if _camera_path == null:
-			_hud.show_message("unknown view '%s' (inside, outside40, above45, down60)" % _view)
-			_exit_code = 1
+			_fail("unknown view '%s' (inside, outside40, above45, down60)" % _view)
 			_camera_path = CameraPath.built_in(size, _camera.ground_below)
 	_camera.manual = false
 	_last_ticks = Time.get_ticks_usec()
@@ -418,9 +416,7 @@ func _record_frame() -> void:
 func _finish_recording() -> void:
 	if DisplayServer.get_name() == "headless":
 		if not _screenshot.is_empty():
-			_hud.show_message("no screenshot without a display (run under xvfb-run)")
-			printerr("demo: no screenshot in headless mode; run under xvfb-run for pictures")
-			_exit_code = 1
+			_fail("no screenshot without a display (run under xvfb-run)")
 	else:
 		await RenderingServer.frame_post_draw  # headless mode draws nothing, so this would never come
 		if not _screenshot.is_empty():
@@ -452,7 +448,7 @@ func _save_screenshot(path: String) -> void:
 	var error: Error = image.save_png(path)
 	print("demo: screenshot %s (%s)" % [path, error_string(error)])
 	if error != OK:
-		_exit_code = 1
+		_fail("cannot save the screenshot %s (%s)" % [path, error_string(error)])
 
 
 func _write_stats() -> void:
@@ -493,12 +489,23 @@ func _write_stats() -> void:
 	DirAccess.make_dir_recursive_absolute(_stats_path.get_base_dir())
 	var file: FileAccess = FileAccess.open(_stats_path, FileAccess.WRITE)
 	if file == null:
-		_hud.show_message("cannot write %s (%s)" % [_stats_path, error_string(FileAccess.get_open_error())])
-		_exit_code = 1
+		_fail("cannot write %s (%s)" % [_stats_path, error_string(FileAccess.get_open_error())])
 		return
 	file.store_string(JSON.stringify(stats, "  "))
 	file.close()
 	print("demo: stats %s" % _stats_path)
+
+
+## Shows a problem on the HUD; in recording mode it also goes to the log and the run exits with 1.
+func _fail(message: String) -> void:
+	_hud.show_message(message)
+	if _frames_total >= 0 or not (_screenshot.is_empty() and _stats_path.is_empty()):
+		printerr("demo: FAILED: " + message)
+		_exit_code = 1
+
+
+func _on_map_error(message: String) -> void:
+	_fail(message)
 
 
 func _summary(values: PackedFloat32Array) -> Dictionary:
