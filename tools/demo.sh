@@ -20,7 +20,7 @@ out="$repo/build/demo"
 mkdir -p "$out"
 args=("$@")
 # Without arguments: the built-in flight, a picture every 10 frames (low and high viewpoints), stats.
-((${#args[@]})) || args=(--frames 41 --screenshot "$out/demo.png" --screenshot-every 10 --stats "$out/stats.json")
+((${#args[@]})) || args=(--frames 16 --screenshot "$out/demo.png" --screenshot-every 5 --stats "$out/stats.json")
 screenshot=""
 for ((i = 0; i + 1 < ${#args[@]}; i++)); do
   [[ "${args[i]}" == --screenshot ]] && screenshot=${args[i + 1]}
@@ -28,7 +28,7 @@ done
 [[ -n "$screenshot" ]] && rm -f "$screenshot"
 log="$out/demo.log"
 echo "demo: no display; running the recording mode under Xvfb (Forward+ on Vulkan lavapipe); log $log"
-timeout 900 xvfb-run -a -s "-screen 0 1280x720x24" "$godot" --audio-driver Dummy --resolution 960x540 \
+timeout 900 xvfb-run -a -s "-screen 0 1280x720x24" "$godot" --audio-driver Dummy --resolution 640x360 \
   --path "$repo/demo_project" -- "${args[@]}" >"$log" 2>&1
 status=$?
 grep -E '^demo:' "$log"
