@@ -1,12 +1,12 @@
 #!/usr/bin/env python3
 """Counts the far tiles the engine draws from 40 m outside a square field (the demo's "outside40"
 view), per tile level, for a tiling: a model of FieldSimulation's tiles and the nodes' ranges, to
-weigh tile sizes without the engine (README, "Does another tile size meet it?").
+weigh tile sizes without the engine (docs/performance.md, the one miss).
 
-By default the model is the addon's cut (session 27): a tile is drawn when the camera's distance to
+By default the model is the addon's cut: a tile is drawn when the camera's distance to
 its box's centre reaches its range's begin (FieldSimulation::get_tile_shown_from: its merge distance
 plus its reach) and that of no tile above it does (the nodes' visibility parents). With --overlap it
-is sessions 17-26's rule: each tile drawn from its merge distance less its reach to the next
+is an earlier rule: each tile drawn from its merge distance less its reach to the next
 level's plus its reach, two levels overlapping around each merge distance. Either way a tile must
 also reach into the view (107 degrees across, Godot's 75-degree camera at 16:9). Prints the tiles
 drawn and the instances they draw (square metres of plants times the density of the lowest level

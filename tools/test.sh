@@ -1,96 +1,121 @@
 #!/usr/bin/env bash
-# Runs every test: core unit tests (no engine), GDScript lint and format, the engine integration
-# and render tests under Xvfb with real renderers (Vulkan and OpenGL), a leak check and a drop-in
-# project check; the libraries for every desktop platform are built and inspected, and the core's tests
-# run built for Windows (under Wine) and Linux arm64 (under QEMU). Ends with "total: N passed, N failed".
+# Runs the tests. Ends with "total: N passed, N failed" and a non-zero exit on any failure.
+#   tools/test.sh                    every suite; builds every platform's library first (what CI runs)
+#   tools/test.sh --quick            the inner loop: this machine's build, the core's tests, lint and
+#                                    the engine tests that need no renderer (headless)
+#   tools/test.sh --suite NAME[,..]  only these suites (repeatable); see --list
+#   tools/test.sh --filter PATTERN   only the tests matching PATTERN (a doctest name pattern for the
+#                                    core, a runner pattern such as test_render or *lone* for the
+#                                    engine and demo suites); without --suite: the core and engine suites
+#   tools/test.sh --no-build         use what is built (after a build of your own)
+#   tools/test.sh --list | --help
 set -uo pipefail
 repo=$(cd "$(dirname "$0")/.." && pwd)
 cd "$repo"
-"$repo/tools/build.sh" --all || { echo "build: 0 passed, 1 failed"; exit 1; }
-build_seconds=$SECONDS
-echo "== build: $build_seconds s"
-godot=$("$repo/tools/find_godot.sh")
-artifacts="$repo/tests/artifacts"
-mkdir -p "$artifacts"
+
+# name|what it checks; the order is the order they run in.
+SUITES=(
+  "core|the C++ core's unit tests (doctest), no engine"
+  "platforms|every platform's library inspected; the core's tests built for Windows x86_64 (Wine) and Linux arm64 (QEMU)"
+  "lint|gdlint and gdformat over every GDScript file"
+  "docs|links, images and GDScript snippets of README.md and docs/, the API reference and ARCHITECTURE.md current"
+  "headless|the engine tests that need no renderer (headless Godot)"
+  "engine|every engine test: Godot under Xvfb, Forward+ on Vulkan lavapipe"
+  "opengl|the render tests again on the Compatibility renderer (OpenGL on llvmpipe)"
+  "demo|the demo's own tests, its recording mode, and tools/demo.sh failing on a broken map or a missing library"
+  "dropin|the release zip in a new project; an exported game's map; a project with no library"
+  "editor|the editor: scenes with fields, painting, baking impostors, a malformed map's import"
+  "fuzz|libFuzzer (ASan + UBSan) over the map parser, the layout and a simulation step"
+)
+# The engine tests that need no renderer: the "headless" suite runs them alone (the others read back
+# what the renderer holds or draw pictures; the "engine" suite runs every test).
+HEADLESS_TESTS=(test_addon test_build test_field test_ground test_interaction test_plant test_robustness test_species
+  '!test_field.test_buffers_reach_the_rendering_server' '!test_field.test_every_plant_is_drawn_exactly_once_*'
+  '!test_field.test_merged_far_tiles_draw_each_place_once_*' '!test_species.test_a_hilly_field_*')
+# The render tests the "opengl" suite repeats: those whose result depends on the renderer.
+OPENGL_TESTS=(test_render)
+
+usage() { sed -n '2,12p' "$0" | sed 's/^# \{0,1\}//'; }
+list() { local s; for s in "${SUITES[@]}"; do printf '  %-10s %s\n' "${s%%|*}" "${s#*|}"; done; }
+wanted=()
+filter=""
+build=all
+quick=0
+while (($#)); do
+  case "$1" in
+    --quick) quick=1 ;;
+    --suite) shift; IFS=, read -r -a more <<<"${1:-}"; wanted+=("${more[@]}") ;;
+    --suite=*) IFS=, read -r -a more <<<"${1#--suite=}"; wanted+=("${more[@]}") ;;
+    --filter) shift; filter=${1:-} ;;
+    --filter=*) filter=${1#--filter=} ;;
+    --no-build) build=none ;;
+    --list) list; exit 0 ;;
+    -h | --help) usage; echo; echo "suites:"; list; exit 0 ;;
+    *) echo "test.sh: unknown argument '$1'" >&2; usage >&2; exit 2 ;;
+  esac
+  shift
+done
+((quick)) && wanted+=(core lint headless)
+[[ -n "$filter" && ${#wanted[@]} -eq 0 ]] && wanted=(core engine)
+if ((${#wanted[@]} == 0)); then
+  for s in "${SUITES[@]}"; do [[ "${s%%|*}" == headless ]] || wanted+=("${s%%|*}"); done
+fi
+for w in "${wanted[@]}"; do
+  known=0
+  for s in "${SUITES[@]}"; do [[ "${s%%|*}" == "$w" ]] && known=1; done
+  ((known)) || { echo "test.sh: no suite '$w'; the suites are:" >&2; list >&2; exit 2; }
+done
+runs() { local w; for w in "${wanted[@]}"; do [[ "$w" == "$1" ]] && return 0; done; return 1; }
+# Only the platforms suite needs the other platforms' builds.
+[[ $build == all ]] && ! runs platforms && build=host
+
 passed=0
 failed=0
 since=$SECONDS
+timings=()
 record() { # $1 = passed count, $2 = failed count, $3 = what; with the seconds since the last one
   passed=$((passed + $1)); failed=$((failed + $2))
   printf '== %s: %d passed, %d failed (%d s)\n' "$3" "$1" "$2" $((SECONDS - since))
   since=$SECONDS
 }
+suite_done() { # $1 = suite; the time since it started
+  timings+=("$(printf '%-10s %4d s' "$1" $((SECONDS - suite_start)))")
+}
+
+case $build in
+  all) "$repo/tools/build.sh" --all || { echo "build: 0 passed, 1 failed"; echo "total: 0 passed, 1 failed"; exit 1; } ;;
+  host) "$repo/tools/build.sh" || { echo "build: 0 passed, 1 failed"; echo "total: 0 passed, 1 failed"; exit 1; } ;;
+esac
+echo "== build: $SECONDS s"
+timings+=("$(printf '%-10s %4d s' build $SECONDS)")
+since=$SECONDS
+godot=$("$repo/tools/find_godot.sh")
+artifacts="$repo/tests/artifacts"
+mkdir -p "$artifacts"
+xvfb=(xvfb-run -a -s "-screen 0 1280x720x24")
 
 # $1 = label, rest = the doctest program and how to start it
 doctest_suite() {
   local label=$1 out status line p f; shift
   echo "== $label"
-  out=$(WINEDEBUG=-all timeout 900 "$@" 2>&1); status=$?
+  out=$(WINEDEBUG=-all timeout 900 "$@" ${filter:+-tc="*${filter}*"} 2>&1); status=$?
   echo "$out" | tail -n 4
   line=$(echo "$out" | grep -E 'test cases:' | tail -n 1)
   p=$(echo "$line" | sed -E 's/.*\| *([0-9]+) passed.*/\1/'); f=$(echo "$line" | sed -E 's/.*\| *([0-9]+) failed.*/\1/')
   [[ "$p" =~ ^[0-9]+$ && "$f" =~ ^[0-9]+$ ]] || { p=0; f=1; }
   ((status != 0 && f == 0)) && f=1
+  ((p + f == 0)) && f=1 # a filter that selects nothing is a mistake, not a pass
   record "$p" "$f" "$label"
 }
-# The fuzzer and the core's tests under Wine and QEMU each keep one core busy: the fuzzer runs beside
-# them (started here, its result recorded at the end).
-fuzz_seconds=${FUZZ_SECONDS:-60}
-fuzz_corpus=$(mktemp -d)
-(
-  "$repo/.cache/venv/bin/scons" -Q -j1 fuzz >"$artifacts/fuzz_build.log" 2>&1 &&
-    "$repo/build/fuzz/fuzz_field_map" -max_total_time="$fuzz_seconds" -max_len=4096 -print_final_stats=1 \
-      -artifact_prefix="$artifacts/fuzz-" "$fuzz_corpus" "$repo/gdextension/fuzz/corpus" >"$artifacts/fuzz.log" 2>&1
-) &
-fuzz_pid=$!
-fuzz_finish() {
-  echo "== fuzzing the map parser and layout for ${fuzz_seconds} s (libFuzzer, ASan + UBSan; run beside the core's tests)"
-  if wait "$fuzz_pid"; then
-    grep -E "^Done|stat::number_of_executed_units" "$artifacts/fuzz.log" | head -n 2
-    record 1 0 "fuzzing"
-  else
-    tail -n 30 "$artifacts/fuzz_build.log" "$artifacts/fuzz.log"; record 0 1 "fuzzing"
-  fi
-  rm -rf "$fuzz_corpus"
-}
-doctest_suite "core unit tests (doctest)" "$repo/build/tests/core_tests"
-doctest_suite "core unit tests built for Windows x86_64, under Wine" /usr/lib/wine/wine64 "$repo/build/tests/core_tests.windows.x86_64.exe"
-doctest_suite "core unit tests built for Linux arm64, under QEMU" qemu-aarch64-static -L /usr/aarch64-linux-gnu \
-  "$repo/build/tests/core_tests.linux.arm64"
-
-echo "== the libraries for every platform: format, architecture, dependencies, exports"
-python3 "$repo/tools/check_libraries.py" "$repo"/addons/sunflower_field/bin/*.{so,dll,dylib} | tee "$artifacts/libraries.log"
-line=$(grep -E '^libraries: [0-9]+ passed, [0-9]+ failed$' "$artifacts/libraries.log")
-if [[ "$line" =~ ([0-9]+)\ passed,\ ([0-9]+)\ failed ]] && ((BASH_REMATCH[1] == 12)); then
-  record "${BASH_REMATCH[1]}" "${BASH_REMATCH[2]}" "libraries"
-else
-  record 0 1 "libraries (expected 12: $line)"
-fi
-# The check can fail: a library linked the ordinary way needs libstdc++ and exports everything.
-bad=$(mktemp -d)
-printf '#include <string>\nstd::string sunflower_name() { return "x"; }\nextern "C" int sunflower_library_init() { return 0; }\n' >"$bad/bad.cpp"
-g++ -shared -fPIC -o "$bad/libsunflower.linux.template_debug.x86_64.so" "$bad/bad.cpp"
-if ! python3 "$repo/tools/check_libraries.py" "$bad/libsunflower.linux.template_debug.x86_64.so" >"$bad/out" &&
-  grep -q "depends on libstdc++" "$bad/out" && grep -q "exports .* other symbols" "$bad/out"; then
-  record 1 0 "the library check refuses a libstdc++ library with every symbol exported"
-else
-  cat "$bad/out"; record 0 1 "the library check refuses a libstdc++ library with every symbol exported"
-fi
-rm -rf "$bad"
-
-echo "== gdlint and gdformat"
-mapfile -t scripts < <(git ls-files '*.gd')
-if (cd "$repo" && "$repo/.cache/venv/bin/gdlint" "${scripts[@]}"); then record 1 0 "gdlint"; else record 0 1 "gdlint"; fi
-if "$repo/.cache/venv/bin/gdformat" --check --line-length 120 "${scripts[@]}"; then record 1 0 "gdformat"; else record 0 1 "gdformat"; fi
 
 # $1 = label, $2 = project, $3 = rendering driver ("headless": no renderer), $4 = log, rest = tests (none: all)
 engine_suite() {
   local label=$1 project=$2 driver=$3 log=$4; shift 4
   echo "== $label"
-  local launch=(xvfb-run -a -s "-screen 0 1280x720x24" "$godot" --rendering-driver "$driver")
+  local launch=("${xvfb[@]}" "$godot" --rendering-driver "$driver")
   [[ "$driver" == headless ]] && launch=("$godot" --headless)
   timeout 2400 "${launch[@]}" --verbose --audio-driver Dummy --resolution 640x360 \
-    --path "$project" --script "res://$( [[ -d "$project/runner" ]] && echo runner || echo tests/runner )/run_tests.gd" \
+    --path "$project" --script "res://$([[ -d "$project/runner" ]] && echo runner || echo tests/runner)/run_tests.gd" \
     -- "$@" >"$log" 2>&1
   local status=$? line p f
   grep -E '^(ok|FAIL) |^     |^godot:' "$log"
@@ -105,150 +130,315 @@ engine_suite() {
   record "$p" "$f" "$label"
 }
 
-engine_suite "engine tests (Godot under Xvfb, Forward+ on Vulkan lavapipe)" "$repo/tests/godot" vulkan "$artifacts/godot_tests.log"
-cp "$artifacts/render_demo_field.png" "$artifacts/render_demo_field_vulkan.png" 2>/dev/null
-engine_suite "render test (Compatibility renderer, OpenGL on llvmpipe)" "$repo/tests/godot" opengl3 "$artifacts/godot_render_gl.log" test_render
-mv "$artifacts/render_demo_field.png" "$artifacts/render_demo_field_opengl.png" 2>/dev/null
+# The tests an engine suite runs: the filter alone, else the list given (none: all).
+engine_tests() { if [[ -n "$filter" ]]; then echo "$filter"; else echo "$@"; fi; }
 
-engine_suite "demo tests (headless)" "$repo/demo_project" headless "$artifacts/demo_tests.log"
+# A project dir with a copy of the addon (and what else is given), its extension listed before import.
+new_project() { # $1 = dir; copies the addon without following it being a link
+  mkdir -p "$1/addons" "$1/.godot"
+  cp -rL "$repo/addons/sunflower_field" "$1/addons/"
+  echo "res://addons/sunflower_field/sunflower_field.gdextension" >"$1/.godot/extension_list.cfg"
+}
 
-echo "== demo recording mode (Xvfb, Forward+): screenshot and stats"
-frames=12
-rm -f "$artifacts/demo_recording.png" "$artifacts/demo_stats.json"
-timeout 600 xvfb-run -a -s "-screen 0 1280x720x24" "$godot" --audio-driver Dummy --resolution 640x360 \
-  --path "$repo/demo_project" -- --frames "$frames" --screenshot "$artifacts/demo_recording.png" \
-  --stats "$artifacts/demo_stats.json" >"$artifacts/demo_recording.log" 2>&1
-grep '^demo:' "$artifacts/demo_recording.log"
-if timeout 120 "$godot" --headless --path "$repo/demo_project" --script res://tests/cases/check_recording.gd -- \
-  "$artifacts/demo_stats.json" "$artifacts/demo_recording.png" "$frames" 2>&1 | tee "$artifacts/demo_check.log" | grep '^recording:' &&
-  grep -q '^recording: ok$' "$artifacts/demo_check.log"; then
-  record 1 0 "demo recording"
-else
-  record 0 1 "demo recording"
+# --- Suites that keep one core busy start first and run beside the engine's ---------------------------
+# The fuzzer and the core's tests under Wine and QEMU are single-threaded; the engine suites leave a
+# core idle much of the time (scene set-up, GDScript). Their output is collected when they end.
+background=()
+if runs fuzz; then
+  fuzz_seconds=${FUZZ_SECONDS:-60}
+  (
+    corpus=$(mktemp -d)
+    "$repo/.cache/venv/bin/scons" -Q -j1 fuzz >"$artifacts/fuzz_build.log" 2>&1 &&
+      "$repo/build/fuzz/fuzz_field_map" -max_total_time="$fuzz_seconds" -max_len=4096 -print_final_stats=1 \
+        -artifact_prefix="$artifacts/fuzz-" "$corpus" "$repo/gdextension/fuzz/corpus" >"$artifacts/fuzz.log" 2>&1
+    status=$?
+    rm -rf "$corpus"
+    exit $status
+  ) &
+  fuzz_pid=$!
+fi
+if runs platforms; then
+  (
+    doctest_suite "core unit tests built for Windows x86_64, under Wine" /usr/lib/wine/wine64 \
+      "$repo/build/tests/core_tests.windows.x86_64.exe"
+    doctest_suite "core unit tests built for Linux arm64, under QEMU" qemu-aarch64-static -L /usr/aarch64-linux-gnu \
+      "$repo/build/tests/core_tests.linux.arm64"
+  ) >"$artifacts/cross_tests.log" 2>&1 &
+  cross_pid=$!
 fi
 
-echo "== leaks at exit (--verbose output of the engine runs)"
-if grep -E "leaked at exit|Leaked instance|were leaked|Orphan StringName|instances leaked" "$artifacts/godot_tests.log" "$artifacts/godot_render_gl.log" "$artifacts/demo_tests.log"; then
-  record 0 1 "no leaks"
-else
-  record 1 0 "no leaks"
+if runs core; then
+  suite_start=$SECONDS
+  doctest_suite "core unit tests (doctest)" "$repo/build/tests/core_tests"
+  suite_done core
 fi
 
-echo "== drop-in: the release zip (tools/package.sh) unzipped into a new project, a scene without code"
-dropin=$(mktemp -d)
-if "$repo/tools/package.sh" >"$artifacts/dropin.log" 2>&1 && unzip -q "$repo"/build/dist/sunflower_field-*.zip -d "$dropin" &&
-  cp "$repo/fields/demo.field" "$repo/tests/dropin/project.godot" "$repo/tests/dropin/main.tscn" "$repo/tests/dropin/terrain.tscn" \
-    "$repo/tests/dropin/check_dropin.gd" "$repo/tests/dropin/check_exported_map.gd" "$dropin/" &&
-  "$repo/tools/import_project.sh" "$dropin" >>"$artifacts/dropin.log" 2>&1 &&
-  timeout 300 xvfb-run -a -s "-screen 0 1280x720x24" "$godot" --audio-driver Dummy \
-    --path "$dropin" --script res://check_dropin.gd >>"$artifacts/dropin.log" 2>&1 &&
-  grep -q '^dropin: ok$' "$artifacts/dropin.log"; then
-  grep '^package:\|^dropin:' "$artifacts/dropin.log"; record 1 0 "drop-in from the release zip"
-else
-  tail -n 20 "$artifacts/dropin.log"; record 0 1 "drop-in from the release zip"
+if runs lint; then
+  suite_start=$SECONDS
+  echo "== gdlint and gdformat"
+  mapfile -t scripts < <(git ls-files '*.gd')
+  if "$repo/.cache/venv/bin/gdlint" "${scripts[@]}"; then record 1 0 "gdlint"; else record 0 1 "gdlint"; fi
+  if "$repo/.cache/venv/bin/gdformat" --check --line-length 120 "${scripts[@]}"; then record 1 0 "gdformat"; else record 0 1 "gdformat"; fi
+  suite_done lint
 fi
-echo "== an exported game has only the imported map: load_map_file(res://...) without the .field source"
-if timeout 120 "$godot" --headless --path "$dropin" --script res://check_exported_map.gd -- record "$dropin/expected.txt" \
-  >"$artifacts/exported_map.log" 2>&1 && rm "$dropin/demo.field" &&
-  timeout 120 "$godot" --headless --path "$dropin" --script res://check_exported_map.gd -- compare "$dropin/expected.txt" \
-    >>"$artifacts/exported_map.log" 2>&1 && grep -q '^exported map: ok' "$artifacts/exported_map.log"; then
-  grep '^exported map:' "$artifacts/exported_map.log"; record 1 0 "exported map"
-else
-  tail -n 20 "$artifacts/exported_map.log"; record 0 1 "exported map"
-fi
-rm -rf "$dropin"
 
-echo "== no library for this platform: the addon without bin/ in a new project, editor and game"
-nolib=$(mktemp -d)
-mkdir -p "$nolib/addons" "$nolib/.godot"
-cp -rL "$repo/addons/sunflower_field" "$nolib/addons/" && rm -rf "$nolib/addons/sunflower_field/bin"
-cp "$repo/fields/demo.field" "$repo/tests/dropin/project.godot" "$repo/tests/dropin/main.tscn" "$nolib/"
-echo "res://addons/sunflower_field/sunflower_field.gdextension" >"$nolib/.godot/extension_list.cfg"
-timeout 300 "$godot" --headless --path "$nolib" --import >"$artifacts/nolib_import.log" 2>&1
-timeout 300 "$godot" --headless --editor --path "$nolib" res://main.tscn --quit-after 150 >"$artifacts/nolib_editor.log" 2>&1
-timeout 300 "$godot" --headless --path "$nolib" --quit-after 150 >"$artifacts/nolib_game.log" 2>&1
-for run in editor game; do
-  log="$artifacts/nolib_$run.log"
-  ours=$(grep -c "Sunflower Field: no native library for Linux x86_64 .*tools/build.sh --all" "$log")
-  # The engine's own loader reports the missing file in its words (lines an addon cannot silence);
-  # every other error counts.
-  others=$(grep -E "^(ERROR|SCRIPT ERROR|USER ERROR)" "$log" | grep -v "Sunflower Field: no native library" |
-    grep -v -E 'GDExtension dynamic library not found|Error loading extension|No GDExtension library found|Condition "!FileAccess::exists\(path\)"' | wc -l)
-  if ((ours == 1 && others == 0)); then
-    record 1 0 "no library ($run): one clear error, no other"
+if runs docs; then
+  suite_start=$SECONDS
+  echo "== the docs: links and images resolve, GDScript snippets parse, the API reference and ARCHITECTURE.md current"
+  if python3 "$repo/tools/check_docs.py" --godot "$godot" --gdparse "$repo/.cache/venv/bin/gdparse" | tee "$artifacts/docs.log"; then
+    record 1 0 "docs"
   else
-    grep -E "^(ERROR|SCRIPT ERROR|USER ERROR)" "$log" | head -n 10; record 0 1 "no library ($run): $ours of ours, $others other errors"
+    record 0 1 "docs"
   fi
-done
-rm -rf "$nolib"
+  suite_done docs
+fi
 
-echo "== editor (headless): open and close scenes with a field (a large one builds in the background, with"
-echo "   the plugin's progress bar); import a malformed map"
-for scene in field_scene large_field_scene; do
-  if timeout 300 "$godot" --headless --editor --path "$repo/tests/godot" "res://scenes/$scene.tscn" --quit-after 200 \
-    >"$artifacts/editor_$scene.log" 2>&1 && ! grep -E "SCRIPT ERROR|^ERROR" "$artifacts/editor_$scene.log"; then
-    record 1 0 "editor opens $scene"
+if runs headless; then
+  suite_start=$SECONDS
+  mapfile -t tests < <(engine_tests "${HEADLESS_TESTS[@]}" | tr ' ' '\n')
+  engine_suite "engine tests that need no renderer (headless)" "$repo/tests/godot" headless \
+    "$artifacts/godot_headless.log" "${tests[@]}"
+  suite_done headless
+fi
+
+if runs engine; then
+  suite_start=$SECONDS
+  mapfile -t tests < <(engine_tests | tr ' ' '\n' | sed '/^$/d')
+  engine_suite "engine tests (Godot under Xvfb, Forward+ on Vulkan lavapipe)" "$repo/tests/godot" vulkan \
+    "$artifacts/godot_tests.log" "${tests[@]}"
+  cp "$artifacts/render_demo_field.png" "$artifacts/render_demo_field_vulkan.png" 2>/dev/null
+  suite_done engine
+fi
+
+if runs opengl; then
+  suite_start=$SECONDS
+  mapfile -t tests < <(engine_tests "${OPENGL_TESTS[@]}" | tr ' ' '\n')
+  engine_suite "render tests (Compatibility renderer, OpenGL on llvmpipe)" "$repo/tests/godot" opengl3 \
+    "$artifacts/godot_render_gl.log" "${tests[@]}"
+  mv "$artifacts/render_demo_field.png" "$artifacts/render_demo_field_opengl.png" 2>/dev/null
+  suite_done opengl
+fi
+
+if runs demo; then
+  suite_start=$SECONDS
+  mapfile -t tests < <(engine_tests | tr ' ' '\n' | sed '/^$/d')
+  engine_suite "demo tests (headless)" "$repo/demo_project" headless "$artifacts/demo_tests.log" "${tests[@]}"
+  if [[ -z "$filter" ]]; then
+    echo "== demo recording mode (Xvfb, Forward+): screenshot and stats"
+    frames=12
+    rm -f "$artifacts/demo_recording.png" "$artifacts/demo_stats.json"
+    timeout 600 "${xvfb[@]}" "$godot" --audio-driver Dummy --resolution 640x360 \
+      --path "$repo/demo_project" -- --frames "$frames" --screenshot "$artifacts/demo_recording.png" \
+      --stats "$artifacts/demo_stats.json" >"$artifacts/demo_recording.log" 2>&1
+    grep '^demo:' "$artifacts/demo_recording.log"
+    if timeout 120 "$godot" --headless --path "$repo/demo_project" --script res://tests/cases/check_recording.gd -- \
+      "$artifacts/demo_stats.json" "$artifacts/demo_recording.png" "$frames" 2>&1 | tee "$artifacts/demo_check.log" |
+      grep '^recording:' && grep -q '^recording: ok$' "$artifacts/demo_check.log"; then
+      record 1 0 "demo recording"
+    else
+      record 0 1 "demo recording"
+    fi
+    echo "== tools/demo.sh fails, saying why, on a broken map and on a missing library"
+    broken=$(mktemp -d)
+    printf '4 2\n****\n*?**\n' >"$broken/broken.field"
+    if ! env -u DISPLAY bash "$repo/tools/demo.sh" --no-build --map "$broken/broken.field" --frames 2 >"$artifacts/demo_broken_map.log" 2>&1 &&
+      grep -q "demo: FAILED: .*broken.field:3:2" "$artifacts/demo_broken_map.log"; then
+      grep "demo: FAILED" "$artifacts/demo_broken_map.log" | head -n 1; record 1 0 "demo.sh: a broken map fails the demo"
+    else
+      tail -n 10 "$artifacts/demo_broken_map.log"; record 0 1 "demo.sh: a broken map fails the demo"
+    fi
+    lib="$repo/addons/sunflower_field/bin/libsunflower.linux.template_debug.x86_64.so"
+    mv "$lib" "$broken/"
+    if ! env -u DISPLAY bash "$repo/tools/demo.sh" --no-build --frames 2 >"$artifacts/demo_no_library.log" 2>&1 &&
+      grep -q "demo: FAILED" "$artifacts/demo_no_library.log" && grep -q "no native library" "$artifacts/demo_no_library.log"; then
+      grep "demo: FAILED" "$artifacts/demo_no_library.log" | head -n 1; record 1 0 "demo.sh: a missing library fails the demo"
+    else
+      tail -n 10 "$artifacts/demo_no_library.log"; record 0 1 "demo.sh: a missing library fails the demo"
+    fi
+    mv "$broken/$(basename "$lib")" "$lib"
+    rm -rf "$broken"
+  fi
+  suite_done demo
+fi
+
+if runs dropin; then
+  suite_start=$SECONDS
+  echo "== drop-in: the release zip (tools/package.sh) unzipped into a new project, a scene without code"
+  dropin=$(mktemp -d)
+  if "$repo/tools/package.sh" >"$artifacts/dropin.log" 2>&1 && unzip -q "$repo"/build/dist/sunflower_field-*.zip -d "$dropin" &&
+    cp "$repo/fields/demo.field" "$repo/tests/dropin/"{project.godot,main.tscn,terrain.tscn,check_dropin.gd,check_exported_map.gd} \
+      "$dropin/" &&
+    "$repo/tools/import_project.sh" "$dropin" >>"$artifacts/dropin.log" 2>&1 &&
+    timeout 300 "${xvfb[@]}" "$godot" --audio-driver Dummy \
+      --path "$dropin" --script res://check_dropin.gd >>"$artifacts/dropin.log" 2>&1 &&
+    grep -q '^dropin: ok$' "$artifacts/dropin.log"; then
+    grep '^package:\|^dropin:' "$artifacts/dropin.log"; record 1 0 "drop-in from the release zip"
   else
-    tail -n 20 "$artifacts/editor_$scene.log"; record 0 1 "editor opens $scene"
+    tail -n 20 "$artifacts/dropin.log"; record 0 1 "drop-in from the release zip"
   fi
-done
-echo "== editor (headless): painting a field with synthetic mouse events, undo and redo, the file written back"
-paintproj=$(mktemp -d)
-mkdir -p "$paintproj/addons"
-cp -rL "$repo/addons/sunflower_field" "$paintproj/addons/"
-cp -r "$repo/tests/editor_paint/paint_probe" "$paintproj/addons/"
-cp "$repo/tests/editor_paint/"{project.godot,paint.field,paint.tscn} "$paintproj/"
-if "$repo/tools/import_project.sh" "$paintproj" >"$artifacts/editor_paint.log" 2>&1 &&
-  RUN_PROBE=1 timeout 300 "$godot" --headless --editor --path "$paintproj" >>"$artifacts/editor_paint.log" 2>&1 &&
-  grep -q '^probe: ok$' "$artifacts/editor_paint.log"; then
-  record 1 0 "editor: paint, erase, undo, redo, write-back, a missing file"
-else
-  grep -E '^probe:|ERROR' "$artifacts/editor_paint.log" | head -n 10
-  record 0 1 "editor: paint, erase, undo, redo, write-back, a missing file"
-fi
-rm -rf "$paintproj"
-echo "== editor (Xvfb, Vulkan): a plant selected in the inspector, its 'Bake impostors' button pressed"
-bakeproj=$(mktemp -d)
-mkdir -p "$bakeproj/addons"
-cp -rL "$repo/addons/sunflower_field" "$bakeproj/addons/"
-cp -r "$repo/tests/editor_bake/bake_probe" "$bakeproj/addons/"
-cp "$repo/tests/editor_bake/"{project.godot,my_plant.tres,own_plant_terrain.tscn,check_own_plant.gd} "$repo/fields/demo.field" \
-  "$bakeproj/"
-if "$repo/tools/import_project.sh" "$bakeproj" >"$artifacts/editor_bake.log" 2>&1 &&
-  RUN_PROBE=1 PROBE_SHOT="$artifacts/editor_bake.png" timeout 300 xvfb-run -a -s "-screen 0 1600x900x24" "$godot" --editor \
-    --audio-driver Dummy --path "$bakeproj" >>"$artifacts/editor_bake.log" 2>&1 &&
-  grep -q '^probe: ok$' "$artifacts/editor_bake.log"; then
-  record 1 0 "editor: Bake impostors writes, imports and saves the plant's textures"
-else
-  grep -E '^probe:|ERROR' "$artifacts/editor_bake.log" | head -n 10
-  record 0 1 "editor: Bake impostors writes, imports and saves the plant's textures"
-fi
-# Then the game: a scene without code grows that plant, with its baked impostors, on a collider terrain.
-if timeout 300 xvfb-run -a -s "-screen 0 1280x720x24" "$godot" --audio-driver Dummy --path "$bakeproj" \
-  --script res://check_own_plant.gd >"$artifacts/own_plant.log" 2>&1 && grep -q '^own plant: ok$' "$artifacts/own_plant.log"; then
-  grep '^own plant:' "$artifacts/own_plant.log" | head -n 1; record 1 0 "own plant on a collider terrain"
-else
-  grep -E '^own plant:|ERROR' "$artifacts/own_plant.log" | head -n 10; record 0 1 "own plant on a collider terrain"
-fi
-rm -rf "$bakeproj"
-badproject=$(mktemp -d)
-mkdir -p "$badproject/addons" "$badproject/.godot"
-cp -rL "$repo/addons/sunflower_field" "$badproject/addons/"
-cp "$repo/tests/dropin/project.godot" "$badproject/"
-printf '4 2\n****\n*?**\n' > "$badproject/bad.field"
-echo "res://addons/sunflower_field/sunflower_field.gdextension" > "$badproject/.godot/extension_list.cfg"
-timeout 300 "$godot" --headless --path "$badproject" --import >"$artifacts/import_bad.log" 2>&1
-status=$?
-if ((status == 0)) && grep -q "cannot import res://bad.field:3:2: unexpected '?'" "$artifacts/import_bad.log"; then
-  grep -o "cannot import res://bad.field:3:2: [^\"]*" "$artifacts/import_bad.log" | head -n 1
-  record 1 0 "import error names file, line and column"
-else
-  tail -n 20 "$artifacts/import_bad.log"; record 0 1 "import error names file, line and column"
-fi
-rm -rf "$badproject"
+  echo "== an exported game has only the imported map: load_map_file(res://...) without the .field source"
+  if timeout 120 "$godot" --headless --path "$dropin" --script res://check_exported_map.gd -- record "$dropin/expected.txt" \
+    >"$artifacts/exported_map.log" 2>&1 && rm "$dropin/demo.field" &&
+    timeout 120 "$godot" --headless --path "$dropin" --script res://check_exported_map.gd -- compare "$dropin/expected.txt" \
+      >>"$artifacts/exported_map.log" 2>&1 && grep -q '^exported map: ok' "$artifacts/exported_map.log"; then
+    grep '^exported map:' "$artifacts/exported_map.log"; record 1 0 "exported map"
+  else
+    tail -n 20 "$artifacts/exported_map.log"; record 0 1 "exported map"
+  fi
+  rm -rf "$dropin"
 
-fuzz_finish
+  echo "== no library for this platform: the addon without bin/ in a new project, editor and game"
+  nolib=$(mktemp -d)
+  new_project "$nolib"
+  rm -rf "$nolib/addons/sunflower_field/bin"
+  cp "$repo/fields/demo.field" "$repo/tests/dropin/project.godot" "$repo/tests/dropin/main.tscn" "$nolib/"
+  timeout 300 "$godot" --headless --path "$nolib" --import >"$artifacts/nolib_import.log" 2>&1
+  timeout 300 "$godot" --headless --editor --path "$nolib" res://main.tscn --quit-after 150 >"$artifacts/nolib_editor.log" 2>&1
+  timeout 300 "$godot" --headless --path "$nolib" --quit-after 150 >"$artifacts/nolib_game.log" 2>&1
+  for run in editor game; do
+    log="$artifacts/nolib_$run.log"
+    ours=$(grep -c "Sunflower Field: no native library for Linux x86_64 .*tools/build.sh --all" "$log")
+    # The engine's own loader reports the missing file in its words (lines an addon cannot silence);
+    # every other error counts.
+    others=$(grep -E "^(ERROR|SCRIPT ERROR|USER ERROR)" "$log" | grep -v "Sunflower Field: no native library" |
+      grep -v -E 'GDExtension dynamic library not found|Error loading extension|No GDExtension library found|Condition "!FileAccess::exists\(path\)"' | wc -l)
+    if ((ours == 1 && others == 0)); then
+      record 1 0 "no library ($run): one clear error, no other"
+    else
+      grep -E "^(ERROR|SCRIPT ERROR|USER ERROR)" "$log" | head -n 10; record 0 1 "no library ($run): $ours of ours, $others other errors"
+    fi
+  done
+  rm -rf "$nolib"
+  suite_done dropin
+fi
+
+if runs editor; then
+  suite_start=$SECONDS
+  echo "== editor (headless): open and close scenes with a field (a large one builds in the background, with"
+  echo "   the plugin's progress bar); a new field's inspector and saved scene"
+  for scene in field_scene large_field_scene; do
+    if timeout 300 "$godot" --headless --editor --path "$repo/tests/godot" "res://scenes/$scene.tscn" --quit-after 200 \
+      >"$artifacts/editor_$scene.log" 2>&1 && ! grep -E "SCRIPT ERROR|^ERROR" "$artifacts/editor_$scene.log"; then
+      record 1 0 "editor opens $scene"
+    else
+      tail -n 20 "$artifacts/editor_$scene.log"; record 0 1 "editor opens $scene"
+    fi
+  done
+  echo "== editor (headless): painting a field with synthetic mouse events, undo and redo, the file written back"
+  paintproj=$(mktemp -d)
+  new_project "$paintproj"
+  cp -r "$repo/tests/editor_paint/paint_probe" "$paintproj/addons/"
+  cp "$repo/tests/editor_paint/"{project.godot,paint.field,paint.tscn} "$paintproj/"
+  if "$repo/tools/import_project.sh" "$paintproj" >"$artifacts/editor_paint.log" 2>&1 &&
+    RUN_PROBE=1 timeout 300 "$godot" --headless --editor --path "$paintproj" >>"$artifacts/editor_paint.log" 2>&1 &&
+    grep -q '^probe: ok$' "$artifacts/editor_paint.log"; then
+    grep '^probe:' "$artifacts/editor_paint.log" | tail -n 1
+    record 1 0 "editor: paint, erase, undo, redo, write-back, a missing file, a new field"
+  else
+    grep -E '^probe:|ERROR' "$artifacts/editor_paint.log" | head -n 10
+    record 0 1 "editor: paint, erase, undo, redo, write-back, a missing file, a new field"
+  fi
+  rm -rf "$paintproj"
+  echo "== editor (Xvfb, Vulkan): a plant selected in the inspector, its 'Bake impostors' button pressed"
+  bakeproj=$(mktemp -d)
+  new_project "$bakeproj"
+  cp -r "$repo/tests/editor_bake/bake_probe" "$bakeproj/addons/"
+  cp "$repo/tests/editor_bake/"{project.godot,my_plant.tres,own_plant_terrain.tscn,check_own_plant.gd} "$repo/fields/demo.field" \
+    "$bakeproj/"
+  if "$repo/tools/import_project.sh" "$bakeproj" >"$artifacts/editor_bake.log" 2>&1 &&
+    RUN_PROBE=1 PROBE_SHOT="$artifacts/editor_bake.png" timeout 300 xvfb-run -a -s "-screen 0 1600x900x24" "$godot" --editor \
+      --audio-driver Dummy --path "$bakeproj" >>"$artifacts/editor_bake.log" 2>&1 &&
+    grep -q '^probe: ok$' "$artifacts/editor_bake.log"; then
+    record 1 0 "editor: Bake impostors writes, imports and saves the plant's textures"
+  else
+    grep -E '^probe:|ERROR' "$artifacts/editor_bake.log" | head -n 10
+    record 0 1 "editor: Bake impostors writes, imports and saves the plant's textures"
+  fi
+  # Then the game: a scene without code grows that plant, with its baked impostors, on a collider terrain.
+  if timeout 300 "${xvfb[@]}" "$godot" --audio-driver Dummy --path "$bakeproj" \
+    --script res://check_own_plant.gd >"$artifacts/own_plant.log" 2>&1 && grep -q '^own plant: ok$' "$artifacts/own_plant.log"; then
+    grep '^own plant:' "$artifacts/own_plant.log" | head -n 1; record 1 0 "own plant on a collider terrain"
+  else
+    grep -E '^own plant:|ERROR' "$artifacts/own_plant.log" | head -n 10; record 0 1 "own plant on a collider terrain"
+  fi
+  rm -rf "$bakeproj"
+  badproject=$(mktemp -d)
+  new_project "$badproject"
+  cp "$repo/tests/dropin/project.godot" "$badproject/"
+  printf '4 2\n****\n*?**\n' >"$badproject/bad.field"
+  timeout 300 "$godot" --headless --path "$badproject" --import >"$artifacts/import_bad.log" 2>&1
+  status=$?
+  if ((status == 0)) && grep -q "cannot import res://bad.field:3:2: unexpected '?'" "$artifacts/import_bad.log"; then
+    grep -o "cannot import res://bad.field:3:2: [^\"]*" "$artifacts/import_bad.log" | head -n 1
+    record 1 0 "import error names file, line and column"
+  else
+    tail -n 20 "$artifacts/import_bad.log"; record 0 1 "import error names file, line and column"
+  fi
+  rm -rf "$badproject"
+  suite_done editor
+fi
+
+# --- The suites that ran beside the others -------------------------------------------------------------
+if runs platforms; then
+  suite_start=$SECONDS
+  echo "== the libraries for every platform: format, architecture, dependencies, exports"
+  python3 "$repo/tools/check_libraries.py" "$repo"/addons/sunflower_field/bin/*.{so,dll,dylib} | tee "$artifacts/libraries.log"
+  line=$(grep -E '^libraries: [0-9]+ passed, [0-9]+ failed$' "$artifacts/libraries.log")
+  if [[ "$line" =~ ([0-9]+)\ passed,\ ([0-9]+)\ failed ]] && ((BASH_REMATCH[1] == 12)); then
+    record "${BASH_REMATCH[1]}" "${BASH_REMATCH[2]}" "libraries"
+  else
+    record 0 1 "libraries (expected 12: $line)"
+  fi
+  # The check can fail: a library linked the ordinary way needs libstdc++ and exports everything.
+  bad=$(mktemp -d)
+  printf '#include <string>\nstd::string sunflower_name() { return "x"; }\nextern "C" int sunflower_library_init() { return 0; }\n' >"$bad/bad.cpp"
+  g++ -shared -fPIC -o "$bad/libsunflower.linux.template_debug.x86_64.so" "$bad/bad.cpp"
+  if ! python3 "$repo/tools/check_libraries.py" "$bad/libsunflower.linux.template_debug.x86_64.so" >"$bad/out" &&
+    grep -q "depends on libstdc++" "$bad/out" && grep -q "exports .* other symbols" "$bad/out"; then
+    record 1 0 "the library check refuses a libstdc++ library with every symbol exported"
+  else
+    cat "$bad/out"; record 0 1 "the library check refuses a libstdc++ library with every symbol exported"
+  fi
+  rm -rf "$bad"
+  wait "$cross_pid"
+  # The two suites ran in a subshell: their lines are replayed and their counts added here.
+  cat "$artifacts/cross_tests.log"
+  while read -r p f label; do
+    passed=$((passed + p)); failed=$((failed + f))
+  done < <(sed -nE 's/^== (.*): ([0-9]+) passed, ([0-9]+) failed \([0-9]+ s\)$/\2 \3 \1/p' "$artifacts/cross_tests.log")
+  grep -qE '^== .*Wine: [0-9]+ passed' "$artifacts/cross_tests.log" && grep -qE '^== .*QEMU: [0-9]+ passed' "$artifacts/cross_tests.log" ||
+    record 0 1 "the cross-built core tests did not report"
+  suite_done platforms
+fi
+
+if runs fuzz; then
+  suite_start=$SECONDS
+  echo "== fuzzing the map parser and layout for ${fuzz_seconds} s (libFuzzer, ASan + UBSan; run beside the other suites)"
+  if wait "$fuzz_pid"; then
+    grep -E "^Done|stat::number_of_executed_units" "$artifacts/fuzz.log" | head -n 2
+    record 1 0 "fuzzing"
+  else
+    tail -n 30 "$artifacts/fuzz_build.log" "$artifacts/fuzz.log"; record 0 1 "fuzzing"
+  fi
+  suite_done fuzz
+fi
+
+if runs engine || runs opengl || runs demo; then
+  echo "== leaks at exit (--verbose output of the engine runs)"
+  logs=()
+  runs engine && logs+=("$artifacts/godot_tests.log")
+  runs opengl && logs+=("$artifacts/godot_render_gl.log")
+  runs demo && logs+=("$artifacts/demo_tests.log")
+  if grep -E "leaked at exit|Leaked instance|were leaked|Orphan StringName|instances leaked" "${logs[@]}"; then
+    record 0 1 "no leaks"
+  else
+    record 1 0 "no leaks"
+  fi
+fi
+
 echo "artifacts: $artifacts"
-echo "time: $SECONDS s ($build_seconds s of it the build)"
+echo "time per suite (wall; the platforms and fuzz suites run beside the others, so theirs is the wait at the end):"
+printf '  %s\n' "${timings[@]}"
+echo "time: $SECONDS s"
 echo "total: $passed passed, $failed failed"
 ((failed == 0 && passed > 0))

@@ -42,14 +42,10 @@ func _get_preset_name(_preset_index: int) -> String:
 	return "Default"
 
 
+## No options: a map may hold any printable symbol; its field's legend says what each one is, and
+## the field reports a symbol its legend lacks when it loads the map.
 func _get_import_options(_path: String, _preset_index: int) -> Array[Dictionary]:
-	return [
-		{
-			"name": "legend_symbols",
-			"default_value": "",
-			"hint_string": "Extra symbols the map may use (mapped to scenes by the node's legend)",
-		},
-	]
+	return []
 
 
 func _get_option_visibility(_path: String, _option_name: StringName, _options: Dictionary) -> bool:
@@ -59,7 +55,7 @@ func _get_option_visibility(_path: String, _option_name: StringName, _options: D
 func _import(
 	source_file: String,
 	save_path: String,
-	options: Dictionary,
+	_options: Dictionary,
 	_platform_variants: Array[String],
 	_gen_files: Array[String]
 ) -> Error:
@@ -70,7 +66,7 @@ func _import(
 		return ERR_FILE_CANT_READ
 	# Without the native library the map is saved unchecked (its columns, rows and plants stay 0) and
 	# checked when a field loads it; the one missing-library error has been said already.
-	var message: String = field_map.check(str(options.get("legend_symbols", ""))) if Native.is_available() else ""
+	var message: String = field_map.check_format() if Native.is_available() else ""
 	if not message.is_empty():
 		push_error("Sunflower Field: cannot import " + message)
 		return ERR_PARSE_ERROR

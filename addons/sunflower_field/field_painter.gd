@@ -353,7 +353,6 @@ func write_map(field: SunflowerField, path: String, bytes: PackedByteArray) -> v
 		return
 	file.store_buffer(bytes)
 	file.close()
-	_allow_legend_symbols(path, FieldNodes.legend_symbols(field.legend) + FieldNodes.plant_symbols(field.legend))
 	field.map = _reimported(path)
 
 
@@ -363,21 +362,6 @@ func _reimported(path: String) -> SunflowerFieldMap:
 	filesystem.update_file(path)
 	filesystem.reimport_files(PackedStringArray([path]))
 	return ResourceLoader.load(path, "", ResourceLoader.CACHE_MODE_REPLACE) as SunflowerFieldMap
-
-
-## The import settings of a map file allow the symbols painted into it.
-func _allow_legend_symbols(path: String, symbols: String) -> void:
-	var settings: ConfigFile = ConfigFile.new()
-	if settings.load(path + ".import") != OK:
-		return
-	var allowed: String = settings.get_value("params", "legend_symbols", "")
-	var missing: String = ""
-	for character: String in symbols:
-		if not allowed.contains(character):
-			missing += character
-	if not missing.is_empty():
-		settings.set_value("params", "legend_symbols", allowed + missing)
-		settings.save(path + ".import")
 
 
 func _fail(message: String) -> bool:

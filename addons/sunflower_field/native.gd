@@ -88,6 +88,24 @@ static func parameter_names() -> PackedStringArray:
 	return String(ClassDB.class_call_static(CLASS, &"get_parameter_names")).split(",")
 
 
+## Parses a map's [param text] without laying it out: an empty string when it is valid, else
+## [code]"source:line:column: message"[/code]. [param symbols] are the legend's (objects and plant
+## types alike); with [param any_symbol] every printable symbol is accepted (the importer's check).
+static func check_map(
+	text: PackedByteArray, source: String, symbols: String, any_symbol: bool, max_plants: int
+) -> String:
+	if not is_available():
+		return missing_message()
+	return ClassDB.class_call_static(CLASS, &"check_map", text, source, symbols, "", max_plants, any_symbol)
+
+
+## The columns, rows and sunflowers of a valid map (see [method check_map]); empty otherwise.
+static func map_figures(text: PackedByteArray, max_plants: int) -> PackedInt32Array:
+	return (
+		ClassDB.class_call_static(CLASS, &"get_map_figures", text, max_plants) if is_available() else PackedInt32Array()
+	)
+
+
 ## What is wrong with these LOD switch distances, or an empty string.
 static func check_lod_distances(distances: PackedFloat32Array) -> String:
 	return ClassDB.class_call_static(CLASS, &"check_lod_distances", distances) if is_available() else ""

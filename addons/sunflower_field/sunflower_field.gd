@@ -6,10 +6,11 @@ extends Node3D
 ## levels of detail.
 ##
 ## Give it a [member map] (a [code].field[/code] file, see [code]fields/FORMAT.md[/code]) and it
-## builds the field: near plants are full 3D models in three levels of detail (each plant made of
-## a bottom, a middle and a head part), farther ones crossed-quad sprites, the farthest billboards
-## that turn to face the observer. The native [SunflowerSimulation] moves the plants in the wind
-## and writes their transforms straight into MultiMesh buffers every frame.
+## builds the field: near plants are 3D models in three levels of detail (each plant made of a
+## bottom, a middle and a head part), farther ones multi-view impostors baked from the plant, lit
+## and swaying with the same wind, in static far tiles that merge with distance. The native
+## [SunflowerSimulation] moves the near plants in the wind and writes their transforms straight into
+## MultiMesh buffers every frame. The manual: [code]docs/[/code] in the addon's repository.
 ## [br][br]
 ## Distances are measured from the [member observer] (by default the active camera; in the editor,
 ## the editor's camera). Keep this node's scale at 1: size the field with [member cell_size] and
@@ -38,6 +39,12 @@ const FieldDriver: GDScript = preload("field_driver.gd")
 const FieldGround: GDScript = preload("field_ground.gd")
 const FieldNodes: GDScript = preload("field_nodes.gd")
 const PartMeshes: GDScript = preload("part_meshes.gd")
+## The thesis' switch distances, [member lod_distances]' default.
+const DEFAULT_LOD_DISTANCES: PackedFloat32Array = [6.0, 10.0, 20.0, 25.0]
+## The properties that edit [member wind]: stored there, so not in the scene a second time.
+const WIND_PROPERTIES: Dictionary = {
+	&"wind_power": &"power", &"wind_direction": &"direction", &"wind_increment": &"increment"
+}
 @export_group("Field")
 ## The field map. Import a [code].field[/code] file (the plugin turns it into a
 ## [SunflowerFieldMap]) or call [method load_map_file].
@@ -211,7 +218,8 @@ const PartMeshes: GDScript = preload("part_meshes.gd")
 		return wind.increment
 	set(value):
 		wind.increment = value
-## The wind resource; share one between fields to give them the same weather.
+## The wind resource; share one between fields to give them the same weather. A field's own wind
+## is saved with its scene only once a setting differs from the defaults.
 @export var wind: SunflowerWind = SunflowerWind.new():
 	set(value):
 		if value == null:
@@ -246,7 +254,7 @@ const PartMeshes: GDScript = preload("part_meshes.gd")
 @export_group("Level of detail")
 ## Switch distances: mesh 1 → 2, mesh 2 → 3, mesh 3 → sprite, sprite → billboard (thesis:
 ## 6, 10, 20, 25 m). Must increase.
-@export var lod_distances: PackedFloat32Array = PackedFloat32Array([6.0, 10.0, 20.0, 25.0]):
+@export var lod_distances: PackedFloat32Array = DEFAULT_LOD_DISTANCES:
 	set(value):
 		var problem: String = Native.check_lod_distances(value)
 		if not problem.is_empty():
@@ -408,15 +416,31 @@ var impostor_depths: Texture2D:
 
 var _driver: FieldDriver = FieldDriver.new(self)
 var _empty_simulation: RefCounted
+var _own_wind: SunflowerWind  # the wind the node made itself, saved only once it is changed
 
 
 func _init() -> void:
+	_own_wind = wind
 	wind.changed.connect(_driver.configure_wind)
 	_driver.configure_plants(_species_plants())
 	_driver.set_impostor_shared(&"alpha_scissor", alpha_scissor)
 	_driver.set_impostor_shared(&"thinning_start", thinning_distance)
 	_driver.set_impostor_shared(&"thinning_min_density", thinning_min_density)
 	set_notify_transform(true)  # the far impostors are placed through the field's transform
+
+
+func _validate_property(property: Dictionary) -> void:
+	var name: StringName = property["name"]
+	if WIND_PROPERTIES.has(name) or (name == &"wind" and wind == _own_wind and wind.is_default()):
+		property["usage"] &= ~PROPERTY_USAGE_STORAGE
+
+
+func _property_can_revert(property: StringName) -> bool:
+	return WIND_PROPERTIES.has(property)
+
+
+func _property_get_revert(property: StringName) -> Variant:
+	return SunflowerWind.new().get(WIND_PROPERTIES[property]) if WIND_PROPERTIES.has(property) else null
 
 
 func _ready() -> void:
@@ -450,7 +474,9 @@ func load_map_file(path: String, background: bool = false) -> Error:
 	if field_map == null:
 		_driver.report_map_error(errors[0])
 		return ERR_FILE_CANT_OPEN
-	var message: String = field_map.check(FieldNodes.legend_symbols(legend), max_plants)
+	var message: String = field_map.check(
+		FieldNodes.legend_symbols(legend) + FieldNodes.plant_symbols(legend), max_plants
+	)
 	if not message.is_empty():
 		_driver.report_map_error(message)
 		return ERR_PARSE_ERROR

@@ -49,17 +49,25 @@ static func from_file(path: String, r_error: Array[String] = []) -> SunflowerFie
 	return field_map
 
 
-## Parses the map with [param legend] symbols allowed. Returns an empty string when the map is
-## valid (and fills [member columns], [member rows], [member plant_count]), else
-## [code]"file:line:column: message"[/code]. Only parses (the plants are laid out by the build), so it
-## is cheap enough for the main thread: a million-cell map in a few milliseconds.
+## Parses the map with the [param legend] symbols (a field's legend: objects and plant types) allowed.
+## Returns an empty string when the map is valid (and fills [member columns], [member rows],
+## [member plant_count]), else [code]"file:line:column: message"[/code]. Only parses (the plants are
+## laid out by the build), so it is cheap enough for the main thread: a million-cell map in a few
+## milliseconds.
 func check(legend: String = "", max_plants: int = 0) -> String:
-	var simulation: RefCounted = Native.create_simulation()
-	if simulation == null:
-		return Native.missing_message()
-	var message: String = simulation.check_map(text, source_path, legend, "", max_plants)
+	return _checked(Native.check_map(text, source_path, legend, false, max_plants), max_plants)
+
+
+## Parses the map accepting any printable symbol where a legend symbol may stand: what the importer
+## checks, since the symbols are checked against a field's legend when the field loads the map.
+## Returns as [method check] does.
+func check_format(max_plants: int = 0) -> String:
+	return _checked(Native.check_map(text, source_path, "", true, max_plants), max_plants)
+
+
+func _checked(message: String, max_plants: int) -> String:
 	if message.is_empty():
-		var figures: PackedInt32Array = simulation.get_checked_map()
+		var figures: PackedInt32Array = Native.map_figures(text, max_plants)
 		columns = figures[0]
 		rows = figures[1]
 		plant_count = figures[2]

@@ -111,8 +111,19 @@ const Native: GDScript = preload("native.gd")
 			gust_share = value
 			emit_changed()
 
-
 ## Hands the wind to a native simulation in one call (the core applies its own rules again).
+
+
+## Whether every setting is its default (a field does not save a wind nobody changed).
+func is_default() -> bool:
+	var fresh: SunflowerWind = SunflowerWind.new()
+	for property: Dictionary in get_property_list():
+		if property["usage"] & PROPERTY_USAGE_STORAGE and property["usage"] & PROPERTY_USAGE_SCRIPT_VARIABLE:
+			if get(property["name"]) != fresh.get(property["name"]):
+				return false
+	return true
+
+
 func apply_to(simulation: RefCounted) -> void:
 	simulation.set_wind(
 		model,

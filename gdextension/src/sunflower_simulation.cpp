@@ -16,8 +16,9 @@ using namespace sunflower;
 void SunflowerSimulation::bind_methods() {
 	const char *CLASS = "SunflowerSimulation";
 	gdx::bind_method(CLASS, "load_map", &SunflowerSimulation::load_map, { "text", "source", "legend", "plant_symbols", "max_plants" });
-	gdx::bind_method(CLASS, "check_map", &SunflowerSimulation::check_map, { "text", "source", "legend", "plant_symbols", "max_plants" });
-	gdx::bind_method(CLASS, "get_checked_map", &SunflowerSimulation::get_checked_map);
+	gdx::bind_method(CLASS, "check_map", &SunflowerSimulation::check_map,
+			{ "text", "source", "legend", "plant_symbols", "max_plants", "any_symbol" });
+	gdx::bind_method(CLASS, "get_map_figures", &SunflowerSimulation::get_map_figures, { "text", "max_plants" });
 	gdx::bind_method(CLASS, "get_species_count", &SunflowerSimulation::get_species_count);
 	gdx::bind_method(CLASS, "paint_map", &SunflowerSimulation::paint_map, { "center", "radius", "symbol", "density", "seed", "relayout" });
 	gdx::bind_method(CLASS, "write_map", &SunflowerSimulation::write_map);
@@ -138,20 +139,28 @@ gdx::String SunflowerSimulation::load_map(const gdx::PackedByteArray &p_text, co
 }
 
 gdx::String SunflowerSimulation::check_map(const gdx::PackedByteArray &p_text, const gdx::String &p_source,
-		const gdx::String &p_legend, const gdx::String &p_plant_symbols, int64_t p_max_plants) {
+		const gdx::String &p_legend, const gdx::String &p_plant_symbols, int64_t p_max_plants, bool p_any_symbol) {
 	FieldMap parsed;
 	MapError error;
+	MapLimits limits = limits_for(p_max_plants);
+	limits.any_object_symbol = p_any_symbol;
 	if (!parse_field_map(gdx::to_core(p_text), decode_utf8_text(p_legend.utf8()), decode_utf8_text(p_plant_symbols.utf8()),
-				p_source.utf8(), limits_for(p_max_plants), parsed, error)) {
+				p_source.utf8(), limits, parsed, error)) {
 		return gdx::String(error.to_string());
 	}
-	_checked = { parsed.columns, parsed.rows, static_cast<int32_t>(parsed.plant_count) };
 	return gdx::String();
 }
 
-gdx::PackedInt32Array SunflowerSimulation::get_checked_map() const {
+gdx::PackedInt32Array SunflowerSimulation::get_map_figures(const gdx::PackedByteArray &p_text, int64_t p_max_plants) {
+	FieldMap parsed;
+	MapError error;
+	MapLimits limits = limits_for(p_max_plants);
+	limits.any_object_symbol = true;
 	gdx::PackedInt32Array out;
-	out.assign(_checked.data(), _checked.size());
+	if (parse_field_map(gdx::to_core(p_text), std::u32string_view(), std::string(), limits, parsed, error)) {
+		const int32_t figures[] = { parsed.columns, parsed.rows, static_cast<int32_t>(parsed.plant_count) };
+		out.assign(figures, 3);
+	}
 	return out;
 }
 

@@ -14,12 +14,14 @@ public:
 
 	gdx::String load_map(const gdx::PackedByteArray &p_text, const gdx::String &p_source, const gdx::String &p_legend,
 			const gdx::String &p_plant_symbols, int64_t p_max_plants);
-	// Parses a map as load_map does, without laying it out or touching the field: a check cheap
-	// enough for the main thread (a million-cell map in milliseconds). The error, or empty; then
-	// get_checked_map() gives the map's columns, rows and plants.
-	gdx::String check_map(const gdx::PackedByteArray &p_text, const gdx::String &p_source, const gdx::String &p_legend,
-			const gdx::String &p_plant_symbols, int64_t p_max_plants);
-	gdx::PackedInt32Array get_checked_map() const;
+	// Parses a map as load_map does, without laying it out and without a simulation: a check cheap
+	// enough for the main thread (a million-cell map in milliseconds). The error, or empty. With
+	// p_any_symbol every printable symbol is an object, whatever p_legend says (the importer's check).
+	static gdx::String check_map(const gdx::PackedByteArray &p_text, const gdx::String &p_source, const gdx::String &p_legend,
+			const gdx::String &p_plant_symbols, int64_t p_max_plants, bool p_any_symbol);
+	// The columns, rows and plants ('*' and any legend plant cannot be told apart here: '*' only) of a
+	// map that parses with any printable symbol as an object; empty when it does not parse.
+	static gdx::PackedInt32Array get_map_figures(const gdx::PackedByteArray &p_text, int64_t p_max_plants);
 	int64_t get_species_count() const;
 	gdx::PackedInt32Array paint_map(gdx::Vector2 p_center, double p_radius, const gdx::String &p_symbol, double p_density, int64_t p_seed,
 			bool p_relayout);
@@ -133,7 +135,6 @@ private:
 	};
 
 	sunflower::FieldSimulation _sim;
-	std::array<int32_t, 3> _checked{}; // columns, rows and plants of the map check_map() last passed
 	std::vector<BucketTarget> _buckets; // BUCKET_COUNT per species of the map
 	std::vector<gdx::Rid> _tiles; // each tile's impostors (sprite and billboard are one multi-view impostor)
 	std::vector<int64_t> _tile_visible; // each tile's MultiMesh's visible instances as last set (−1: not yet)

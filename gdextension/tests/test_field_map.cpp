@@ -70,6 +70,31 @@ TEST_CASE("legend symbols become objects; unknown symbols are errors") {
 	CHECK(unicode.map.objects[0].symbol == U'\u00E9');
 }
 
+TEST_CASE("the importer's reading keeps every printable symbol, and no control character") {
+	MapLimits any;
+	any.any_object_symbol = true;
+	const Parsed result = parse("5 1\n*S?\xC3\xA9~\n", U"", any);
+	REQUIRE(result.ok);
+	REQUIRE(result.map.objects.size() == 4);
+	CHECK(result.map.objects[0].symbol == U'S');
+	CHECK(result.map.objects[1].symbol == U'?');
+	CHECK(result.map.objects[2].symbol == U'\u00E9');
+	CHECK(result.map.objects[3].symbol == U'~');
+	CHECK(result.map.plant_count == 1);
+	for (const std::string &bad : { std::string("3 1\n*\t*\n"), std::string("3 1\n*\x01*\n"), std::string("3 1\n*\x7F*\n"),
+				 std::string("3 1\n*\xC2\x85*\n"), std::string("3 1\n*\xFF*\n") }) {
+		CAPTURE(bad);
+		const Parsed refused = parse(bad, U"", any);
+		CHECK_FALSE(refused.ok);
+		CHECK(refused.error.line == 2);
+		CHECK(refused.error.column == 2);
+	}
+	// Without it, a printable symbol the legend lacks is named as one the legend could map.
+	const Parsed strict = parse("3 1\n*S*\n");
+	REQUIRE_FALSE(strict.ok);
+	CHECK(strict.error.message.find("a symbol the field's legend maps") != std::string::npos);
+}
+
 TEST_CASE("header errors name line and column") {
 	check_error("", 0, 0, "empty");
 	check_error("# only a comment\n\n", 2, 0, "no header");

@@ -738,7 +738,7 @@ TEST_CASE("a failed load keeps the previous field") {
 	load(sim, rect_map(10, 10));
 	MapError error;
 	CHECK_FALSE(sim.load_map("10 10\n**x\n", U"", "bad.field", MapLimits{}, error));
-	CHECK(error.to_string() == "bad.field:2:3: unexpected 'x'; expected '*' (a sunflower), ' ' or '.' (nothing)");
+	CHECK(error.to_string() == "bad.field:2:3: unexpected 'x'; expected '*' (a sunflower), ' ' or '.' (nothing), or a symbol the field's legend maps");
 	CHECK(sim.get_plant_count() == 100);
 }
 

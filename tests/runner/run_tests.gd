@@ -1,7 +1,8 @@
 extends SceneTree
-## Runs every test_*.gd in res://cases/ or res://tests/cases/ (or the files or file.method names
-## given after --), prints
-## each failure with its file and line, and ends with the line "godot: N passed, N failed".
+## Runs every test_*.gd in res://cases/ or res://tests/cases/ (or those named after --: a file
+## "test_render", a test "test_render.test_lone_plant", or a pattern with * and ? matched against
+## either, e.g. "*lone*"; "!" before any of these leaves it out), prints each failure with its file
+## and line, and ends with the line "godot: N passed, N failed".
 ## Exit code 1 on any failure.
 ## An engine or script error during a test fails it, unless the test allowed it (allow_error).
 
@@ -52,6 +53,22 @@ const EXIT_SETTLE_SECONDS: float = 3.0
 var _log: ErrorLog = ErrorLog.new()
 
 
+## Whether a test is among those named: by its file, by file.method, or by a pattern matching either;
+## an entry starting with "!" leaves out what it matches (no other entry: every test but those).
+static func _is_wanted(wanted: PackedStringArray, file: String, method: String) -> bool:
+	var chosen: bool = true
+	for entry: String in wanted:
+		if not entry.begins_with("!"):
+			chosen = false
+	for entry: String in wanted:
+		var pattern: String = entry.trim_prefix("!")
+		if file.match(pattern) or (file + "." + method).match(pattern):
+			if entry.begins_with("!"):
+				return false
+			chosen = true
+	return chosen
+
+
 func _initialize() -> void:
 	_run.call_deferred()
 
@@ -67,8 +84,13 @@ func _run() -> void:
 	for file: String in files:
 		if not file.begins_with("test_") or not file.ends_with(".gd"):
 			continue
-		var file_wanted: bool = wanted.is_empty() or wanted.has(file.get_basename())
+		var file_wanted: bool = wanted.is_empty()
 		for entry: String in wanted:
+			if entry.begins_with("!"):
+				file_wanted = true  # only tests are left out, each by _is_wanted
+				continue
+			var pattern: bool = entry.contains("*") or entry.contains("?")
+			file_wanted = file_wanted or pattern or entry == file.get_basename()
 			file_wanted = file_wanted or entry.begins_with(file.get_basename() + ".")
 		if not file_wanted:
 			continue
@@ -81,9 +103,7 @@ func _run() -> void:
 			var name: String = method["name"]
 			if not name.begins_with("test_"):
 				continue
-			if not (
-				wanted.is_empty() or wanted.has(file.get_basename()) or wanted.has(file.get_basename() + "." + name)
-			):
+			if not _is_wanted(wanted, file.get_basename(), name):
 				continue
 			var case: TestCase = script.new() as TestCase
 			case.tree = self
@@ -113,7 +133,7 @@ func _run() -> void:
 	print("godot: %d passed, %d failed" % [passed, failed])
 	OS.remove_logger(_log)
 	# Quitting while the renderer still compiles a pipeline in the background can deadlock the
-	# engine's exit (godot#117064): here a run of one fidelity test hung after its summary line in 3
-	# of 5 runs (3 of 6 with three frames drawn first), and in none of 9 with this wait (session 24).
+	# engine's exit (godot#117064): a run of one fidelity test hung after its summary line in 3 of 5
+	# runs (3 of 6 with three frames drawn first), and in none of 9 with this wait.
 	await create_timer(EXIT_SETTLE_SECONDS).timeout
 	quit(1 if failed > 0 or passed == 0 else 0)

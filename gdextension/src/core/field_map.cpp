@@ -179,6 +179,11 @@ std::u32string decode_utf8_text(std::string_view p_text) {
 	return out;
 }
 
+bool is_printable_symbol(char32_t p_symbol) {
+	return p_symbol >= 0x20 && p_symbol != 0x7F && !(p_symbol >= 0x80 && p_symbol < 0xA0) && p_symbol != 0xFFFD &&
+			p_symbol <= 0x10FFFF;
+}
+
 bool parse_field_map(std::string_view p_text, std::u32string_view p_legend, const std::string &p_source,
 		const MapLimits &p_limits, FieldMap &r_map, MapError &r_error) {
 	return parse_field_map(p_text, p_legend, std::u32string_view(), p_source, p_limits, r_map, r_error);
@@ -301,14 +306,14 @@ bool parse_field_map(std::string_view p_text, std::u32string_view p_legend, std:
 			} else if (symbol == ' ' || symbol == '.') {
 				dots += symbol == '.' ? 1 : 0;
 				spaces += symbol == ' ' ? 1 : 0;
-			} else if (symbol != 0 && symbol != 0xFFFD && p_legend.find(symbol) != std::u32string_view::npos) {
+			} else if (is_printable_symbol(symbol) &&
+					(p_limits.any_object_symbol || p_legend.find(symbol) != std::u32string_view::npos)) {
 				r_map.objects.push_back(MapObject{ column, row, symbol });
 			} else {
 				r_error.line = line.number;
 				r_error.column = column + 1;
-				r_error.message = "unexpected " + describe_char(symbol) +
-						"; expected '*' (a sunflower), ' ' or '.' (nothing)" +
-						(p_legend.empty() && p_plant_symbols.empty() ? std::string() : std::string(" or a legend symbol"));
+				r_error.message = "unexpected " + describe_char(symbol) + "; expected '*' (a sunflower), ' ' or '.' (nothing)" +
+						(is_printable_symbol(symbol) ? std::string(", or a symbol the field's legend maps") : std::string());
 				return false;
 			}
 			++column;

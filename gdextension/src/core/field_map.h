@@ -55,7 +55,14 @@ struct MapLimits {
 	int64_t max_cells = int64_t(1) << 32; // columns × rows
 	int64_t max_plants = 16'000'000;
 	int max_side = 1'000'000;
+	// Every printable symbol that is not a plant is kept as an object, whatever the legend says: how
+	// the importer reads a map, which is checked against its field's legend when the field loads it.
+	bool any_object_symbol = false;
 };
+
+// Whether a map may hold p_symbol as a legend symbol at all: a printable character (no control
+// character, no U+FFFD standing for bytes that are not UTF-8).
+bool is_printable_symbol(char32_t p_symbol);
 
 // Decodes UTF-8 text into code points (legend symbols); malformed bytes become U+FFFD, one each.
 std::u32string decode_utf8_text(std::string_view p_text);

@@ -63,7 +63,7 @@ inline constexpr ParameterSpec PLANT_TINT_VARIATION{ "FieldPlant.tint_variation"
 inline constexpr ParameterSpec PLANT_STIFFNESS{ "FieldPlant.stiffness", 1.0, 0.05, 20.0, ParameterSpec::CLAMP, 1.0 };
 // A plant type's far shadows: in the shadow pass its impostor casts from the depth the plant has at
 // each pixel, moved this share of its frame towards the light (0.03 suits the sunflower: a field of
-// its impostors is then about as bright as its meshes; fidelity measurements of session 21).
+// its impostors is then about as bright as its meshes, tools/measure_lod.sh).
 inline constexpr ParameterSpec PLANT_IMPOSTOR_SHADOW_SHIFT{ "FieldPlant.impostor_shadow_shift", 0.03, 0.0, 0.5, ParameterSpec::CLAMP, 0.03 };
 // A plant type's far glow: its emission atlas holds the light its parts give off divided by this, so
 // that 8-bit colours keep energies up to it. The baker picks the smallest of 8, 64, 512 … in which no

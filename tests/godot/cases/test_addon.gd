@@ -70,3 +70,38 @@ func test_default_part_meshes_are_unit_height_and_near_thesis_triangle_counts() 
 			"level %d has %d triangles, thesis %d" % [lod + 1, triangles, expected[lod]]
 		)
 	field.free()
+
+
+## A new field stores nothing in its scene but its script until a setting changes (the inspector then
+## shows no change nobody made); a changed wind is stored once, as the wind resource.
+func test_a_new_field_stores_only_what_was_changed() -> void:
+	var root: Node3D = Node3D.new()
+	var field: SunflowerField = SunflowerField.new()
+	root.add_child(field)
+	field.owner = root
+	check_eq(_stored(root), PackedStringArray(["script"]), "a new field's scene")
+	field.wind_power = 3.0
+	field.lod_hysteresis = 1.0
+	check_eq(_stored(root), PackedStringArray(["script", "wind", "lod_hysteresis"]), "after two changes")
+	var reloaded: SunflowerField = _packed(root).instantiate().get_child(0) as SunflowerField
+	check_eq(reloaded.wind_power, 3.0, "the wind power comes back from the stored wind")
+	check_eq(reloaded.lod_hysteresis, 1.0, "the hysteresis comes back")
+	reloaded.get_parent().free()
+	for property: StringName in SunflowerField.WIND_PROPERTIES:
+		check(field.property_can_revert(property), "%s offers a revert" % property)
+	check_eq(field.property_get_revert(&"wind_power"), 1.0, "wind_power reverts to the wind's default")
+	root.free()
+
+
+func _packed(root: Node) -> PackedScene:
+	var scene: PackedScene = PackedScene.new()
+	scene.pack(root)
+	return scene
+
+
+func _stored(root: Node) -> PackedStringArray:
+	var state: SceneState = _packed(root).get_state()
+	var names: PackedStringArray = []
+	for index: int in state.get_node_property_count(1):
+		names.append(state.get_node_property_name(1, index))
+	return names

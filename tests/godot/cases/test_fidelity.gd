@@ -25,8 +25,8 @@ const QUICK_VIEWS: PackedStringArray = ["inside", "above45", "down60"]
 ## The switch distances walked across (the field's defaults: mesh 1 → 2 → 3 → sprite → billboard).
 const QUICK_SWITCHES: Array[int] = [2]
 ## The walks' frames across a switch: 2 m in the full measurement, the middle metre in the test
-## command. LOD passes come every 0.25 s (15 frames); the short walk held two that switched plants,
-## against 47 frames without (session 24), and took 74 s instead of 143 s.
+## command. LOD passes come every 0.25 s (15 frames); the short walk holds two that switch plants,
+## against 47 frames without, in half the time.
 const WALK_FRAMES: int = 100
 const QUICK_WALK_FRAMES: int = 50
 ## The first merged level's distance in the merge walk, the walk's frames (twice in the full
@@ -88,17 +88,12 @@ func test_far_levels_look_like_the_full_mesh_picture() -> void:
 			await _print_pixel_noise(eye, target, mesh_1, view)
 	if full:
 		await _check_anti_aliased()
-	# The issue's targets: SSIM ≥ 0.99 at head height (met), ≥ 0.85 from above (met anti-aliased in
-	# both views, _check_anti_aliased; at one sample a pixel met straight down since session 26, not
-	# at 45°: see the README; mesh 3, a model of a quarter of the triangles,
-	# reaches 0.915 and 0.963, so it is the impostor's look, not the plants' places; main before the
-	# multi-view impostors measured 0.438 and 0.748, session 15's reads from the footprint's mip 0.543
-	# and 0.779: a texel averaging a head with its leaves blurs the pattern the meshes draw a pixel
-	# each; each view read at one shared place, not where the pixel's point lies in it, 0.606 and
-	# 0.820 in session 25; the views the quad's middle is seen from, with 7 rows of them 15° apart,
-	# 0.683 and 0.848), brightness within ±5 % (met; straight down it was 1.064 with the shadow caster
-	# through the plant's middle, session 15). What is checked is what this code reaches, so that a
-	# regression fails.
+	# The targets: SSIM ≥ 0.99 at head height, ≥ 0.85 from above (met anti-aliased in both views,
+	# _check_anti_aliased; at one sample a pixel straight down but not at 45°, docs/fidelity.md: mesh 3,
+	# a model of a quarter of the triangles, reaches 0.915 and 0.963 there, so what is left is the
+	# impostor's look, not the plants' places; reading the footprint's mip, or each view at one shared
+	# place instead of where the pixel's point lies in it, scores lower), brightness within ±5 %.
+	# What is checked is what this code reaches, so that a regression fails.
 	check(figures["inside"][0] >= 0.99, "at head height the picture is the full-mesh one (%.3f)" % figures["inside"][0])
 	check(figures["above45"][0] >= 0.72, "25 m up at 45°: SSIM %.3f, at least 0.72" % figures["above45"][0])
 	check(figures["down60"][0] >= 0.86, "60 m straight down: SSIM %.3f, at least 0.86" % figures["down60"][0])
@@ -111,7 +106,7 @@ func test_far_levels_look_like_the_full_mesh_picture() -> void:
 
 ## The aerial views anti-aliased: drawn with the window 4 times as wide and high (16 samples a
 ## pixel) and box-filtered back to its size, automatic LOD against every plant as mesh 1. This is
-## where the issue's 0.85 from above is met (session 26: 0.877 at 45°, 0.931 straight down); at one
+## where 0.85 from above is met (0.877 at 45°, 0.931 straight down, docs/fidelity.md); at one
 ## sample a pixel the meshes' own aliasing bounds what any impostor can score (see below).
 func _check_anti_aliased() -> void:
 	var large: Vector2i = await _enlarge_window(4)
@@ -130,8 +125,8 @@ func _check_anti_aliased() -> void:
 ## What SSIM at one sample a pixel makes of two equally right pictures: the full-mesh picture
 ## against itself with the camera moved a quarter and half a pixel sideways (at the target's
 ## distance). An impostor cannot keep the meshes' aliasing to the pixel; a figure near these is as
-## close as the meshes stay to themselves after a step of a few centimetres (session 27: 0.779 and
-## 0.631 at 45°, 0.824 and 0.761 straight down).
+## close as the meshes stay to themselves after a step of a few centimetres (0.779 and 0.631 at
+## 45°, 0.824 and 0.761 straight down, docs/fidelity.md).
 func _print_pixel_noise(eye: Vector3, target: Vector3, mesh_1: PackedFloat32Array, view: String) -> void:
 	var pixel: float = 2.0 * tan(deg_to_rad(0.5 * camera.fov)) / picture.height * eye.distance_to(target)
 	var figures: PackedStringArray = []
@@ -173,7 +168,7 @@ func test_the_far_field_keeps_its_cover() -> void:
 ## plants were read unsharpened there, a darker ring: the impostors' brightness 0.942 of the meshes'.
 ## And the plants seen from 50–55° above, midway between two rows of views: while their blend was
 ## alpha-tested as one, they were drawn with the intersection of the views' outlines, a darker band
-## (0.93 of the meshes' brightness; session 21).
+## (0.93 of the meshes' brightness).
 func test_far_levels_keep_their_brightness_at_twice_the_resolution() -> void:
 	var large: Vector2i = await _enlarge_window(2)
 	picture = Picture.new(large.x, large.y)
@@ -192,7 +187,7 @@ func test_far_levels_keep_their_brightness_at_twice_the_resolution() -> void:
 			% [large.x, large.y, brightness, picture.ssim(auto, mesh_1), anti_aliased]
 		)
 	)
-	# Two samples a pixel each way: 0.826 (session 28); 0.85 is reached with four (FIDELITY_FULL).
+	# Two samples a pixel each way: 0.826 when last measured; 0.85 is reached with four (FIDELITY_FULL).
 	check(anti_aliased >= 0.80, "anti-aliased (2 × 2 samples a pixel): SSIM %.3f, at least 0.80" % anti_aliased)
 	check(inside.count(1) > 40000, "the impostors are in view (%d pixels)" % inside.count(1))
 	check(absf(brightness - 1.0) <= 0.05, "the impostors' brightness %.3f of the meshes', within ±5 %%" % brightness)

@@ -215,7 +215,7 @@ func test_the_impostor_quad_covers_only_what_its_views_show() -> void:
 
 
 ## The baker makes 10 rows of elevation (10° apart); an atlas baked with 4 (30° apart) or 7 (15°
-## apart, until session 25) is read with its own rows, from its shape, so its views are still found
+## apart, as older bakes made) is read with its own rows, from its shape, so its views are still found
 ## where they are.
 func test_an_atlas_is_read_with_the_rows_it_was_baked_with() -> void:
 	var columns: int = FieldPlant.ATLAS_VIEWS.x

@@ -489,7 +489,7 @@ func test_a_lone_far_plant_shades_itself_as_its_mesh_does() -> void:
 ## mesh seen from there than like the mesh seen from a quarter or half a turn away (the back of the
 ## head from behind, the top from above), compared by SSIM on how much redder than blue each pixel
 ## is (the petals against the leaves, the disc and the ground; on luminance, views a half turn apart
-## differed too little). Session 26's shader passes by at least 0.023 (Vulkan) and 0.032 (OpenGL);
+## differed too little). The shader passes by at least 0.023 (Vulkan) and 0.032 (OpenGL);
 ## with the views mirrored it fails at 6 of the 32 places, read 29° round from where they are seen
 ## at 7.
 func test_a_lone_far_plant_looks_like_its_mesh_from_every_side() -> void:
