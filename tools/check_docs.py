@@ -10,7 +10,8 @@
 - architecture: ARCHITECTURE.md names every script and shader of the addon and every source file of
   the extension, and no such file that does not exist;
 - api: docs/api/ is what tools/make_api_docs.py makes from the in-editor docs now;
-- history: no development history ("session 12", "turn 3") outside CHANGELOG.md and commit messages.
+- history: no development history (the word session or turn and a number) outside CHANGELOG.md and
+  commit messages.
 """
 import argparse
 import pathlib
@@ -50,7 +51,7 @@ def anchors(path):
             continue
         heading = re.match(r"#+\s+(.*)", line)
         if heading:
-            text = re.sub(r"[`*_]|\[([^\]]*)\]\([^)]*\)", lambda m: m.group(1) or "", heading.group(1)).strip().lower()
+            text = re.sub(r"[`*]|\[([^\]]*)\]\([^)]*\)", lambda m: m.group(1) or "", heading.group(1)).strip().lower()
             found.add(re.sub(r"[^\w\- ]", "", text).replace(" ", "-"))
         found.update(re.findall(r'<a id="([^"]+)"', line))
     return found

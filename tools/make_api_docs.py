@@ -34,7 +34,7 @@ def bbcode_to_markdown(text, own):
         label = target if cls != own else member
         if kind == "method":
             label += "()"
-        anchor = member.lower().replace("_", "-")
+        anchor = member.lower()
         if cls in CLASSES:
             page = "" if cls == own else f"{cls}.md"
             return f"[`{label}`]({page}#{anchor})"
@@ -99,7 +99,7 @@ def page(xml_path):
         for m in members:
             default = m.get("default")
             default = f"`{default}`" if default not in (None, "") else ""
-            out.append(f"| <a id=\"{m.get('name').replace('_', '-')}\"></a>`{m.get('name')}` | `{type_of(m)}` | "
+            out.append(f"| <a id=\"{m.get('name')}\"></a>`{m.get('name')}` | `{type_of(m)}` | "
                        f"{default} | {one_line(m.text or '', name)} |")
         out.append("")
     methods = root.find("methods")

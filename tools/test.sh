@@ -365,10 +365,10 @@ if runs editor; then
   badproject=$(mktemp -d)
   new_project "$badproject"
   cp "$repo/tests/dropin/project.godot" "$badproject/"
-  printf '4 2\n****\n*?**\n' >"$badproject/bad.field"
+  printf '4 2\n****\n*\t**\n' >"$badproject/bad.field"
   timeout 300 "$godot" --headless --path "$badproject" --import >"$artifacts/import_bad.log" 2>&1
   status=$?
-  if ((status == 0)) && grep -q "cannot import res://bad.field:3:2: unexpected '?'" "$artifacts/import_bad.log"; then
+  if ((status == 0)) && grep -q "cannot import res://bad.field:3:2: unexpected tab character" "$artifacts/import_bad.log"; then
     grep -o "cannot import res://bad.field:3:2: [^\"]*" "$artifacts/import_bad.log" | head -n 1
     record 1 0 "import error names file, line and column"
   else

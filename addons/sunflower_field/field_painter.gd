@@ -69,11 +69,14 @@ func _init(undo_redo: EditorUndoRedoManager) -> void:
 	_density_box = _spin_box("Density: the share of cells a stroke fills", 0.05, 1.0, 0.05, density, "")
 	_density_box.value_changed.connect(func(value: float) -> void: density = value)
 	toolbar.visible = false
+	EditorInterface.get_inspector().property_edited.connect(_on_property_edited)
 
 
 ## Lets go of the editor (the plugin leaves): frees the toolbar; no painter is active any more.
 func release() -> void:
 	edit(null)
+	if EditorInterface.get_inspector().property_edited.is_connected(_on_property_edited):
+		EditorInterface.get_inspector().property_edited.disconnect(_on_property_edited)
 	if is_instance_valid(toolbar):
 		if toolbar.is_inside_tree():
 			toolbar.queue_free()
@@ -89,17 +92,57 @@ func edit(field: SunflowerField) -> void:
 		return
 	_end_stroke(false)
 	_remove_circle()
+	if _field and _field.field_built.is_connected(_on_field_built):
+		_field.field_built.disconnect(_on_field_built)
 	_field = field
 	toolbar.visible = _field != null
 	if _field:
-		_symbols.clear()
-		_symbols.add_item("* (%s)" % _field.get_plant_types()[0].name)
-		for key: Variant in _field.legend:
-			var value: Variant = _field.legend[key]
-			var what: String = (value as FieldPlant).name if value is FieldPlant else "object"
-			_symbols.add_item("%s (%s)" % [str(key), what])
-		_symbols.select(0)
-		symbol = "*"
+		_field.field_built.connect(_on_field_built)  # the plant, legend or map may have changed
+		refresh()
+
+
+## Brings the toolbar in step with the field: the symbols its plant and legend offer (keeping the one
+## chosen while it is still there), and Paint and Erase only while it has a map to paint.
+func refresh() -> void:
+	if _field == null:
+		return
+	var chosen: String = symbol
+	_symbols.clear()
+	_symbols.add_item("* (%s)" % _field.get_plant_types()[0].name)
+	for key: Variant in _field.legend:
+		var value: Variant = _field.legend[key]
+		var what: String = (value as FieldPlant).name if value is FieldPlant else "object"
+		_symbols.add_item("%s (%s)" % [str(key), what])
+	symbol = "*"
+	_symbols.select(0)
+	for index: int in _symbols.item_count:
+		if _symbols.get_item_text(index).left(1) == chosen:
+			_symbols.select(index)
+			symbol = chosen
+	var paintable: bool = _field.map != null
+	for key: Mode in _buttons:
+		var button: Button = _buttons[key]
+		button.disabled = not paintable
+		button.tooltip_text = (
+			"%s the field's map with the brush (Ctrl-drag erases)" % button.text
+			if paintable
+			else "The field has no map to paint: press New map… in its inspector, or give it a .field file"
+		)
+	if not paintable:
+		set_mode(Mode.OFF)
+
+
+func _on_field_built(_plant_count: int) -> void:
+	refresh()
+
+
+func _on_property_edited(property: String) -> void:
+	if (
+		_field
+		and EditorInterface.get_inspector().get_edited_object() == _field
+		and property in ["map", "plant", "legend"]
+	):
+		refresh()
 
 
 ## Sets what a drag does, keeping the toolbar's buttons in step.
@@ -109,6 +152,8 @@ func set_mode(new_mode: Mode) -> void:
 		(_buttons[key] as Button).set_pressed_no_signal(key == mode)
 	if mode == Mode.OFF:
 		_remove_circle()
+	elif get_circle():
+		(_circle.material_override as StandardMaterial3D).albedo_color = brush_colour()
 
 
 ## The 3D editor's input while a field is edited: moves the brush circle; a left drag paints
@@ -273,6 +318,7 @@ func _end_stroke(commit: bool) -> void:
 	var path: String = _original_map.source_path
 	var field: SunflowerField = _field
 	_stroke = null
+	_erasing = false
 	if not commit or painted == _original:
 		field.map = _original_map
 		return
@@ -381,9 +427,9 @@ func _show_circle(hit: Variant) -> void:
 		var material: StandardMaterial3D = StandardMaterial3D.new()
 		material.shading_mode = BaseMaterial3D.SHADING_MODE_UNSHADED
 		material.no_depth_test = true
-		material.albedo_color = Color(1.0, 0.85, 0.2) if mode == Mode.PAINT else Color(1.0, 0.3, 0.25)
 		_circle.material_override = material
 		_field.add_child(_circle, false, Node.INTERNAL_MODE_BACK)
+	(_circle.material_override as StandardMaterial3D).albedo_color = brush_colour()
 	var mesh: ImmediateMesh = _circle.mesh
 	mesh.clear_surfaces()
 	mesh.surface_begin(Mesh.PRIMITIVE_LINE_STRIP)
@@ -392,6 +438,16 @@ func _show_circle(hit: Variant) -> void:
 		mesh.surface_add_vertex(Vector3(cos(angle) * radius, 0.05, sin(angle) * radius))
 	mesh.surface_end()
 	_circle.global_position = hit
+
+
+## The brush circle's colour: yellow while a drag paints, red while it erases (Erase, or a Ctrl-drag).
+func brush_colour() -> Color:
+	return Color(1.0, 0.3, 0.25) if mode == Mode.ERASE or _erasing else Color(1.0, 0.85, 0.2)
+
+
+## The brush circle shown now, or null (tests).
+func get_circle() -> MeshInstance3D:
+	return _circle if _circle and is_instance_valid(_circle) else null
 
 
 func _remove_circle() -> void:

@@ -30,6 +30,7 @@ func _run() -> void:
 	field.finish_build()
 	var painter: RefCounted = load("res://addons/sunflower_field/field_painter.gd").get("active")
 	_check(painter != null and painter.toolbar.visible, "the painter's toolbar shows for a selected field")
+	await _check_toolbar_follows_the_field(painter, field)
 	var camera: Camera3D = Camera3D.new()
 	camera.projection = Camera3D.PROJECTION_ORTHOGONAL
 	camera.size = 40.0
@@ -107,7 +108,11 @@ func _run() -> void:
 
 	# New map: an empty 30 x 20 map saved beside the scene, given to the field; undo gives the old.
 	field.map = load(MAP_PATH)
+	var start: int = Time.get_ticks_msec()
 	var made: String = painter.new_map(field, 30, 20, false)
+	var took: int = Time.get_ticks_msec() - start
+	print("probe: New map took %d ms" % took)
+	_check(took < 2000, "New map answers within 2 s (%d ms)" % took)
 	_check(made == "res://field.field" and FileAccess.file_exists(made), "a new map beside the scene: " + made)
 	field.finish_build()
 	_check(field.map.source_path == made and field.get_plant_count() == 0, "the field has the new, empty map")
@@ -133,6 +138,48 @@ func _run() -> void:
 		await _picture(painter, field, shot)
 	print("probe: " + ("ok" if _problems.is_empty() else "; ".join(_problems)))
 	_tree.quit(0 if _problems.is_empty() else 1)
+
+
+## The toolbar follows the field: its symbol list names the plant grown now, Paint and Erase are
+## disabled (saying why) while the field has no map, and the brush takes Erase's colour at once.
+func _check_toolbar_follows_the_field(painter: RefCounted, field: SunflowerField) -> void:
+	var symbols: OptionButton = painter.toolbar.get_child(2) as OptionButton
+	var paint: Button = painter.toolbar.get_child(0) as Button
+	_check(symbols.get_item_text(0).contains(field.get_plant_types()[0].name), "the symbol list names the plant")
+	var red: FieldPlant = load("res://addons/sunflower_field/plants/red_sunflower.tres")
+	field.plant = red
+	await _frames(3)
+	field.finish_build()
+	_check(symbols.get_item_text(0).contains(red.name), "the list follows a new plant: " + symbols.get_item_text(0))
+	field.plant = null
+	var kept: SunflowerFieldMap = field.map
+	field.map = null
+	EditorInterface.get_inspector().property_edited.emit("map")  # as the inspector does after an edit
+	await _frames(2)
+	_check(
+		paint.disabled and paint.tooltip_text.contains("no map"), "Paint is off without a map: " + paint.tooltip_text
+	)
+	field.map = kept
+	await _frames(3)
+	field.finish_build()
+	_check(not paint.disabled, "Paint is on again with the map back")
+	painter.set_mode(1)  # Paint
+	var camera: Camera3D = Camera3D.new()
+	camera.projection = Camera3D.PROJECTION_ORTHOGONAL
+	camera.size = 40.0
+	field.add_sibling(camera)
+	camera.global_transform = Transform3D(Basis.from_euler(Vector3(-PI / 2.0, 0.0, 0.0)), Vector3(10.0, 50.0, 7.5))
+	var motion: InputEventMouseMotion = InputEventMouseMotion.new()
+	motion.position = camera.unproject_position(field.to_global(Vector3(10.0, 0.0, 7.5)))
+	painter.handle_input(camera, motion)
+	var circle: MeshInstance3D = painter.get_circle()
+	if _check(circle != null, "the brush circle shows over the field"):
+		var colour: Color = (circle.material_override as StandardMaterial3D).albedo_color
+		painter.set_mode(2)  # Erase, straight from Paint
+		var erase_colour: Color = (circle.material_override as StandardMaterial3D).albedo_color
+		_check(colour != erase_colour and erase_colour == painter.brush_colour(), "the brush turns Erase's colour")
+	painter.set_mode(0)
+	camera.free()
 
 
 ## The editor as a user sees it while painting: the brush (moved over the field through the
@@ -200,9 +247,10 @@ func _near_any(cell: Vector2i, points: Array[Vector3], reach: float) -> bool:
 	return false
 
 
-func _check(condition: bool, message: String) -> void:
+func _check(condition: bool, message: String) -> bool:
 	if not condition and _problems.size() < 12:
 		_problems.append(message)
+	return condition
 
 
 func _frames(count: int) -> void:

@@ -447,6 +447,41 @@ func test_legend_symbols_place_scenes_and_unknown_symbols_fail() -> void:
 	check_eq(field.load_map_file(path), ERR_PARSE_ERROR, "without the legend 'S' is an error")
 
 
+## The user's path: symbols in a map file the editor imported with no option, a legend on the node.
+## The import keeps any printable symbol; the legend gives them their meaning; a field without that
+## legend reports the first symbol it lacks with the file, line and column.
+func test_an_imported_map_uses_any_symbol_its_fields_legend_defines() -> void:
+	var imported: SunflowerFieldMap = load("res://maps/stones.field") as SunflowerFieldMap
+	if not check(imported != null, "the map with S and r imported without any import option"):
+		return
+	check_eq([imported.columns, imported.rows, imported.plant_count], [6, 3, 14], "the import counted it")
+	var stone: Node3D = Node3D.new()
+	stone.name = "Stone"
+	var packed: PackedScene = PackedScene.new()
+	packed.pack(stone)
+	stone.free()
+	var red: FieldPlant = load("res://addons/sunflower_field/plants/red_sunflower.tres")
+	field.legend = {"S": packed, "r": red}
+	field.map = imported
+	field.finish_build()
+	check_eq(field.get_plant_count(), 16, "14 sunflowers and 2 red ones")
+	check_eq(field.get_plant_types().size(), 2, "two plant types")
+	var stones: int = 0
+	for child: Node in field.get_children(true):
+		stones += 1 if child.name.begins_with("Stone") else 0
+	check_eq(stones, 2, "two stones placed")
+	var messages: Array[String] = []
+	field.map_error.connect(func(message: String) -> void: messages.append(message))
+	allow_error("res://maps/stones.field:3:2: unexpected 'S'")
+	field.legend = {"r": red}
+	field.finish_build()
+	check_eq(messages.size(), 1, "map_error emitted once")
+	var warnings: String = " ".join(field._get_configuration_warnings())
+	check(
+		warnings.contains("res://maps/stones.field:3:2: unexpected 'S'"), "the warning names the place: %s" % warnings
+	)
+
+
 func test_part_meshes_can_be_swapped_at_run_time() -> void:
 	observer.position = Vector3(10.0, 1.7, 7.5)
 	field.advance(0.3)
