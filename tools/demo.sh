@@ -28,12 +28,25 @@ done
 [[ -n "$screenshot" ]] && rm -f "$screenshot"
 log="$out/demo.log"
 echo "demo: no display; running the recording mode under Xvfb (Forward+ on Vulkan lavapipe); log $log"
-timeout 900 xvfb-run -a -s "-screen 0 1280x720x24" "$godot" --audio-driver Dummy --resolution 640x360 \
-  --path "$repo/demo_project" -- "${args[@]}" >"$log" 2>&1
+# The engine's own "status < 0" line comes from the X server's shared-memory probe under Xvfb.
+errors_in_log() { grep -E '^(SCRIPT ERROR|ERROR|USER ERROR)' "$log" | grep -v 'status < 0'; }
+setsid timeout 900 xvfb-run -a -s "-screen 0 1280x720x24" "$godot" --audio-driver Dummy --resolution 640x360 \
+  --path "$repo/demo_project" -- "${args[@]}" >"$log" 2>&1 &
+engine=$! # its own process group: the engine, Xvfb and the wrappers stop together
+# A demo that cannot run (a script that does not load, no library) would never finish its recording:
+# once the engine reports an error it gets two seconds more to say the rest, then it is stopped.
+while kill -0 "$engine" 2>/dev/null; do
+  if [[ -n "$(errors_in_log)" ]]; then
+    sleep 2
+    kill -TERM -- -"$engine" 2>/dev/null
+    break
+  fi
+  sleep 1
+done
+wait "$engine"
 status=$?
 grep -E '^demo:' "$log"
-# The engine's own "status < 0" line comes from the X server's shared-memory probe under Xvfb.
-errors=$(grep -E '^(SCRIPT ERROR|ERROR|USER ERROR)' "$log" | grep -v 'status < 0')
+errors=$(errors_in_log)
 [[ -z "$errors" ]] || { echo "$errors" >&2; fail "the demo reported errors (above; the whole log is $log)"; }
 ((status == 0)) || fail "the engine exited with status $status (the log is $log)"
 [[ -z "$screenshot" || -s "$screenshot" ]] || fail "no picture was saved at $screenshot (the log is $log)"

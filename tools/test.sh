@@ -16,8 +16,8 @@ cd "$repo"
 # name|what it checks; the order is the order they run in.
 SUITES=(
   "core|the C++ core's unit tests (doctest), no engine"
-  "platforms|every platform's library inspected; the core's tests built for Windows x86_64 (Wine) and Linux arm64 (QEMU)"
   "lint|gdlint and gdformat over every GDScript file"
+  "platforms|every platform's library inspected; the core's tests built for Windows x86_64 (Wine) and Linux arm64 (QEMU)"
   "docs|links, images and GDScript snippets of README.md and docs/, the API reference and ARCHITECTURE.md current"
   "headless|the engine tests that need no renderer (headless Godot)"
   "engine|every engine test: Godot under Xvfb, Forward+ on Vulkan lavapipe"
@@ -130,8 +130,8 @@ engine_suite() {
   record "$p" "$f" "$label"
 }
 
-# The tests an engine suite runs: the filter alone, else the list given (none: all).
-engine_tests() { if [[ -n "$filter" ]]; then echo "$filter"; else echo "$@"; fi; }
+# The tests an engine suite runs, one a line: the filter alone, else the list given (none: all).
+engine_tests() { if [[ -n "$filter" ]]; then echo "$filter"; elif (($#)); then printf '%s\n' "$@"; fi; }
 
 # A project dir with a copy of the addon (and what else is given), its extension listed before import.
 new_project() { # $1 = dir; copies the addon without following it being a link
@@ -140,10 +140,10 @@ new_project() { # $1 = dir; copies the addon without following it being a link
   echo "res://addons/sunflower_field/sunflower_field.gdextension" >"$1/.godot/extension_list.cfg"
 }
 
-# --- Suites that keep one core busy start first and run beside the engine's ---------------------------
-# The fuzzer and the core's tests under Wine and QEMU are single-threaded; the engine suites leave a
-# core idle much of the time (scene set-up, GDScript). Their output is collected when they end.
-background=()
+# --- The fuzzer starts first and runs beside the suites before the engine's ---------------------------
+# It keeps one core busy for its build and 60 s; the core's tests under Wine and QEMU keep the other.
+# Nothing runs beside the engine suites: on two cores lavapipe's frames then take twice as long, more
+# than the suites beside them would save.
 if runs fuzz; then
   fuzz_seconds=${FUZZ_SECONDS:-60}
   (
@@ -156,15 +156,6 @@ if runs fuzz; then
     exit $status
   ) &
   fuzz_pid=$!
-fi
-if runs platforms; then
-  (
-    doctest_suite "core unit tests built for Windows x86_64, under Wine" /usr/lib/wine/wine64 \
-      "$repo/build/tests/core_tests.windows.x86_64.exe"
-    doctest_suite "core unit tests built for Linux arm64, under QEMU" qemu-aarch64-static -L /usr/aarch64-linux-gnu \
-      "$repo/build/tests/core_tests.linux.arm64"
-  ) >"$artifacts/cross_tests.log" 2>&1 &
-  cross_pid=$!
 fi
 
 if runs core; then
@@ -182,6 +173,34 @@ if runs lint; then
   suite_done lint
 fi
 
+if runs platforms; then
+  suite_start=$SECONDS
+  echo "== the libraries for every platform: format, architecture, dependencies, exports"
+  python3 "$repo/tools/check_libraries.py" "$repo"/addons/sunflower_field/bin/*.{so,dll,dylib} | tee "$artifacts/libraries.log"
+  line=$(grep -E '^libraries: [0-9]+ passed, [0-9]+ failed$' "$artifacts/libraries.log")
+  if [[ "$line" =~ ([0-9]+)\ passed,\ ([0-9]+)\ failed ]] && ((BASH_REMATCH[1] == 12)); then
+    record "${BASH_REMATCH[1]}" "${BASH_REMATCH[2]}" "libraries"
+  else
+    record 0 1 "libraries (expected 12: $line)"
+  fi
+  # The check can fail: a library linked the ordinary way needs libstdc++ and exports everything.
+  bad=$(mktemp -d)
+  printf '#include <string>\nstd::string sunflower_name() { return "x"; }\nextern "C" int sunflower_library_init() { return 0; }\n' >"$bad/bad.cpp"
+  g++ -shared -fPIC -o "$bad/libsunflower.linux.template_debug.x86_64.so" "$bad/bad.cpp"
+  if ! python3 "$repo/tools/check_libraries.py" "$bad/libsunflower.linux.template_debug.x86_64.so" >"$bad/out" &&
+    grep -q "depends on libstdc++" "$bad/out" && grep -q "exports .* other symbols" "$bad/out"; then
+    record 1 0 "the library check refuses a libstdc++ library with every symbol exported"
+  else
+    cat "$bad/out"; record 0 1 "the library check refuses a libstdc++ library with every symbol exported"
+  fi
+  rm -rf "$bad"
+  doctest_suite "core unit tests built for Windows x86_64, under Wine" /usr/lib/wine/wine64 \
+    "$repo/build/tests/core_tests.windows.x86_64.exe"
+  doctest_suite "core unit tests built for Linux arm64, under QEMU" qemu-aarch64-static -L /usr/aarch64-linux-gnu \
+    "$repo/build/tests/core_tests.linux.arm64"
+  suite_done platforms
+fi
+
 if runs docs; then
   suite_start=$SECONDS
   echo "== the docs: links and images resolve, GDScript snippets parse, the API reference and ARCHITECTURE.md current"
@@ -193,9 +212,22 @@ if runs docs; then
   suite_done docs
 fi
 
+# --- The fuzzer, which ran beside the first suites, ends before the engine suites begin ----------
+if runs fuzz; then
+  suite_start=$SECONDS
+  echo "== fuzzing the map parser and layout for ${fuzz_seconds} s (libFuzzer, ASan + UBSan; run beside the first suites)"
+  if wait "$fuzz_pid"; then
+    grep -E "^Done|stat::number_of_executed_units" "$artifacts/fuzz.log" | head -n 2
+    record 1 0 "fuzzing"
+  else
+    tail -n 30 "$artifacts/fuzz_build.log" "$artifacts/fuzz.log"; record 0 1 "fuzzing"
+  fi
+  suite_done fuzz
+fi
+
 if runs headless; then
   suite_start=$SECONDS
-  mapfile -t tests < <(engine_tests "${HEADLESS_TESTS[@]}" | tr ' ' '\n')
+  mapfile -t tests < <(engine_tests "${HEADLESS_TESTS[@]}")
   engine_suite "engine tests that need no renderer (headless)" "$repo/tests/godot" headless \
     "$artifacts/godot_headless.log" "${tests[@]}"
   suite_done headless
@@ -203,7 +235,7 @@ fi
 
 if runs engine; then
   suite_start=$SECONDS
-  mapfile -t tests < <(engine_tests | tr ' ' '\n' | sed '/^$/d')
+  mapfile -t tests < <(engine_tests)
   engine_suite "engine tests (Godot under Xvfb, Forward+ on Vulkan lavapipe)" "$repo/tests/godot" vulkan \
     "$artifacts/godot_tests.log" "${tests[@]}"
   cp "$artifacts/render_demo_field.png" "$artifacts/render_demo_field_vulkan.png" 2>/dev/null
@@ -212,7 +244,7 @@ fi
 
 if runs opengl; then
   suite_start=$SECONDS
-  mapfile -t tests < <(engine_tests "${OPENGL_TESTS[@]}" | tr ' ' '\n')
+  mapfile -t tests < <(engine_tests "${OPENGL_TESTS[@]}")
   engine_suite "render tests (Compatibility renderer, OpenGL on llvmpipe)" "$repo/tests/godot" opengl3 \
     "$artifacts/godot_render_gl.log" "${tests[@]}"
   mv "$artifacts/render_demo_field.png" "$artifacts/render_demo_field_opengl.png" 2>/dev/null
@@ -221,7 +253,7 @@ fi
 
 if runs demo; then
   suite_start=$SECONDS
-  mapfile -t tests < <(engine_tests | tr ' ' '\n' | sed '/^$/d')
+  mapfile -t tests < <(engine_tests)
   engine_suite "demo tests (headless)" "$repo/demo_project" headless "$artifacts/demo_tests.log" "${tests[@]}"
   if [[ -z "$filter" ]]; then
     echo "== demo recording mode (Xvfb, Forward+): screenshot and stats"
@@ -378,51 +410,6 @@ if runs editor; then
   suite_done editor
 fi
 
-# --- The suites that ran beside the others -------------------------------------------------------------
-if runs platforms; then
-  suite_start=$SECONDS
-  echo "== the libraries for every platform: format, architecture, dependencies, exports"
-  python3 "$repo/tools/check_libraries.py" "$repo"/addons/sunflower_field/bin/*.{so,dll,dylib} | tee "$artifacts/libraries.log"
-  line=$(grep -E '^libraries: [0-9]+ passed, [0-9]+ failed$' "$artifacts/libraries.log")
-  if [[ "$line" =~ ([0-9]+)\ passed,\ ([0-9]+)\ failed ]] && ((BASH_REMATCH[1] == 12)); then
-    record "${BASH_REMATCH[1]}" "${BASH_REMATCH[2]}" "libraries"
-  else
-    record 0 1 "libraries (expected 12: $line)"
-  fi
-  # The check can fail: a library linked the ordinary way needs libstdc++ and exports everything.
-  bad=$(mktemp -d)
-  printf '#include <string>\nstd::string sunflower_name() { return "x"; }\nextern "C" int sunflower_library_init() { return 0; }\n' >"$bad/bad.cpp"
-  g++ -shared -fPIC -o "$bad/libsunflower.linux.template_debug.x86_64.so" "$bad/bad.cpp"
-  if ! python3 "$repo/tools/check_libraries.py" "$bad/libsunflower.linux.template_debug.x86_64.so" >"$bad/out" &&
-    grep -q "depends on libstdc++" "$bad/out" && grep -q "exports .* other symbols" "$bad/out"; then
-    record 1 0 "the library check refuses a libstdc++ library with every symbol exported"
-  else
-    cat "$bad/out"; record 0 1 "the library check refuses a libstdc++ library with every symbol exported"
-  fi
-  rm -rf "$bad"
-  wait "$cross_pid"
-  # The two suites ran in a subshell: their lines are replayed and their counts added here.
-  cat "$artifacts/cross_tests.log"
-  while read -r p f label; do
-    passed=$((passed + p)); failed=$((failed + f))
-  done < <(sed -nE 's/^== (.*): ([0-9]+) passed, ([0-9]+) failed \([0-9]+ s\)$/\2 \3 \1/p' "$artifacts/cross_tests.log")
-  grep -qE '^== .*Wine: [0-9]+ passed' "$artifacts/cross_tests.log" && grep -qE '^== .*QEMU: [0-9]+ passed' "$artifacts/cross_tests.log" ||
-    record 0 1 "the cross-built core tests did not report"
-  suite_done platforms
-fi
-
-if runs fuzz; then
-  suite_start=$SECONDS
-  echo "== fuzzing the map parser and layout for ${fuzz_seconds} s (libFuzzer, ASan + UBSan; run beside the other suites)"
-  if wait "$fuzz_pid"; then
-    grep -E "^Done|stat::number_of_executed_units" "$artifacts/fuzz.log" | head -n 2
-    record 1 0 "fuzzing"
-  else
-    tail -n 30 "$artifacts/fuzz_build.log" "$artifacts/fuzz.log"; record 0 1 "fuzzing"
-  fi
-  suite_done fuzz
-fi
-
 if runs engine || runs opengl || runs demo; then
   echo "== leaks at exit (--verbose output of the engine runs)"
   logs=()
@@ -437,7 +424,7 @@ if runs engine || runs opengl || runs demo; then
 fi
 
 echo "artifacts: $artifacts"
-echo "time per suite (wall; the platforms and fuzz suites run beside the others, so theirs is the wait at the end):"
+echo "time per suite (wall; the fuzzer's is the wait for it at the end):"
 printf '  %s\n' "${timings[@]}"
 echo "time: $SECONDS s"
 echo "total: $passed passed, $failed failed"

@@ -69,13 +69,14 @@ func _init(undo_redo: EditorUndoRedoManager) -> void:
 	_density_box = _spin_box("Density: the share of cells a stroke fills", 0.05, 1.0, 0.05, density, "")
 	_density_box.value_changed.connect(func(value: float) -> void: density = value)
 	toolbar.visible = false
-	EditorInterface.get_inspector().property_edited.connect(_on_property_edited)
+	if Engine.is_editor_hint():  # tools and tests also paint outside the editor
+		EditorInterface.get_inspector().property_edited.connect(_on_property_edited)
 
 
 ## Lets go of the editor (the plugin leaves): frees the toolbar; no painter is active any more.
 func release() -> void:
 	edit(null)
-	if EditorInterface.get_inspector().property_edited.is_connected(_on_property_edited):
+	if Engine.is_editor_hint() and EditorInterface.get_inspector().property_edited.is_connected(_on_property_edited):
 		EditorInterface.get_inspector().property_edited.disconnect(_on_property_edited)
 	if is_instance_valid(toolbar):
 		if toolbar.is_inside_tree():
