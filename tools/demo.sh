@@ -19,8 +19,8 @@ fi
 out="$repo/build/demo"
 mkdir -p "$out"
 args=("$@")
-# Without arguments: the built-in flight, a picture every 10 frames (low and high viewpoints), stats.
-((${#args[@]})) || args=(--frames 16 --screenshot "$out/demo.png" --screenshot-every 5 --stats "$out/stats.json")
+# Without arguments: the built-in flight, a picture every 5 frames (low and high viewpoints).
+((${#args[@]})) || args=(--frames 11 --screenshot "$out/demo.png" --screenshot-every 5)
 screenshot=""
 for ((i = 0; i + 1 < ${#args[@]}; i++)); do
   [[ "${args[i]}" == --screenshot ]] && screenshot=${args[i + 1]}
