@@ -108,9 +108,11 @@ doctest_suite() {
   record "$p" "$f" "$label"
 }
 
-# $1 = label, $2 = project, $3 = rendering driver ("headless": no renderer), $4 = log, rest = tests (none: all)
+# $1 = label, $2 = project, $3 = rendering driver ("headless": no renderer), $4 = log, rest = tests
+# (none: all); the --filter pattern, when given, in their place.
 engine_suite() {
   local label=$1 project=$2 driver=$3 log=$4; shift 4
+  [[ -n "$filter" ]] && set -- "$filter"
   echo "== $label"
   local launch=("${xvfb[@]}" "$godot" --rendering-driver "$driver")
   [[ "$driver" == headless ]] && launch=("$godot" --headless)
@@ -129,9 +131,6 @@ engine_suite() {
   ((status != 0 && f == 0)) && f=1
   record "$p" "$f" "$label"
 }
-
-# The tests an engine suite runs, one a line: the filter alone, else the list given (none: all).
-engine_tests() { if [[ -n "$filter" ]]; then echo "$filter"; elif (($#)); then printf '%s\n' "$@"; fi; }
 
 # A project dir with a copy of the addon (and what else is given), its extension listed before import.
 new_project() { # $1 = dir; copies the addon without following it being a link
@@ -227,34 +226,30 @@ fi
 
 if runs headless; then
   suite_start=$SECONDS
-  mapfile -t tests < <(engine_tests "${HEADLESS_TESTS[@]}")
   engine_suite "engine tests that need no renderer (headless)" "$repo/tests/godot" headless \
-    "$artifacts/godot_headless.log" "${tests[@]}"
+    "$artifacts/godot_headless.log" "${HEADLESS_TESTS[@]}"
   suite_done headless
 fi
 
 if runs engine; then
   suite_start=$SECONDS
-  mapfile -t tests < <(engine_tests)
   engine_suite "engine tests (Godot under Xvfb, Forward+ on Vulkan lavapipe)" "$repo/tests/godot" vulkan \
-    "$artifacts/godot_tests.log" "${tests[@]}"
+    "$artifacts/godot_tests.log"
   cp "$artifacts/render_demo_field.png" "$artifacts/render_demo_field_vulkan.png" 2>/dev/null
   suite_done engine
 fi
 
 if runs opengl; then
   suite_start=$SECONDS
-  mapfile -t tests < <(engine_tests "${OPENGL_TESTS[@]}")
   engine_suite "render tests (Compatibility renderer, OpenGL on llvmpipe)" "$repo/tests/godot" opengl3 \
-    "$artifacts/godot_render_gl.log" "${tests[@]}"
+    "$artifacts/godot_render_gl.log" "${OPENGL_TESTS[@]}"
   mv "$artifacts/render_demo_field.png" "$artifacts/render_demo_field_opengl.png" 2>/dev/null
   suite_done opengl
 fi
 
 if runs demo; then
   suite_start=$SECONDS
-  mapfile -t tests < <(engine_tests)
-  engine_suite "demo tests (headless)" "$repo/demo_project" headless "$artifacts/demo_tests.log" "${tests[@]}"
+  engine_suite "demo tests (headless)" "$repo/demo_project" headless "$artifacts/demo_tests.log"
   if [[ -z "$filter" ]]; then
     echo "== demo recording mode (Xvfb, Forward+): screenshot and stats"
     frames=12
