@@ -93,7 +93,7 @@ func edit(field: SunflowerField) -> void:
 		return
 	_end_stroke(false)
 	_remove_circle()
-	if _field and _field.field_built.is_connected(_on_field_built):
+	if is_instance_valid(_field) and _field.field_built.is_connected(_on_field_built):
 		_field.field_built.disconnect(_on_field_built)
 	_field = field
 	toolbar.visible = _field != null
