@@ -5,7 +5,6 @@
 #include "binding/godot_api.h"
 #include "core/field_simulation.h"
 
-#include <array>
 #include <vector>
 
 class SunflowerSimulation {
