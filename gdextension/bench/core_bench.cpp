@@ -53,10 +53,10 @@ struct Run {
 // A camera 1.7 m high walking a circle, looking along its path (a 90° frustum, as a Camera3D
 // gives it: outward planes); the per-frame update timed.
 Run walk(FieldSimulation &r_sim, int p_frames, const Walk &p_walk) {
-	PlantShape shape = r_sim.get_shape();
+	PlantShape shape = r_sim.plants().get_shape();
 	shape.whole = p_walk.whole;
 	r_sim.set_shape(shape);
-	const glm::vec2 size = r_sim.get_layout().size;
+	const glm::vec2 size = r_sim.plants().get_layout().size;
 	std::vector<double> times;
 	times.reserve(static_cast<size_t>(p_frames));
 	uint64_t active = 0;
@@ -73,18 +73,18 @@ Run walk(FieldSimulation &r_sim, int p_frames, const Walk &p_walk) {
 			glm::vec4(glm::normalize(-right - forward), glm::dot(glm::normalize(-right - forward), eye)),
 			glm::vec4(0.0f, 1.0f, 0.0f, 1000.0f),
 		};
-		r_sim.get_frustum().set_planes(planes, 4);
-		r_sim.set_observer(eye);
+		r_sim.near().get_frustum().set_planes(planes, 4);
+		r_sim.near().set_observer(eye);
 		std::vector<Pusher> bodies;
 		for (int b = 0; b < p_walk.pushers; ++b) {
 			const float around = float(b) * TAU / float(p_walk.pushers);
 			bodies.push_back(Pusher{ eye + glm::vec3(2.0f * std::cos(around), -0.7f, 2.0f * std::sin(around)), 0.6f });
 		}
-		r_sim.set_pushers(bodies.data(), bodies.size());
+		r_sim.near().get_pushes().set_pushers(bodies.data(), bodies.size());
 		const auto start = std::chrono::steady_clock::now();
 		r_sim.update(1.0f / 60.0f);
 		times.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
-		active += r_sim.get_active_plant_count();
+		active += r_sim.near().get_active_plant_count();
 	}
 	return Run{ Result{ percentile(times, 0.5), percentile(times, 0.99) }, static_cast<uint32_t>(active / uint64_t(p_frames)) };
 }
@@ -98,21 +98,21 @@ Result run(const char *p_name, const std::string &p_text, int p_frames, const Wa
 		return Result{};
 	}
 	const double load_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - load_start).count();
-	sim.set_worker_threads(p_walk.threads);
+	sim.near().set_worker_threads(p_walk.threads);
 	WindParams wind;
 	wind.model = p_walk.wind_model;
 	wind.power = 3.0f;
-	sim.set_wind(wind);
+	sim.near().set_wind(wind);
 	LodParams lod;
 	lod.distances = { 6.0f, 10.0f, p_walk.mesh_reach, p_walk.mesh_reach + 5.0f };
-	sim.set_lod(lod);
+	sim.near().set_lod(lod);
 	const Result result = walk(sim, p_frames, p_walk).result;
 	if (!p_walk.print) {
 		return result;
 	}
 	const double mb = double(sim.get_memory_bytes()) / 1e6;
-	std::printf("| %-18s | %9u | %8.1f | %9.3f | %8.3f | %8.1f | %9.1f |\n", p_name, sim.get_plant_count(), load_ms,
-			result.median, result.p99, mb, double(sim.get_memory_bytes()) / sim.get_plant_count());
+	std::printf("| %-18s | %9u | %8.1f | %9.3f | %8.3f | %8.1f | %9.1f |\n", p_name, sim.plants().get_plant_count(), load_ms,
+			result.median, result.p99, mb, double(sim.get_memory_bytes()) / sim.plants().get_plant_count());
 	return result;
 }
 
@@ -149,11 +149,11 @@ int main() {
 		FieldSimulation sim;
 		MapError error;
 		sim.load_map(rect_map(1000, 1000), U"", "1M", MapLimits{}, error);
-		sim.set_worker_threads(1);
+		sim.near().set_worker_threads(1);
 		WindParams wind;
 		wind.model = model;
 		wind.power = 3.0f;
-		sim.set_wind(wind);
+		sim.near().set_wind(wind);
 		const Run result = walk(sim, 1200, one_thread);
 		per_plant[model] = result.result.median * 1e6 / result.active_plants;
 		no_pushers = result.result;
@@ -164,7 +164,7 @@ int main() {
 		FieldSimulation sim;
 		MapError error;
 		sim.load_map(rect_map(1000, 1000), U"", "1M", MapLimits{}, error);
-		sim.set_worker_threads(1);
+		sim.near().set_worker_threads(1);
 		Walk parts = one_thread;
 		parts.whole = false;
 		const Run result = walk(sim, 1200, parts);
@@ -175,12 +175,12 @@ int main() {
 		FieldSimulation sim;
 		MapError error;
 		sim.load_map(rect_map(1000, 1000), U"", "1M", MapLimits{}, error);
-		sim.set_worker_threads(1);
+		sim.near().set_worker_threads(1);
 		Walk pushed = one_thread;
 		pushed.pushers = 10;
 		const Run result = walk(sim, 1200, pushed);
 		std::printf("| natural wind + 10 pushers | %.3f | %.3f | %u | (%u plants pushed or springing back) |\n",
-				result.result.median, result.result.p99, result.active_plants, sim.get_pushed_count());
+				result.result.median, result.result.p99, result.active_plants, sim.near().get_pushes().get_pushed_count());
 		std::printf("\nnatural vs thesis per near plant: %.2fx; 10 pushers add %.3f ms to the median frame\n",
 				per_plant[WIND_NATURAL] / per_plant[WIND_THESIS], result.result.median - no_pushers.median);
 	}
@@ -198,11 +198,11 @@ int main() {
 			FieldSimulation sim;
 			MapError error;
 			sim.load_map(million, U"", "1M", MapLimits{}, error);
-			sim.set_worker_threads(threads);
-			sim.set_parallel_min_plants(0);
+			sim.near().set_worker_threads(threads);
+			sim.near().set_parallel_min_plants(0);
 			LodParams lod;
 			lod.distances = { std::min(6.0f, reach * 0.4f), std::min(10.0f, reach * 0.7f), reach, reach + 5.0f };
-			sim.set_lod(lod);
+			sim.near().set_lod(lod);
 			runs[threads - 1] = walk(sim, 600, path);
 		}
 		std::printf("| %12.0f | %11u | %11.3f / %-10.3f | %12.3f / %-10.3f | %12.2fx |\n", double(reach),
@@ -227,7 +227,7 @@ int main() {
 			}
 		}
 		std::vector<glm::vec2> points;
-		ground_points(sim.get_map(), sim.get_layout_params(), points);
+		ground_points(sim.plants().get_map(), sim.plants().get_layout_params(), points);
 		Ground listed;
 		listed.kind = Ground::HEIGHTS;
 		for (const glm::vec2 &point : points) {
@@ -243,7 +243,7 @@ int main() {
 				times.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
 			}
 			std::printf("| %s | %.1f | %.1f | %.1f |\n", name, percentile(times, 0.5), *std::min_element(times.begin(), times.end()),
-					double(sim.get_memory_bytes()) / sim.get_plant_count());
+					double(sim.get_memory_bytes()) / sim.plants().get_plant_count());
 		}
 	}
 	return 0;

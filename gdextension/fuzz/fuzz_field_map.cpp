@@ -48,13 +48,13 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *p_data, size_t p_size) {
 		std::abort();
 	}
 	FieldSimulation sim;
-	if (!sim.load_map(text, U"S#", U"m", "fuzz.field", limits, error) || sim.get_plant_count() != map.plant_count) {
+	if (!sim.load_map(text, U"S#", U"m", "fuzz.field", limits, error) || sim.plants().get_plant_count() != map.plant_count) {
 		std::abort();
 	}
-	sim.set_observer({ float(map.columns) * 0.25f, 1.7f, float(map.rows) * 0.25f });
+	sim.near().set_observer({ float(map.columns) * 0.25f, 1.7f, float(map.rows) * 0.25f });
 	sim.update(0.016f);
 	int64_t total = 0;
-	for (int64_t count : sim.get_lod_counts()) {
+	for (int64_t count : sim.near().get_lod_counts()) {
 		total += count;
 	}
 	if (total != map.plant_count) {

@@ -113,7 +113,7 @@ void SunflowerSimulation::bind_methods() {
 	gdx::bind_integer_constant(CLASS, "", "FLOATS_PER_INSTANCE", FLOATS_PER_INSTANCE);
 	gdx::bind_integer_constant(CLASS, "", "WHOLE_FLOATS_PER_INSTANCE", WHOLE_FLOATS_PER_INSTANCE);
 	gdx::bind_integer_constant(CLASS, "", "FAR_FLOATS_PER_INSTANCE", FAR_FLOATS_PER_INSTANCE);
-	gdx::bind_integer_constant(CLASS, "", "PARALLEL_MIN_PLANTS", FieldSimulation::PARALLEL_MIN_PLANTS);
+	gdx::bind_integer_constant(CLASS, "", "PARALLEL_MIN_PLANTS", NearField::PARALLEL_MIN_PLANTS);
 	gdx::bind_integer_constant(CLASS, "", "MAX_AUTO_THREADS", param::MAX_AUTO_THREADS);
 	gdx::bind_integer_constant(CLASS, "", "MAX_THREADS", param::MAX_THREADS);
 }
@@ -170,16 +170,16 @@ void SunflowerSimulation::clear() {
 }
 
 int64_t SunflowerSimulation::get_map_columns() const {
-	return _sim.get_map().columns;
+	return _sim.plants().get_map().columns;
 }
 
 int64_t SunflowerSimulation::get_map_rows() const {
-	return _sim.get_map().rows;
+	return _sim.plants().get_map().rows;
 }
 
 gdx::PackedInt32Array SunflowerSimulation::get_map_objects() const {
 	std::vector<int32_t> flat;
-	for (const MapObject &object : _sim.get_map().objects) {
+	for (const MapObject &object : _sim.plants().get_map().objects) {
 		flat.insert(flat.end(), { object.column, object.row, static_cast<int32_t>(object.symbol) });
 	}
 	gdx::PackedInt32Array out;
@@ -188,7 +188,7 @@ gdx::PackedInt32Array SunflowerSimulation::get_map_objects() const {
 }
 
 void SunflowerSimulation::set_layout(double p_cell_size, int64_t p_seed, bool p_independent_jitter, double p_chunk_size) {
-	LayoutParams params = _sim.get_layout_params();
+	LayoutParams params = _sim.plants().get_layout_params();
 	params.cell_size = static_cast<float>(p_cell_size);
 	params.seed = static_cast<uint64_t>(p_seed);
 	params.independent_jitter = p_independent_jitter;
@@ -199,7 +199,7 @@ void SunflowerSimulation::set_layout(double p_cell_size, int64_t p_seed, bool p_
 }
 
 void SunflowerSimulation::set_tile_merge_distance(double p_metres) {
-	LayoutParams params = _sim.get_layout_params();
+	LayoutParams params = _sim.plants().get_layout_params();
 	params.tile_merge_distance = static_cast<float>(p_metres);
 	if (_sim.set_layout_params(params)) {
 		release_multimeshes(); // the tiles changed
@@ -227,7 +227,7 @@ gdx::String SunflowerSimulation::set_ground_height_map(const gdx::PackedFloat32A
 
 gdx::String SunflowerSimulation::set_ground_heights(const gdx::PackedFloat32Array &p_heights, const gdx::PackedFloat32Array &p_normals,
 		double p_tilt) {
-	const size_t points = size_t(_sim.get_map().plant_count) + _sim.get_map().objects.size();
+	const size_t points = size_t(_sim.plants().get_map().plant_count) + _sim.plants().get_map().objects.size();
 	if (size_t(p_heights.size()) != points || (p_normals.size() != 0 && size_t(p_normals.size()) != 3 * points)) {
 		return gdx::String("set_ground_heights: the map has " + std::to_string(points) + " ground points; got " +
 				std::to_string(p_heights.size()) + " heights and " + std::to_string(p_normals.size()) +
@@ -245,14 +245,14 @@ gdx::String SunflowerSimulation::set_ground_heights(const gdx::PackedFloat32Arra
 
 gdx::PackedFloat32Array SunflowerSimulation::get_ground_points() const {
 	std::vector<glm::vec2> points;
-	ground_points(_sim.get_map(), _sim.get_layout_params(), points);
+	ground_points(_sim.plants().get_map(), _sim.plants().get_layout_params(), points);
 	gdx::PackedFloat32Array out;
 	out.assign(reinterpret_cast<const float *>(points.data()), points.size() * 2);
 	return out;
 }
 
 double SunflowerSimulation::get_ground_height(gdx::Vector2 p_point) const {
-	const Ground &ground = _sim.get_ground();
+	const Ground &ground = _sim.plants().get_ground();
 	if (ground.kind == Ground::FLAT) {
 		return 0.0;
 	}
@@ -260,18 +260,18 @@ double SunflowerSimulation::get_ground_height(gdx::Vector2 p_point) const {
 }
 
 int64_t SunflowerSimulation::get_cells_without_ground() const {
-	return _sim.get_layout().cells_without_ground;
+	return _sim.plants().get_layout().cells_without_ground;
 }
 
 gdx::PackedFloat32Array SunflowerSimulation::get_object_heights() const {
-	const std::vector<float> &heights = _sim.get_layout().object_ground;
+	const std::vector<float> &heights = _sim.plants().get_layout().object_ground;
 	gdx::PackedFloat32Array out;
 	out.assign(heights.data(), heights.size());
 	return out;
 }
 
 gdx::PackedFloat32Array SunflowerSimulation::get_wind_state() const {
-	const WindModel::ShaderState state = _sim.get_wind().shader_state();
+	const WindModel::ShaderState state = _sim.near().get_wind().shader_state();
 	const float values[] = { state.lean.x, state.lean.y, state.amplitude, state.bend_limit, state.gust_share,
 		state.gust_scroll, state.sway, state.moving };
 	gdx::PackedFloat32Array out;
@@ -287,7 +287,7 @@ gdx::PackedInt32Array SunflowerSimulation::paint_map(gdx::Vector2 p_center, doub
 					"\"");
 	CellContent content;
 	if (!symbol.empty() && symbol[0] != U' ' && symbol[0] != U'.') {
-		const size_t plant = _sim.get_plant_symbols().find(symbol[0]);
+		const size_t plant = _sim.plants().get_plant_symbols().find(symbol[0]);
 		if (symbol[0] == U'*') {
 			content = CellContent{ CellContent::PLANT, 0, 0 };
 		} else if (plant != std::u32string::npos) {
@@ -313,7 +313,7 @@ bool SunflowerSimulation::resize_map(int64_t p_columns, int64_t p_rows) {
 			false,
 			"resize_map: " + std::to_string(p_columns) + " x " + std::to_string(p_rows) + " is not a map size (1 to " +
 					std::to_string(limits.max_side) + " a side, at most " + std::to_string(limits.max_cells) + " cells)");
-	FieldMap map = _sim.get_map();
+	FieldMap map = _sim.plants().get_map();
 	resize_field_map(map, int(p_columns), int(p_rows), limits);
 	_sim.replace_map(std::move(map));
 	release_multimeshes(); // the layout changed
@@ -321,14 +321,14 @@ bool SunflowerSimulation::resize_map(int64_t p_columns, int64_t p_rows) {
 }
 
 gdx::PackedByteArray SunflowerSimulation::write_map() const {
-	const std::string text = write_field_map(_sim.get_map(), _sim.get_plant_symbols());
+	const std::string text = write_field_map(_sim.plants().get_map(), _sim.plants().get_plant_symbols());
 	gdx::PackedByteArray out;
 	out.assign(reinterpret_cast<const uint8_t *>(text.data()), text.size());
 	return out;
 }
 
 int64_t SunflowerSimulation::get_species_count() const {
-	return _sim.get_species_count();
+	return _sim.plants().get_species_count();
 }
 
 bool SunflowerSimulation::_is_species(int64_t p_species) const {
@@ -349,7 +349,7 @@ void SunflowerSimulation::set_plant_form(int64_t p_species, gdx::Vector3 p_part_
 		return;
 	}
 	const uint32_t species = uint32_t(p_species);
-	PlantShape shape = _sim.get_shape(species);
+	PlantShape shape = _sim.plants().get_shape(species);
 	const float metres = shape.part_scale * shape.parts_height(); // the plant keeps its height
 	shape.part_lengths = gdx::to_core(p_part_lengths);
 	shape.middle_variation = float(p_middle_variation);
@@ -364,7 +364,7 @@ void SunflowerSimulation::set_plant_whole(int64_t p_species, bool p_whole) {
 	if (!_is_species(p_species)) {
 		return;
 	}
-	PlantShape shape = _sim.get_shape(uint32_t(p_species));
+	PlantShape shape = _sim.plants().get_shape(uint32_t(p_species));
 	shape.whole = p_whole;
 	_sim.set_shape(shape, uint32_t(p_species));
 }
@@ -374,7 +374,7 @@ void SunflowerSimulation::set_plant_variation(int64_t p_species, double p_yaw_ra
 	if (!_is_species(p_species)) {
 		return;
 	}
-	LayoutParams params = _sim.get_layout_params();
+	LayoutParams params = _sim.plants().get_layout_params();
 	PlantVariety &variety = params.varieties[size_t(p_species)];
 	variety.yaw_range = float(p_yaw_range);
 	variety.scale_min = float(p_scale_min);
@@ -401,7 +401,7 @@ void SunflowerSimulation::set_wind(int64_t p_model, double p_power, gdx::Vector2
 	params.flip_chance = float(p_flip_chance);
 	params.gust_speed = float(p_gust_speed);
 	params.gust_share = float(p_gust_share);
-	_sim.set_wind(params); // the core applies the param:: rules
+	_sim.near().set_wind(params); // the core applies the param:: rules
 }
 
 void SunflowerSimulation::set_lod(const gdx::PackedFloat32Array &p_distances, double p_hysteresis, double p_fade, double p_interval,
@@ -414,16 +414,16 @@ void SunflowerSimulation::set_lod(const gdx::PackedFloat32Array &p_distances, do
 	params.fade = float(p_fade);
 	params.interval = float(p_interval);
 	params.force_level = int(std::clamp<int64_t>(p_force_level, INT32_MIN, INT32_MAX)); // the core clamps
-	_sim.set_lod(params);
+	_sim.near().set_lod(params);
 }
 
 void SunflowerSimulation::set_observer(gdx::Vector3 p_position, const gdx::PackedFloat32Array &p_frustum) {
-	_sim.set_observer(gdx::to_core(p_position));
+	_sim.near().set_observer(gdx::to_core(p_position));
 	const int64_t count = p_frustum.size() / 4;
 	if (count > 0) {
-		_sim.get_frustum().set_planes(gdx::to_core_planes(p_frustum), static_cast<size_t>(count));
+		_sim.near().get_frustum().set_planes(gdx::to_core_planes(p_frustum), static_cast<size_t>(count));
 	} else {
-		_sim.get_frustum().clear();
+		_sim.near().get_frustum().clear();
 	}
 }
 
@@ -444,7 +444,7 @@ void SunflowerSimulation::set_tile_multimesh(int64_t p_tile, gdx::Rid p_multimes
 	if (!_is_tile(p_tile) || !gdx::RenderingServer::ensure_loaded()) {
 		return;
 	}
-	_tiles.resize(_sim.get_tile_count());
+	_tiles.resize(_sim.tiles().get_tile_count());
 	_tiles[static_cast<size_t>(p_tile)] = p_multimesh;
 	_upload_tile(static_cast<uint32_t>(p_tile));
 	_tile_visible.resize(_tiles.size(), -1);
@@ -455,54 +455,54 @@ void SunflowerSimulation::adopt_tile_multimesh(int64_t p_tile, gdx::Rid p_multim
 	if (!_is_tile(p_tile)) {
 		return;
 	}
-	_tiles.resize(_sim.get_tile_count());
+	_tiles.resize(_sim.tiles().get_tile_count());
 	_tiles[static_cast<size_t>(p_tile)] = p_multimesh; // its data is this tile's already
 	_tile_visible.resize(_tiles.size(), -1);
 	_tile_visible[static_cast<size_t>(p_tile)] = -1; // its count is the previous field's
 }
 
 int64_t SunflowerSimulation::get_tile_count() const {
-	return _sim.get_tile_count();
+	return _sim.tiles().get_tile_count();
 }
 
 gdx::AABB SunflowerSimulation::get_tile_aabb(int64_t p_tile) const {
 	if (!_is_tile(p_tile)) {
 		return gdx::AABB{};
 	}
-	const ChunkBounds bounds = _sim.get_tile_bounds(static_cast<uint32_t>(p_tile));
+	const ChunkBounds bounds = _sim.tiles().get_tile_bounds(static_cast<uint32_t>(p_tile));
 	return gdx::to_godot_aabb(bounds.min, bounds.max);
 }
 
 int64_t SunflowerSimulation::get_tile_key(int64_t p_tile) const {
-	return _is_tile(p_tile) ? int64_t(_sim.get_tile(uint32_t(p_tile)).key) : -1;
+	return _is_tile(p_tile) ? int64_t(_sim.tiles().get_tile(uint32_t(p_tile)).key) : -1;
 }
 
 int64_t SunflowerSimulation::get_tile_signature(int64_t p_tile) const {
-	return _is_tile(p_tile) ? int64_t(_sim.get_tile_signature(uint32_t(p_tile))) : 0;
+	return _is_tile(p_tile) ? int64_t(_sim.tiles().get_tile_signature(uint32_t(p_tile))) : 0;
 }
 
 int64_t SunflowerSimulation::get_tile_species(int64_t p_tile) const {
-	return _is_tile(p_tile) ? int64_t(_sim.get_tile(uint32_t(p_tile)).species) : -1;
+	return _is_tile(p_tile) ? int64_t(_sim.tiles().get_tile(uint32_t(p_tile)).species) : -1;
 }
 
 int64_t SunflowerSimulation::get_tile_level(int64_t p_tile) const {
-	return _is_tile(p_tile) ? int64_t(_sim.get_tile(uint32_t(p_tile)).level) : -1;
+	return _is_tile(p_tile) ? int64_t(_sim.tiles().get_tile(uint32_t(p_tile)).level) : -1;
 }
 
 int64_t SunflowerSimulation::get_tile_parent(int64_t p_tile) const {
 	if (!_is_tile(p_tile)) {
 		return -1;
 	}
-	const uint32_t parent = _sim.get_tile(uint32_t(p_tile)).parent;
-	return parent == FieldSimulation::NO_TILE ? -1 : int64_t(parent);
+	const uint32_t parent = _sim.tiles().get_tile(uint32_t(p_tile)).parent;
+	return parent == FarTiles::NO_TILE ? -1 : int64_t(parent);
 }
 
 double SunflowerSimulation::get_tile_begin(int64_t p_tile) const {
-	return _is_tile(p_tile) ? double(_sim.get_tile_begin(uint32_t(p_tile))) : 0.0;
+	return _is_tile(p_tile) ? double(_sim.tiles().get_tile_begin(uint32_t(p_tile))) : 0.0;
 }
 
 double SunflowerSimulation::get_tile_shown_from(int64_t p_tile) const {
-	return _is_tile(p_tile) ? double(_sim.get_tile_shown_from(uint32_t(p_tile))) : 0.0;
+	return _is_tile(p_tile) ? double(_sim.tiles().get_tile_shown_from(uint32_t(p_tile))) : 0.0;
 }
 
 gdx::PackedFloat32Array SunflowerSimulation::get_tile_merge(int64_t p_tile) const {
@@ -512,15 +512,15 @@ gdx::PackedFloat32Array SunflowerSimulation::get_tile_merge(int64_t p_tile) cons
 	}
 	// The impostor shader's tile_merge: the tile's level, the field's top level, where level 1
 	// begins, the fade's share of an octave.
-	const FieldSimulation::Tile &tile = _sim.get_tile(uint32_t(p_tile));
-	const float values[] = { float(tile.level), float(_sim.get_top_tile_level()), _sim.merge_distance(1),
-		FieldSimulation::TILE_MERGE_FADE };
+	const FarTiles::Tile &tile = _sim.tiles().get_tile(uint32_t(p_tile));
+	const float values[] = { float(tile.level), float(_sim.tiles().get_top_tile_level()), _sim.tiles().merge_distance(1),
+		FarTiles::TILE_MERGE_FADE };
 	out.assign(values, std::size(values));
 	return out;
 }
 
 gdx::Vector2 SunflowerSimulation::choose_tile_level(double p_distance) const {
-	const FieldSimulation::TileChoice choice = _sim.choose_tile_level(float(p_distance));
+	const FarTiles::TileChoice choice = _sim.tiles().choose_tile_level(float(p_distance));
 	return gdx::Vector2{ float(choice.level), choice.fade };
 }
 
@@ -529,16 +529,16 @@ gdx::PackedByteArray SunflowerSimulation::get_active_mask(int64_t p_species) con
 	if (!_is_species(p_species)) {
 		return out;
 	}
-	const FieldLayout &layout = _sim.get_layout();
+	const FieldLayout &layout = _sim.plants().get_layout();
 	out.resize(int64_t(layout.grid_x) * layout.grid_z);
-	_sim.write_active_mask(uint32_t(p_species), out.data());
+	_sim.near().write_active_mask(uint32_t(p_species), out.data());
 	return out;
 }
 
 gdx::PackedByteArray SunflowerSimulation::get_tiles_drawn() const {
 	gdx::PackedByteArray out;
-	out.resize(_sim.get_tile_count());
-	for (uint32_t tile = 0; tile < _sim.get_tile_count(); ++tile) {
+	out.resize(_sim.tiles().get_tile_count());
+	for (uint32_t tile = 0; tile < _sim.tiles().get_tile_count(); ++tile) {
 		out.data()[tile] = _sim.is_tile_drawn(tile) ? 1 : 0;
 	}
 	return out;
@@ -551,17 +551,17 @@ int64_t SunflowerSimulation::get_mask_version() const {
 gdx::PackedInt32Array SunflowerSimulation::get_chunk_grid() const {
 	gdx::PackedInt32Array out;
 	out.resize(2);
-	out.data()[0] = _sim.get_layout().grid_x;
-	out.data()[1] = _sim.get_layout().grid_z;
+	out.data()[0] = _sim.plants().get_layout().grid_x;
+	out.data()[1] = _sim.plants().get_layout().grid_z;
 	return out;
 }
 
 int64_t SunflowerSimulation::get_chunk_key(int64_t p_chunk) const {
-	return _is_chunk(p_chunk) ? int64_t(_sim.get_chunk_key(uint32_t(p_chunk))) : -1;
+	return _is_chunk(p_chunk) ? int64_t(_sim.plants().get_chunk_key(uint32_t(p_chunk))) : -1;
 }
 
 int64_t SunflowerSimulation::get_chunk_signature(int64_t p_chunk) const {
-	return _is_chunk(p_chunk) ? int64_t(_sim.get_chunk_signature(uint32_t(p_chunk))) : 0;
+	return _is_chunk(p_chunk) ? int64_t(_sim.plants().get_chunk_signature(uint32_t(p_chunk))) : 0;
 }
 
 void SunflowerSimulation::compute_chunk_signatures() {
@@ -569,28 +569,28 @@ void SunflowerSimulation::compute_chunk_signatures() {
 }
 
 void SunflowerSimulation::release_multimeshes() {
-	_buckets.assign(_sim.get_bucket_count(), BucketTarget{});
+	_buckets.assign(_sim.near().get_bucket_count(), BucketTarget{});
 	_tiles.clear();
 	_tile_visible.clear();
 }
 
 int64_t SunflowerSimulation::get_chunk_count() const {
-	return _sim.get_chunk_count();
+	return _sim.plants().get_chunk_count();
 }
 
 gdx::AABB SunflowerSimulation::get_chunk_aabb(int64_t p_chunk) const {
 	if (!_is_chunk(p_chunk)) {
 		return gdx::AABB{};
 	}
-	const ChunkBounds bounds = _sim.get_chunk_bounds(static_cast<uint32_t>(p_chunk));
+	const ChunkBounds bounds = _sim.plants().get_chunk_bounds(static_cast<uint32_t>(p_chunk));
 	return gdx::to_godot_aabb(bounds.min, bounds.max);
 }
 
 void SunflowerSimulation::_upload_tile(uint32_t p_tile) {
-	const uint32_t count = _sim.get_tile(p_tile).plants;
+	const uint32_t count = _sim.tiles().get_tile(p_tile).plants;
 	gdx::PackedFloat32Array buffer;
 	buffer.resize(int64_t(count) * FAR_FLOATS_PER_INSTANCE);
-	_sim.write_tile_instances(p_tile, buffer.data());
+	_sim.tiles().write_tile_instances(p_tile, buffer.data());
 	if (_tiles[p_tile].is_valid()) {
 		gdx::RenderingServer::multimesh_allocate_data(_tiles[p_tile], count, gdx::RenderingServer::COMPACT);
 		gdx::RenderingServer::multimesh_set_buffer(_tiles[p_tile], buffer);
@@ -599,7 +599,7 @@ void SunflowerSimulation::_upload_tile(uint32_t p_tile) {
 
 void SunflowerSimulation::_push_bucket(uint32_t p_bucket) {
 	BucketTarget &target = _buckets[p_bucket];
-	const InstanceBuffer &bucket = _sim.get_bucket(p_bucket);
+	const InstanceBuffer &bucket = _sim.near().get_bucket(p_bucket);
 	const uint32_t count = bucket.get_count();
 	if (!target.multimesh.is_valid() || (count == 0 && target.last_count == 0)) {
 		return;
@@ -641,7 +641,7 @@ void SunflowerSimulation::update(double p_delta) {
 	}
 	// Each tile draws only its records kept at the nearest level its plants may be given.
 	for (size_t t = 0; t < _tiles.size() && t < _tile_visible.size(); ++t) {
-		const int64_t visible = _sim.get_tile_visible_count(uint32_t(t));
+		const int64_t visible = _sim.tiles().get_tile_visible_count(uint32_t(t));
 		if (_tiles[t].is_valid() && visible != _tile_visible[t]) {
 			gdx::RenderingServer::multimesh_set_visible_instances(_tiles[t], visible);
 			_tile_visible[t] = visible;
@@ -651,34 +651,34 @@ void SunflowerSimulation::update(double p_delta) {
 }
 
 bool SunflowerSimulation::_is_plant(int64_t p_plant) const {
-	SF_FAIL_COND_V_MSG(p_plant < 0 || p_plant >= int64_t(_sim.get_plant_count()), false,
+	SF_FAIL_COND_V_MSG(p_plant < 0 || p_plant >= int64_t(_sim.plants().get_plant_count()), false,
 			"plant index " + std::to_string(p_plant) + " is out of range (the field has " +
-					std::to_string(_sim.get_plant_count()) + " plants)");
+					std::to_string(_sim.plants().get_plant_count()) + " plants)");
 	return true;
 }
 
 bool SunflowerSimulation::_is_tile(int64_t p_tile) const {
-	SF_FAIL_COND_V_MSG(p_tile < 0 || p_tile >= int64_t(_sim.get_tile_count()), false,
-			"tile " + std::to_string(p_tile) + " is out of range (the field has " + std::to_string(_sim.get_tile_count()) +
+	SF_FAIL_COND_V_MSG(p_tile < 0 || p_tile >= int64_t(_sim.tiles().get_tile_count()), false,
+			"tile " + std::to_string(p_tile) + " is out of range (the field has " + std::to_string(_sim.tiles().get_tile_count()) +
 					" tiles)");
 	return true;
 }
 
 bool SunflowerSimulation::_is_chunk(int64_t p_chunk) const {
-	SF_FAIL_COND_V_MSG(p_chunk < 0 || p_chunk >= int64_t(_sim.get_chunk_count()), false,
+	SF_FAIL_COND_V_MSG(p_chunk < 0 || p_chunk >= int64_t(_sim.plants().get_chunk_count()), false,
 			"chunk " + std::to_string(p_chunk) + " is out of range (the field has " +
-					std::to_string(_sim.get_chunk_count()) + " chunks)");
+					std::to_string(_sim.plants().get_chunk_count()) + " chunks)");
 	return true;
 }
 
 int64_t SunflowerSimulation::get_plant_count() const {
-	return _sim.get_plant_count();
+	return _sim.plants().get_plant_count();
 }
 
 gdx::PackedInt32Array SunflowerSimulation::get_lod_counts_by_species() const {
 	std::vector<int32_t> values;
-	for (uint32_t species = 0; species < _sim.get_species_count(); ++species) {
-		for (int64_t count : _sim.get_lod_counts(species)) {
+	for (uint32_t species = 0; species < _sim.plants().get_species_count(); ++species) {
+		for (int64_t count : _sim.near().get_lod_counts(species)) {
 			values.push_back(static_cast<int32_t>(count));
 		}
 	}
@@ -688,11 +688,11 @@ gdx::PackedInt32Array SunflowerSimulation::get_lod_counts_by_species() const {
 }
 
 int64_t SunflowerSimulation::get_chunk_species(int64_t p_chunk) const {
-	return _is_chunk(p_chunk) ? int64_t(_sim.get_layout().chunks[size_t(p_chunk)].species) : -1;
+	return _is_chunk(p_chunk) ? int64_t(_sim.plants().get_layout().chunks[size_t(p_chunk)].species) : -1;
 }
 
 gdx::PackedInt32Array SunflowerSimulation::get_lod_counts() const {
-	const auto counts = _sim.get_lod_counts();
+	const auto counts = _sim.near().get_lod_counts();
 	int32_t values[LOD_COUNT];
 	for (size_t i = 0; i < LOD_COUNT; ++i) {
 		values[i] = static_cast<int32_t>(counts[i]);
@@ -706,15 +706,15 @@ gdx::Vector3 SunflowerSimulation::get_plant_position(int64_t p_plant) const {
 	if (!_is_plant(p_plant)) {
 		return gdx::Vector3{};
 	}
-	return gdx::to_godot(_sim.get_layout().plants[size_t(p_plant)].root());
+	return gdx::to_godot(_sim.plants().get_layout().plants[size_t(p_plant)].root());
 }
 
 int64_t SunflowerSimulation::get_plant_lod(int64_t p_plant) const {
-	return _is_plant(p_plant) ? _sim.get_plant_lod(uint32_t(p_plant)) : -1;
+	return _is_plant(p_plant) ? _sim.near().get_plant_lod(uint32_t(p_plant)) : -1;
 }
 
 int64_t SunflowerSimulation::get_plant_tile_level(int64_t p_plant) const {
-	return _is_plant(p_plant) ? int64_t(_sim.plant_tile_level(_sim.get_layout().plants[size_t(p_plant)])) : -1;
+	return _is_plant(p_plant) ? int64_t(_sim.tiles().plant_tile_level(_sim.plants().get_layout().plants[size_t(p_plant)])) : -1;
 }
 
 gdx::PackedFloat32Array SunflowerSimulation::get_plant_parts(int64_t p_plant) const {
@@ -723,7 +723,7 @@ gdx::PackedFloat32Array SunflowerSimulation::get_plant_parts(int64_t p_plant) co
 		return out;
 	}
 	PartTransforms parts;
-	_sim.get_plant_parts(uint32_t(p_plant), parts);
+	_sim.near().get_plant_parts(uint32_t(p_plant), parts);
 	out.resize(PART_COUNT * TRANSFORM_FLOATS);
 	float *data = out.data();
 	for (uint32_t part = 0; part < PART_COUNT; ++part) {
@@ -733,15 +733,15 @@ gdx::PackedFloat32Array SunflowerSimulation::get_plant_parts(int64_t p_plant) co
 }
 
 int64_t SunflowerSimulation::get_bucket_instance_count(int64_t p_bucket) const {
-	return p_bucket >= 0 && p_bucket < int64_t(_sim.get_bucket_count()) ? _sim.get_bucket(uint32_t(p_bucket)).get_count() : 0;
+	return p_bucket >= 0 && p_bucket < int64_t(_sim.near().get_bucket_count()) ? _sim.near().get_bucket(uint32_t(p_bucket)).get_count() : 0;
 }
 
 gdx::PackedByteArray SunflowerSimulation::get_filled_buckets() const {
 	gdx::PackedByteArray out;
-	out.resize(_sim.get_bucket_count());
+	out.resize(_sim.near().get_bucket_count());
 	uint8_t *filled = out.data();
-	for (uint32_t b = 0; b < _sim.get_bucket_count(); ++b) {
-		filled[b] = _sim.get_bucket(b).get_count() > 0 ? 1 : 0;
+	for (uint32_t b = 0; b < _sim.near().get_bucket_count(); ++b) {
+		filled[b] = _sim.near().get_bucket(b).get_count() > 0 ? 1 : 0;
 	}
 	return out;
 }
@@ -753,36 +753,36 @@ int64_t SunflowerSimulation::get_last_update_usec() const {
 void SunflowerSimulation::set_worker_threads(int64_t p_threads) {
 	SF_FAIL_COND_MSG(p_threads < 0 || p_threads > param::MAX_THREADS,
 			"worker threads " + std::to_string(p_threads) + " is out of range (0 to " + std::to_string(param::MAX_THREADS) + ")");
-	_sim.set_worker_threads(static_cast<uint32_t>(p_threads));
+	_sim.near().set_worker_threads(static_cast<uint32_t>(p_threads));
 }
 
 void SunflowerSimulation::set_pushers(const gdx::PackedFloat32Array &p_pushers) {
 	SF_FAIL_COND_MSG(p_pushers.size() % 4 != 0,
 			"set_pushers takes 4 floats per pusher (x, y, z, radius), got " + std::to_string(p_pushers.size()));
 	gdx::to_core_pushers(p_pushers, _pushers);
-	_sim.set_pushers(_pushers.data(), _pushers.size());
+	_sim.near().get_pushes().set_pushers(_pushers.data(), _pushers.size());
 }
 
 void SunflowerSimulation::set_push_params(double p_strength, double p_recovery_seconds) {
-	_sim.set_push_params(float(p_strength), float(p_recovery_seconds)); // the core applies param::PUSH_*
+	_sim.near().get_pushes().set_params(float(p_strength), float(p_recovery_seconds)); // the core applies param::PUSH_*
 }
 
 int64_t SunflowerSimulation::get_pushed_count() const {
-	return _sim.get_pushed_count();
+	return _sim.near().get_pushes().get_pushed_count();
 }
 
 gdx::PackedInt32Array SunflowerSimulation::get_plants_near(gdx::Vector3 p_position, double p_radius) const {
 	std::vector<uint32_t> plants;
-	_sim.find_plants_near(gdx::to_core_ground(p_position), float(p_radius), plants);
+	_sim.plants().find_plants_near(gdx::to_core_ground(p_position), float(p_radius), plants);
 	return gdx::to_godot_indices(plants);
 }
 
 int64_t SunflowerSimulation::get_worker_threads() const {
-	return _sim.get_worker_threads();
+	return _sim.near().get_worker_threads();
 }
 
 int64_t SunflowerSimulation::get_last_task_count() const {
-	return _sim.get_last_task_count();
+	return _sim.near().get_last_task_count();
 }
 
 int64_t SunflowerSimulation::get_memory_bytes() const {
@@ -790,7 +790,7 @@ int64_t SunflowerSimulation::get_memory_bytes() const {
 }
 
 double SunflowerSimulation::get_time() const {
-	return _sim.get_time();
+	return _sim.near().get_time();
 }
 
 // --- The parameter table, for the node's setters -------------------------------------------------

@@ -193,24 +193,24 @@ TEST_CASE("on ground: parts, impostors and bounds stand on the roots; tilt leans
 	ground.kind = Ground::GRID;
 	ground.grid = plane(11, 11, glm::vec2(0.0f), glm::vec2(10.0f, 10.0f));
 	sim.set_ground(ground);
-	REQUIRE(sim.get_plant_count() == 400);
-	const float plant_top = sim.get_shape().height * sim.get_shape().part_scale;
-	for (uint32_t c = 0; c < sim.get_chunk_count(); ++c) {
-		const ChunkBounds bounds = sim.get_chunk_bounds(c);
-		const Chunk &chunk = sim.get_layout().chunks[c];
+	REQUIRE(sim.plants().get_plant_count() == 400);
+	const float plant_top = sim.plants().get_shape().height * sim.plants().get_shape().part_scale;
+	for (uint32_t c = 0; c < sim.plants().get_chunk_count(); ++c) {
+		const ChunkBounds bounds = sim.plants().get_chunk_bounds(c);
+		const Chunk &chunk = sim.plants().get_layout().chunks[c];
 		for (uint32_t k = 0; k < chunk.count; ++k) {
-			const Plant &plant = sim.get_layout().plants[sim.get_layout().chunk_plants[chunk.first + k]];
+			const Plant &plant = sim.plants().get_layout().plants[sim.plants().get_layout().chunk_plants[chunk.first + k]];
 			CHECK(bounds.min.y <= plant.ground);
 			CHECK(bounds.max.y >= plant.ground + plant_top);
 		}
 	}
 	PartTransforms parts;
-	std::vector<float> impostors(size_t(sim.get_layout().chunks[0].count) * FAR_FLOATS_PER_INSTANCE);
-	sim.write_chunk_instances(0, impostors.data());
-	const Plant &first = sim.get_layout().plants[sim.get_layout().chunk_plants[0]];
+	std::vector<float> impostors(size_t(sim.plants().get_layout().chunks[0].count) * FAR_FLOATS_PER_INSTANCE);
+	sim.plants().write_chunk_instances(0, impostors.data());
+	const Plant &first = sim.plants().get_layout().plants[sim.plants().get_layout().chunk_plants[0]];
 	CHECK(read_far_instance(impostors.data()).root.y == first.ground);
 	CHECK(read_far_instance(impostors.data()).lean == glm::vec2(0.0f)); // upright
-	sim.get_plant_parts(sim.get_layout().chunk_plants[0], parts);
+	sim.near().get_plant_parts(sim.plants().get_layout().chunk_plants[0], parts);
 	CHECK(parts.origin[0].y == doctest::Approx(first.ground));
 	CHECK(glm::distance(parts.origin[0], first.root()) < 1e-5f);
 
@@ -220,16 +220,16 @@ TEST_CASE("on ground: parts, impostors and bounds stand on the roots; tilt leans
 	sim.set_ground(ground);
 	const glm::vec3 normal = glm::normalize(glm::vec3(-0.5f, 1.0f, 0.25f));
 	const float half_step = 0.5f / 127.0f * std::sqrt(2.0f) + 1e-4f;
-	sim.get_plant_parts(7, parts);
+	sim.near().get_plant_parts(7, parts);
 	CHECK(glm::distance(glm::normalize(parts.basis[0][1]), normal) < half_step);
 	CHECK(glm::distance(glm::normalize(parts.basis[2][1]), normal) < half_step);
 	const glm::vec3 mesh_up = glm::normalize(parts.basis[0][1]);
-	CHECK(glm::distance(parts.origin[0], sim.get_layout().plants[7].root()) < 1e-5f);
-	sim.write_chunk_instances(0, impostors.data());
-	const uint32_t tilted = sim.get_layout().plants[7].chunk == 0 ? 7 : 0;
-	const auto &order = sim.get_layout().chunk_plants;
+	CHECK(glm::distance(parts.origin[0], sim.plants().get_layout().plants[7].root()) < 1e-5f);
+	sim.plants().write_chunk_instances(0, impostors.data());
+	const uint32_t tilted = sim.plants().get_layout().plants[7].chunk == 0 ? 7 : 0;
+	const auto &order = sim.plants().get_layout().chunk_plants;
 	const size_t slot = size_t(std::find(order.begin(), order.end(), tilted) - order.begin());
-	REQUIRE(slot < sim.get_layout().chunks[0].count);
+	REQUIRE(slot < sim.plants().get_layout().chunks[0].count);
 	// The record keeps the same steps: the impostor stands exactly as the mesh does (on a plane every
 	// plant leans alike).
 	const glm::vec3 impostor_up = lean_rotation(read_far_instance(impostors.data() + slot * FAR_FLOATS_PER_INSTANCE).lean)[1];
@@ -238,7 +238,7 @@ TEST_CASE("on ground: parts, impostors and bounds stand on the roots; tilt leans
 	// Half tilted: between upright and the normal.
 	ground.tilt = 0.5f;
 	sim.set_ground(ground);
-	sim.get_plant_parts(7, parts);
+	sim.near().get_plant_parts(7, parts);
 	const glm::vec3 half = glm::normalize(parts.basis[0][1]);
 	CHECK(half.y > normal.y);
 	CHECK(half.y < 1.0f);
@@ -252,19 +252,19 @@ TEST_CASE("on ground: LOD distances are measured from the plant on its hill, and
 	ground.kind = Ground::HEIGHTS;
 	ground.heights.assign(400, 30.0f); // a plateau 30 m up
 	sim.set_ground(ground);
-	sim.set_observer(glm::vec3(5.0f, 1.0f, 5.0f)); // standing below the plateau: 29 m from the plants
+	sim.near().set_observer(glm::vec3(5.0f, 1.0f, 5.0f)); // standing below the plateau: 29 m from the plants
 	sim.update(0.0f);
-	CHECK(sim.get_lod_counts()[LOD_MESH_1] == 0);
-	sim.set_observer(glm::vec3(5.0f, 31.5f, 5.0f)); // on it
+	CHECK(sim.near().get_lod_counts()[LOD_MESH_1] == 0);
+	sim.near().set_observer(glm::vec3(5.0f, 31.5f, 5.0f)); // on it
 	sim.update(0.0f);
-	CHECK(sim.get_lod_counts()[LOD_MESH_1] > 0);
+	CHECK(sim.near().get_lod_counts()[LOD_MESH_1] > 0);
 
 	const Pusher low{ glm::vec3(5.0f, 0.5f, 5.0f), 1.0f };
-	sim.set_pushers(&low, 1);
+	sim.near().get_pushes().set_pushers(&low, 1);
 	sim.update(0.1f);
-	CHECK(sim.get_pushed_count() == 0); // under the plateau
+	CHECK(sim.near().get_pushes().get_pushed_count() == 0); // under the plateau
 	const Pusher walking{ glm::vec3(5.0f, 30.5f, 5.0f), 1.0f };
-	sim.set_pushers(&walking, 1);
+	sim.near().get_pushes().set_pushers(&walking, 1);
 	sim.update(0.1f);
-	CHECK(sim.get_pushed_count() > 0);
+	CHECK(sim.near().get_pushes().get_pushed_count() > 0);
 }

@@ -84,9 +84,9 @@ TEST_CASE("parameters: the models apply the rules themselves") {
 
 	FieldSimulation sim;
 	sim.set_plant_height(-2.0f);
-	CHECK(sim.get_shape().part_scale * sim.get_shape().parts_height() == doctest::Approx(2.0f));
+	CHECK(sim.plants().get_shape().part_scale * sim.plants().get_shape().parts_height() == doctest::Approx(2.0f));
 	sim.set_plant_height(3.0f);
-	CHECK(sim.get_shape().part_scale == doctest::Approx(1.0f));
+	CHECK(sim.plants().get_shape().part_scale == doctest::Approx(1.0f));
 }
 
 TEST_CASE("parameters: LOD distances must be four positive increasing numbers") {

@@ -61,9 +61,9 @@ void load(FieldSimulation &r_sim, uint32_t p_threads) {
 	r_sim.set_layout_params(layout);
 	WindParams wind;
 	wind.power = 3.0f;
-	r_sim.set_wind(wind);
-	r_sim.set_worker_threads(p_threads);
-	r_sim.set_parallel_min_plants(0);
+	r_sim.near().set_wind(wind);
+	r_sim.near().set_worker_threads(p_threads);
+	r_sim.near().set_parallel_min_plants(0);
 }
 
 } // namespace
@@ -73,49 +73,49 @@ TEST_CASE("near plants moved on two threads are written exactly as on one") {
 	FieldSimulation parallel;
 	load(serial, 1);
 	load(parallel, 2);
-	CHECK(serial.get_worker_threads() == 1);
-	CHECK(parallel.get_worker_threads() == 2);
+	CHECK(serial.near().get_worker_threads() == 1);
+	CHECK(parallel.near().get_worker_threads() == 2);
 	for (int frame = 0; frame < 40; ++frame) {
 		const glm::vec3 eye(10.0f + float(frame) * 0.7f, 1.7f, 30.0f);
-		serial.set_observer(eye);
-		parallel.set_observer(eye);
+		serial.near().set_observer(eye);
+		parallel.near().set_observer(eye);
 		serial.update(0.05f);
 		parallel.update(0.05f);
-		REQUIRE(parallel.get_last_task_count() == 2 * FieldSimulation::TASKS_PER_THREAD);
-		CHECK(serial.get_last_task_count() == 1);
+		REQUIRE(parallel.near().get_last_task_count() == 2 * NearField::TASKS_PER_THREAD);
+		CHECK(serial.near().get_last_task_count() == 1);
 		for (uint32_t b = 0; b < BUCKET_COUNT; ++b) {
-			const InstanceBuffer &one = serial.get_bucket(b);
-			const InstanceBuffer &two = parallel.get_bucket(b);
+			const InstanceBuffer &one = serial.near().get_bucket(b);
+			const InstanceBuffer &two = parallel.near().get_bucket(b);
 			REQUIRE(one.get_count() == two.get_count());
 			CHECK(std::memcmp(one.get_data(), two.get_data(), size_t(one.get_count()) * one.get_stride() * sizeof(float)) == 0);
 			CHECK(one.get_bounds_low() == two.get_bounds_low()); // the tasks' boxes merged
 			CHECK(one.get_bounds_high() == two.get_bounds_high());
 		}
 	}
-	CHECK(serial.get_bucket(mesh_bucket(0, 0)).get_count() > 0);
+	CHECK(serial.near().get_bucket(mesh_bucket(0, 0)).get_count() > 0);
 }
 
 TEST_CASE("small near work stays on one thread; the thread count can change and go back to one") {
 	FieldSimulation sim;
 	load(sim, 2);
-	sim.set_parallel_min_plants(1u << 30);
-	sim.set_observer({ 30.0f, 1.7f, 30.0f });
+	sim.near().set_parallel_min_plants(1u << 30);
+	sim.near().set_observer({ 30.0f, 1.7f, 30.0f });
 	sim.update(0.05f);
-	CHECK(sim.get_active_plant_count() > 0);
-	CHECK(sim.get_last_task_count() == 1);
-	sim.set_parallel_min_plants(sim.get_active_plant_count());
+	CHECK(sim.near().get_active_plant_count() > 0);
+	CHECK(sim.near().get_last_task_count() == 1);
+	sim.near().set_parallel_min_plants(sim.near().get_active_plant_count());
 	sim.update(0.05f);
-	CHECK(sim.get_last_task_count() == 2 * FieldSimulation::TASKS_PER_THREAD);
-	sim.set_worker_threads(3);
-	CHECK(sim.get_worker_threads() == 3);
+	CHECK(sim.near().get_last_task_count() == 2 * NearField::TASKS_PER_THREAD);
+	sim.near().set_worker_threads(3);
+	CHECK(sim.near().get_worker_threads() == 3);
 	sim.update(0.05f);
-	CHECK(sim.get_last_task_count() == 3 * FieldSimulation::TASKS_PER_THREAD);
-	sim.set_worker_threads(1);
+	CHECK(sim.near().get_last_task_count() == 3 * NearField::TASKS_PER_THREAD);
+	sim.near().set_worker_threads(1);
 	sim.update(0.05f);
-	CHECK(sim.get_last_task_count() == 1);
-	sim.set_worker_threads(0);
-	CHECK(sim.get_worker_threads() >= 1);
-	CHECK(sim.get_worker_threads() <= param::MAX_AUTO_THREADS);
+	CHECK(sim.near().get_last_task_count() == 1);
+	sim.near().set_worker_threads(0);
+	CHECK(sim.near().get_worker_threads() >= 1);
+	CHECK(sim.near().get_worker_threads() <= param::MAX_AUTO_THREADS);
 }
 
 TEST_CASE("parallel steady state allocates nothing") {
@@ -123,7 +123,7 @@ TEST_CASE("parallel steady state allocates nothing") {
 	load(sim, 2);
 	const auto walk = [&]() {
 		for (float x = 5.0f; x < 55.0f; x += 0.5f) {
-			sim.set_observer({ x, 1.7f, 30.0f });
+			sim.near().set_observer({ x, 1.7f, 30.0f });
 			sim.update(0.05f);
 		}
 	};
@@ -135,11 +135,11 @@ TEST_CASE("parallel steady state allocates nothing") {
 	const size_t bytes = sim.get_memory_bytes();
 	std::vector<const float *> data;
 	for (uint32_t b = 0; b < BUCKET_COUNT; ++b) {
-		data.push_back(sim.get_bucket(b).get_data());
+		data.push_back(sim.near().get_bucket(b).get_data());
 	}
 	walk();
 	CHECK(sim.get_memory_bytes() == bytes);
 	for (uint32_t b = 0; b < BUCKET_COUNT; ++b) {
-		CHECK(sim.get_bucket(b).get_data() == data[b]);
+		CHECK(sim.near().get_bucket(b).get_data() == data[b]);
 	}
 }

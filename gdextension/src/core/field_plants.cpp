@@ -1,0 +1,238 @@
+#include "field_plants.h"
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+namespace sunflower {
+
+bool FieldPlants::load_map(const std::string &p_text, const std::u32string &p_legend, const std::u32string &p_plant_symbols,
+		const std::string &p_source, const MapLimits &p_limits, MapError &r_error) {
+	FieldMap parsed;
+	if (!parse_field_map(p_text, p_legend, p_plant_symbols, p_source, p_limits, parsed, r_error)) {
+		return false;
+	}
+	_map = std::move(parsed);
+	_plant_symbols = p_plant_symbols;
+	_rebuild();
+	return true;
+}
+
+void FieldPlants::replace_map(FieldMap p_map) {
+	_map = std::move(p_map);
+	_rebuild();
+}
+
+bool FieldPlants::paint_map(const glm::vec2 &p_center, float p_radius, const CellContent &p_content, float p_density,
+		uint64_t p_seed, bool p_relayout, std::vector<int> &r_changed) {
+	const size_t before = r_changed.size();
+	paint_cells(_map, p_center.x, p_center.y, p_radius, p_content, p_density, p_seed, r_changed);
+	if (!p_relayout || r_changed.size() == before) {
+		return false;
+	}
+	_rebuild();
+	return true;
+}
+
+bool FieldPlants::set_layout_params(const LayoutParams &p_params) {
+	LayoutParams params = p_params;
+	params.cell_size = sanitize(param::CELL_SIZE, p_params.cell_size, _layout_params.cell_size);
+	params.chunk_size = sanitize(param::CHUNK_SIZE, p_params.chunk_size, _layout_params.chunk_size);
+	params.tile_merge_distance =
+			sanitize(param::TILE_MERGE_DISTANCE, p_params.tile_merge_distance, _layout_params.tile_merge_distance);
+	for (size_t s = 0; s < params.varieties.size(); ++s) {
+		PlantVariety &variety = params.varieties[s];
+		const PlantVariety &current = _layout_params.varieties[s];
+		variety.yaw_range = sanitize(param::PLANT_YAW_RANGE, variety.yaw_range, current.yaw_range);
+		variety.scale_min = sanitize(param::PLANT_SCALE_MIN, variety.scale_min, current.scale_min);
+		variety.scale_max = std::max(variety.scale_min, sanitize(param::PLANT_SCALE_MAX, variety.scale_max, current.scale_max));
+		variety.brightness = sanitize(param::PLANT_BRIGHTNESS_VARIATION, variety.brightness, current.brightness);
+		variety.tint = sanitize(param::PLANT_TINT_VARIATION, variety.tint, current.tint);
+	}
+	if (params == _layout_params) {
+		return false;
+	}
+	_layout_params = params;
+	_rebuild();
+	return true;
+}
+
+void FieldPlants::set_ground(Ground p_ground) {
+	p_ground.tilt = sanitize(param::GROUND_TILT, p_ground.tilt, _ground.tilt);
+	_ground = std::move(p_ground);
+	_rebuild();
+}
+
+bool FieldPlants::set_shape(const PlantShape &p_shape, uint32_t p_species) {
+	if (p_species >= _shapes.size()) {
+		return false;
+	}
+	PlantShape &current = _shapes[p_species];
+	const PlantShape defaults;
+	PlantShape shape = p_shape;
+	for (int i = 0; i < 3; ++i) {
+		if (!(shape.part_lengths[i] > 0.0f) || !std::isfinite(shape.part_lengths[i])) {
+			shape.part_lengths[i] = defaults.part_lengths[i];
+		}
+	}
+	shape.middle_variation = sanitize(param::PLANT_MIDDLE_VARIATION, shape.middle_variation, current.middle_variation);
+	shape.stiffness = sanitize(param::PLANT_STIFFNESS, shape.stiffness, current.stiffness);
+	shape.height = shape.height > 0.0f && std::isfinite(shape.height) ? shape.height : defaults.height;
+	shape.cull_radius = shape.cull_radius > 0.0f && std::isfinite(shape.cull_radius) ? shape.cull_radius : defaults.cull_radius;
+	shape.part_scale = shape.part_scale > 0.0f && std::isfinite(shape.part_scale) ? shape.part_scale : current.part_scale;
+	const bool drawn_otherwise = shape.whole != current.whole;
+	current = shape;
+	_chunk_signatures.clear(); // the impostors' scale may have changed
+	return drawn_otherwise;
+}
+
+PlantShape FieldPlants::shape_of_height(float p_metres, uint32_t p_species) const {
+	PlantShape shape = get_shape(p_species);
+	const float parts = shape.parts_height();
+	shape.part_scale = sanitize(param::PLANT_HEIGHT, p_metres, shape.part_scale * parts) / parts;
+	return shape;
+}
+
+void FieldPlants::_rebuild() {
+	build_layout(_map, _layout_params, _ground, _layout);
+	_chunk_cells.assign(_layout.chunks.size(), 0);
+	for (size_t cell = 0; cell + 1 < _layout.grid_chunks.size(); ++cell) {
+		for (uint32_t c = _layout.grid_chunks[cell]; c < _layout.grid_chunks[cell + 1]; ++c) {
+			_chunk_cells[c] = static_cast<uint32_t>(cell);
+		}
+	}
+	_chunk_signatures.clear(); // the shape or variety may have changed too: computed anew
+}
+
+ChunkBounds FieldPlants::get_chunk_bounds(uint32_t p_chunk) const {
+	const Chunk &chunk = _layout.chunks[p_chunk];
+	const PlantShape &shape = _shapes[chunk.species];
+	const float scale = shape.part_scale * chunk.scale_max;
+	const float reach = shape.cull_radius * scale;
+	ChunkBounds bounds;
+	bounds.min = glm::vec3(chunk.min.x - reach, chunk.ground_min, chunk.min.y - reach);
+	bounds.max = glm::vec3(chunk.max.x + reach, chunk.ground_max + shape.height * scale * 1.05f, chunk.max.y + reach);
+	return bounds;
+}
+
+GridRange FieldPlants::grid_range(const glm::vec2 &p_center, float p_reach) const {
+	const float size = _layout.chunk_size;
+	GridRange range;
+	range.x0 = std::max(0, static_cast<int>(std::floor((p_center.x - p_reach) / size)));
+	range.x1 = std::min(_layout.grid_x - 1, static_cast<int>(std::floor((p_center.x + p_reach) / size)));
+	range.z0 = std::max(0, static_cast<int>(std::floor((p_center.y - p_reach) / size)));
+	range.z1 = std::min(_layout.grid_z - 1, static_cast<int>(std::floor((p_center.y + p_reach) / size)));
+	return range;
+}
+
+void FieldPlants::find_plants_near(const glm::vec2 &p_center, float p_radius, std::vector<uint32_t> &r_plants) const {
+	if (_layout.grid_chunks.empty() || !(p_radius >= 0.0f) || !std::isfinite(p_radius) || !std::isfinite(p_center.x) ||
+			!std::isfinite(p_center.y)) {
+		return;
+	}
+	const GridRange cells = grid_range(p_center, p_radius);
+	const float radius_sq = p_radius * p_radius;
+	for (int z = cells.z0; z <= cells.z1; ++z) {
+		for (int x = cells.x0; x <= cells.x1; ++x) {
+			const size_t cell = static_cast<size_t>(z) * size_t(_layout.grid_x) + size_t(x);
+			for (uint32_t c = _layout.grid_chunks[cell]; c < _layout.grid_chunks[cell + 1]; ++c) {
+				const Chunk &chunk = _layout.chunks[c];
+				for (uint32_t k = 0; k < chunk.count; ++k) {
+					const uint32_t index = _layout.chunk_plants[chunk.first + k];
+					const glm::vec2 d = _layout.plants[index].position - p_center;
+					if (glm::dot(d, d) < radius_sq) {
+						r_plants.push_back(index);
+					}
+				}
+			}
+		}
+	}
+}
+
+float FieldPlants::get_plant_reach() const {
+	float reach = 0.0f;
+	for (uint32_t species = 0; species < get_species_count(); ++species) {
+		const PlantShape &shape = _shapes[species];
+		reach = std::max(reach, shape.cull_radius * shape.part_scale * _layout_params.varieties[species].scale_max);
+	}
+	return reach;
+}
+
+float FieldPlants::plant_distance_sq(const Plant &p_plant, const glm::vec3 &p_eye) const {
+	const PlantShape &shape = _shapes[species_of(p_plant)];
+	const glm::vec3 d = p_eye - (p_plant.root() + glm::vec3(0.0f, 0.5f * shape.height * shape.part_scale * p_plant.scale, 0.0f));
+	return glm::dot(d, d);
+}
+
+FarInstance FieldPlants::far_instance(const Plant &p_plant, uint32_t p_species) const {
+	FarInstance instance;
+	instance.root = p_plant.root();
+	instance.yaw = p_plant.yaw;
+	instance.scale = _shapes[p_species].part_scale * p_plant.scale;
+	instance.lean = p_plant.lean();
+	instance.tone = p_plant.tone(_layout_params.varieties[p_species]);
+	return instance;
+}
+
+void FieldPlants::write_impostor(float *r_out, const Plant &p_plant, float p_share) const {
+	write_far_instance(r_out, far_instance(p_plant, species_of(p_plant)));
+	r_out[FAR_CELL_OR_SHARE] = p_share;
+}
+
+void FieldPlants::write_records(uint32_t p_chunk, const uint32_t *p_plants, uint32_t p_count, float *r_out,
+		uint32_t p_levels_above) const {
+	const uint32_t species = _layout.chunks[p_chunk].species;
+	for (uint32_t k = 0; k < p_count; ++k) {
+		FarInstance instance = far_instance(_layout.plants[p_plants[k]], species);
+		instance.cell = _chunk_cells[p_chunk];
+		instance.levels_above = p_levels_above;
+		write_far_instance(r_out + size_t(k) * FAR_FLOATS_PER_INSTANCE, instance);
+	}
+}
+
+void FieldPlants::write_chunk_instances(uint32_t p_chunk, float *r_out) const {
+	const Chunk &chunk = _layout.chunks[p_chunk];
+	write_records(p_chunk, _layout.chunk_plants.data() + chunk.first, chunk.count, r_out);
+}
+
+uint64_t FieldPlants::get_chunk_key(uint32_t p_chunk) const {
+	return uint64_t(_chunk_cells[p_chunk]) * FieldMap::MAX_SPECIES + _layout.chunks[p_chunk].species;
+}
+
+uint64_t FieldPlants::get_chunk_signature(uint32_t p_chunk) const {
+	if (p_chunk < _chunk_signatures.size() && _chunk_signatures[p_chunk] != 0) {
+		return _chunk_signatures[p_chunk];
+	}
+	const uint32_t count = _layout.chunks[p_chunk].count;
+	std::vector<float> instances(size_t(count) * FAR_FLOATS_PER_INSTANCE);
+	write_chunk_instances(p_chunk, instances.data());
+	// FNV-1a over the bytes of the instance data, never 0.
+	uint64_t hash = 1469598103934665603ull ^ count;
+	const uint8_t *bytes = reinterpret_cast<const uint8_t *>(instances.data());
+	for (size_t i = 0; i < instances.size() * sizeof(float); ++i) {
+		hash = (hash ^ bytes[i]) * 1099511628211ull;
+	}
+	return hash == 0 ? 1 : hash;
+}
+
+void FieldPlants::compute_chunk_signatures() {
+	_chunk_signatures.assign(_layout.chunks.size(), 0);
+	for (uint32_t c = 0; c < _layout.chunks.size(); ++c) {
+		_chunk_signatures[c] = get_chunk_signature(c);
+	}
+}
+
+size_t FieldPlants::get_memory_bytes() const {
+	size_t bytes = _map.plants.capacity() + _map.objects.capacity() * sizeof(MapObject);
+	bytes += _layout.plants.capacity() * sizeof(Plant) + _layout.chunks.capacity() * sizeof(Chunk);
+	bytes += _layout.chunk_plants.capacity() * sizeof(uint32_t);
+	bytes += _layout.grid_chunks.capacity() * sizeof(uint32_t) + _layout.object_ground.capacity() * sizeof(float);
+	bytes += (_ground.grid.heights.capacity() + _ground.heights.capacity() + _ground.normals.capacity()) * sizeof(float);
+	bytes += _chunk_cells.capacity() * sizeof(uint32_t) + _chunk_signatures.capacity() * sizeof(uint64_t);
+	return bytes;
+}
+
+} // namespace sunflower

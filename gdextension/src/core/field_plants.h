@@ -1,0 +1,120 @@
+#pragma once
+// The field's plants: the map they come from, the layout that stands them on the ground, each
+// species' form, and what is derived from those alone (chunk bounds, grid cells, the far records
+// and their signatures). The other units of the simulation (near_field.h, far_tiles.h) read the
+// plants from here; only FieldSimulation changes them, and rebuilds the others when a call here says
+// the layout was rebuilt (every plant index and chunk may then have changed).
+#include "field_layout.h"
+#include "field_map.h"
+#include "ground.h"
+#include "instance_buffer.h"
+#include "plant_shape.h"
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace sunflower {
+
+struct ChunkBounds {
+	glm::vec3 min{ 0.0f };
+	glm::vec3 max{ 0.0f };
+	glm::vec3 center() const { return (min + max) * 0.5f; }
+};
+
+// The grid cells (chunk_size squares) within a reach of a point (x, z), clamped to the grid; empty
+// (x1 < x0) for a field without plants.
+struct GridRange {
+	int x0 = 0, x1 = -1, z0 = 0, z1 = -1;
+};
+
+class FieldPlants {
+public:
+	// Reads a map with the legend's plant symbols (species 1, 2, …; '*' is species 0). On success
+	// replaces the field and rebuilds the layout; on failure keeps the current field and fills r_error.
+	bool load_map(const std::string &p_text, const std::u32string &p_legend, const std::u32string &p_plant_symbols,
+			const std::string &p_source, const MapLimits &p_limits, MapError &r_error);
+	// Replaces the map (one already read, e.g. edited) and rebuilds the layout.
+	void replace_map(FieldMap p_map);
+	// A brush stroke on the map (see paint_cells; p_center and p_radius in cells): the changed cells are
+	// appended to r_changed. Rebuilds the layout when p_relayout and anything changed; returns whether
+	// it did.
+	bool paint_map(const glm::vec2 &p_center, float p_radius, const CellContent &p_content, float p_density, uint64_t p_seed,
+			bool p_relayout, std::vector<int> &r_changed);
+	// Sanitises the parameters (an invalid value keeps the current one); rebuilds the layout and
+	// returns true when they differ from the current ones.
+	bool set_layout_params(const LayoutParams &p_params);
+	// Stands the plants on p_ground (rebuilding the layout). Plants whose cells have no ground go.
+	void set_ground(Ground p_ground);
+	// A species' form (species 0: '*'); a length, height or radius that is not finite and positive
+	// keeps the built-in sunflower's. Returns whether the species is now drawn otherwise (whole or
+	// part by part), which changes its buckets' records.
+	bool set_shape(const PlantShape &p_shape, uint32_t p_species);
+	// The form with the part scale for a plant p_metres tall from its root to the top of its parts
+	// (param::PLANT_HEIGHT rules).
+	PlantShape shape_of_height(float p_metres, uint32_t p_species) const;
+
+	const FieldMap &get_map() const { return _map; }
+	// The legend's plant symbols the map was read with (species 1, 2, …).
+	const std::u32string &get_plant_symbols() const { return _plant_symbols; }
+	const LayoutParams &get_layout_params() const { return _layout_params; }
+	const Ground &get_ground() const { return _ground; }
+	const FieldLayout &get_layout() const { return _layout; }
+	const PlantShape &get_shape(uint32_t p_species = 0) const { return _shapes[p_species % _shapes.size()]; }
+	uint32_t get_species_count() const { return uint32_t(_map.species_count); }
+	uint32_t get_plant_count() const { return static_cast<uint32_t>(_layout.plants.size()); }
+	uint32_t get_chunk_count() const { return static_cast<uint32_t>(_layout.chunks.size()); }
+	// The species of a plant: its chunk's (a chunk holds one species).
+	uint32_t species_of(const Plant &p_plant) const { return _layout.chunks[p_plant.chunk].species; }
+
+	// The box that holds a chunk's plants at any bend (their culling spheres, up to their heads).
+	ChunkBounds get_chunk_bounds(uint32_t p_chunk) const;
+	// The grid cell a chunk lies in (FieldLayout: z·grid_x + x).
+	uint32_t get_chunk_cell(uint32_t p_chunk) const { return _chunk_cells[p_chunk]; }
+	GridRange grid_range(const glm::vec2 &p_center, float p_reach) const;
+	// The plants whose roots lie within p_radius of p_center (x, z), appended to r_plants.
+	void find_plants_near(const glm::vec2 &p_center, float p_radius, std::vector<uint32_t> &r_plants) const;
+	// The farthest a plant of any species reaches from its root (culling radius × the largest size).
+	float get_plant_reach() const;
+	// The square distance from p_eye to a plant's middle: on the ground this is the thesis' distance.
+	float plant_distance_sq(const Plant &p_plant, const glm::vec3 &p_eye) const;
+
+	// A plant's compact impostor record (its cell left 0).
+	FarInstance far_instance(const Plant &p_plant, uint32_t p_species) const;
+	// The near impostor bucket's record: p_share is how much of the plant the impostor draws (below 1
+	// in a cross-fade), in place of the cell.
+	void write_impostor(float *r_out, const Plant &p_plant, float p_share = 1.0f) const;
+	// The static records of p_count plants of chunk p_chunk (p_plants: their indices), each with the
+	// chunk's cell and p_levels_above (FarInstance::levels_above: the plants are all of one level).
+	void write_records(uint32_t p_chunk, const uint32_t *p_plants, uint32_t p_count, float *r_out, uint32_t p_levels_above = 0) const;
+	// All of a chunk's records, compact: count × FAR_FLOATS_PER_INSTANCE floats into r_out.
+	void write_chunk_instances(uint32_t p_chunk, float *r_out) const;
+	// Where a chunk lies: grid cell × MAX_SPECIES + species (the same in any layout of the map's size).
+	uint64_t get_chunk_key(uint32_t p_chunk) const;
+	// A hash of a chunk's records: two chunks with equal keys and signatures draw the same, so a
+	// rebuilt field can keep the old one's GPU buffers. Computed for every chunk by
+	// compute_chunk_signatures() (a worker may call it), else on demand.
+	uint64_t get_chunk_signature(uint32_t p_chunk) const;
+	void compute_chunk_signatures();
+
+	// CPU memory held for the map, layout and ground, in bytes.
+	size_t get_memory_bytes() const;
+
+private:
+	void _rebuild();
+
+	FieldMap _map;
+	std::u32string _plant_symbols;
+	LayoutParams _layout_params;
+	Ground _ground;
+	FieldLayout _layout;
+	std::array<PlantShape, FieldMap::MAX_SPECIES> _shapes{};
+	std::vector<uint32_t> _chunk_cells;
+	std::vector<uint64_t> _chunk_signatures; // 0: not computed
+};
+
+} // namespace sunflower
