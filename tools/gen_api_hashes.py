@@ -14,6 +14,7 @@ BUILTIN_METHODS = {
     for prefix, cls in (
         ("PACKED_BYTE_ARRAY", "PackedByteArray"),
         ("PACKED_INT32_ARRAY", "PackedInt32Array"),
+        ("PACKED_INT64_ARRAY", "PackedInt64Array"),
         ("PACKED_FLOAT32_ARRAY", "PackedFloat32Array"),
     )
     for method in ("size", "resize")

@@ -15,6 +15,7 @@ extends RefCounted
 
 const Native: GDScript = preload("native.gd")
 const ImpostorSet: GDScript = preload("impostor_set.gd")
+const FarTileTable: GDScript = preload("far_tile_table.gd")
 const PartMeshes: GDScript = preload("part_meshes.gd")
 ## Godot's default DirectionalLight3D.directional_shadow_max_distance: how far the sun's shadows
 ## reach when the field's viewport has no shadow-casting directional light (yet).
@@ -25,6 +26,8 @@ const CASTER_NAME: String = "ShadowCaster"
 const PART_NAMES: PackedStringArray = PartMeshes.PART_NAMES
 
 var simulation: RefCounted
+## The simulation's far tiles, read when the first tile node is made.
+var tiles: FarTileTable
 ## Tile nodes made, and taken over from the previous field, by this field's build.
 var tiles_made: int = 0
 var tiles_kept: int = 0
@@ -62,9 +65,16 @@ func reuse(previous: RefCounted) -> void:
 	_previous = previous
 	if previous == null:
 		return
-	var old_simulation: RefCounted = previous.simulation
-	for tile: int in old_simulation.get_tile_count():
-		_previous_by_key[old_simulation.get_tile_key(tile)] = tile
+	var old_tiles: FarTileTable = previous.tile_table()
+	for tile: int in old_tiles.count:
+		_previous_by_key[old_tiles.key(tile)] = tile
+
+
+## The simulation's far tiles ([member tiles]), read from it on the first call.
+func tile_table() -> FarTileTable:
+	if tiles == null:
+		tiles = FarTileTable.new(simulation)
+	return tiles
 
 
 ## Makes hidden tile nodes (or takes the previous field's, see [method reuse]) until all exist or
@@ -72,7 +82,7 @@ func reuse(previous: RefCounted) -> void:
 ## when every tile has its node.
 func make_tiles(budget_usec: int, max_draw_distance: float) -> bool:
 	var start: int = Time.get_ticks_usec()
-	var tile_count: int = simulation.get_tile_count()
+	var tile_count: int = tile_table().count
 	var slowest: int = 0  # the longest a node took in this step, to stop before the budget is overrun
 	while _tile_nodes.size() < tile_count:
 		var node_start: int = Time.get_ticks_usec()
@@ -82,8 +92,8 @@ func make_tiles(budget_usec: int, max_draw_distance: float) -> bool:
 				break
 			continue
 		tiles_made += 1
-		var aabb: AABB = simulation.get_tile_aabb(tile)
-		var impostors: ImpostorSet = _impostors[simulation.get_tile_species(tile)]
+		var aabb: AABB = tiles.aabb(tile)
+		var impostors: ImpostorSet = _impostors[tiles.species(tile)]
 		var node: MultiMeshInstance3D = _make_node(_tile_node_name(tile), impostors.mesh(true), aabb, true)
 		_add_caster(node, impostors.caster(true))
 		node.visible = false  # shown when the whole field is ready
@@ -100,8 +110,8 @@ func make_tiles(budget_usec: int, max_draw_distance: float) -> bool:
 
 ## Takes the previous field's node for [param tile] when it draws the same; true if it did.
 func _take_previous(tile: int, max_draw_distance: float) -> bool:
-	var old: int = _previous_by_key.get(simulation.get_tile_key(tile), -1)
-	if old < 0 or _previous.simulation.get_tile_signature(old) != simulation.get_tile_signature(tile):
+	var old: int = _previous_by_key.get(tiles.key(tile), -1)
+	if old < 0 or _previous.tile_table().signature(old) != tiles.signature(tile):
 		return false
 	var node: MultiMeshInstance3D = _previous.give_tile_node(old)
 	if node == null:
@@ -117,10 +127,9 @@ func _take_previous(tile: int, max_draw_distance: float) -> bool:
 ## [param tile]'s place among the merged levels, for the impostor shader, which picks the plants
 ## its level draws from the observer; and where its level begins.
 func _set_level(node: MultiMeshInstance3D, tile: int) -> void:
-	var merge: PackedFloat32Array = simulation.get_tile_merge(tile)
 	for drawn: GeometryInstance3D in [node, _caster_of(node)]:
-		drawn.set_instance_shader_parameter(&"tile_merge", Vector4(merge[0], merge[1], merge[2], merge[3]))
-		drawn.visibility_range_begin = simulation.get_tile_shown_from(tile)
+		drawn.set_instance_shader_parameter(&"tile_merge", tiles.merge(tile))
+		drawn.visibility_range_begin = tiles.shown_from(tile)
 	_set_shadow(node, tile)
 
 
@@ -129,7 +138,7 @@ func _set_level(node: MultiMeshInstance3D, tile: int) -> void:
 ## its node; a tile's node taken from the previous field gets its new parent.
 func _link_parents() -> void:
 	for tile: int in _tile_nodes.size():
-		var parent: int = simulation.get_tile_parent(tile)
+		var parent: int = tiles.parent(tile)
 		var node: MultiMeshInstance3D = _tile_nodes[tile]
 		for drawn: GeometryInstance3D in [node, _caster_of(node)]:
 			drawn.visibility_parent = drawn.get_path_to(_tile_nodes[parent]) if parent >= 0 else NodePath()
@@ -140,7 +149,7 @@ func _link_parents() -> void:
 func _set_shadow(node: MultiMeshInstance3D, tile: int) -> void:
 	if _shadow_reach < 0.0:
 		_shadow_reach = _sun_shadow_reach()
-	_caster_of(node).visible = simulation.get_tile_begin(tile) < _shadow_reach
+	_caster_of(node).visible = tiles.begin(tile) < _shadow_reach
 
 
 ## Keeps the tiles' shadows as far as the sun's when a sun's shadows change (its distance, turned on
@@ -205,7 +214,7 @@ func give_tile_node(tile: int) -> MultiMeshInstance3D:
 
 ## The share of tile nodes made, 0 to 1.
 func get_tile_progress() -> float:
-	return _tile_nodes.size() / maxf(simulation.get_tile_count(), 1.0)
+	return _tile_nodes.size() / maxf(tile_table().count, 1.0)
 
 
 ## Completes the field: the near plants' bucket nodes and the legend's scenes, then shows it all.
@@ -405,7 +414,7 @@ func _make_node(node_name: String, mesh: Mesh, aabb: AABB, compact: bool = false
 
 ## A tile's node is named after the tile's key (where it lies).
 func _tile_node_name(tile: int) -> String:
-	return "FarTile%d" % simulation.get_tile_key(tile)
+	return "FarTile%d" % tiles.key(tile)
 
 
 ## A tile is hidden once its nearest plant may be past [param max_draw_distance] (the engine
@@ -442,8 +451,8 @@ static func _caster_of(node: MultiMeshInstance3D) -> MultiMeshInstance3D:
 
 func _field_aabb() -> AABB:
 	var box: AABB = AABB()
-	for tile: int in simulation.get_tile_count():  # the tiles' boxes hold the chunks'
-		var tile_box: AABB = simulation.get_tile_aabb(tile)
+	for tile: int in tile_table().count:  # the tiles' boxes hold the chunks'
+		var tile_box: AABB = tiles.aabb(tile)
 		box = tile_box if tile == 0 else box.merge(tile_box)
 	return box
 

@@ -50,33 +50,23 @@ void SunflowerSimulation::bind_methods() {
 	gdx::bind_method(CLASS, "set_lod", &SunflowerSimulation::set_lod, { "distances", "hysteresis", "fade", "interval", "force_level" });
 	gdx::bind_method(CLASS, "set_observer", &SunflowerSimulation::set_observer, { "position", "frustum" });
 	gdx::bind_method(CLASS, "set_worker_threads", &SunflowerSimulation::set_worker_threads, { "threads" });
-	gdx::bind_method(CLASS, "get_worker_threads", &SunflowerSimulation::get_worker_threads);
 	gdx::bind_method(CLASS, "set_pushers", &SunflowerSimulation::set_pushers, { "pushers" });
 	gdx::bind_method(CLASS, "set_push_params", &SunflowerSimulation::set_push_params, { "strength", "recovery_seconds" });
 	gdx::bind_method(CLASS, "get_pushed_count", &SunflowerSimulation::get_pushed_count);
 	gdx::bind_method(CLASS, "get_plants_near", &SunflowerSimulation::get_plants_near, { "position", "radius" });
-	gdx::bind_method(CLASS, "get_last_task_count", &SunflowerSimulation::get_last_task_count);
 	gdx::bind_method(CLASS, "set_bucket_multimesh", &SunflowerSimulation::set_bucket_multimesh, { "bucket", "multimesh" });
 	gdx::bind_method(CLASS, "set_tile_multimesh", &SunflowerSimulation::set_tile_multimesh, { "tile", "multimesh" });
 	gdx::bind_method(CLASS, "release_multimeshes", &SunflowerSimulation::release_multimeshes);
 	gdx::bind_method(CLASS, "adopt_tile_multimesh", &SunflowerSimulation::adopt_tile_multimesh, { "tile", "multimesh" });
 	gdx::bind_method(CLASS, "get_tile_count", &SunflowerSimulation::get_tile_count);
-	gdx::bind_method(CLASS, "get_tile_aabb", &SunflowerSimulation::get_tile_aabb, { "tile" });
-	gdx::bind_method(CLASS, "get_tile_key", &SunflowerSimulation::get_tile_key, { "tile" });
-	gdx::bind_method(CLASS, "get_tile_signature", &SunflowerSimulation::get_tile_signature, { "tile" });
-	gdx::bind_method(CLASS, "get_tile_species", &SunflowerSimulation::get_tile_species, { "tile" });
-	gdx::bind_method(CLASS, "get_tile_level", &SunflowerSimulation::get_tile_level, { "tile" });
-	gdx::bind_method(CLASS, "get_tile_parent", &SunflowerSimulation::get_tile_parent, { "tile" });
-	gdx::bind_method(CLASS, "get_tile_begin", &SunflowerSimulation::get_tile_begin, { "tile" });
-	gdx::bind_method(CLASS, "get_tile_shown_from", &SunflowerSimulation::get_tile_shown_from, { "tile" });
-	gdx::bind_method(CLASS, "get_tile_merge", &SunflowerSimulation::get_tile_merge, { "tile" });
+	gdx::bind_method(CLASS, "get_tile_ids", &SunflowerSimulation::get_tile_ids);
+	gdx::bind_method(CLASS, "get_tile_places", &SunflowerSimulation::get_tile_places);
+	gdx::bind_method(CLASS, "get_tile_merge_rule", &SunflowerSimulation::get_tile_merge_rule);
 	gdx::bind_method(CLASS, "choose_tile_level", &SunflowerSimulation::choose_tile_level, { "distance" });
 	gdx::bind_method(CLASS, "get_active_mask", &SunflowerSimulation::get_active_mask, { "species" });
 	gdx::bind_method(CLASS, "get_mask_version", &SunflowerSimulation::get_mask_version);
 	gdx::bind_method(CLASS, "get_tiles_drawn", &SunflowerSimulation::get_tiles_drawn);
 	gdx::bind_method(CLASS, "get_chunk_grid", &SunflowerSimulation::get_chunk_grid);
-	gdx::bind_method(CLASS, "get_chunk_key", &SunflowerSimulation::get_chunk_key, { "chunk" });
-	gdx::bind_method(CLASS, "get_chunk_signature", &SunflowerSimulation::get_chunk_signature, { "chunk" });
 	gdx::bind_method(CLASS, "compute_chunk_signatures", &SunflowerSimulation::compute_chunk_signatures);
 	gdx::bind_method(CLASS, "get_chunk_count", &SunflowerSimulation::get_chunk_count);
 	gdx::bind_method(CLASS, "get_chunk_aabb", &SunflowerSimulation::get_chunk_aabb, { "chunk" });
@@ -84,7 +74,6 @@ void SunflowerSimulation::bind_methods() {
 	gdx::bind_method(CLASS, "get_plant_count", &SunflowerSimulation::get_plant_count);
 	gdx::bind_method(CLASS, "get_lod_counts", &SunflowerSimulation::get_lod_counts);
 	gdx::bind_method(CLASS, "get_lod_counts_by_species", &SunflowerSimulation::get_lod_counts_by_species);
-	gdx::bind_method(CLASS, "get_chunk_species", &SunflowerSimulation::get_chunk_species, { "chunk" });
 	gdx::bind_method(CLASS, "get_plant_position", &SunflowerSimulation::get_plant_position, { "plant" });
 	gdx::bind_method(CLASS, "get_plant_lod", &SunflowerSimulation::get_plant_lod, { "plant" });
 	gdx::bind_method(CLASS, "get_plant_tile_level", &SunflowerSimulation::get_plant_tile_level, { "plant" });
@@ -93,7 +82,6 @@ void SunflowerSimulation::bind_methods() {
 	gdx::bind_method(CLASS, "get_filled_buckets", &SunflowerSimulation::get_filled_buckets);
 	gdx::bind_method(CLASS, "get_last_update_usec", &SunflowerSimulation::get_last_update_usec);
 	gdx::bind_method(CLASS, "get_memory_bytes", &SunflowerSimulation::get_memory_bytes);
-	gdx::bind_method(CLASS, "get_time", &SunflowerSimulation::get_time);
 
 	gdx::bind_method(CLASS, "sanitize_parameter", &SunflowerSimulation::sanitize_parameter, { "name", "value", "current" });
 	gdx::bind_method(CLASS, "explain_parameter", &SunflowerSimulation::explain_parameter, { "name", "value", "used" });
@@ -110,6 +98,8 @@ void SunflowerSimulation::bind_methods() {
 	gdx::bind_integer_constant(CLASS, "", "BUCKET_IMPOSTOR", BUCKET_IMPOSTOR);
 	gdx::bind_integer_constant(CLASS, "", "BUCKET_COUNT", BUCKET_COUNT);
 	gdx::bind_integer_constant(CLASS, "", "MAX_SPECIES", FieldMap::MAX_SPECIES);
+	gdx::bind_integer_constant(CLASS, "", "TILE_IDS", TILE_IDS);
+	gdx::bind_integer_constant(CLASS, "", "TILE_PLACES", TILE_PLACES);
 	gdx::bind_integer_constant(CLASS, "", "FLOATS_PER_INSTANCE", FLOATS_PER_INSTANCE);
 	gdx::bind_integer_constant(CLASS, "", "WHOLE_FLOATS_PER_INSTANCE", WHOLE_FLOATS_PER_INSTANCE);
 	gdx::bind_integer_constant(CLASS, "", "FAR_FLOATS_PER_INSTANCE", FAR_FLOATS_PER_INSTANCE);
@@ -465,59 +455,53 @@ int64_t SunflowerSimulation::get_tile_count() const {
 	return _sim.tiles().get_tile_count();
 }
 
-gdx::AABB SunflowerSimulation::get_tile_aabb(int64_t p_tile) const {
-	if (!_is_tile(p_tile)) {
-		return gdx::AABB{};
+gdx::PackedInt64Array SunflowerSimulation::get_tile_ids() const {
+	const FarTiles &tiles = _sim.tiles();
+	gdx::PackedInt64Array out;
+	out.resize(int64_t(tiles.get_tile_count()) * TILE_IDS);
+	int64_t *row = out.data();
+	for (uint32_t t = 0; t < tiles.get_tile_count(); ++t, row += TILE_IDS) {
+		const FarTiles::Tile &tile = tiles.get_tile(t);
+		row[0] = int64_t(tile.key);
+		row[1] = int64_t(tiles.get_tile_signature(t));
+		row[2] = tile.species;
+		row[3] = tile.level;
+		row[4] = tile.is_top() ? -1 : int64_t(tile.parent);
 	}
-	const ChunkBounds bounds = _sim.tiles().get_tile_bounds(static_cast<uint32_t>(p_tile));
-	return gdx::to_godot_aabb(bounds.min, bounds.max);
+	return out;
 }
 
-int64_t SunflowerSimulation::get_tile_key(int64_t p_tile) const {
-	return _is_tile(p_tile) ? int64_t(_sim.tiles().get_tile(uint32_t(p_tile)).key) : -1;
-}
-
-int64_t SunflowerSimulation::get_tile_signature(int64_t p_tile) const {
-	return _is_tile(p_tile) ? int64_t(_sim.tiles().get_tile_signature(uint32_t(p_tile))) : 0;
-}
-
-int64_t SunflowerSimulation::get_tile_species(int64_t p_tile) const {
-	return _is_tile(p_tile) ? int64_t(_sim.tiles().get_tile(uint32_t(p_tile)).species) : -1;
-}
-
-int64_t SunflowerSimulation::get_tile_level(int64_t p_tile) const {
-	return _is_tile(p_tile) ? int64_t(_sim.tiles().get_tile(uint32_t(p_tile)).level) : -1;
-}
-
-int64_t SunflowerSimulation::get_tile_parent(int64_t p_tile) const {
-	if (!_is_tile(p_tile)) {
-		return -1;
-	}
-	const uint32_t parent = _sim.tiles().get_tile(uint32_t(p_tile)).parent;
-	return parent == FarTiles::NO_TILE ? -1 : int64_t(parent);
-}
-
-double SunflowerSimulation::get_tile_begin(int64_t p_tile) const {
-	return _is_tile(p_tile) ? double(_sim.tiles().get_tile_begin(uint32_t(p_tile))) : 0.0;
-}
-
-double SunflowerSimulation::get_tile_shown_from(int64_t p_tile) const {
-	return _is_tile(p_tile) ? double(_sim.tiles().get_tile_shown_from(uint32_t(p_tile))) : 0.0;
-}
-
-gdx::PackedFloat32Array SunflowerSimulation::get_tile_merge(int64_t p_tile) const {
+gdx::PackedFloat32Array SunflowerSimulation::get_tile_places() const {
+	const FarTiles &tiles = _sim.tiles();
 	gdx::PackedFloat32Array out;
-	if (!_is_tile(p_tile)) {
-		return out;
+	out.resize(int64_t(tiles.get_tile_count()) * TILE_PLACES);
+	float *row = out.data();
+	for (uint32_t t = 0; t < tiles.get_tile_count(); ++t, row += TILE_PLACES) {
+		const ChunkBounds bounds = tiles.get_tile_bounds(t);
+		const float values[TILE_PLACES] = { bounds.min.x, bounds.min.y, bounds.min.z, bounds.max.x - bounds.min.x,
+			bounds.max.y - bounds.min.y, bounds.max.z - bounds.min.z, tiles.get_tile_begin(t), tiles.get_tile_shown_from(t) };
+		std::copy(values, values + TILE_PLACES, row);
 	}
-	// The impostor shader's tile_merge: the tile's level, the field's top level, where level 1
-	// begins, the fade's share of an octave.
-	const FarTiles::Tile &tile = _sim.tiles().get_tile(uint32_t(p_tile));
-	const float values[] = { float(tile.level), float(_sim.tiles().get_top_tile_level()), _sim.tiles().merge_distance(1),
-		FarTiles::TILE_MERGE_FADE };
+	return out;
+}
+
+gdx::PackedFloat32Array SunflowerSimulation::get_tile_merge_rule() const {
+	// The impostor shader's tile_merge after the tile's own level: the field's top level, where
+	// level 1 begins, the fade's share of an octave.
+	const float values[] = { float(_sim.tiles().get_top_tile_level()), _sim.tiles().merge_distance(1), FarTiles::TILE_MERGE_FADE };
+	gdx::PackedFloat32Array out;
 	out.assign(values, std::size(values));
 	return out;
 }
+
+
+
+
+
+
+
+
+
 
 gdx::Vector2 SunflowerSimulation::choose_tile_level(double p_distance) const {
 	const FarTiles::TileChoice choice = _sim.tiles().choose_tile_level(float(p_distance));
@@ -556,13 +540,7 @@ gdx::PackedInt32Array SunflowerSimulation::get_chunk_grid() const {
 	return out;
 }
 
-int64_t SunflowerSimulation::get_chunk_key(int64_t p_chunk) const {
-	return _is_chunk(p_chunk) ? int64_t(_sim.plants().get_chunk_key(uint32_t(p_chunk))) : -1;
-}
 
-int64_t SunflowerSimulation::get_chunk_signature(int64_t p_chunk) const {
-	return _is_chunk(p_chunk) ? int64_t(_sim.plants().get_chunk_signature(uint32_t(p_chunk))) : 0;
-}
 
 void SunflowerSimulation::compute_chunk_signatures() {
 	_sim.compute_chunk_signatures();
@@ -687,9 +665,6 @@ gdx::PackedInt32Array SunflowerSimulation::get_lod_counts_by_species() const {
 	return out;
 }
 
-int64_t SunflowerSimulation::get_chunk_species(int64_t p_chunk) const {
-	return _is_chunk(p_chunk) ? int64_t(_sim.plants().get_layout().chunks[size_t(p_chunk)].species) : -1;
-}
 
 gdx::PackedInt32Array SunflowerSimulation::get_lod_counts() const {
 	const auto counts = _sim.near().get_lod_counts();
@@ -777,21 +752,12 @@ gdx::PackedInt32Array SunflowerSimulation::get_plants_near(gdx::Vector3 p_positi
 	return gdx::to_godot_indices(plants);
 }
 
-int64_t SunflowerSimulation::get_worker_threads() const {
-	return _sim.near().get_worker_threads();
-}
 
-int64_t SunflowerSimulation::get_last_task_count() const {
-	return _sim.near().get_last_task_count();
-}
 
 int64_t SunflowerSimulation::get_memory_bytes() const {
 	return static_cast<int64_t>(_sim.get_memory_bytes());
 }
 
-double SunflowerSimulation::get_time() const {
-	return _sim.near().get_time();
-}
 
 // --- The parameter table, for the node's setters -------------------------------------------------
 

@@ -61,29 +61,27 @@ public:
 	void set_push_params(double p_strength, double p_recovery_seconds);
 	int64_t get_pushed_count() const;
 	gdx::PackedInt32Array get_plants_near(gdx::Vector3 p_position, double p_radius) const;
-	int64_t get_worker_threads() const;
-	int64_t get_last_task_count() const;
 
 	void set_bucket_multimesh(int64_t p_bucket, gdx::Rid p_multimesh);
 	void set_tile_multimesh(int64_t p_tile, gdx::Rid p_multimesh);
 	void adopt_tile_multimesh(int64_t p_tile, gdx::Rid p_multimesh);
 	int64_t get_tile_count() const;
-	gdx::AABB get_tile_aabb(int64_t p_tile) const;
-	int64_t get_tile_key(int64_t p_tile) const;
-	int64_t get_tile_signature(int64_t p_tile) const;
-	int64_t get_tile_species(int64_t p_tile) const;
-	int64_t get_tile_level(int64_t p_tile) const;
-	int64_t get_tile_parent(int64_t p_tile) const;
-	double get_tile_begin(int64_t p_tile) const;
-	double get_tile_shown_from(int64_t p_tile) const;
-	gdx::PackedFloat32Array get_tile_merge(int64_t p_tile) const;
+	// The far-tile table, read once per build. Per tile, TILE_IDS integers: its key (where it lies),
+	// signature (what it draws), species, level and parent (−1: none); TILE_PLACES floats: its box
+	// (position x, y, z, size x, y, z), the distance its level begins and the camera distance it is
+	// shown from (FarTiles).
+	static constexpr int64_t TILE_IDS = 5;
+	static constexpr int64_t TILE_PLACES = 8;
+	gdx::PackedInt64Array get_tile_ids() const;
+	gdx::PackedFloat32Array get_tile_places() const;
+	// The rest of the impostor shader's tile_merge (the tile's level first): the top level, the
+	// distance level 1 begins, the fade's share of an octave.
+	gdx::PackedFloat32Array get_tile_merge_rule() const;
 	gdx::Vector2 choose_tile_level(double p_distance) const;
 	gdx::PackedByteArray get_active_mask(int64_t p_species) const;
 	gdx::PackedByteArray get_tiles_drawn() const;
 	int64_t get_mask_version() const;
 	gdx::PackedInt32Array get_chunk_grid() const;
-	int64_t get_chunk_key(int64_t p_chunk) const;
-	int64_t get_chunk_signature(int64_t p_chunk) const;
 	void compute_chunk_signatures();
 	void release_multimeshes();
 	int64_t get_chunk_count() const;
@@ -94,7 +92,6 @@ public:
 	int64_t get_plant_count() const;
 	gdx::PackedInt32Array get_lod_counts() const;
 	gdx::PackedInt32Array get_lod_counts_by_species() const;
-	int64_t get_chunk_species(int64_t p_chunk) const;
 	gdx::Vector3 get_plant_position(int64_t p_plant) const;
 	int64_t get_plant_lod(int64_t p_plant) const;
 	int64_t get_plant_tile_level(int64_t p_plant) const;
@@ -103,7 +100,6 @@ public:
 	gdx::PackedByteArray get_filled_buckets() const;
 	int64_t get_last_update_usec() const;
 	int64_t get_memory_bytes() const;
-	double get_time() const;
 
 	// The core's parameter table (parameters.h), for the node's setters: one validator per value.
 	static double sanitize_parameter(const gdx::String &p_name, double p_value, double p_current);

@@ -64,6 +64,8 @@ struct Traits<PackedByteArray> : SameTraits<PackedByteArray, GDEXTENSION_VARIANT
 template <>
 struct Traits<PackedInt32Array> : SameTraits<PackedInt32Array, GDEXTENSION_VARIANT_TYPE_PACKED_INT32_ARRAY> {};
 template <>
+struct Traits<PackedInt64Array> : SameTraits<PackedInt64Array, GDEXTENSION_VARIANT_TYPE_PACKED_INT64_ARRAY> {};
+template <>
 struct Traits<PackedFloat32Array> : SameTraits<PackedFloat32Array, GDEXTENSION_VARIANT_TYPE_PACKED_FLOAT32_ARRAY> {};
 
 template <class T>

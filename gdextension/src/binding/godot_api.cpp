@@ -26,14 +26,18 @@ struct PackedMethods {
 };
 
 PackedMethods &packed_methods(GDExtensionVariantType p_type) {
-	static PackedMethods bytes, ints, floats;
+	static PackedMethods bytes, ints, longs, floats, none;
 	switch (p_type) {
 		case GDEXTENSION_VARIANT_TYPE_PACKED_BYTE_ARRAY:
 			return bytes;
 		case GDEXTENSION_VARIANT_TYPE_PACKED_INT32_ARRAY:
 			return ints;
-		default:
+		case GDEXTENSION_VARIANT_TYPE_PACKED_INT64_ARRAY:
+			return longs;
+		case GDEXTENSION_VARIANT_TYPE_PACKED_FLOAT32_ARRAY:
 			return floats;
+		default:
+			return none; // unused: PackedArray is instantiated only for the four types above
 	}
 }
 
@@ -70,6 +74,8 @@ bool load_api(GDExtensionInterfaceGetProcAddress p_get_proc_address, GDExtension
 	ok &= load(api.packed_byte_array_operator_index_const, "packed_byte_array_operator_index_const");
 	ok &= load(api.packed_int32_array_operator_index, "packed_int32_array_operator_index");
 	ok &= load(api.packed_int32_array_operator_index_const, "packed_int32_array_operator_index_const");
+	ok &= load(api.packed_int64_array_operator_index, "packed_int64_array_operator_index");
+	ok &= load(api.packed_int64_array_operator_index_const, "packed_int64_array_operator_index_const");
 	ok &= load(api.packed_float32_array_operator_index, "packed_float32_array_operator_index");
 	ok &= load(api.packed_float32_array_operator_index_const, "packed_float32_array_operator_index_const");
 	ok &= load(api.classdb_register_extension_class5, "classdb_register_extension_class5");
@@ -87,6 +93,7 @@ bool load_api(GDExtensionInterfaceGetProcAddress p_get_proc_address, GDExtension
 	}
 	ok &= load_packed_methods(GDEXTENSION_VARIANT_TYPE_PACKED_BYTE_ARRAY, hashes::PACKED_BYTE_ARRAY_SIZE, hashes::PACKED_BYTE_ARRAY_RESIZE);
 	ok &= load_packed_methods(GDEXTENSION_VARIANT_TYPE_PACKED_INT32_ARRAY, hashes::PACKED_INT32_ARRAY_SIZE, hashes::PACKED_INT32_ARRAY_RESIZE);
+	ok &= load_packed_methods(GDEXTENSION_VARIANT_TYPE_PACKED_INT64_ARRAY, hashes::PACKED_INT64_ARRAY_SIZE, hashes::PACKED_INT64_ARRAY_RESIZE);
 	ok &= load_packed_methods(GDEXTENSION_VARIANT_TYPE_PACKED_FLOAT32_ARRAY, hashes::PACKED_FLOAT32_ARRAY_SIZE, hashes::PACKED_FLOAT32_ARRAY_RESIZE);
 	if (!ok) {
 		std::fprintf(stderr, "sunflower: the engine's packed-array methods do not match the API this library was built against\n");
@@ -134,6 +141,14 @@ void *PackedInt32Array::index(GDExtensionTypePtr p_self, GDExtensionInt p_i) {
 template <>
 const void *PackedInt32Array::index_const(GDExtensionConstTypePtr p_self, GDExtensionInt p_i) {
 	return api.packed_int32_array_operator_index_const(p_self, p_i);
+}
+template <>
+void *PackedInt64Array::index(GDExtensionTypePtr p_self, GDExtensionInt p_i) {
+	return api.packed_int64_array_operator_index(p_self, p_i);
+}
+template <>
+const void *PackedInt64Array::index_const(GDExtensionConstTypePtr p_self, GDExtensionInt p_i) {
+	return api.packed_int64_array_operator_index_const(p_self, p_i);
 }
 template <>
 void *PackedFloat32Array::index(GDExtensionTypePtr p_self, GDExtensionInt p_i) {

@@ -31,6 +31,8 @@ struct Api {
 	GDExtensionInterfacePackedByteArrayOperatorIndexConst packed_byte_array_operator_index_const = nullptr;
 	GDExtensionInterfacePackedInt32ArrayOperatorIndex packed_int32_array_operator_index = nullptr;
 	GDExtensionInterfacePackedInt32ArrayOperatorIndexConst packed_int32_array_operator_index_const = nullptr;
+	GDExtensionInterfacePackedInt64ArrayOperatorIndex packed_int64_array_operator_index = nullptr;
+	GDExtensionInterfacePackedInt64ArrayOperatorIndexConst packed_int64_array_operator_index_const = nullptr;
 	GDExtensionInterfacePackedFloat32ArrayOperatorIndex packed_float32_array_operator_index = nullptr;
 	GDExtensionInterfacePackedFloat32ArrayOperatorIndexConst packed_float32_array_operator_index_const = nullptr;
 	GDExtensionInterfaceClassdbRegisterExtensionClass5 classdb_register_extension_class5 = nullptr;
@@ -156,6 +158,7 @@ private:
 
 using PackedByteArray = PackedArray<GDEXTENSION_VARIANT_TYPE_PACKED_BYTE_ARRAY, uint8_t>;
 using PackedInt32Array = PackedArray<GDEXTENSION_VARIANT_TYPE_PACKED_INT32_ARRAY, int32_t>;
+using PackedInt64Array = PackedArray<GDEXTENSION_VARIANT_TYPE_PACKED_INT64_ARRAY, int64_t>;
 using PackedFloat32Array = PackedArray<GDEXTENSION_VARIANT_TYPE_PACKED_FLOAT32_ARRAY, float>;
 
 // The element accessors are defined once, in godot_api.cpp.
@@ -163,6 +166,8 @@ template <> void *PackedByteArray::index(GDExtensionTypePtr p_self, GDExtensionI
 template <> const void *PackedByteArray::index_const(GDExtensionConstTypePtr p_self, GDExtensionInt p_i);
 template <> void *PackedInt32Array::index(GDExtensionTypePtr p_self, GDExtensionInt p_i);
 template <> const void *PackedInt32Array::index_const(GDExtensionConstTypePtr p_self, GDExtensionInt p_i);
+template <> void *PackedInt64Array::index(GDExtensionTypePtr p_self, GDExtensionInt p_i);
+template <> const void *PackedInt64Array::index_const(GDExtensionConstTypePtr p_self, GDExtensionInt p_i);
 template <> void *PackedFloat32Array::index(GDExtensionTypePtr p_self, GDExtensionInt p_i);
 template <> const void *PackedFloat32Array::index_const(GDExtensionConstTypePtr p_self, GDExtensionInt p_i);
 

@@ -3,6 +3,7 @@ extends TestCase
 ## frames while the previous field stays drawn; progress is reported (also by the editor's progress
 ## bar) and ends in one field_built; a bad large map leaves the field as it was.
 
+const FarTileTable: GDScript = preload("res://addons/sunflower_field/far_tile_table.gd")
 const DEMO_MAP: SunflowerFieldMap = preload("res://fields/demo.field")
 const ProgressBarScript: GDScript = preload("res://addons/sunflower_field/build_progress_bar.gd")
 
@@ -170,10 +171,10 @@ func test_parameter_changes_during_a_build_reach_the_new_field() -> void:
 	var parents: Dictionary = {}  # node name → its tile's parent's node name ("" for none)
 	var simulation: RefCounted = field.get_simulation()
 	for tile: int in simulation.get_tile_count():
-		var parent: int = simulation.get_tile_parent(tile)
-		var node_name: String = "FarTile%d" % simulation.get_tile_key(tile)
-		begins[node_name] = simulation.get_tile_shown_from(tile)
-		parents[node_name] = "FarTile%d" % simulation.get_tile_key(parent) if parent >= 0 else ""
+		var parent: int = FarTileTable.new(simulation).parent(tile)
+		var node_name: String = "FarTile%d" % FarTileTable.new(simulation).key(tile)
+		begins[node_name] = FarTileTable.new(simulation).shown_from(tile)
+		parents[node_name] = "FarTile%d" % FarTileTable.new(simulation).key(parent) if parent >= 0 else ""
 	check(begins.values().any(func(begin: float) -> bool: return begin > 0.0), "the field has merged tiles")
 	var wrong_ranges: int = 0
 	var wrong_parents: int = 0
@@ -255,24 +256,24 @@ func test_a_small_change_of_a_large_map_makes_nodes_only_for_the_tiles_it_touche
 	# the merged tile holds its share. Each node tells the shader its tile's place among the levels.
 	var by_name: Dictionary = {}
 	for tile: int in simulation.get_tile_count():
-		by_name["FarTile%d" % simulation.get_tile_key(tile)] = tile
+		by_name["FarTile%d" % FarTileTable.new(simulation).key(tile)] = tile
 	var instances: PackedInt32Array = [0, 0]  # per level
 	for node: Node in field.get_children(true):
 		if not node.name.begins_with("FarTile"):
 			continue
 		var tile: int = by_name[str(node.name)]
-		var level: int = simulation.get_tile_level(tile)
+		var level: int = FarTileTable.new(simulation).level(tile)
 		var buffer: PackedFloat32Array = RenderingServer.multimesh_get_buffer(
 			(node as MultiMeshInstance3D).multimesh.get_rid()
 		)
 		instances[level] += buffer.size() / SunflowerSimulation.FAR_FLOATS_PER_INSTANCE
-		var merge: PackedFloat32Array = simulation.get_tile_merge(tile)
+		var merge: Vector4 = FarTileTable.new(simulation).merge(tile)
 		check_eq(
 			(node as GeometryInstance3D).get_instance_shader_parameter(&"tile_merge"),
-			Vector4(merge[0], merge[1], merge[2], merge[3]),
+			merge,
 			"%s's place among the levels" % node.name
 		)
-		check_eq(merge[1], 1.0, "%s knows the field's top level" % node.name)
+		check_eq(merge.y, 1.0, "%s knows the field's top level" % node.name)
 		# The merged level begins 200 m away, beyond the sun's shadows: it casts none.
 		check_eq(_casts(node), level == 0, "%s's shadows" % node.name)
 	check_eq(instances[0], field.get_plant_count(), "far buffers hold every plant once")
@@ -282,10 +283,10 @@ func test_a_small_change_of_a_large_map_makes_nodes_only_for_the_tiles_it_touche
 	check_eq(field.get_build_stats().tiles_kept, 5, "the same tiles: all kept")
 	simulation = field.get_simulation()
 	var merged: int = simulation.get_tile_count() - 1
-	check_eq(simulation.get_tile_begin(merged), 500.0, "the merged tile begins at the new distance")
+	check_eq(FarTileTable.new(simulation).begin(merged), 500.0, "the merged tile begins at the new distance")
 	var merged_node: GeometryInstance3D = null
 	for node: Node in field.get_children(true):
-		if node.name == "FarTile%d" % simulation.get_tile_key(merged):
+		if node.name == "FarTile%d" % FarTileTable.new(simulation).key(merged):
 			merged_node = node
 	if check(merged_node != null, "the merged tile's node"):
 		# From where all its plants are at least 500 m away.
@@ -316,7 +317,7 @@ func test_a_small_change_of_a_large_map_makes_nodes_only_for_the_tiles_it_touche
 		field.tile_merge_distance = 450.0
 		field.finish_build()
 		for node: Node in field.get_children(true):
-			if node.name == "FarTile%d" % simulation.get_tile_key(merged):
+			if node.name == "FarTile%d" % FarTileTable.new(simulation).key(merged):
 				merged_node = node
 				check(_casts(merged_node), "a merged tile built within a sun's shadows casts them")
 		sun.free()

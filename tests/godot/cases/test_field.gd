@@ -3,6 +3,7 @@ extends TestCase
 ## RenderingServer, wind, and the exactly-once invariant reconstructed from engine state.
 
 ## Floats per instance in the native MultiMesh buffers (transform, then colour).
+const FarTileTable: GDScript = preload("res://addons/sunflower_field/far_tile_table.gd")
 const STRIDE: int = SunflowerSimulation.FLOATS_PER_INSTANCE
 
 var field: SunflowerField
@@ -116,7 +117,7 @@ func test_buffers_reach_the_rendering_server() -> void:
 		var origin: Vector3 = (heads_by_origin[origin_key] as Transform3D).origin
 		if not check(box.grow(1e-3).has_point(origin), "head at %s inside the bucket's box %s" % [origin, box]):
 			break
-	var field_box: AABB = field.get_simulation().get_tile_aabb(0)
+	var field_box: AABB = FarTileTable.new(field.get_simulation()).aabb(0)
 	check(
 		box.size.x * box.size.z < 0.5 * field_box.size.x * field_box.size.z,
 		"%s smaller than the field's %s" % [box, field_box]
@@ -188,7 +189,7 @@ func test_merged_far_tiles_draw_each_place_once_across_levels() -> void:
 	var simulation: RefCounted = field.get_simulation()
 	var levels: Dictionary = {}
 	for tile: int in simulation.get_tile_count():
-		levels[simulation.get_tile_level(tile)] = true
+		levels[FarTileTable.new(simulation).level(tile)] = true
 	check_eq(levels.keys(), [0, 1, 2], "three tile levels")
 	var path: Array[Vector3] = [Vector3(10, 1.7, 7), Vector3(-25, 1.7, 7), Vector3(-30, 20, -30), Vector3(-70, 10, 7)]
 	var counted: Vector2i = _check_drawn_once_along(path)
@@ -212,7 +213,7 @@ func _check_drawn_once_along(path: Array[Vector3]) -> Vector2i:
 	var simulation: RefCounted = field.get_simulation()
 	var tile_of_node: Dictionary = {}  # node name → tile
 	for tile: int in simulation.get_tile_count():
-		tile_of_node["FarTile%d" % simulation.get_tile_key(tile)] = tile
+		tile_of_node["FarTile%d" % FarTileTable.new(simulation).key(tile)] = tile
 	var crossfades: int = 0
 	var left_out: int = 0
 	faded = 0
@@ -247,8 +248,8 @@ func _check_drawn_once_along(path: Array[Vector3]) -> Vector2i:
 			var mask: PackedByteArray = _mask_of(node) if tile else PackedByteArray()
 			var merge: Vector4 = node.get_instance_shader_parameter(&"tile_merge") if tile else Vector4()
 			if tile:
-				var expected: PackedFloat32Array = simulation.get_tile_merge(tile_of_node[str(node.name)])
-				check_eq(merge, Vector4(expected[0], expected[1], expected[2], expected[3]), "%s's merge" % node.name)
+				var expected: Vector4 = FarTileTable.new(simulation).merge(tile_of_node[str(node.name)])
+				check_eq(merge, expected, "%s's merge" % node.name)
 			var far: int = SunflowerSimulation.FAR_FLOATS_PER_INSTANCE
 			for k: int in instances:
 				var root: Vector3 = _root(buffer, k, compact, stride)

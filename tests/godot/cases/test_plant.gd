@@ -5,6 +5,7 @@ extends TestCase
 ## the impostor quads cut to what the plant's views show; an atlas read with the rows it was baked
 ## with; plain StandardMaterial3D parts taken over by the plant material.
 
+const FarTileTable: GDScript = preload("res://addons/sunflower_field/far_tile_table.gd")
 const DEMO_MAP: SunflowerFieldMap = preload("res://fields/demo.field")
 const ImpostorSetScript: GDScript = preload("res://addons/sunflower_field/impostor_set.gd")
 const PlantMaterialScript: GDScript = preload("res://addons/sunflower_field/plant_material.gd")
@@ -203,7 +204,7 @@ func test_the_impostor_quad_covers_only_what_its_views_show() -> void:
 	# The built-in sunflower's views fill about a quarter of their squares: its impostors' quads are
 	# cut to that, for the near buckets' material and the far tiles' alike.
 	var field: SunflowerField = _field()
-	for name: String in ["Impostors", "FarTile%d" % field.get_simulation().get_tile_key(0)]:
+	for name: String in ["Impostors", "FarTile%d" % FarTileTable.new(field.get_simulation()).key(0)]:
 		var node: MultiMeshInstance3D = _child_named(field, name)
 		var material: ShaderMaterial = node.multimesh.mesh.surface_get_material(0) as ShaderMaterial
 		var drawn: PackedVector4Array = material.get_shader_parameter("view_bounds")

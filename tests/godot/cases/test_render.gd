@@ -2,6 +2,7 @@ extends TestCase
 ## Renders the demo field from a fixed viewpoint with the real renderer (run under Xvfb), saves
 ## the screenshot to tests/artifacts/, and checks that sunflower colours are where the field is.
 
+const FarTileTable: GDScript = preload("res://addons/sunflower_field/far_tile_table.gd")
 const Picture: GDScript = preload("res://runner/picture.gd")
 const Stage: GDScript = preload("res://runner/stage.gd")
 const Dressing: GDScript = preload("res://runner/dressing.gd")
@@ -156,7 +157,7 @@ func test_the_engine_draws_each_far_place_by_one_tile() -> void:
 	var simulation: RefCounted = field.get_simulation()
 	var tiles: Dictionary = {}  # node → its tile
 	for tile: int in simulation.get_tile_count():
-		tiles[field.get_node_or_null(NodePath("FarTile%d" % simulation.get_tile_key(tile)))] = tile
+		tiles[field.get_node_or_null(NodePath("FarTile%d" % FarTileTable.new(simulation).key(tile)))] = tile
 	check(not tiles.has(null), "every tile has its node")
 	var camera: Camera3D = scene.get_viewport().get_camera_3d()
 	var views_merged: int = 0
@@ -170,7 +171,7 @@ func test_the_engine_draws_each_far_place_by_one_tile() -> void:
 			if not _picked_by_the_cut(simulation, tiles[node], node, eye):
 				node.visible = false
 			picked += 1 if node.visible else 0
-			merged += 1 if node.visible and simulation.get_tile_level(tiles[node]) > 0 else 0
+			merged += 1 if node.visible and FarTileTable.new(simulation).level(tiles[node]) > 0 else 0
 		views_merged += 1 if merged > 0 else 0
 		var alone: int = await _field_draw_calls(field)
 		for node: MultiMeshInstance3D in tiles:
@@ -194,16 +195,17 @@ func test_the_engine_draws_each_far_place_by_one_tile() -> void:
 ## Whether a tile is drawn from [param eye] by the rule of FieldSimulation's cut: in its range, and no
 ## tile above it in its own.
 func _picked_by_the_cut(simulation: RefCounted, tile: int, node: GeometryInstance3D, eye: Vector3) -> bool:
+	var tiles: FarTileTable = FarTileTable.new(simulation)
 	var shown_from: Callable = func(t: int) -> bool:
-		var box: AABB = node.global_transform * simulation.get_tile_aabb(t)
-		return eye.distance_to(box.get_center()) >= simulation.get_tile_shown_from(t)
+		var box: AABB = node.global_transform * tiles.aabb(t)
+		return eye.distance_to(box.get_center()) >= tiles.shown_from(t)
 	if not shown_from.call(tile):
 		return false
-	var above: int = simulation.get_tile_parent(tile)
+	var above: int = tiles.parent(tile)
 	while above >= 0:
 		if shown_from.call(above):
 			return false
-		above = simulation.get_tile_parent(above)
+		above = tiles.parent(above)
 	return true
 
 

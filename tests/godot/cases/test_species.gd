@@ -4,6 +4,7 @@ extends TestCase
 ## the field's. A render of a hilly field mixing the sunflower and the red sunflower shows both,
 ## standing on the hills (saved to tests/artifacts/render_hilly_mixed.png).
 
+const FarTileTable: GDScript = preload("res://addons/sunflower_field/far_tile_table.gd")
 const RED: FieldPlant = preload("res://addons/sunflower_field/plants/red_sunflower.tres")
 const SHOT: String = "render_hilly_mixed.png"
 
@@ -96,9 +97,9 @@ func test_a_legend_plant_is_a_species_with_its_own_buckets_impostors_and_counts(
 	var simulation: RefCounted = field.get_simulation()
 	var types_seen: Dictionary = {}
 	for tile: int in simulation.get_tile_count():
-		var species: int = simulation.get_tile_species(tile)
+		var species: int = FarTileTable.new(simulation).species(tile)
 		types_seen[species] = true
-		var impostors: MultiMeshInstance3D = _node_named(field, "FarTile%d" % simulation.get_tile_key(tile))
+		var impostors: MultiMeshInstance3D = _node_named(field, "FarTile%d" % FarTileTable.new(simulation).key(tile))
 		var material: ShaderMaterial = impostors.multimesh.mesh.surface_get_material(0) as ShaderMaterial
 		check(
 			(
