@@ -5,6 +5,7 @@ extends RefCounted
 ## nodes are made, instead of several calls per tile.
 
 const Native: GDScript = preload("native.gd")
+const NativeField: GDScript = preload("native_field.gd")
 
 ## Tiles in the field.
 var count: int = 0
@@ -16,7 +17,7 @@ var _place_stride: int = 0
 
 
 ## The table of [param simulation]'s tiles as they are now.
-func _init(simulation: RefCounted) -> void:
+func _init(simulation: NativeField) -> void:
 	_ids = simulation.get_tile_ids()
 	_places = simulation.get_tile_places()
 	_merge_rule = simulation.get_tile_merge_rule()

@@ -5,6 +5,7 @@ extends RefCounted
 ## and handing the node's settings to the simulation drawn. The node's setters and methods call in.
 
 const Native: GDScript = preload("native.gd")
+const NativeField: GDScript = preload("native_field.gd")
 const FieldBuild: GDScript = preload("field_build.gd")
 const FieldInteraction: GDScript = preload("field_interaction.gd")
 const FieldNodes: GDScript = preload("field_nodes.gd")
@@ -41,7 +42,7 @@ func _init(field: Node3D) -> void:
 
 
 ## The native simulation drawn now, or null.
-func simulation() -> RefCounted:
+func simulation() -> NativeField:
 	return drawn.simulation if drawn else null
 
 
@@ -73,12 +74,16 @@ func rebuild(background: bool = false) -> void:
 		return
 	cancel_build()
 	var field_map: Resource = _field.map
-	var native_simulation: RefCounted = Native.create_simulation() if field_map else null
+	var native_simulation: NativeField = NativeField.create() if field_map else null
 	if native_simulation == null:
 		show(null)
 		return
 	var job: FieldBuild.Job = FieldBuild.Job.for_field(_field, plants, native_simulation)
-	background = background and _field.background_build and field_map.text.size() >= BACKGROUND_BUILD_MIN_BYTES
+	background = (
+		background
+		and _field.background_build
+		and field_map.text.size() >= BACKGROUND_BUILD_MIN_BYTES
+	)
 	build = FieldBuild.new(_field, impostor_sets, job, background, drawn)
 	if background or build.needs_frames():
 		building.append(_field)
@@ -162,9 +167,13 @@ func report_map_error(message: String) -> void:
 func update_field(delta: float) -> void:
 	if plant_count() == 0:
 		return
-	var native_simulation: RefCounted = drawn.simulation
-	var observer: Node3D = FieldObserver.push(_field, _field.observer, _field.frustum_culling, native_simulation)
-	native_simulation.set_pushers(interaction.gather_pushers(_field.pusher_group, _field.pusher_radius))
+	var native_simulation: NativeField = drawn.simulation
+	var observer: Node3D = FieldObserver.push(
+		_field, _field.observer, _field.frustum_culling, native_simulation
+	)
+	native_simulation.set_pushers(
+		interaction.gather_pushers(_field.pusher_group, _field.pusher_radius)
+	)
 	native_simulation.update(delta)
 	drawn.show_filled_buckets()
 	drawn.update_masks()
@@ -223,7 +232,11 @@ func configure_wind() -> void:
 func configure_lod() -> void:
 	if drawn:
 		drawn.simulation.set_lod(
-			_field.lod_distances, _field.lod_hysteresis, _field.lod_fade, _field.lod_interval, _field.force_lod
+			_field.lod_distances,
+			_field.lod_hysteresis,
+			_field.lod_fade,
+			_field.lod_interval,
+			_field.force_lod
 		)
 
 

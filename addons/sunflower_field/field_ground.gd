@@ -10,6 +10,7 @@ enum Source { FLAT, COLLIDERS, HEIGHT_MAP }
 
 ## Rays cast between two clock reads (about 0.1 ms of them); a step stops when one more batch
 ## would overrun its budget.
+const NativeField: GDScript = preload("native_field.gd")
 const RAYS_PER_CLOCK_READ: int = 64
 
 ## What the worker needs of the node's ground: copied on the main thread, so the node may change.
@@ -50,7 +51,7 @@ static func for_field(field: Node3D) -> RefCounted:
 
 ## Before the map is read (on the worker): a flat field as before, or no ground at all until the
 ## real one is known, so reading the map lays out no plant twice.
-func prepare(simulation: RefCounted) -> void:
+func prepare(simulation: NativeField) -> void:
 	if source == Source.FLAT:
 		simulation.set_ground_flat()
 	else:
@@ -58,18 +59,26 @@ func prepare(simulation: RefCounted) -> void:
 
 
 ## After the map is read (on the worker): the height map's ground. Returns what is wrong, or "".
-func apply_height_map(simulation: RefCounted, cell_size: float) -> String:
+func apply_height_map(simulation: NativeField, cell_size: float) -> String:
 	if source != Source.HEIGHT_MAP:
 		return ""
 	if height_map == null or height_map.is_empty():
 		return "SunflowerField.height_map: the ground source is Height Map but no height map is set"
 	var image: Image = height_map.duplicate() as Image
 	if image.is_compressed() and image.decompress() != OK:
-		return "SunflowerField.height_map: %s is compressed in a format that cannot be read back" % _name()
+		return (
+			"SunflowerField.height_map: %s is compressed in a format that cannot be read back"
+			% _name()
+		)
 	image.convert(Image.FORMAT_RGBAF)
 	var rect: Rect2 = height_map_rect
 	if not rect.has_area():  # the whole field
-		rect = Rect2(0.0, 0.0, simulation.get_map_columns() * cell_size, simulation.get_map_rows() * cell_size)
+		rect = Rect2(
+			0.0,
+			0.0,
+			simulation.get_map_columns() * cell_size,
+			simulation.get_map_rows() * cell_size
+		)
 	var message: String = simulation.set_ground_height_map(
 		image.get_data().to_float32_array(),
 		image.get_width(),
@@ -89,7 +98,7 @@ func needs_rays() -> bool:
 
 
 ## After the map is read (on the worker): the ground points the rays go through, when on colliders.
-func prepare_rays(simulation: RefCounted) -> void:
+func prepare_rays(simulation: NativeField) -> void:
 	if not needs_rays():
 		return
 	_points = simulation.get_ground_points()
@@ -161,7 +170,7 @@ func get_ray_ms() -> float:
 
 ## Hands the rays' hits to [param simulation] (on the worker: it lays the plants out). Returns what
 ## is wrong, or "".
-func apply_rays(simulation: RefCounted) -> String:
+func apply_rays(simulation: NativeField) -> String:
 	var message: String = simulation.set_ground_heights(_heights, _normals, tilt)
 	_points = PackedFloat32Array()
 	return message

@@ -6,6 +6,7 @@ extends RefCounted
 ## made as plants come into reach and freed as they leave (no nodes per plant).
 
 ## Meta key a pusher may carry to set its own radius (metres); else the field's pusher_radius.
+const NativeField: GDScript = preload("native_field.gd")
 const RADIUS_META: StringName = &"push_radius"
 
 var _field: Node3D
@@ -40,7 +41,7 @@ func gather_pushers(group: StringName, default_radius: float) -> PackedFloat32Ar
 ## [param reach] of the gathered pushers and of [param observer] (if any), in the field's physics
 ## space, with the given collision layer and mask. [param reach] 0 frees them all.
 func update_colliders(
-	simulation: RefCounted, observer: Node3D, reach: float, stalk: Vector2, layer: int, mask: int
+	simulation: NativeField, observer: Node3D, reach: float, stalk: Vector2, layer: int, mask: int
 ) -> void:
 	if reach <= 0.0 or not _field.is_inside_tree():
 		free_colliders()
@@ -98,12 +99,16 @@ func _make_body(plant: int, root: Vector3, space: RID, layer: int, mask: int) ->
 		PhysicsServer3D.shape_set_data(_shape, {"radius": _shape_size.x, "height": _shape_size.y})
 	var body: RID = PhysicsServer3D.body_create()
 	PhysicsServer3D.body_set_mode(body, PhysicsServer3D.BODY_MODE_STATIC)
-	PhysicsServer3D.body_add_shape(body, _shape, Transform3D(Basis(), Vector3(0.0, _shape_size.y * 0.5, 0.0)))
+	PhysicsServer3D.body_add_shape(
+		body, _shape, Transform3D(Basis(), Vector3(0.0, _shape_size.y * 0.5, 0.0))
+	)
 	PhysicsServer3D.body_set_collision_layer(body, layer)
 	PhysicsServer3D.body_set_collision_mask(body, mask)
 	PhysicsServer3D.body_attach_object_instance_id(body, _field.get_instance_id())
 	PhysicsServer3D.body_set_state(
-		body, PhysicsServer3D.BODY_STATE_TRANSFORM, _field.global_transform * Transform3D(Basis(), root)
+		body,
+		PhysicsServer3D.BODY_STATE_TRANSFORM,
+		_field.global_transform * Transform3D(Basis(), root)
 	)
 	PhysicsServer3D.body_set_space(body, space)
 	_bodies[plant] = body

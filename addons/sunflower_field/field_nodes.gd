@@ -14,6 +14,7 @@ extends RefCounted
 ## at once.
 
 const Native: GDScript = preload("native.gd")
+const NativeField: GDScript = preload("native_field.gd")
 const ImpostorSet: GDScript = preload("impostor_set.gd")
 const FarTileTable: GDScript = preload("far_tile_table.gd")
 const PartMeshes: GDScript = preload("part_meshes.gd")
@@ -25,7 +26,7 @@ const CASTER_NAME: String = "ShadowCaster"
 ## The parts of a plant, bottom to top, as node names use them.
 const PART_NAMES: PackedStringArray = PartMeshes.PART_NAMES
 
-var simulation: RefCounted
+var simulation: NativeField
 ## The simulation's far tiles, read when the first tile node is made.
 var tiles: FarTileTable
 ## Tile nodes made, and taken over from the previous field, by this field's build.
@@ -51,7 +52,7 @@ var _suns_stale: bool = true
 
 ## Nodes of [param owner] for [param field_simulation], its far levels drawn with [param impostors]
 ## (an ImpostorSet per species).
-func _init(owner: Node3D, field_simulation: RefCounted, impostors: Array[ImpostorSet]) -> void:
+func _init(owner: Node3D, field_simulation: NativeField, impostors: Array[ImpostorSet]) -> void:
 	_owner = owner
 	simulation = field_simulation
 	_impostors = impostors
@@ -94,7 +95,9 @@ func make_tiles(budget_usec: int, max_draw_distance: float) -> bool:
 		tiles_made += 1
 		var aabb: AABB = tiles.aabb(tile)
 		var impostors: ImpostorSet = _impostors[tiles.species(tile)]
-		var node: MultiMeshInstance3D = _make_node(_tile_node_name(tile), impostors.mesh(true), aabb, true)
+		var node: MultiMeshInstance3D = _make_node(
+			_tile_node_name(tile), impostors.mesh(true), aabb, true
+		)
 		_add_caster(node, impostors.caster(true))
 		node.visible = false  # shown when the whole field is ready
 		_tile_nodes.append(node)
@@ -141,7 +144,9 @@ func _link_parents() -> void:
 		var parent: int = tiles.parent(tile)
 		var node: MultiMeshInstance3D = _tile_nodes[tile]
 		for drawn: GeometryInstance3D in [node, _caster_of(node)]:
-			drawn.visibility_parent = drawn.get_path_to(_tile_nodes[parent]) if parent >= 0 else NodePath()
+			drawn.visibility_parent = (
+				drawn.get_path_to(_tile_nodes[parent]) if parent >= 0 else NodePath()
+			)
 
 
 ## A merged level's plants are at least its begin distance away (200 m by default): beyond the sun's
@@ -221,7 +226,9 @@ func get_tile_progress() -> float:
 ## [param species_plants] holds each species' FieldPlant: a plant drawn whole gets one node per
 ## level ([code]Mesh1[/code]…), any other one per level and part ([code]Mesh1Bottom[/code]…). The
 ## near plants' bounds reach [param sway_margin] metres past the chunks' (a swaying plant's lean).
-func finish(species_plants: Array, legend: Dictionary, cell_size: float, sway_margin: float) -> void:
+func finish(
+	species_plants: Array, legend: Dictionary, cell_size: float, sway_margin: float
+) -> void:
 	var aabb: AABB = _field_aabb().grow(sway_margin)
 	var per_species: int = Native.constant(&"BUCKET_COUNT")
 	for species: int in simulation.get_species_count():
@@ -238,11 +245,17 @@ func finish(species_plants: Array, legend: Dictionary, cell_size: float, sway_ma
 				_add_dynamic(whole, first + Native.mesh_bucket(level, 0))
 				continue
 			for part: int in PART_NAMES.size():
-				var node_name: String = "%sMesh%d%s" % [prefix, level + 1, PART_NAMES[part].capitalize()]
-				var node: MultiMeshInstance3D = _make_node(node_name, plant.mesh_for_field(level, part), aabb)
+				var node_name: String = (
+					"%sMesh%d%s" % [prefix, level + 1, PART_NAMES[part].capitalize()]
+				)
+				var node: MultiMeshInstance3D = _make_node(
+					node_name, plant.mesh_for_field(level, part), aabb
+				)
 				_add_dynamic(node, first + Native.mesh_bucket(level, part))
 		# The near sprites and billboards: one multi-view impostor draws both.
-		var impostors: MultiMeshInstance3D = _make_node(prefix + "Impostors", _impostors[species].mesh(), aabb, true)
+		var impostors: MultiMeshInstance3D = _make_node(
+			prefix + "Impostors", _impostors[species].mesh(), aabb, true
+		)
 		_add_dynamic(impostors, first + Native.constant(&"BUCKET_IMPOSTOR"))
 		_add_caster(impostors, _impostors[species].caster())
 	_place_objects(legend, cell_size)
@@ -315,11 +328,15 @@ func set_plant_meshes(species: int, plant: Resource) -> void:
 			_set_bucket_mesh(species, Native.mesh_bucket(level, 0), plant.whole_mesh(level))
 			continue
 		for part: int in PART_NAMES.size():
-			_set_bucket_mesh(species, Native.mesh_bucket(level, part), plant.mesh_for_field(level, part))
+			_set_bucket_mesh(
+				species, Native.mesh_bucket(level, part), plant.mesh_for_field(level, part)
+			)
 
 
 func _set_bucket_mesh(species: int, bucket_in_species: int, mesh: Mesh) -> void:
-	var slot: int = _dynamic_buckets.find(species * Native.constant(&"BUCKET_COUNT") + bucket_in_species)
+	var slot: int = _dynamic_buckets.find(
+		species * Native.constant(&"BUCKET_COUNT") + bucket_in_species
+	)
 	if slot >= 0 and _dynamic_nodes[slot].multimesh.mesh != mesh:
 		_dynamic_nodes[slot].multimesh.mesh = mesh
 
@@ -379,7 +396,10 @@ static func _usable_keys(legend: Dictionary, warn: bool) -> Array:
 		if symbol.length() != 1 or symbol in ["*", " ", "."]:
 			if warn:
 				push_warning(
-					"SunflowerField.legend: key '%s' must be one character other than '*', ' ' and '.'" % symbol
+					(
+						"SunflowerField.legend: key '%s' must be one character other than '*', ' ' and '.'"
+						% symbol
+					)
 				)
 			continue
 		keys.append(key)
@@ -398,7 +418,9 @@ func _add_dynamic(node: MultiMeshInstance3D, bucket: int) -> void:
 
 ## A MultiMesh node for the native buffers: 3D transforms and colours, or when [param compact] the
 ## impostors' 8-float records (2D transforms without colours; the impostor shader decodes them).
-func _make_node(node_name: String, mesh: Mesh, aabb: AABB, compact: bool = false) -> MultiMeshInstance3D:
+func _make_node(
+	node_name: String, mesh: Mesh, aabb: AABB, compact: bool = false
+) -> MultiMeshInstance3D:
 	var multimesh: MultiMesh = MultiMesh.new()
 	multimesh.transform_format = MultiMesh.TRANSFORM_2D if compact else MultiMesh.TRANSFORM_3D
 	multimesh.use_colors = not compact

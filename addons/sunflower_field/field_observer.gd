@@ -4,6 +4,8 @@ extends RefCounted
 ## the viewport's camera (in the editor, the editor's), and what the simulation needs of it (the
 ## position and, for a camera, the view's planes) in the field's space.
 
+const NativeField: GDScript = preload("native_field.gd")
+
 
 ## The observer node of [param field], or null when there is none.
 static func resolve(field: Node3D, observer: NodePath) -> Node3D:
@@ -24,7 +26,9 @@ static func resolve(field: Node3D, observer: NodePath) -> Node3D:
 ## Hands the observer's position (and with [param culling], a camera's frustum planes) to
 ## [param simulation], in [param field]'s space, and returns the observer. Nothing happens without
 ## one (null).
-static func push(field: Node3D, observer: NodePath, culling: bool, simulation: RefCounted) -> Node3D:
+static func push(
+	field: Node3D, observer: NodePath, culling: bool, simulation: NativeField
+) -> Node3D:
 	var node: Node3D = resolve(field, observer)
 	if node == null:
 		return null
@@ -34,6 +38,8 @@ static func push(field: Node3D, observer: NodePath, culling: bool, simulation: R
 	if culling and camera and camera.is_inside_tree():
 		for plane: Plane in camera.get_frustum():
 			var local_plane: Plane = to_local * plane
-			frustum.append_array([local_plane.normal.x, local_plane.normal.y, local_plane.normal.z, local_plane.d])
+			frustum.append_array(
+				[local_plane.normal.x, local_plane.normal.y, local_plane.normal.z, local_plane.d]
+			)
 	simulation.set_observer(to_local * node.global_position, frustum)
 	return node

@@ -11,6 +11,7 @@ extends RefCounted
 enum Mode { OFF, PAINT, ERASE }
 
 const Native: GDScript = preload("native.gd")
+const NativeField: GDScript = preload("native_field.gd")
 const FieldNodes: GDScript = preload("field_nodes.gd")
 ## The stroke's preview is rebuilt at most this often, milliseconds.
 const PREVIEW_INTERVAL_MS: int = 60
@@ -33,7 +34,7 @@ var last_error: String = ""
 
 var _undo_redo: EditorUndoRedoManager
 var _field: SunflowerField
-var _stroke: RefCounted  # the native simulation holding the map while a stroke paints it
+var _stroke: NativeField  # the native simulation holding the map while a stroke paints it
 var _erasing: bool = false  # the stroke erases (Erase mode, or Ctrl held when it began)
 var _original: PackedByteArray
 var _original_map: SunflowerFieldMap
@@ -62,11 +63,15 @@ func _init(undo_redo: EditorUndoRedoManager) -> void:
 		_buttons[entry[1]] = button
 	_symbols = OptionButton.new()
 	_symbols.tooltip_text = "The map symbol painted"
-	_symbols.item_selected.connect(func(index: int) -> void: symbol = _symbols.get_item_text(index).left(1))
+	_symbols.item_selected.connect(
+		func(index: int) -> void: symbol = _symbols.get_item_text(index).left(1)
+	)
 	toolbar.add_child(_symbols)
 	_radius_box = _spin_box("Brush radius", 0.25, 50.0, 0.25, radius, " m")
 	_radius_box.value_changed.connect(func(value: float) -> void: radius = value)
-	_density_box = _spin_box("Density: the share of cells a stroke fills", 0.05, 1.0, 0.05, density, "")
+	_density_box = _spin_box(
+		"Density: the share of cells a stroke fills", 0.05, 1.0, 0.05, density, ""
+	)
 	_density_box.value_changed.connect(func(value: float) -> void: density = value)
 	toolbar.visible = false
 	if Engine.is_editor_hint():  # tools and tests also paint outside the editor
@@ -76,7 +81,10 @@ func _init(undo_redo: EditorUndoRedoManager) -> void:
 ## Lets go of the editor (the plugin leaves): frees the toolbar; no painter is active any more.
 func release() -> void:
 	edit(null)
-	if Engine.is_editor_hint() and EditorInterface.get_inspector().property_edited.is_connected(_on_property_edited):
+	if (
+		Engine.is_editor_hint()
+		and EditorInterface.get_inspector().property_edited.is_connected(_on_property_edited)
+	):
 		EditorInterface.get_inspector().property_edited.disconnect(_on_property_edited)
 	if is_instance_valid(toolbar):
 		if toolbar.is_inside_tree():
@@ -164,7 +172,10 @@ func handle_input(camera: Camera3D, event: InputEvent) -> bool:
 		return false
 	if event is InputEventMouseMotion:
 		return _on_motion(camera, event as InputEventMouseMotion)
-	if event is InputEventMouseButton and (event as InputEventMouseButton).button_index == MOUSE_BUTTON_LEFT:
+	if (
+		event is InputEventMouseButton
+		and (event as InputEventMouseButton).button_index == MOUSE_BUTTON_LEFT
+	):
 		return _on_left_button(camera, event as InputEventMouseButton)
 	return false
 
@@ -203,7 +214,10 @@ func ground_point(camera: Camera3D, screen_point: Vector2) -> Variant:
 		var hit: Dictionary = _field.get_world_3d().direct_space_state.intersect_ray(query)
 		if not hit.is_empty():
 			return hit["position"]
-	if _field.ground_source == SunflowerField.GroundSource.HEIGHT_MAP and _field.get_plant_count() > 0:
+	if (
+		_field.ground_source == SunflowerField.GroundSource.HEIGHT_MAP
+		and _field.get_plant_count() > 0
+	):
 		return _height_map_point(from, direction)
 	var plane: Plane = Plane(_field.global_basis.y.normalized(), _field.global_position)
 	return plane.intersects_ray(from, direction)
@@ -212,7 +226,7 @@ func ground_point(camera: Camera3D, screen_point: Vector2) -> Variant:
 ## Where a ray meets the field's height map: marched in half-metre steps in the field's space, then
 ## bisected; null when it meets none within 2 km.
 func _height_map_point(from: Vector3, direction: Vector3) -> Variant:
-	var simulation: RefCounted = _field.get_simulation()
+	var simulation: NativeField = NativeField.new(_field.get_simulation())
 	var origin: Vector3 = _field.to_local(from)
 	var along: Vector3 = (_field.global_transform.affine_inverse().basis * direction).normalized()
 	var above: Callable = func(t: float) -> float:
@@ -249,7 +263,7 @@ func _begin_stroke(erasing: bool) -> bool:
 
 ## A map-only native simulation holding [param field]'s map, which must be a writable .field file
 ## in the project; remembers the map and its bytes as they were. Null (with an error) otherwise.
-func _open_map(field: SunflowerField) -> RefCounted:
+func _open_map(field: SunflowerField) -> NativeField:
 	last_error = ""
 	var field_map: SunflowerFieldMap = field.map
 	if field_map == null:
@@ -257,7 +271,12 @@ func _open_map(field: SunflowerField) -> RefCounted:
 		return null
 	var path: String = field_map.source_path
 	if not path.begins_with("res://") or not FileAccess.file_exists(path):
-		_fail("SunflowerField painter: %s is not a .field file in the project; nothing to write back" % path)
+		_fail(
+			(
+				"SunflowerField painter: %s is not a .field file in the project; nothing to write back"
+				% path
+			)
+		)
 		return null
 	var writable: FileAccess = FileAccess.open(path, FileAccess.READ_WRITE)
 	if writable == null:
@@ -269,7 +288,7 @@ func _open_map(field: SunflowerField) -> RefCounted:
 		)
 		return null
 	writable.close()
-	var editor: RefCounted = Native.create_simulation()
+	var editor: NativeField = NativeField.create()
 	if editor == null:
 		return null
 	editor.set_ground_heights(PackedFloat32Array(), PackedFloat32Array(), 0.0)  # a map only: no plants laid out
@@ -289,7 +308,9 @@ func _paint_at(world_point: Vector3) -> void:
 	var local: Vector3 = _field.to_local(world_point)
 	var cells: Vector2 = Vector2(local.x, local.z) / _field.cell_size
 	var painted: String = "" if _erasing else symbol
-	var changed: PackedInt32Array = _stroke.paint_map(cells, radius / _field.cell_size, painted, density, _seed, false)
+	var changed: PackedInt32Array = _stroke.paint_map(
+		cells, radius / _field.cell_size, painted, density, _seed, false
+	)
 	_preview_due = _preview_due or not changed.is_empty()
 	_preview_if_due()
 
@@ -297,7 +318,11 @@ func _paint_at(world_point: Vector3) -> void:
 ## Shows the stroke so far once the last preview has been built (a large field builds over a few
 ## frames; starting another would drop it) and the interval has passed.
 func _preview_if_due() -> void:
-	if _preview_due and not _field.is_building() and Time.get_ticks_msec() - _last_preview_ms >= PREVIEW_INTERVAL_MS:
+	if (
+		_preview_due
+		and not _field.is_building()
+		and Time.get_ticks_msec() - _last_preview_ms >= PREVIEW_INTERVAL_MS
+	):
 		_preview_due = false
 		_preview()
 
@@ -333,7 +358,7 @@ func _end_stroke(commit: bool) -> void:
 ## [param filled], saved as a new [code].field[/code] beside the edited scene and given to the field
 ## as one undo/redo action. Returns the file's path, or "" (with an error).
 func new_map(field: SunflowerField, columns: int, rows: int, filled: bool) -> String:
-	var editor: RefCounted = Native.create_simulation()
+	var editor: NativeField = NativeField.create()
 	if editor == null:
 		return ""
 	var lines: PackedStringArray = [
@@ -347,7 +372,9 @@ func new_map(field: SunflowerField, columns: int, rows: int, filled: bool) -> St
 		return ""
 	var scene: Node = field.get_tree().edited_scene_root if field.is_inside_tree() else null
 	var folder: String = (
-		scene.scene_file_path.get_base_dir() if scene and not scene.scene_file_path.is_empty() else "res://"
+		scene.scene_file_path.get_base_dir()
+		if scene and not scene.scene_file_path.is_empty()
+		else "res://"
 	)
 	var path: String = folder.path_join(str(field.name).to_snake_case() + ".field")
 	var serial: int = 2
@@ -356,7 +383,12 @@ func new_map(field: SunflowerField, columns: int, rows: int, filled: bool) -> St
 		serial += 1
 	var file: FileAccess = FileAccess.open(path, FileAccess.WRITE)
 	if file == null:
-		_fail("SunflowerField: cannot write %s (%s)" % [path, error_string(FileAccess.get_open_error())])
+		_fail(
+			(
+				"SunflowerField: cannot write %s (%s)"
+				% [path, error_string(FileAccess.get_open_error())]
+			)
+		)
 		return ""
 	file.store_buffer(editor.write_map())
 	file.close()
@@ -371,7 +403,7 @@ func new_map(field: SunflowerField, columns: int, rows: int, filled: bool) -> St
 ## Gives [param field]'s map [param columns] × [param rows] cells, keeping the cells both sizes share,
 ## written back to its file as one undo/redo action. False (with an error) when it cannot.
 func resize_map(field: SunflowerField, columns: int, rows: int) -> bool:
-	var editor: RefCounted = _open_map(field)
+	var editor: NativeField = _open_map(field)
 	if editor == null:
 		return false
 	if not editor.resize_map(columns, rows):
@@ -457,7 +489,9 @@ func _remove_circle() -> void:
 	_circle = null
 
 
-func _spin_box(tooltip: String, low: float, high: float, step: float, value: float, suffix: String) -> SpinBox:
+func _spin_box(
+	tooltip: String, low: float, high: float, step: float, value: float, suffix: String
+) -> SpinBox:
 	var box: SpinBox = SpinBox.new()
 	box.min_value = low
 	box.max_value = high

@@ -16,6 +16,7 @@ extends Resource
 ## The built-in sunflower is [method default_plant]; [code]null[/code] mesh or texture slots use it.
 
 const Native: GDScript = preload("native.gd")
+const NativeField: GDScript = preload("native_field.gd")
 const DEFAULT_PATH: String = "res://addons/sunflower_field/plants/sunflower.tres"
 const PartMeshes: GDScript = preload("part_meshes.gd")
 const ImpostorBaker: GDScript = preload("impostor_baker.gd")
@@ -81,7 +82,9 @@ static var _default: FieldPlant
 ## head's own length. [member height] spans their sum.
 @export var part_lengths: Vector3 = Vector3(1.0, 1.0, 1.0):
 	set(value):
-		part_lengths = Vector3(_positive(value.x, 1.0), _positive(value.y, 1.0), _positive(value.z, 1.0))
+		part_lengths = Vector3(
+			_positive(value.x, 1.0), _positive(value.y, 1.0), _positive(value.z, 1.0)
+		)
 		emit_changed()
 ## Model units from the root to the top of anything drawn (the parts and what stands out above
 ## them, such as petals): the impostor quads' height.
@@ -137,7 +140,9 @@ static var _default: FieldPlant
 ## impostors.
 @export_range(0.0, 1.0, 0.01) var brightness_variation: float = 0.0:
 	set(value):
-		brightness_variation = Native.accept("FieldPlant.brightness_variation", value, brightness_variation)
+		brightness_variation = Native.accept(
+			"FieldPlant.brightness_variation", value, brightness_variation
+		)
 		emit_changed()
 ## Each plant is tinted warmer or cooler by up to ± this share (red up and blue down, or the other
 ## way; seeded), like [member brightness_variation].
@@ -178,7 +183,9 @@ static var _default: FieldPlant
 ## make the far levels glow less than the meshes); set it yourself for an atlas made elsewhere.
 @export_range(1.0, 32768.0, 1.0) var impostor_emission_range: float = 8.0:
 	set(value):
-		impostor_emission_range = Native.accept("FieldPlant.impostor_emission_range", value, impostor_emission_range)
+		impostor_emission_range = Native.accept(
+			"FieldPlant.impostor_emission_range", value, impostor_emission_range
+		)
 		emit_changed()
 
 ## How far the far levels' shadow casters stand out towards the light, as a share of the impostor's
@@ -186,7 +193,9 @@ static var _default: FieldPlant
 ## shade each other (0.03 suits the sunflower; more shades a lone plant's own leaves with specks).
 @export_range(0.0, 0.5, 0.01) var impostor_shadow_shift: float = 0.03:
 	set(value):
-		impostor_shadow_shift = Native.accept("FieldPlant.impostor_shadow_shift", value, impostor_shadow_shift)
+		impostor_shadow_shift = Native.accept(
+			"FieldPlant.impostor_shadow_shift", value, impostor_shadow_shift
+		)
 		emit_changed()
 
 var _whole_meshes: Dictionary = {}  # level → [what it was merged from, the merged mesh]
@@ -256,7 +265,9 @@ func texture_drawn(kind: String) -> Texture2D:
 	if own or self == default_plant():
 		return own
 	return (
-		default_plant().get("impostor_" + kind) if mesh_level_1.all(func(m: Mesh) -> bool: return m == null) else null
+		default_plant().get("impostor_" + kind)
+		if mesh_level_1.all(func(m: Mesh) -> bool: return m == null)
+		else null
 	)
 
 
@@ -264,7 +275,9 @@ func texture_drawn(kind: String) -> Texture2D:
 ## the [member impostor_width] × [member height_units] cylinder fits it from every elevation
 ## (its outline seen at elevation e is w wide and h·cos e + w·sin e tall, at most √(h² + w²)).
 func impostor_frame() -> Vector2:
-	return Vector2(sqrt(height_units * height_units + impostor_width * impostor_width), height_units * 0.5)
+	return Vector2(
+		sqrt(height_units * height_units + impostor_width * impostor_width), height_units * 0.5
+	)
 
 
 ## What the layout depends on, and whether the plant is drawn whole (the native buckets follow it):
@@ -309,10 +322,14 @@ func bake_impostors(host: Node, folder: String = "", base_name: String = "") -> 
 
 
 ## Hands the plant's form, height and variety to a native simulation, as [param species].
-func apply_to(simulation: RefCounted, species: int = 0) -> void:
-	simulation.set_plant_form(species, part_lengths, middle_variation, height_units, cull_radius_units, stiffness)
+func apply_to(simulation: NativeField, species: int = 0) -> void:
+	simulation.set_plant_form(
+		species, part_lengths, middle_variation, height_units, cull_radius_units, stiffness
+	)
 	simulation.set_plant_height(species, height)
-	simulation.set_plant_variation(species, yaw_range, scale_min, scale_max, brightness_variation, tint_variation)
+	simulation.set_plant_variation(
+		species, yaw_range, scale_min, scale_max, brightness_variation, tint_variation
+	)
 
 
 func _drawn_parts(level: int) -> Array[Mesh]:

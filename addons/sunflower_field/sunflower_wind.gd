@@ -19,6 +19,7 @@ extends Resource
 enum Model { THESIS, NATURAL }
 
 const Native: GDScript = preload("native.gd")
+const NativeField: GDScript = preload("native_field.gd")
 
 ## [b]Natural[/b]: a downwind lean, sway and rolling gusts, for games. [b]Thesis[/b]: the thesis'
 ## equations exactly, swinging about upright (for reproducing it).
@@ -118,13 +119,16 @@ const Native: GDScript = preload("native.gd")
 func is_default() -> bool:
 	var fresh: SunflowerWind = SunflowerWind.new()
 	for property: Dictionary in get_property_list():
-		if property["usage"] & PROPERTY_USAGE_STORAGE and property["usage"] & PROPERTY_USAGE_SCRIPT_VARIABLE:
+		if (
+			property["usage"] & PROPERTY_USAGE_STORAGE
+			and property["usage"] & PROPERTY_USAGE_SCRIPT_VARIABLE
+		):
 			if get(property["name"]) != fresh.get(property["name"]):
 				return false
 	return true
 
 
-func apply_to(simulation: RefCounted) -> void:
+func apply_to(simulation: NativeField) -> void:
 	simulation.set_wind(
 		model,
 		power,

@@ -23,7 +23,9 @@ extends Node3D
 const MAP_NAMES: PackedStringArray = [
 	"Demo field (40 x 30)", "Large field (400 x 300)", "Hills (240 x 240, on a terrain)"
 ]
-const MAP_PATHS: PackedStringArray = ["res://fields/demo.field", "res://fields/large.field", "res://fields/hills.field"]
+const MAP_PATHS: PackedStringArray = [
+	"res://fields/demo.field", "res://fields/large.field", "res://fields/hills.field"
+]
 ## The map that stands on the demo's hills (ground source Colliders); the others lie on the plane.
 const HILLS_MAP: String = "hills.field"
 const INCREMENTS: PackedFloat32Array = [0.1, 10.0]
@@ -123,14 +125,18 @@ func _ready() -> void:
 	if not _stats_path.is_empty():
 		for frame: int in 3:  # the scene without a field, drawn: what the renderer holds anyway
 			await get_tree().process_frame
-		_buffer_memory["before"] = RenderingServer.get_rendering_info(RenderingServer.RENDERING_INFO_BUFFER_MEM_USED)
+		_buffer_memory["before"] = RenderingServer.get_rendering_info(
+			RenderingServer.RENDERING_INFO_BUFFER_MEM_USED
+		)
 	var build_start: int = Time.get_ticks_usec()
 	load_map(_map_path)
 	while _field.is_building():  # a large map builds in the background; the HUD shows its progress
 		await get_tree().process_frame
 	if not _stats_path.is_empty():
 		await get_tree().process_frame  # the field's first frame: its buffers are allocated
-		_buffer_memory["field"] = RenderingServer.get_rendering_info(RenderingServer.RENDERING_INFO_BUFFER_MEM_USED)
+		_buffer_memory["field"] = RenderingServer.get_rendering_info(
+			RenderingServer.RENDERING_INFO_BUFFER_MEM_USED
+		)
 	if _baseline == "native":
 		_build_native_baseline()
 		if not _stats_path.is_empty():
@@ -153,8 +159,12 @@ func load_map(path: String) -> void:
 	var hilly: bool = path.get_file() == HILLS_MAP
 	_hills.set_enabled(hilly)
 	_ground.visible = not hilly
-	_field.ground_source = SunflowerField.GroundSource.COLLIDERS if hilly else SunflowerField.GroundSource.FLAT
-	var imported: Resource = load(path) if path.begins_with("res://") and ResourceLoader.exists(path) else null
+	_field.ground_source = (
+		SunflowerField.GroundSource.COLLIDERS if hilly else SunflowerField.GroundSource.FLAT
+	)
+	var imported: Resource = (
+		load(path) if path.begins_with("res://") and ResourceLoader.exists(path) else null
+	)
 	if imported is SunflowerFieldMap:
 		_field.map = imported
 	elif _field.load_map_file(path, true) != OK:
@@ -181,7 +191,11 @@ func load_part(lod: int, part: int, path: String) -> String:
 	_field.set_part_mesh(lod, part, loaded["mesh"])
 	_count_triangles()
 	var message: String = loaded.get(
-		"warning", "mesh %d %s replaced by %s" % [lod + 1, SunflowerField.FieldNodes.PART_NAMES[part], path.get_file()]
+		"warning",
+		(
+			"mesh %d %s replaced by %s"
+			% [lod + 1, SunflowerField.FieldNodes.PART_NAMES[part], path.get_file()]
+		)
 	)
 	_hud.show_message(message)
 	if lod == 0 and DisplayServer.get_name() != "headless":
@@ -207,18 +221,24 @@ func _unhandled_input(event: InputEvent) -> void:
 		_field.wind_direction = _step_direction(_field.wind_direction, 1)
 	elif event.is_action_pressed("toggle_increment"):
 		_field.wind_increment = (
-			INCREMENTS[1] if is_equal_approx(_field.wind_increment, INCREMENTS[0]) else INCREMENTS[0]
+			INCREMENTS[1]
+			if is_equal_approx(_field.wind_increment, INCREMENTS[0])
+			else INCREMENTS[0]
 		)
 	elif event.is_action_pressed("walk_mode"):
 		_camera.walking = not _camera.walking
-		_hud.show_message("walk mode: head height, the flowers part around you" if _camera.walking else "fly mode")
+		_hud.show_message(
+			"walk mode: head height, the flowers part around you" if _camera.walking else "fly mode"
+		)
 	elif event.is_action_pressed("wind_model"):
 		var natural: bool = _field.wind.model == SunflowerWind.Model.NATURAL
 		_field.wind.model = SunflowerWind.Model.THESIS if natural else SunflowerWind.Model.NATURAL
 		_hud.show_message("wind model: " + _wind_model_name())
 	elif event.is_action_pressed("toggle_wireframe"):
 		var wireframe: bool = get_viewport().debug_draw != Viewport.DEBUG_DRAW_WIREFRAME
-		get_viewport().debug_draw = Viewport.DEBUG_DRAW_WIREFRAME if wireframe else Viewport.DEBUG_DRAW_DISABLED
+		get_viewport().debug_draw = (
+			Viewport.DEBUG_DRAW_WIREFRAME if wireframe else Viewport.DEBUG_DRAW_DISABLED
+		)
 	elif event.is_action_pressed("toggle_help"):
 		_hud.toggle_help()
 	elif event.is_action_pressed("next_map"):
@@ -259,7 +279,9 @@ func _step_direction(direction: Vector2, axis: int) -> Vector2:
 
 
 func _on_field_built(_plants: int) -> void:
-	var size: Vector2 = Vector2(_field.get_simulation().get_map_columns(), _field.get_simulation().get_map_rows())
+	var size: Vector2 = Vector2(
+		_field.get_simulation().get_map_columns(), _field.get_simulation().get_map_rows()
+	)
 	size *= _field.cell_size
 	var plane: PlaneMesh = _ground.mesh as PlaneMesh
 	plane.size = size + Vector2(400.0, 400.0)
@@ -281,7 +303,11 @@ func _count_triangles() -> void:
 				var arrays: Array = mesh.surface_get_arrays(surface)
 				var indices: PackedInt32Array = arrays[Mesh.ARRAY_INDEX]
 				total += (
-					(indices.size() if indices.size() > 0 else (arrays[Mesh.ARRAY_VERTEX] as PackedVector3Array).size())
+					(
+						indices.size()
+						if indices.size() > 0
+						else (arrays[Mesh.ARRAY_VERTEX] as PackedVector3Array).size()
+					)
 					/ 3
 				)
 		_triangles_per_plant[lod] = total
@@ -294,7 +320,8 @@ func _stats_text() -> String:
 	for lod: int in SunflowerSimulation.MESH_LEVEL_COUNT:
 		# Near meshes: the instances actually written (frustum-culled), times the model's size.
 		triangles += (
-			simulation.get_bucket_instance_count(SunflowerSimulation.mesh_bucket(lod, 0)) * _triangles_per_plant[lod]
+			simulation.get_bucket_instance_count(SunflowerSimulation.mesh_bucket(lod, 0))
+			* _triangles_per_plant[lod]
 		)
 	var fps: float = Engine.get_frames_per_second()
 	return (
@@ -358,14 +385,18 @@ func _build_native_baseline() -> void:
 	var plants: int = baseline.build(_field.map, _field, _draw_distance)
 	_field.visible = false
 	_field.process_mode = Node.PROCESS_MODE_DISABLED
-	_hud.show_message("baseline: %d plants as Godot-native chunked MultiMeshes with automatic mesh LOD" % plants)
+	_hud.show_message(
+		"baseline: %d plants as Godot-native chunked MultiMeshes with automatic mesh LOD" % plants
+	)
 
 
 # --- Recording mode ---------------------------------------------------------------------------
 
 
 func _start_recording(path_file: String) -> void:
-	var size: Vector2 = Vector2(_field.get_simulation().get_map_columns(), _field.get_simulation().get_map_rows())
+	var size: Vector2 = Vector2(
+		_field.get_simulation().get_map_columns(), _field.get_simulation().get_map_rows()
+	)
 	size *= _field.cell_size
 	if path_file.is_empty():
 		_camera_path = CameraPath.built_in(size, _camera.ground_below)
@@ -395,17 +426,28 @@ func _record_frame() -> void:
 			_lod_sums[lod] += counts[lod]
 		# The frame drawn last (all viewports).
 		(_rendering["draw_calls"] as Array).append(
-			RenderingServer.get_rendering_info(RenderingServer.RENDERING_INFO_TOTAL_DRAW_CALLS_IN_FRAME)
+			RenderingServer.get_rendering_info(
+				RenderingServer.RENDERING_INFO_TOTAL_DRAW_CALLS_IN_FRAME
+			)
 		)
 		(_rendering["objects"] as Array).append(
-			RenderingServer.get_rendering_info(RenderingServer.RENDERING_INFO_TOTAL_OBJECTS_IN_FRAME)
+			RenderingServer.get_rendering_info(
+				RenderingServer.RENDERING_INFO_TOTAL_OBJECTS_IN_FRAME
+			)
 		)
 		(_rendering["primitives"] as Array).append(
-			RenderingServer.get_rendering_info(RenderingServer.RENDERING_INFO_TOTAL_PRIMITIVES_IN_FRAME)
+			RenderingServer.get_rendering_info(
+				RenderingServer.RENDERING_INFO_TOTAL_PRIMITIVES_IN_FRAME
+			)
 		)
 	_last_ticks = now
 	_camera.transform = _camera_path.sample(float(_frame) / maxf(_frames_total - 1, 1))
-	if _screenshot_every > 0 and _frame % _screenshot_every == 0 and not _screenshot.is_empty() and _frame > 0:
+	if (
+		_screenshot_every > 0
+		and _frame % _screenshot_every == 0
+		and not _screenshot.is_empty()
+		and _frame > 0
+	):
 		_save_screenshot("%s_%04d.png" % [_screenshot.get_basename(), _frame])
 	_frame += 1
 	if _frame >= _frames_total:
@@ -478,7 +520,8 @@ func _write_stats() -> void:
 		"objects": _summary(PackedFloat32Array(_rendering["objects"])),
 		"primitives": _summary(PackedFloat32Array(_rendering["primitives"])),
 		"buffer_memory_bytes": _buffer_memory,
-		"baseline_chunks": get_node("NativeBaseline").get_child_count() if has_node("NativeBaseline") else 0,
+		"baseline_chunks":
+		get_node("NativeBaseline").get_child_count() if has_node("NativeBaseline") else 0,
 		"lod_counts_mean": mean_counts,
 		"engine": Engine.get_version_info()["string"],
 		"renderer": RenderingServer.get_current_rendering_method(),

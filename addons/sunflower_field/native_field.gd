@@ -1,0 +1,351 @@
+# gdlint: disable=max-public-methods, function-arguments-number
+# (one method per native method the addon calls, with its signature: set_wind takes 11 settings)
+@tool
+extends RefCounted
+## The one script that calls the native simulation ([code]SunflowerSimulation[/code]), with typed
+## signatures: every other script of the addon holds a NativeField, so it parses (and its calls are
+## checked) where no library fits the platform. Each method is the native one of the same name; the
+## class reference of [code]SunflowerSimulation[/code] says more.
+
+const Native: GDScript = preload("native.gd")
+
+## The native simulation itself, for tools and tests ([method SunflowerField.get_simulation]).
+var native: RefCounted
+
+
+## A new simulation, or null (with the one missing-library error) when there is no library.
+static func create() -> RefCounted:
+	var simulation: RefCounted = Native.create_simulation()
+	return new(simulation) if simulation != null else null
+
+
+func _init(simulation: RefCounted) -> void:
+	native = simulation
+
+
+## Parses a field map (see [code]fields/FORMAT.md[/code]) and lays out its plants.
+func load_map(
+	text: PackedByteArray, source: String, legend: String, plant_symbols: String, max_plants: int
+) -> String:
+	return native.load_map(text, source, legend, plant_symbols, max_plants)
+
+
+## The plant types of the map read.
+func get_species_count() -> int:
+	return native.get_species_count()
+
+
+## A brush stroke on the map.
+func paint_map(
+	center: Vector2, radius: float, symbol: String, density: float, stroke_seed: int, relayout: bool
+) -> PackedInt32Array:
+	return native.paint_map(center, radius, symbol, density, stroke_seed, relayout)
+
+
+## The map as text in the format's canonical form (see [code]fields/FORMAT.md[/code]).
+func write_map() -> PackedByteArray:
+	return native.write_map()
+
+
+## Gives the map [param columns] × [param rows] cells.
+func resize_map(columns: int, rows: int) -> bool:
+	return native.resize_map(columns, rows)
+
+
+## Columns of the loaded map.
+func get_map_columns() -> int:
+	return native.get_map_columns()
+
+
+## Rows of the loaded map.
+func get_map_rows() -> int:
+	return native.get_map_rows()
+
+
+## Cells holding legend symbols, as triples (column, row, unicode code point).
+func get_map_objects() -> PackedInt32Array:
+	return native.get_map_objects()
+
+
+## Metres per map character, the random seed, whether x and z get independent jitter (the thesis
+## uses one α for both), and the chunk size in metres.
+func set_layout(
+	cell_size: float, layout_seed: int, independent_jitter: bool, chunk_size: float
+) -> void:
+	native.set_layout(cell_size, layout_seed, independent_jitter, chunk_size)
+
+
+## Where far tiles start to merge (see [member SunflowerField.tile_merge_distance]).
+func set_tile_merge_distance(metres: float) -> void:
+	native.set_tile_merge_distance(metres)
+
+
+## Stands the plants on the plane y = 0 of the field's space (the default).
+func set_ground_flat() -> void:
+	native.set_ground_flat()
+
+
+## Stands the plants on a height map.
+func set_ground_height_map(
+	rgba: PackedFloat32Array,
+	width: int,
+	depth: int,
+	origin: Vector2,
+	size: Vector2,
+	height_min: float,
+	height_max: float,
+	tilt: float
+) -> String:
+	return native.set_ground_height_map(
+		rgba, width, depth, origin, size, height_min, height_max, tilt
+	)
+
+
+## Stands the plants on heights measured elsewhere (rays at colliders).
+func set_ground_heights(
+	heights: PackedFloat32Array, normals: PackedFloat32Array, tilt: float
+) -> String:
+	return native.set_ground_heights(heights, normals, tilt)
+
+
+## Where the ground is asked for, x and z in the field's space.
+func get_ground_points() -> PackedFloat32Array:
+	return native.get_ground_points()
+
+
+## Plant cells of the map with no ground under their plant, which therefore have no plant.
+func get_cells_without_ground() -> int:
+	return native.get_cells_without_ground()
+
+
+## The ground's height at [param point] (x, z of the field's space).
+func get_ground_height(point: Vector2) -> float:
+	return native.get_ground_height(point)
+
+
+## The ground's height under each legend object of the map (its cell's centre), in map order.
+func get_object_heights() -> PackedFloat32Array:
+	return native.get_object_heights()
+
+
+## The field-wide wind the impostor shader sways far plants with, after the last update.
+func get_wind_state() -> PackedFloat32Array:
+	return native.get_wind_state()
+
+
+## A species' height from root to the top of its parts.
+func set_plant_height(species: int, metres: float) -> void:
+	native.set_plant_height(species, metres)
+
+
+## A species' form in model units.
+func set_plant_form(
+	species: int,
+	part_lengths: Vector3,
+	middle_variation: float,
+	height_units: float,
+	cull_radius_units: float,
+	stiffness: float
+) -> void:
+	native.set_plant_form(
+		species, part_lengths, middle_variation, height_units, cull_radius_units, stiffness
+	)
+
+
+## Whether a species' near plants are drawn whole.
+func set_plant_whole(species: int, whole: bool) -> void:
+	native.set_plant_whole(species, whole)
+
+
+## A species' variety between its plants, all seeded.
+func set_plant_variation(
+	species: int,
+	yaw_range: float,
+	scale_min: float,
+	scale_max: float,
+	brightness: float,
+	tint: float
+) -> void:
+	native.set_plant_variation(species, yaw_range, scale_min, scale_max, brightness, tint)
+
+
+## The whole wind in one call, as [code]SunflowerWind[/code] holds it.
+func set_wind(
+	model: int,
+	power: float,
+	direction: Vector2,
+	stiffness_middle: float,
+	stiffness_bottom: float,
+	bend_per_power: float,
+	max_bend: float,
+	flip_interval: float,
+	flip_chance: float,
+	gust_speed: float,
+	gust_share: float
+) -> void:
+	native.set_wind(
+		model,
+		power,
+		direction,
+		stiffness_middle,
+		stiffness_bottom,
+		bend_per_power,
+		max_bend,
+		flip_interval,
+		flip_chance,
+		gust_speed,
+		gust_share
+	)
+
+
+## The four switch distances in metres (mesh 1→2, 2→3, 3→sprite, sprite→billboard), the hysteresis
+## margin in metres, the metres over which mesh 3 dithers into the impostor before the sprite
+## switch (its share in the instance colour's alpha.
+func set_lod(
+	distances: PackedFloat32Array, hysteresis: float, fade: float, interval: float, force_level: int
+) -> void:
+	native.set_lod(distances, hysteresis, fade, interval, force_level)
+
+
+## The observer's position and view frustum in the field's space.
+func set_observer(position: Vector3, frustum: PackedFloat32Array) -> void:
+	native.set_observer(position, frustum)
+
+
+## Threads that move the near plants, the caller included.
+func set_worker_threads(threads: int) -> void:
+	native.set_worker_threads(threads)
+
+
+## Bodies the plants part around, four floats each (x, y, z, radius) in the field's space, from the
+## next [method update] on.
+func set_pushers(pushers: PackedFloat32Array) -> void:
+	native.set_pushers(pushers)
+
+
+## The largest push (a bend, like the wind's) and the seconds a released plant takes to settle
+## upright.
+func set_push_params(strength: float, recovery_seconds: float) -> void:
+	native.set_push_params(strength, recovery_seconds)
+
+
+## Plants pushed now or still springing back (only these hold push state).
+func get_pushed_count() -> int:
+	return native.get_pushed_count()
+
+
+## The plants whose roots lie within [param radius] metres of [param position] on the ground (its
+## height ignored).
+func get_plants_near(position: Vector3, radius: float) -> PackedInt32Array:
+	return native.get_plants_near(position, radius)
+
+
+## The MultiMesh that receives a dynamic bucket.
+func set_bucket_multimesh(bucket: int, multimesh: RID) -> void:
+	native.set_bucket_multimesh(bucket, multimesh)
+
+
+## The static MultiMesh of a far tile's impostors (sprites and billboards are one multi-view
+## impostor).
+func set_tile_multimesh(tile: int, multimesh: RID) -> void:
+	native.set_tile_multimesh(tile, multimesh)
+
+
+## Like [method set_tile_multimesh] for a MultiMesh that already holds this tile's instances
+## (another simulation's tile of equal key and signature in [method get_tile_ids]).
+func adopt_tile_multimesh(tile: int, multimesh: RID) -> void:
+	native.adopt_tile_multimesh(tile, multimesh)
+
+
+## Number of far tiles.
+func get_tile_count() -> int:
+	return native.get_tile_count()
+
+
+## The far tiles' identities, read once per build.
+func get_tile_ids() -> PackedInt64Array:
+	return native.get_tile_ids()
+
+
+## The far tiles' places, read once per build.
+func get_tile_places() -> PackedFloat32Array:
+	return native.get_tile_places()
+
+
+## The field's merge rule, for the impostor shader's [code]tile_merge[/code] after a tile's own
+## level.
+func get_tile_merge_rule() -> PackedFloat32Array:
+	return native.get_tile_merge_rule()
+
+
+## Which of a species' chunks are active now.
+func get_active_mask(species: int) -> PackedByteArray:
+	return native.get_active_mask(species)
+
+
+## Per tile, 1 when it has a plant to draw now, 0 when all its chunks are active (hide its node.
+func get_tiles_drawn() -> PackedByteArray:
+	return native.get_tiles_drawn()
+
+
+## Changes whenever a chunk turns active or static, or the field is rebuilt.
+func get_mask_version() -> int:
+	return native.get_mask_version()
+
+
+## The chunk grid's size in cells (x, z).
+func get_chunk_grid() -> PackedInt32Array:
+	return native.get_chunk_grid()
+
+
+## Computes every chunk's signature now (a build's worker does it, so comparisons on the main
+## thread are cheap).
+func compute_chunk_signatures() -> void:
+	native.compute_chunk_signatures()
+
+
+## Forgets every MultiMesh RID, before the MultiMeshes are freed.
+func release_multimeshes() -> void:
+	native.release_multimeshes()
+
+
+## Advances the field by [param delta] seconds and writes the MultiMesh buffers.
+func update(delta: float) -> void:
+	native.update(delta)
+
+
+## Number of plants.
+func get_plant_count() -> int:
+	return native.get_plant_count()
+
+
+## Plants per representation (mesh 1, mesh 2, mesh 3, sprite, billboard).
+func get_lod_counts() -> PackedInt32Array:
+	return native.get_lod_counts()
+
+
+## Plants per representation for each species in turn ([constant LOD_COUNT] counts each).
+func get_lod_counts_by_species() -> PackedInt32Array:
+	return native.get_lod_counts_by_species()
+
+
+## A plant's root in the field's space.
+func get_plant_position(plant: int) -> Vector3:
+	return native.get_plant_position(plant)
+
+
+## The representation a plant is drawn in (0–4).
+func get_plant_lod(plant: int) -> int:
+	return native.get_plant_lod(plant)
+
+
+## The three part transforms (bottom, middle, head) as 3 × 12 floats, each a row-major 3×4 matrix
+## as in MultiMesh buffers.
+func get_plant_parts(plant: int) -> PackedFloat32Array:
+	return native.get_plant_parts(plant)
+
+
+## Which dynamic buckets hold instances after the last [method update], one byte per bucket
+## ([constant BUCKET_COUNT] per species, species by species).
+func get_filled_buckets() -> PackedByteArray:
+	return native.get_filled_buckets()
