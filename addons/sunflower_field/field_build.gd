@@ -13,6 +13,7 @@ enum Phase { READ, RAYS, NODES }
 const Native: GDScript = preload("native.gd")
 const NativeField: GDScript = preload("native_field.gd")
 const FieldGround: GDScript = preload("field_ground.gd")
+const FieldLegend: GDScript = preload("field_legend.gd")
 const FieldNodes: GDScript = preload("field_nodes.gd")
 const ImpostorSet: GDScript = preload("impostor_set.gd")
 
@@ -47,14 +48,14 @@ class Job:
 		job.simulation = native_simulation
 		job.text = field.map.text
 		job.source = field.map.source_path
-		job.legend = FieldNodes.legend_symbols(field.legend)
+		job.legend = FieldLegend.object_symbols(field.legend)
 		job.max_plants = field.max_plants
 		job.cell_size = field.cell_size
 		job.seed = field.seed
 		job.independent_jitter = field.independent_jitter
 		job.chunk_size = field.chunk_size
 		job.tile_merge_distance = field.tile_merge_distance
-		job.plant_symbols = FieldNodes.plant_symbols(field.legend)
+		job.plant_symbols = FieldLegend.plant_symbols(field.legend)
 		for species_plant: Resource in species_plants:
 			job.plants.append(species_plant.duplicate())
 			job.whole.append(species_plant.drawn_whole())

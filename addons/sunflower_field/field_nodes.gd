@@ -360,52 +360,6 @@ func free_nodes() -> void:
 	_previous = null
 
 
-## The legend's symbols as one string (each key one character other than '*', ' ' and '.'),
-## warning about any other key.
-static func legend_symbols(legend: Dictionary) -> String:
-	var symbols: String = ""
-	for key: Variant in _usable_keys(legend, true):
-		if not (legend[key] is FieldPlant):
-			symbols += str(key)
-	return symbols
-
-
-## The legend's symbols that are plant types (species 1, 2, … in this order).
-static func plant_symbols(legend: Dictionary) -> String:
-	var symbols: String = ""
-	for key: Variant in _usable_keys(legend, false):
-		if legend[key] is FieldPlant:
-			symbols += str(key)
-	return symbols
-
-
-## The legend's plant types, in the order of [method plant_symbols].
-static func legend_plants(legend: Dictionary) -> Array[FieldPlant]:
-	var plants: Array[FieldPlant] = []
-	for key: Variant in _usable_keys(legend, false):
-		if legend[key] is FieldPlant:
-			plants.append(legend[key] as FieldPlant)
-	return plants
-
-
-## The keys that are one character other than '*', ' ' and '.' (warning about the others).
-static func _usable_keys(legend: Dictionary, warn: bool) -> Array:
-	var keys: Array = []
-	for key: Variant in legend:
-		var symbol: String = str(key)
-		if symbol.length() != 1 or symbol in ["*", " ", "."]:
-			if warn:
-				push_warning(
-					(
-						"SunflowerField.legend: key '%s' must be one character other than '*', ' ' and '.'"
-						% symbol
-					)
-				)
-			continue
-		keys.append(key)
-	return keys
-
-
 ## A near bucket's node: the simulation fills its MultiMesh each update and gives the MultiMesh the
 ## box of the plants it holds then, which the node follows (no box of its own), so that the renderer
 ## draws the bucket only in the passes its plants reach (the field's box until the first update).

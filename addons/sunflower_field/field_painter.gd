@@ -12,7 +12,7 @@ enum Mode { OFF, PAINT, ERASE }
 
 const Native: GDScript = preload("native.gd")
 const NativeField: GDScript = preload("native_field.gd")
-const FieldNodes: GDScript = preload("field_nodes.gd")
+const FieldLegend: GDScript = preload("field_legend.gd")
 ## The stroke's preview is rebuilt at most this often, milliseconds.
 const PREVIEW_INTERVAL_MS: int = 60
 const CIRCLE_SEGMENTS: int = 48
@@ -294,7 +294,11 @@ func _open_map(field: SunflowerField) -> NativeField:
 	editor.set_ground_heights(PackedFloat32Array(), PackedFloat32Array(), 0.0)  # a map only: no plants laid out
 	var legend: Dictionary = field.legend
 	var message: String = editor.load_map(
-		field_map.text, path, FieldNodes.legend_symbols(legend), FieldNodes.plant_symbols(legend), 0
+		field_map.text,
+		path,
+		FieldLegend.object_symbols(legend),
+		FieldLegend.plant_symbols(legend),
+		0
 	)
 	if not message.is_empty():
 		_fail("SunflowerField painter: the map cannot be painted: " + message)

@@ -38,6 +38,7 @@ const Native: GDScript = preload("native.gd")
 const NativeField: GDScript = preload("native_field.gd")
 const FieldDriver: GDScript = preload("field_driver.gd")
 const FieldGround: GDScript = preload("field_ground.gd")
+const FieldLegend: GDScript = preload("field_legend.gd")
 const FieldNodes: GDScript = preload("field_nodes.gd")
 const PartMeshes: GDScript = preload("part_meshes.gd")
 ## The thesis' switch distances, [member lod_distances]' default.
@@ -88,11 +89,11 @@ const WIND_PROPERTIES: Dictionary = {
 	set(value):
 		if value == legend:
 			return
-		for old: FieldPlant in FieldNodes.legend_plants(legend):
+		for old: FieldPlant in FieldLegend.plants(legend):
 			if old.changed.is_connected(_on_plant_changed):
 				old.changed.disconnect(_on_plant_changed)
 		legend = value
-		for grown: FieldPlant in FieldNodes.legend_plants(legend):
+		for grown: FieldPlant in FieldLegend.plants(legend):
 			if not grown.changed.is_connected(_on_plant_changed):
 				grown.changed.connect(_on_plant_changed)
 		_driver.configure_plants(_species_plants())
@@ -485,7 +486,7 @@ func load_map_file(path: String, background: bool = false) -> Error:
 		_driver.report_map_error(errors[0])
 		return ERR_FILE_CANT_OPEN
 	var message: String = field_map.check(
-		FieldNodes.legend_symbols(legend) + FieldNodes.plant_symbols(legend), max_plants
+		FieldLegend.object_symbols(legend) + FieldLegend.plant_symbols(legend), max_plants
 	)
 	if not message.is_empty():
 		_driver.report_map_error(message)
@@ -711,7 +712,7 @@ func _own_plant() -> FieldPlant:
 ## The plant types grown, species by species: the [member plant] ('*'), then the legend's.
 func _species_plants() -> Array:
 	var plants: Array = [_plant()]
-	plants.append_array(FieldNodes.legend_plants(legend))
+	plants.append_array(FieldLegend.plants(legend))
 	return plants
 
 

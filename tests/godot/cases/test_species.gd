@@ -158,8 +158,8 @@ func test_a_legend_plant_is_a_species_with_its_own_buckets_impostors_and_counts(
 		field.get_children(true).any(func(n: Node) -> bool: return n.name.begins_with("Stone")),
 		"the stone"
 	)
-	check_eq(SunflowerField.FieldNodes.plant_symbols(field.legend), "m")
-	check_eq(SunflowerField.FieldNodes.legend_symbols(field.legend), "S")
+	check_eq(SunflowerField.FieldLegend.plant_symbols(field.legend), "m")
+	check_eq(SunflowerField.FieldLegend.object_symbols(field.legend), "S")
 
 
 func test_a_hilly_field_of_two_plant_types_renders_both_on_the_hills() -> void:
