@@ -77,6 +77,11 @@ def type_of(node):
     t = node.get("type", "")
     if node.get("enum"):
         t = node.get("enum")
+    # A script's own type (a preloaded constant, no class_name) is named after its file:
+    # "addons/sunflower_field/native_field.gd" reads NativeField.
+    script = re.fullmatch(r'"?(?:res://)?[\w/]*/(\w+)\.gd"?', t)
+    if script:
+        t = "".join(word.capitalize() for word in script.group(1).split("_"))
     return t or "Variant"
 
 
