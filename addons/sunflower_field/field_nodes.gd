@@ -96,7 +96,7 @@ func make_tiles(budget_usec: int, max_draw_distance: float) -> bool:
 		var aabb: AABB = tiles.aabb(tile)
 		var impostors: ImpostorSet = _impostors[tiles.species(tile)]
 		var node: MultiMeshInstance3D = _make_node(
-			_tile_node_name(tile), impostors.mesh(true), aabb, true
+			_tile_node_name(tile), impostors.mesh(true), aabb
 		)
 		_add_caster(node, impostors.caster(true))
 		node.visible = false  # shown when the whole field is ready
@@ -241,7 +241,6 @@ func finish(
 				var whole: MultiMeshInstance3D = _make_node(
 					"%sMesh%d" % [prefix, level + 1], plant.whole_mesh(level), aabb
 				)
-				whole.multimesh.use_custom_data = true
 				_add_dynamic(whole, first + Native.mesh_bucket(level, 0))
 				continue
 			for part: int in PART_NAMES.size():
@@ -254,7 +253,7 @@ func finish(
 				_add_dynamic(node, first + Native.mesh_bucket(level, part))
 		# The near sprites and billboards: one multi-view impostor draws both.
 		var impostors: MultiMeshInstance3D = _make_node(
-			prefix + "Impostors", _impostors[species].mesh(), aabb, true
+			prefix + "Impostors", _impostors[species].mesh(), aabb
 		)
 		_add_dynamic(impostors, first + Native.constant(&"BUCKET_IMPOSTOR"))
 		_add_caster(impostors, _impostors[species].caster())
@@ -370,14 +369,11 @@ func _add_dynamic(node: MultiMeshInstance3D, bucket: int) -> void:
 	_dynamic_buckets.append(bucket)
 
 
-## A MultiMesh node for the native buffers: 3D transforms and colours, or when [param compact] the
-## impostors' 8-float records (2D transforms without colours; the impostor shader decodes them).
-func _make_node(
-	node_name: String, mesh: Mesh, aabb: AABB, compact: bool = false
-) -> MultiMeshInstance3D:
+## A MultiMesh node for the native buffers. The library allocates each MultiMesh's data in the
+## format of its records (3D transforms and colours, with custom data for whole plants; the
+## impostors' compact 8-float records), so the resource's own format is never used.
+func _make_node(node_name: String, mesh: Mesh, aabb: AABB) -> MultiMeshInstance3D:
 	var multimesh: MultiMesh = MultiMesh.new()
-	multimesh.transform_format = MultiMesh.TRANSFORM_2D if compact else MultiMesh.TRANSFORM_3D
-	multimesh.use_colors = not compact
 	multimesh.mesh = mesh
 	multimesh.custom_aabb = aabb
 	var node: MultiMeshInstance3D = MultiMeshInstance3D.new()

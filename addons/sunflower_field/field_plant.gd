@@ -35,30 +35,34 @@ static var _default: FieldPlant
 ## A name for the plant (menus, warnings).
 @export var name: String = "Sunflower":
 	set(value):
-		name = value
-		emit_changed()
+		var accepted: String = value
+		if accepted != name:
+			name = accepted
+			emit_changed()
 ## Height from the root to the top of the parts, metres.
 @export_range(0.01, 50.0, 0.01, "or_greater", "suffix:m") var height: float = 2.0:
 	set(value):
-		height = Native.accept("FieldPlant.height", value, height)
-		emit_changed()
+		var accepted: float = Native.accept("FieldPlant.height", value, height)
+		if accepted != height:
+			height = accepted
+			emit_changed()
 
 @export_group("Meshes")
 ## The most detailed level's parts: bottom, middle, head.
 @export var mesh_level_1: Array[Mesh] = [null, null, null]:
 	set(value):
 		mesh_level_1 = _three(value)
-		emit_changed()
+		emit_changed()  # always: the same array or texture may hold new contents
 ## The middle level's parts.
 @export var mesh_level_2: Array[Mesh] = [null, null, null]:
 	set(value):
 		mesh_level_2 = _three(value)
-		emit_changed()
+		emit_changed()  # always: the same array or texture may hold new contents
 ## The simplest level's parts.
 @export var mesh_level_3: Array[Mesh] = [null, null, null]:
 	set(value):
 		mesh_level_3 = _three(value)
-		emit_changed()
+		emit_changed()  # always: the same array or texture may hold new contents
 ## Draw each near plant as one instance, its parts merged into one mesh per level and placed by the
 ## shader, instead of one instance per part: a third of the draw calls and less per-frame work. Only
 ## parts drawn with the addon's plant material ([code]shaders/plant_parts.gdshader[/code], as the
@@ -66,110 +70,136 @@ static var _default: FieldPlant
 ## can be merged; any other plant is drawn part by part whatever this says ([method drawn_whole]).
 @export var draw_whole: bool = true:
 	set(value):
-		draw_whole = value
-		emit_changed()
+		var accepted: bool = value
+		if accepted != draw_whole:
+			draw_whole = accepted
+			emit_changed()
 ## Draw the parts' plain StandardMaterial3D surfaces with the addon's plant material of the same
 ## settings ([code]plant_material.gd[/code] says which settings carry over), so that the near levels
 ## cross-fade into each other and the impostors and the plant can be drawn whole. Off: every part
 ## keeps its own material.
 @export var use_plant_material: bool = true:
 	set(value):
-		use_plant_material = value
-		emit_changed()
+		var accepted: bool = value
+		if accepted != use_plant_material:
+			use_plant_material = accepted
+			emit_changed()
 
 @export_group("Form")
 ## Model units from each part's root to the next one's: bottom → middle, middle → head, and the
 ## head's own length. [member height] spans their sum.
 @export var part_lengths: Vector3 = Vector3(1.0, 1.0, 1.0):
 	set(value):
-		part_lengths = Vector3(
+		var accepted: Vector3 = Vector3(
 			_positive(value.x, 1.0), _positive(value.y, 1.0), _positive(value.z, 1.0)
 		)
-		emit_changed()
+		if accepted != part_lengths:
+			part_lengths = accepted
+			emit_changed()
 ## Model units from the root to the top of anything drawn (the parts and what stands out above
 ## them, such as petals): the impostor quads' height.
 @export_range(0.01, 100.0, 0.01, "or_greater") var height_units: float = 3.2:
 	set(value):
-		height_units = _positive(value, height_units)
-		emit_changed()
+		var accepted: float = _positive(value, height_units)
+		if accepted != height_units:
+			height_units = accepted
+			emit_changed()
 ## Radius, in model units, of the sphere about the plant's middle that holds it leaning by the
 ## largest bend with its leaves: culling and chunk bounds use it.
 @export_range(0.01, 100.0, 0.01, "or_greater") var cull_radius_units: float = 1.9:
 	set(value):
-		cull_radius_units = _positive(value, cull_radius_units)
-		emit_changed()
+		var accepted: float = _positive(value, cull_radius_units)
+		if accepted != cull_radius_units:
+			cull_radius_units = accepted
+			emit_changed()
 ## The width of the upright cylinder about the stem that holds the plant (twice its farthest reach
 ## from the stem), model units: what the impostor views frame.
 @export_range(0.01, 100.0, 0.01, "or_greater") var impostor_width: float = 1.6:
 	set(value):
-		impostor_width = _positive(value, impostor_width)
-		emit_changed()
+		var accepted: float = _positive(value, impostor_width)
+		if accepted != impostor_width:
+			impostor_width = accepted
+			emit_changed()
 
 ## How stiff the plant is against the wind's stiffnesses ([member SunflowerWind.stiffness_middle],
 ## [member SunflowerWind.stiffness_bottom]): 2 bends half as far as the sunflower, 0.5 twice as far.
 @export_range(0.05, 20.0, 0.01) var stiffness: float = 1.0:
 	set(value):
-		stiffness = Native.accept("FieldPlant.stiffness", value, stiffness)
-		emit_changed()
+		var accepted: float = Native.accept("FieldPlant.stiffness", value, stiffness)
+		if accepted != stiffness:
+			stiffness = accepted
+			emit_changed()
 
 @export_group("Variety")
 ## The middle part is stretched to (1 + α × this) of its length, α ∈ [0, 0.5) per plant (the
 ## thesis' s' = s + α/10).
 @export_range(0.0, 10.0, 0.01) var middle_variation: float = 0.1:
 	set(value):
-		middle_variation = Native.accept("FieldPlant.middle_variation", value, middle_variation)
-		emit_changed()
+		var accepted: float = Native.accept("FieldPlant.middle_variation", value, middle_variation)
+		if accepted != middle_variation:
+			middle_variation = accepted
+			emit_changed()
 ## Each plant turns up to this much either side of facing +z (seeded).
 @export_range(0.0, 180.0, 0.1, "radians_as_degrees") var yaw_range: float = 0.35:
 	set(value):
-		yaw_range = Native.accept("FieldPlant.yaw_range", value, yaw_range)
-		emit_changed()
+		var accepted: float = Native.accept("FieldPlant.yaw_range", value, yaw_range)
+		if accepted != yaw_range:
+			yaw_range = accepted
+			emit_changed()
 ## Each plant's size factor is drawn from [member scale_min] to [member scale_max] (seeded).
 @export_range(0.01, 100.0, 0.01) var scale_min: float = 1.0:
 	set(value):
-		scale_min = Native.accept("FieldPlant.scale_min", value, scale_min)
-		emit_changed()
+		var accepted: float = Native.accept("FieldPlant.scale_min", value, scale_min)
+		if accepted != scale_min:
+			scale_min = accepted
+			emit_changed()
 ## See [member scale_min].
 @export_range(0.01, 100.0, 0.01) var scale_max: float = 1.0:
 	set(value):
-		scale_max = Native.accept("FieldPlant.scale_max", value, scale_max)
-		emit_changed()
+		var accepted: float = Native.accept("FieldPlant.scale_max", value, scale_max)
+		if accepted != scale_max:
+			scale_max = accepted
+			emit_changed()
 
 ## Each plant's brightness varies by up to ± this share (seeded): the instance colour multiplies
 ## the albedo of materials that use vertex colour as albedo (the built-in plants do) and of the
 ## impostors.
 @export_range(0.0, 1.0, 0.01) var brightness_variation: float = 0.0:
 	set(value):
-		brightness_variation = Native.accept(
+		var accepted: float = Native.accept(
 			"FieldPlant.brightness_variation", value, brightness_variation
 		)
-		emit_changed()
+		if accepted != brightness_variation:
+			brightness_variation = accepted
+			emit_changed()
 ## Each plant is tinted warmer or cooler by up to ± this share (red up and blue down, or the other
 ## way; seeded), like [member brightness_variation].
 @export_range(0.0, 1.0, 0.01) var tint_variation: float = 0.0:
 	set(value):
-		tint_variation = Native.accept("FieldPlant.tint_variation", value, tint_variation)
-		emit_changed()
+		var accepted: float = Native.accept("FieldPlant.tint_variation", value, tint_variation)
+		if accepted != tint_variation:
+			tint_variation = accepted
+			emit_changed()
 
 @export_group("Impostors")
 ## The far levels' views of the plant (colour and alpha), an atlas of [constant ATLAS_VIEWS] squares.
 @export var impostor_views: Texture2D:
 	set(value):
 		impostor_views = value
-		emit_changed()
+		emit_changed()  # always: the same array or texture may hold new contents
 ## The plant's normals in the same views, in the plant's own frame (x, y, z as red, green, blue,
 ## 0–1 for −1–1): the far levels are lit through them like the meshes.
 @export var impostor_normals: Texture2D:
 	set(value):
 		impostor_normals = value
-		emit_changed()
+		emit_changed()  # always: the same array or texture may hold new contents
 ## How far each pixel of the views lies in front of (lighter) or behind (darker) the plant's middle,
 ## along the view (0–1 for −½ to +½ of the view's square): the far levels are lit and shadowed where
 ## the plant's leaves and head are, not on the flat quad.
 @export var impostor_depths: Texture2D:
 	set(value):
 		impostor_depths = value
-		emit_changed()
+		emit_changed()  # always: the same array or texture may hold new contents
 ## The light the plant's parts give off (their materials' emission) in the same views, divided by
 ## [member impostor_emission_range], so that the far levels glow as the meshes do; none
 ## ([code]null[/code]) when no part gives off light. Baked with the others, only for a plant that
@@ -177,26 +207,30 @@ static var _default: FieldPlant
 @export var impostor_emission: Texture2D:
 	set(value):
 		impostor_emission = value
-		emit_changed()
+		emit_changed()  # always: the same array or texture may hold new contents
 ## What [member impostor_emission] was divided by: 8-bit colours keep energies up to it. The baker sets
 ## it, the smallest of 8, 64, 512 … in which no pixel of the atlas saturates (a brighter light would
 ## make the far levels glow less than the meshes); set it yourself for an atlas made elsewhere.
 @export_range(1.0, 32768.0, 1.0) var impostor_emission_range: float = 8.0:
 	set(value):
-		impostor_emission_range = Native.accept(
+		var accepted: float = Native.accept(
 			"FieldPlant.impostor_emission_range", value, impostor_emission_range
 		)
-		emit_changed()
+		if accepted != impostor_emission_range:
+			impostor_emission_range = accepted
+			emit_changed()
 
 ## How far the far levels' shadow casters stand out towards the light, as a share of the impostor's
 ## frame, beyond the depth the plant has at each pixel: a little shades a field of it as its meshes
 ## shade each other (0.03 suits the sunflower; more shades a lone plant's own leaves with specks).
 @export_range(0.0, 0.5, 0.01) var impostor_shadow_shift: float = 0.03:
 	set(value):
-		impostor_shadow_shift = Native.accept(
+		var accepted: float = Native.accept(
 			"FieldPlant.impostor_shadow_shift", value, impostor_shadow_shift
 		)
-		emit_changed()
+		if accepted != impostor_shadow_shift:
+			impostor_shadow_shift = accepted
+			emit_changed()
 
 var _whole_meshes: Dictionary = {}  # level → [what it was merged from, the merged mesh]
 var _field_meshes: Dictionary = {}  # a part mesh → the mesh the field draws it with

@@ -269,13 +269,14 @@ func _check_drawn_once_along(path: Array[Vector3]) -> Vector2i:
 			if node.name.contains("Middle") or node.name.contains("Head"):
 				continue  # one part per plant: the bottom part's origin is the plant's root
 			var buffer: PackedFloat32Array = RenderingServer.multimesh_get_buffer(rid)
-			# Impostors are 8-float records: a far tile's carry their chunk's cell, the near bucket's a share.
-			var compact: bool = node.multimesh.transform_format == MultiMesh.TRANSFORM_2D
-			# Near plants drawn whole: one instance each, with custom data.
-			var stride: int = (
-				SunflowerSimulation.WHOLE_FLOATS_PER_INSTANCE
-				if node.multimesh.use_custom_data
-				else STRIDE
+			# The format the library allocated, from the floats per instance: impostors are 8-float
+			# records (a far tile's carry their chunk's cell, the near bucket's a share); near plants
+			# drawn whole are one instance each, with custom data.
+			var stride: int = buffer.size() / RenderingServer.multimesh_get_instance_count(rid)
+			var compact: bool = stride == SunflowerSimulation.FAR_FLOATS_PER_INSTANCE
+			check(
+				stride in [STRIDE, SunflowerSimulation.WHOLE_FLOATS_PER_INSTANCE] or compact,
+				"%s's records are of a known layout (%d floats)" % [node.name, stride]
 			)
 			# A tile skips the plants of the chunks its material's mask marks (the near buckets draw them).
 			var mask: PackedByteArray = _mask_of(node) if tile else PackedByteArray()

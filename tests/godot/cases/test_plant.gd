@@ -196,6 +196,28 @@ func test_a_plants_variety_spreads_sizes_and_yaws_within_its_ranges() -> void:
 	take_warnings()
 
 
+## A plant says it changed only when a value did: setting a value it already has (the inspector does,
+## on every edit of a field) re-configures nothing; an array or texture always says so (it may hold
+## new contents).
+func test_a_plant_signals_a_change_only_when_a_value_changes() -> void:
+	var plant: FieldPlant = FieldPlant.new()
+	var changes: Array[int] = [0]
+	plant.changed.connect(func() -> void: changes[0] += 1)
+	plant.height = plant.height
+	plant.stiffness = plant.stiffness
+	plant.part_lengths = plant.part_lengths
+	plant.name = plant.name
+	plant.draw_whole = plant.draw_whole
+	check_eq(changes[0], 0, "values set to what they are: no change")
+	plant.height = 3.0
+	plant.part_lengths = Vector3(1.0, 2.0, 1.0)
+	check_eq(changes[0], 2, "two values changed: two changes")
+	plant.height = -1.0  # refused: keeps 3.0
+	check_eq(changes[0], 2, "a refused value changes nothing")
+	plant.mesh_level_1 = plant.mesh_level_1
+	check_eq(changes[0], 3, "an array set again says so (its contents may be new)")
+
+
 func test_changing_a_shared_plant_rebuilds_every_field_that_grows_it() -> void:
 	var plant: FieldPlant = FieldPlant.new()
 	var first: SunflowerField = _field(plant)
