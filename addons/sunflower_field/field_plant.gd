@@ -91,7 +91,9 @@ static var _default: FieldPlant
 @export var part_lengths: Vector3 = Vector3(1.0, 1.0, 1.0):
 	set(value):
 		var accepted: Vector3 = Vector3(
-			_positive(value.x, 1.0), _positive(value.y, 1.0), _positive(value.z, 1.0)
+			Native.accept("FieldPlant.part_lengths", value.x, part_lengths.x),
+			Native.accept("FieldPlant.part_lengths", value.y, part_lengths.y),
+			Native.accept("FieldPlant.part_lengths", value.z, part_lengths.z)
 		)
 		if accepted != part_lengths:
 			part_lengths = accepted
@@ -100,7 +102,7 @@ static var _default: FieldPlant
 ## them, such as petals): the impostor quads' height.
 @export_range(0.01, 100.0, 0.01, "or_greater") var height_units: float = 3.2:
 	set(value):
-		var accepted: float = _positive(value, height_units)
+		var accepted: float = Native.accept("FieldPlant.height_units", value, height_units)
 		if accepted != height_units:
 			height_units = accepted
 			emit_changed()
@@ -108,7 +110,9 @@ static var _default: FieldPlant
 ## largest bend with its leaves: culling and chunk bounds use it.
 @export_range(0.01, 100.0, 0.01, "or_greater") var cull_radius_units: float = 1.9:
 	set(value):
-		var accepted: float = _positive(value, cull_radius_units)
+		var accepted: float = Native.accept(
+			"FieldPlant.cull_radius_units", value, cull_radius_units
+		)
 		if accepted != cull_radius_units:
 			cull_radius_units = accepted
 			emit_changed()

@@ -101,14 +101,15 @@ TEST_CASE("a plant type's form and variety: parts stack by their lengths, sizes 
 	CHECK(largest - smallest > 0.8f); // 30 plants spread over the range
 	CHECK(widest_yaw <= 1.0f);
 	CHECK(widest_yaw > 0.7f);
-	// A reversed range is read as one size; a nonsense form keeps the built-in one.
+	// A reversed range is read as one size; a nonsense length keeps the current one (the table's rule).
 	params.varieties[0].scale_min = 2.0f;
 	params.varieties[0].scale_max = 1.0f;
 	sim.set_layout_params(params);
 	CHECK(sim.plants().get_layout_params().varieties[0].scale_max == 2.0f);
-	shape.part_lengths = glm::vec3(NAN, -1.0f, 1.0f);
+	const glm::vec3 before = sim.plants().get_shape().part_lengths;
+	shape.part_lengths = glm::vec3(NAN, -1.0f, 1.5f);
 	sim.set_shape(shape);
-	CHECK(sim.plants().get_shape().part_lengths == PlantShape::PART_LENGTHS);
+	CHECK(sim.plants().get_shape().part_lengths == glm::vec3(before.x, before.y, 1.5f));
 }
 
 TEST_CASE("colour variety: plants are white without it; with it, seeded brightness and tint within the ranges") {

@@ -71,17 +71,14 @@ bool FieldPlants::set_shape(const PlantShape &p_shape, uint32_t p_species) {
 		return false;
 	}
 	PlantShape &current = _shapes[p_species];
-	const PlantShape defaults;
 	PlantShape shape = p_shape;
 	for (int i = 0; i < 3; ++i) {
-		if (!(shape.part_lengths[i] > 0.0f) || !std::isfinite(shape.part_lengths[i])) {
-			shape.part_lengths[i] = defaults.part_lengths[i];
-		}
+		shape.part_lengths[i] = sanitize(param::PLANT_PART_LENGTH, shape.part_lengths[i], current.part_lengths[i]);
 	}
 	shape.middle_variation = sanitize(param::PLANT_MIDDLE_VARIATION, shape.middle_variation, current.middle_variation);
 	shape.stiffness = sanitize(param::PLANT_STIFFNESS, shape.stiffness, current.stiffness);
-	shape.height = shape.height > 0.0f && std::isfinite(shape.height) ? shape.height : defaults.height;
-	shape.cull_radius = shape.cull_radius > 0.0f && std::isfinite(shape.cull_radius) ? shape.cull_radius : defaults.cull_radius;
+	shape.height = sanitize(param::PLANT_HEIGHT_UNITS, shape.height, current.height);
+	shape.cull_radius = sanitize(param::PLANT_CULL_RADIUS_UNITS, shape.cull_radius, current.cull_radius);
 	shape.part_scale = shape.part_scale > 0.0f && std::isfinite(shape.part_scale) ? shape.part_scale : current.part_scale;
 	const bool drawn_otherwise = shape.whole != current.whole;
 	current = shape;

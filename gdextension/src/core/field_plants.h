@@ -50,8 +50,8 @@ public:
 	bool set_layout_params(const LayoutParams &p_params);
 	// Stands the plants on p_ground (rebuilding the layout). Plants whose cells have no ground go.
 	void set_ground(Ground p_ground);
-	// A species' form (species 0: '*'); a length, height or radius that is not finite and positive
-	// keeps the built-in sunflower's. Returns whether the species is now drawn otherwise (whole or
+	// A species' form (species 0: '*'); a value the parameter table refuses keeps the current one.
+	// Returns whether the species is now drawn otherwise (whole or
 	// part by part), which changes its buckets' records.
 	bool set_shape(const PlantShape &p_shape, uint32_t p_species);
 	// The form with the part scale for a plant p_metres tall from its root to the top of its parts

@@ -11,18 +11,19 @@ namespace sunflower {
 struct PlantShape {
 	// Model units from each part's root to the next one's: bottom → middle, middle → head, and the
 	// head's own length. The default sunflower's parts are one unit each.
-	static constexpr glm::vec3 PART_LENGTHS{ 1.0f, 1.0f, 1.0f };
+	static constexpr float PART_LENGTH = float(param::PLANT_PART_LENGTH.default_value);
+	static constexpr glm::vec3 PART_LENGTHS{ PART_LENGTH, PART_LENGTH, PART_LENGTH };
 	// The middle part is stretched to (1 + α × this) of its length, α ∈ [0, 0.5) per plant (thesis:
 	// s' = s + α/10), for variety in height.
-	static constexpr float MIDDLE_VARIATION = 0.1f;
+	static constexpr float MIDDLE_VARIATION = float(param::PLANT_MIDDLE_VARIATION.default_value);
 	// Model units from the root to the top of anything drawn: the stacked parts (3 units, the middle
 	// up to 1.05 with the variation) and the nodding head's petals above them; the impostor quads
 	// frame exactly this height.
-	static constexpr float HEIGHT = 3.2f;
+	static constexpr float HEIGHT = float(param::PLANT_HEIGHT_UNITS.default_value);
 	// Radius of the sphere about the plant's middle (height / 2 up) that holds the whole plant
 	// leaning by the largest bend (45°) with its leaves (half-width ~0.8): what frustum culling and
 	// chunk bounds use. Smaller radii cut swaying heads at the screen edge.
-	static constexpr float CULL_RADIUS = 1.9f;
+	static constexpr float CULL_RADIUS = float(param::PLANT_CULL_RADIUS_UNITS.default_value);
 
 	glm::vec3 part_lengths = PART_LENGTHS;
 	float middle_variation = MIDDLE_VARIATION;

@@ -48,10 +48,13 @@ func test_inspector_defaults_equal_the_cores() -> void:
 			continue
 		var shown: Variant = object.get_script().get_property_default_value(pieces[1])
 		var core: float = SunflowerField.Native.default_of(qualified)
-		check(
-			is_equal_approx(float(shown), core),
-			"%s: the inspector shows %s, the core %s" % [qualified, shown, core]
+		# A vector's every component has the default (FieldPlant.part_lengths).
+		var agrees: bool = (
+			shown.is_equal_approx(Vector3.ONE * core)
+			if shown is Vector3
+			else is_equal_approx(float(shown), core)
 		)
+		check(agrees, "%s: the inspector shows %s, the core %s" % [qualified, shown, core])
 	field.free()
 
 
