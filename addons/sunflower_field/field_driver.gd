@@ -184,12 +184,12 @@ func update_field(delta: float) -> void:
 		if observer:
 			impostors.set_shared(&"observer_position", observer.global_position)
 	if not Engine.is_editor_hint():
-		# A stalk: the bottom and middle parts, two of the plant's three part heights.
-		var height: float = plants[0].height
-		var stalk: Vector2 = Vector2(0.025 * height, height * 2.0 / 3.0)
-		var reach: float = _field.collision_reach
 		interaction.update_colliders(
-			native_simulation, observer, reach, stalk, _field.collision_layer, _field.collision_mask
+			native_simulation,
+			observer,
+			_field.collision_reach,
+			_field.collision_layer,
+			_field.collision_mask
 		)
 
 

@@ -8,9 +8,9 @@ extends RefCounted
 ## The ground sources (the node's [code]ground_source[/code]).
 enum Source { FLAT, COLLIDERS, HEIGHT_MAP }
 
+const NativeField: GDScript = preload("native_field.gd")
 ## Rays cast between two clock reads (about 0.1 ms of them); a step stops when one more batch
 ## would overrun its budget.
-const NativeField: GDScript = preload("native_field.gd")
 const RAYS_PER_CLOCK_READ: int = 64
 
 ## What the worker needs of the node's ground: copied on the main thread, so the node may change.

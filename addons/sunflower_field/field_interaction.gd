@@ -5,13 +5,11 @@ extends RefCounted
 ## a static capsule on the physics server for each plant within reach of a pusher or the observer,
 ## made as plants come into reach and freed as they leave (no nodes per plant).
 
-## Meta key a pusher may carry to set its own radius (metres); else the field's pusher_radius.
 const NativeField: GDScript = preload("native_field.gd")
+## Meta key a pusher may carry to set its own radius (metres); else the field's pusher_radius.
 const RADIUS_META: StringName = &"push_radius"
 
 var _field: Node3D
-var _shape: RID
-var _shape_size: Vector2 = Vector2.ZERO
 var _bodies: Dictionary = {}  # plant index -> body RID
 var _plants_of_bodies: Dictionary = {}  # body RID -> plant index
 var _pushers: PackedFloat32Array = PackedFloat32Array()
@@ -37,18 +35,15 @@ func gather_pushers(group: StringName, default_radius: float) -> PackedFloat32Ar
 	return _pushers
 
 
-## Keeps a capsule ([param stalk]: radius, height in metres) standing on every plant within
-## [param reach] of the gathered pushers and of [param observer] (if any), in the field's physics
-## space, with the given collision layer and mask. [param reach] 0 frees them all.
+## Keeps a capsule (the plant's stalk, as the core sizes it for its plant type and size) standing on
+## every plant within [param reach] of the gathered pushers and of [param observer] (if any), in the
+## field's physics space, with the given collision layer and mask. [param reach] 0 frees them all.
 func update_colliders(
-	simulation: NativeField, observer: Node3D, reach: float, stalk: Vector2, layer: int, mask: int
+	simulation: NativeField, observer: Node3D, reach: float, layer: int, mask: int
 ) -> void:
 	if reach <= 0.0 or not _field.is_inside_tree():
 		free_colliders()
 		return
-	if stalk != _shape_size:
-		free_colliders()
-		_shape_size = stalk
 	var wanted: Dictionary = {}
 	var centres: Array[Vector3] = []
 	if observer:
@@ -64,7 +59,14 @@ func update_colliders(
 	var space: RID = _field.get_world_3d().space
 	for plant: int in wanted:
 		if not _bodies.has(plant):
-			_make_body(plant, simulation.get_plant_position(plant), space, layer, mask)
+			_make_body(
+				plant,
+				simulation.get_plant_position(plant),
+				simulation.get_plant_stalk(plant),
+				space,
+				layer,
+				mask
+			)
 
 
 ## The plant whose stalk collider is [param body] (a ray cast's [code]rid[/code]), or -1.
@@ -84,23 +86,23 @@ func get_collider_count() -> int:
 	return _bodies.size()
 
 
-## Frees every collider and the shared shape.
+## Frees every collider and its shape.
 func free_colliders() -> void:
 	for plant: int in _bodies.keys():
 		_free_body(plant)
-	if _shape.is_valid():
-		PhysicsServer3D.free_rid(_shape)
-		_shape = RID()
 
 
-func _make_body(plant: int, root: Vector3, space: RID, layer: int, mask: int) -> void:
-	if not _shape.is_valid():
-		_shape = PhysicsServer3D.capsule_shape_create()
-		PhysicsServer3D.shape_set_data(_shape, {"radius": _shape_size.x, "height": _shape_size.y})
+## A static body for [param plant] at [param root] with a capsule of [param stalk] (radius, height).
+func _make_body(
+	plant: int, root: Vector3, stalk: Vector2, space: RID, layer: int, mask: int
+) -> void:
+	var shape: RID = PhysicsServer3D.capsule_shape_create()
+	var height: float = maxf(stalk.y, 2.0 * stalk.x)  # a capsule is at least its two caps tall
+	PhysicsServer3D.shape_set_data(shape, {"radius": stalk.x, "height": height})
 	var body: RID = PhysicsServer3D.body_create()
 	PhysicsServer3D.body_set_mode(body, PhysicsServer3D.BODY_MODE_STATIC)
 	PhysicsServer3D.body_add_shape(
-		body, _shape, Transform3D(Basis(), Vector3(0.0, _shape_size.y * 0.5, 0.0))
+		body, shape, Transform3D(Basis(), Vector3(0.0, height * 0.5, 0.0))
 	)
 	PhysicsServer3D.body_set_collision_layer(body, layer)
 	PhysicsServer3D.body_set_collision_mask(body, mask)
@@ -117,6 +119,8 @@ func _make_body(plant: int, root: Vector3, space: RID, layer: int, mask: int) ->
 
 func _free_body(plant: int) -> void:
 	var body: RID = _bodies[plant]
+	var shape: RID = PhysicsServer3D.body_get_shape(body, 0)
 	_plants_of_bodies.erase(body)
 	_bodies.erase(plant)
 	PhysicsServer3D.free_rid(body)
+	PhysicsServer3D.free_rid(shape)

@@ -334,6 +334,12 @@ func get_plant_position(plant: int) -> Vector3:
 	return native.get_plant_position(plant)
 
 
+## A plant's stalk in metres, upright, for its collider: x its radius, y the height from its root to
+## its head.
+func get_plant_stalk(plant: int) -> Vector2:
+	return native.get_plant_stalk(plant)
+
+
 ## The representation a plant is drawn in (0–4).
 func get_plant_lod(plant: int) -> int:
 	return native.get_plant_lod(plant)

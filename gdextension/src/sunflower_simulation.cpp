@@ -75,6 +75,7 @@ void SunflowerSimulation::bind_methods() {
 	gdx::bind_method(CLASS, "get_lod_counts", &SunflowerSimulation::get_lod_counts);
 	gdx::bind_method(CLASS, "get_lod_counts_by_species", &SunflowerSimulation::get_lod_counts_by_species);
 	gdx::bind_method(CLASS, "get_plant_position", &SunflowerSimulation::get_plant_position, { "plant" });
+	gdx::bind_method(CLASS, "get_plant_stalk", &SunflowerSimulation::get_plant_stalk, { "plant" });
 	gdx::bind_method(CLASS, "get_plant_lod", &SunflowerSimulation::get_plant_lod, { "plant" });
 	gdx::bind_method(CLASS, "get_plant_tile_level", &SunflowerSimulation::get_plant_tile_level, { "plant" });
 	gdx::bind_method(CLASS, "get_plant_parts", &SunflowerSimulation::get_plant_parts, { "plant" });
@@ -682,6 +683,10 @@ gdx::Vector3 SunflowerSimulation::get_plant_position(int64_t p_plant) const {
 		return gdx::Vector3{};
 	}
 	return gdx::to_godot(_sim.plants().get_layout().plants[size_t(p_plant)].root());
+}
+
+gdx::Vector2 SunflowerSimulation::get_plant_stalk(int64_t p_plant) const {
+	return _is_plant(p_plant) ? gdx::to_godot(_sim.plants().get_stalk(uint32_t(p_plant))) : gdx::Vector2{};
 }
 
 int64_t SunflowerSimulation::get_plant_lod(int64_t p_plant) const {

@@ -93,6 +93,7 @@ public:
 	gdx::PackedInt32Array get_lod_counts() const;
 	gdx::PackedInt32Array get_lod_counts_by_species() const;
 	gdx::Vector3 get_plant_position(int64_t p_plant) const;
+	gdx::Vector2 get_plant_stalk(int64_t p_plant) const;
 	int64_t get_plant_lod(int64_t p_plant) const;
 	int64_t get_plant_tile_level(int64_t p_plant) const;
 	gdx::PackedFloat32Array get_plant_parts(int64_t p_plant) const;

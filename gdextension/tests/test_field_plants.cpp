@@ -181,3 +181,30 @@ TEST_CASE("painting changes only the painted cells' plants: every other plant ke
 		CHECK(found->second.second == plant.scale);
 	}
 }
+
+TEST_CASE("a plant's stalk reaches from its root to its head, for each species' form and each plant's size") {
+	FieldSimulation sim;
+	MapError error;
+	REQUIRE(sim.load_map("4 1\n*m*m\n", U"m", U"m", "stalks", MapLimits{}, error));
+	PlantShape sunflower;
+	sim.set_shape(sunflower, 0);
+	sim.set_plant_height(2.0f, 0);
+	PlantShape tall;
+	tall.part_lengths = glm::vec3(3.0f, 1.0f, 1.0f);
+	tall.middle_variation = 0.0f;
+	sim.set_shape(tall, 1);
+	sim.set_plant_height(5.0f, 1);
+	for (uint32_t p = 0; p < sim.plants().get_plant_count(); ++p) {
+		const Plant &plant = sim.plants().get_layout().plants[p];
+		const glm::vec2 stalk = sim.plants().get_stalk(p);
+		PartTransforms parts;
+		sim.near().get_plant_parts(p, parts); // upright: no wind yet
+		// The head's root is where the stalk ends.
+		CHECK(stalk.y == doctest::Approx(parts.origin[2].y - plant.ground).epsilon(1e-4));
+		const bool second = sim.plants().species_of(plant) == 1;
+		CHECK(stalk.x == doctest::Approx(PlantShape::STALK_RADIUS_SHARE * (second ? 5.0f : 2.0f) * plant.scale));
+		if (second) {
+			CHECK(stalk.y == doctest::Approx(4.0f * plant.scale)); // 4 of its 5 units, 5 m tall
+		}
+	}
+}

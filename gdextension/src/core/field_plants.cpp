@@ -164,6 +164,14 @@ float FieldPlants::plant_distance_sq(const Plant &p_plant, const glm::vec3 &p_ey
 	return glm::dot(d, d);
 }
 
+glm::vec2 FieldPlants::get_stalk(uint32_t p_plant) const {
+	const Plant &plant = _layout.plants[p_plant];
+	const PlantShape &shape = _shapes[species_of(plant)];
+	const float scale = shape.part_scale * plant.scale;
+	const float middle = 1.0f + plant.alpha() * shape.middle_variation; // as the parts stack (wind_model.cpp)
+	return glm::vec2(PlantShape::STALK_RADIUS_SHARE * shape.parts_height(), shape.part_lengths.x + shape.part_lengths.y * middle) * scale;
+}
+
 FarInstance FieldPlants::far_instance(const Plant &p_plant, uint32_t p_species) const {
 	FarInstance instance;
 	instance.root = p_plant.root();

@@ -83,6 +83,10 @@ public:
 	// The square distance from p_eye to a plant's middle: on the ground this is the thesis' distance.
 	float plant_distance_sq(const Plant &p_plant, const glm::vec3 &p_eye) const;
 
+	// A plant's stalk, upright, in metres: x its radius (PlantShape::STALK_RADIUS_SHARE of its parts'
+	// height), y the height from its root to its head (the bottom part and the stretched middle one).
+	glm::vec2 get_stalk(uint32_t p_plant) const;
+
 	// A plant's compact impostor record (its cell left 0).
 	FarInstance far_instance(const Plant &p_plant, uint32_t p_species) const;
 	// The near impostor bucket's record: p_share is how much of the plant the impostor draws (below 1

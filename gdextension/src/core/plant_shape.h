@@ -41,6 +41,8 @@ struct PlantShape {
 	bool whole = false;
 
 	float parts_height() const { return part_lengths.x + part_lengths.y + part_lengths.z; }
+	// A stalk collider's radius as a share of the parts' height (5 cm for a 2 m sunflower).
+	static constexpr float STALK_RADIUS_SHARE = 0.025f;
 	bool operator==(const PlantShape &p_other) const {
 		return part_lengths == p_other.part_lengths && middle_variation == p_other.middle_variation &&
 				height == p_other.height && cull_radius == p_other.cull_radius && part_scale == p_other.part_scale &&

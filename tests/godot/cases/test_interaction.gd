@@ -84,6 +84,21 @@ func test_stalk_colliders_stand_within_reach_and_ray_casts_hit_the_plant() -> vo
 		check_eq(
 			field.get_plant_for_body(hit["rid"]), target, "the collider tells which plant was hit"
 		)
+	# The capsule reaches the head's root, as the core stacks this plant's parts, and no higher.
+	var stalk: Vector2 = field.get_simulation().get_plant_stalk(target)
+	var parts: Array = field.get_plant_info(target)["parts"]
+	check(
+		is_equal_approx(stalk.y, parts[SunflowerField.Part.HEAD].origin.y - root.y),
+		"the stalk ends at the head (%.3f m)" % stalk.y
+	)
+	for probe: Array in [[stalk.y - 0.05, true], [stalk.y + 0.05, false]]:
+		var across: PhysicsRayQueryParameters3D = PhysicsRayQueryParameters3D.create(
+			root + Vector3(0.0, probe[0], -0.2), root + Vector3(0.0, probe[0], 0.2), 4
+		)
+		var touched: bool = not (
+			field.get_world_3d().direct_space_state.intersect_ray(across).is_empty()
+		)
+		check_eq(touched, probe[1], "a ray %.2f m up the stalk hits it" % probe[0])
 	query.collision_mask = 2
 	check(
 		field.get_world_3d().direct_space_state.intersect_ray(query).is_empty(),
