@@ -104,6 +104,10 @@ void SunflowerSimulation::bind_methods() {
 	gdx::bind_integer_constant(CLASS, "", "FLOATS_PER_INSTANCE", FLOATS_PER_INSTANCE);
 	gdx::bind_integer_constant(CLASS, "", "WHOLE_FLOATS_PER_INSTANCE", WHOLE_FLOATS_PER_INSTANCE);
 	gdx::bind_integer_constant(CLASS, "", "FAR_FLOATS_PER_INSTANCE", FAR_FLOATS_PER_INSTANCE);
+	gdx::bind_integer_constant(CLASS, "", "FAR_SIGNED_STEPS", far_steps::SIGNED);
+	gdx::bind_integer_constant(CLASS, "", "FAR_BRIGHTNESS_STEPS", far_steps::BRIGHTNESS);
+	gdx::bind_integer_constant(CLASS, "", "FAR_STEP_BITS", far_steps::STEP_BITS);
+	gdx::bind_integer_constant(CLASS, "", "FAR_CELL_BITS", far_steps::CELL_BITS);
 	gdx::bind_integer_constant(CLASS, "", "PARALLEL_MIN_PLANTS", NearField::PARALLEL_MIN_PLANTS);
 	gdx::bind_integer_constant(CLASS, "", "MAX_AUTO_THREADS", param::MAX_AUTO_THREADS);
 	gdx::bind_integer_constant(CLASS, "", "MAX_THREADS", param::MAX_THREADS);

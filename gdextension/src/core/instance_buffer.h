@@ -111,14 +111,24 @@ struct FarInstance {
 	static constexpr uint32_t MAX_LEVELS_ABOVE = 7;
 };
 
+// The record's encoding. The impostor shader reads it with the same numbers
+// (shaders/records.gdshaderinc), which an engine test compares with these (bound as FAR_*).
 namespace far_steps {
 // Values in [−1, 1] travel in steps of 1/SIGNED_STEPS (a byte: 0 … 2·SIGNED_STEPS).
-constexpr float SIGNED_STEPS = 127.0f;
+constexpr uint32_t SIGNED = 127;
+constexpr float SIGNED_STEPS = float(SIGNED);
+// Brightness in [0, 2) travels in steps of 1/BRIGHTNESS (1 exact).
+constexpr uint32_t BRIGHTNESS = 128;
+// Two steps share a float as low + 2^STEP_BITS · high.
+constexpr uint32_t STEP_BITS = 8;
+// Float FAR_CELL_OR_SHARE of a far tile's record: the cell in its low CELL_BITS bits, the levels
+// above in the bits over them.
+constexpr uint32_t CELL_BITS = 16;
 inline float signed_unit(float p_value) {
 	return std::round(std::clamp(p_value, -1.0f, 1.0f) * SIGNED_STEPS) + SIGNED_STEPS;
 }
 inline float brightness(float p_value) {
-	return std::round(std::clamp(p_value, 0.0f, 255.0f / 128.0f) * 128.0f);
+	return std::round(std::clamp(p_value, 0.0f, 255.0f / float(BRIGHTNESS)) * float(BRIGHTNESS));
 }
 } // namespace far_steps
 
@@ -130,27 +140,30 @@ inline void write_far_instance(float *r_out, const FarInstance &p_instance) {
 	r_out[1] = p_instance.scale * std::sin(p_instance.yaw);
 	r_out[2] = p_instance.root.z;
 	r_out[3] = p_instance.root.x;
-	r_out[4] = far_steps::signed_unit(p_instance.lean.x) + 256.0f * far_steps::signed_unit(p_instance.lean.y);
-	r_out[5] = far_steps::brightness(p_instance.tone.x) + 256.0f * far_steps::signed_unit(p_instance.tone.y);
+	constexpr float high = float(1u << far_steps::STEP_BITS);
+	r_out[4] = far_steps::signed_unit(p_instance.lean.x) + high * far_steps::signed_unit(p_instance.lean.y);
+	r_out[5] = far_steps::brightness(p_instance.tone.x) + high * far_steps::signed_unit(p_instance.tone.y);
 	const uint32_t above = std::min(p_instance.levels_above, FarInstance::MAX_LEVELS_ABOVE);
-	r_out[FAR_CELL_OR_SHARE] = float(std::min(p_instance.cell, 65535u) + (above << 16u));
+	constexpr uint32_t cell_mask = (1u << far_steps::CELL_BITS) - 1u;
+	r_out[FAR_CELL_OR_SHARE] = float(std::min(p_instance.cell, cell_mask) + (above << far_steps::CELL_BITS));
 	r_out[7] = p_instance.root.y;
 }
 
 // What the shader reads back (the lean and tone in their steps).
 inline FarInstance read_far_instance(const float *p_in) {
-	const auto low = [](float p_value) { return float(uint32_t(std::lround(p_value)) & 255u); };
-	const auto high = [](float p_value) { return float(uint32_t(std::lround(p_value)) >> 8u); };
+	constexpr uint32_t step_mask = (1u << far_steps::STEP_BITS) - 1u;
+	const auto low = [](float p_value) { return float(uint32_t(std::lround(p_value)) & step_mask); };
+	const auto high = [](float p_value) { return float(uint32_t(std::lround(p_value)) >> far_steps::STEP_BITS); };
 	FarInstance instance;
 	instance.root = glm::vec3(p_in[3], p_in[7], p_in[2]);
 	instance.scale = std::sqrt(p_in[0] * p_in[0] + p_in[1] * p_in[1]);
 	instance.yaw = std::atan2(p_in[1], p_in[0]);
 	using far_steps::SIGNED_STEPS;
 	instance.lean = (glm::vec2(low(p_in[4]), high(p_in[4])) - SIGNED_STEPS) / SIGNED_STEPS;
-	instance.tone = glm::vec2(low(p_in[5]) / 128.0f, (high(p_in[5]) - SIGNED_STEPS) / SIGNED_STEPS);
+	instance.tone = glm::vec2(low(p_in[5]) / float(far_steps::BRIGHTNESS), (high(p_in[5]) - SIGNED_STEPS) / SIGNED_STEPS);
 	const uint32_t stored = uint32_t(std::max(std::lround(p_in[FAR_CELL_OR_SHARE]), 0l));
-	instance.cell = stored & 65535u;
-	instance.levels_above = stored >> 16u;
+	instance.cell = stored & ((1u << far_steps::CELL_BITS) - 1u);
+	instance.levels_above = stored >> far_steps::CELL_BITS;
 	return instance;
 }
 

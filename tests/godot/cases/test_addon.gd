@@ -28,6 +28,30 @@ func test_the_node_names_the_cores_indices() -> void:
 	check_eq(SunflowerSimulation.BUCKET_IMPOSTOR, 9, "the impostors follow the mesh buckets")
 
 
+## The impostor shader decodes far records with the library's numbers: every RECORD_X constant of
+## shaders/records.gdshaderinc equals the library's FAR_X.
+func test_the_shaders_record_layout_is_the_librarys() -> void:
+	var path: String = "res://addons/sunflower_field/shaders/records.gdshaderinc"
+	var text: String = FileAccess.get_file_as_string(path)
+	var pattern: RegEx = RegEx.create_from_string(
+		"(?m)^const (?:float|uint|int) RECORD_(\\w+) = ([0-9.]+)u?;"
+	)
+	var found: int = 0
+	for match: RegExMatch in pattern.search_all(text):
+		var name: String = "FAR_" + match.get_string(1)
+		found += 1
+		if check(
+			ClassDB.class_has_integer_constant(&"SunflowerSimulation", name),
+			"the library has no %s for %s" % [name, path]
+		):
+			check_eq(
+				match.get_string(2).to_float(),
+				float(ClassDB.class_get_integer_constant(&"SunflowerSimulation", name)),
+				"%s in %s" % [name, path]
+			)
+	check(found >= 4, "%s defines the record's numbers (%d found)" % [path, found])
+
+
 ## Every value the inspector shows a default for is defined once, in the core's table: the
 ## defaults of the node and of the wind resource equal the core's.
 func test_inspector_defaults_equal_the_cores() -> void:
