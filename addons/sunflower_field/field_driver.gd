@@ -2,7 +2,16 @@
 extends RefCounted
 ## Runs one [SunflowerField] behind its public face: the field drawn now (a native simulation and
 ## its nodes), the build that will replace it, each frame's update (observer, pushers, colliders),
-## and handing the node's settings to the simulation drawn. The node's setters and methods call in.
+## and the settings the node hands it, which it keeps and gives every field it draws. The node's
+## setters and methods call in; the driver reports through its own signals, which the node turns
+## into its public ones.
+
+## A background build's progress, 0 to 1.
+signal build_progress(progress: float)
+## A build completed and its field is drawn.
+signal built(plant_count: int)
+## A map could not be used; the field drawn stays.
+signal map_error(message: String)
 
 const Native: GDScript = preload("native.gd")
 const NativeField: GDScript = preload("native_field.gd")
@@ -33,6 +42,11 @@ var impostor_sets: Array[ImpostorSet] = []
 var plants: Array = []
 var _layout_key: Array = []
 var _shared: Dictionary = {}  # shader parameters every impostor set gets
+var _wind: SunflowerWind
+var _lod: Array = []  # set_lod's arguments
+var _push: Array = []  # set_push_params' arguments
+var _threads: int = 0
+var _draw_distance: float = 0.0  # SunflowerField.max_draw_distance (0: none)
 var _field: Node3D
 
 
@@ -87,7 +101,7 @@ func rebuild(background: bool = false) -> void:
 	build = FieldBuild.new(_field, impostor_sets, job, background, drawn)
 	if background or build.needs_frames():
 		building.append(_field)
-		_field.emit_signal(&"build_progress", 0.0)
+		build_progress.emit(0.0)
 	else:
 		step_build(-1)
 
@@ -96,9 +110,9 @@ func rebuild(background: bool = false) -> void:
 ## puts the new field in place of the old.
 func step_build(budget_usec: int) -> void:
 	var stalks: Array[RID] = interaction.get_body_rids()
-	if not build.step(budget_usec, _field.max_draw_distance, stalks):
+	if not build.step(budget_usec, _draw_distance, stalks):
 		if build.get_progress() > 0.0:  # not while the worker reads the map
-			_field.emit_signal(&"build_progress", build.get_progress())
+			build_progress.emit(build.get_progress())
 		return
 	var message: String = build.get_error()
 	if not message.is_empty():
@@ -113,10 +127,9 @@ func step_build(budget_usec: int) -> void:
 	done.add_main_thread_time(start)
 	stats = done.get_stats()
 	last_error = ""
-	_field.update_configuration_warnings()
 	if done.background or done.needs_frames():
-		_field.emit_signal(&"build_progress", 1.0)
-	_field.emit_signal(&"field_built", plant_count())
+		build_progress.emit(1.0)
+	built.emit(plant_count())
 
 
 ## Stops a running build (waiting for its worker) and frees what it made; the current field stays.
@@ -139,10 +152,7 @@ func show(nodes: FieldNodes) -> void:
 	for species_plant: Resource in plants:
 		tallest = maxf(tallest, species_plant.height * species_plant.scale_max)
 	drawn.finish(plants, _field.legend, _field.cell_size, tallest * 0.5)
-	configure_wind()
-	configure_lod()
-	configure_push()
-	configure_threads()
+	_configure_drawn()
 	FieldObserver.push(_field, _field.observer, _field.frustum_culling, drawn.simulation)
 	drawn.simulation.update(0.0)
 	drawn.show_filled_buckets()
@@ -155,12 +165,11 @@ func place_impostors() -> void:
 		impostors.place(_field.global_transform)
 
 
-## Says that a map cannot be used, as an error, a signal and a configuration warning.
+## Says that a map cannot be used, as an error and a signal (the node shows it as a warning too).
 func report_map_error(message: String) -> void:
 	last_error = message
 	push_error("SunflowerField: " + message)
-	_field.emit_signal(&"map_error", message)
-	_field.update_configuration_warnings()
+	map_error.emit(message)
 
 
 ## One frame of the field drawn: observer and pushers to the core, its update, the stalk colliders.
@@ -222,44 +231,57 @@ func set_impostor_shared(parameter: StringName, value: Variant) -> void:
 		impostors.set_shared(parameter, value)
 
 
-## Hands the field's wind to the simulation drawn.
-func configure_wind() -> void:
+## The wind the fields drawn follow (its changes included: call again after one).
+func set_wind(wind: SunflowerWind) -> void:
+	_wind = wind
+	if drawn and _wind:
+		_wind.apply_to(drawn.simulation)
+
+
+## The levels of detail of the fields drawn (SunflowerField's lod_* and force_lod).
+func set_lod(
+	distances: PackedFloat32Array, hysteresis: float, fade: float, interval: float, force: int
+) -> void:
+	_lod = [distances, hysteresis, fade, interval, force]
 	if drawn:
-		(_field.wind as SunflowerWind).apply_to(drawn.simulation)
+		drawn.simulation.set_lod(distances, hysteresis, fade, interval, force)
 
 
-## Hands the field's levels of detail to the simulation drawn.
-func configure_lod() -> void:
+## How the plants of the fields drawn are pushed (SunflowerField's push_strength and
+## push_recovery_time).
+func set_push(strength: float, recovery_time: float) -> void:
+	_push = [strength, recovery_time]
 	if drawn:
-		drawn.simulation.set_lod(
-			_field.lod_distances,
-			_field.lod_hysteresis,
-			_field.lod_fade,
-			_field.lod_interval,
-			_field.force_lod
-		)
+		drawn.simulation.set_push_params(strength, recovery_time)
 
 
-## Hands the field's push settings to the simulation drawn.
-func configure_push() -> void:
+## The threads that move the near plants of the fields drawn (0: the hardware's count).
+func set_threads(threads: int) -> void:
+	_threads = threads
 	if drawn:
-		drawn.simulation.set_push_params(_field.push_strength, _field.push_recovery_time)
+		drawn.simulation.set_worker_threads(threads)
 
 
-## Hands the field's thread count to the simulation drawn.
-func configure_threads() -> void:
-	if drawn:
-		drawn.simulation.set_worker_threads(_field.worker_threads)
+## Gives the field drawn every setting told so far.
+func _configure_drawn() -> void:
+	if _wind:
+		_wind.apply_to(drawn.simulation)
+	if not _lod.is_empty():
+		drawn.simulation.set_lod(_lod[0], _lod[1], _lod[2], _lod[3], _lod[4])
+	if not _push.is_empty():
+		drawn.simulation.set_push_params(_push[0], _push[1])
+	drawn.simulation.set_worker_threads(_threads)
 
 
 ## Sets the draw distance: the impostors' per-plant fade, and the chunks' visibility ranges on the
 ## field drawn and one being built.
-func apply_ranges() -> void:
-	set_impostor_shared(&"draw_distance", _field.max_draw_distance)
-	set_impostor_shared(&"draw_fade", maxf(2.0, 0.1 * _field.max_draw_distance))
+func set_draw_distance(max_draw_distance: float) -> void:
+	_draw_distance = max_draw_distance
+	set_impostor_shared(&"draw_distance", max_draw_distance)
+	set_impostor_shared(&"draw_fade", maxf(2.0, 0.1 * max_draw_distance))
 	for nodes: FieldNodes in [drawn, build.nodes if build else null]:
 		if nodes:
-			nodes.apply_ranges(_field.max_draw_distance)
+			nodes.apply_ranges(max_draw_distance)
 
 
 ## Frees internal children that belong to no field of this node: copies that duplicate() made of

@@ -228,11 +228,11 @@ const WIND_PROPERTIES: Dictionary = {
 			value = SunflowerWind.new()
 		if value == wind:
 			return
-		if wind and wind.changed.is_connected(_driver.configure_wind):
-			wind.changed.disconnect(_driver.configure_wind)
+		if wind and wind.changed.is_connected(_tell_wind):
+			wind.changed.disconnect(_tell_wind)
 		wind = value
-		wind.changed.connect(_driver.configure_wind)
-		_driver.configure_wind()
+		wind.changed.connect(_tell_wind)
+		_tell_wind()
 
 @export_group("Plant")
 ## The plant the field grows: its parts, form, variety and impostor textures. Empty: the built-in
@@ -264,14 +264,14 @@ const WIND_PROPERTIES: Dictionary = {
 			return
 		if value != lod_distances:
 			lod_distances = value
-			_driver.configure_lod()
+			_tell_lod()
 ## Hysteresis on every switch: less detail this much later, more detail this much earlier.
 @export_range(0.0, 5.0, 0.05, "or_greater", "suffix:m") var lod_hysteresis: float = 0.5:
 	set(value):
 		value = Native.accept("SunflowerField.lod_hysteresis", value, lod_hysteresis)
 		if value != lod_hysteresis:
 			lod_hysteresis = value
-			_driver.configure_lod()
+			_tell_lod()
 ## Metres over which a plant leaving mesh 3 dithers into its impostor (both drawn, complementary
 ## screen-door patterns), ending at the sprite switch less [member lod_hysteresis]: no plant pops
 ## from mesh to impostor. Plants drawn whole ([member FieldPlant.draw_whole]) also dither from mesh 1
@@ -286,14 +286,14 @@ const WIND_PROPERTIES: Dictionary = {
 		value = Native.accept("SunflowerField.lod_fade", value, lod_fade)
 		if value != lod_fade:
 			lod_fade = value
-			_driver.configure_lod()
+			_tell_lod()
 ## Seconds between LOD updates (thesis: 0.25 s). Plants move every frame regardless.
 @export_range(0.0, 2.0, 0.01, "or_greater", "suffix:s") var lod_interval: float = 0.25:
 	set(value):
 		value = Native.accept("SunflowerField.lod_interval", value, lod_interval)
 		if value != lod_interval:
 			lod_interval = value
-			_driver.configure_lod()
+			_tell_lod()
 ## Draw every plant as one representation, whatever its distance (for benchmarks and debugging).
 @export_enum("Automatic:-1", "Mesh 1:0", "Mesh 2:1", "Mesh 3:2", "Sprite:3", "Billboard:4")
 var force_lod: int = -1:
@@ -301,7 +301,7 @@ var force_lod: int = -1:
 		value = Native.accept_int("SunflowerField.force_lod", value, force_lod)
 		if value != force_lod:
 			force_lod = value
-			_driver.configure_lod()
+			_tell_lod()
 ## Skip writing plants outside the observer camera's view (the engine culls the far chunks itself).
 @export var frustum_culling: bool = true
 ## Beyond this distance, draw only a share of the impostors, falling with the square of the
@@ -327,7 +327,7 @@ var force_lod: int = -1:
 		value = Native.accept("SunflowerField.max_draw_distance", value, max_draw_distance)
 		if value != max_draw_distance:
 			max_draw_distance = value
-			_driver.apply_ranges()
+			_driver.set_draw_distance(max_draw_distance)
 
 @export_group("Interaction")
 ## Nodes in this group part the plants around them, like a body walking through the field: near
@@ -345,14 +345,14 @@ var force_lod: int = -1:
 		value = Native.accept("SunflowerField.push_strength", value, push_strength)
 		if value != push_strength:
 			push_strength = value
-			_driver.configure_push()
+			_tell_push()
 ## Seconds a plant takes to spring back upright once the pusher has gone.
 @export_range(0.05, 60.0, 0.05, "suffix:s") var push_recovery_time: float = 1.5:
 	set(value):
 		value = Native.accept("SunflowerField.push_recovery_time", value, push_recovery_time)
 		if value != push_recovery_time:
 			push_recovery_time = value
-			_driver.configure_push()
+			_tell_push()
 ## Stalks within this distance of a pusher or the observer get capsule colliders (running game
 ## only), so characters bump into them and ray casts hit them ([method get_plant_for_body]). 0: none.
 @export_range(0.0, 100.0, 0.1, "or_greater", "suffix:m") var collision_reach: float = 0.0:
@@ -383,7 +383,7 @@ var force_lod: int = -1:
 		value = Native.accept_int("SunflowerField.worker_threads", value, worker_threads)
 		if value != worker_threads:
 			worker_threads = value
-			_driver.configure_threads()
+			_driver.set_threads(worker_threads)
 
 @export_group("Observer")
 ## The node distances are measured from. Empty: the viewport's active camera (in the editor, the
@@ -428,12 +428,42 @@ var _own_wind: SunflowerWind  # the wind the node made itself, saved only once i
 
 func _init() -> void:
 	_own_wind = wind
-	wind.changed.connect(_driver.configure_wind)
+	_driver.build_progress.connect(build_progress.emit)
+	_driver.built.connect(_on_built)
+	_driver.map_error.connect(_on_map_error)
+	wind.changed.connect(_tell_wind)
+	_tell_wind()
+	_tell_lod()
+	_tell_push()
+	_driver.set_threads(worker_threads)
 	_driver.configure_plants(_species_plants())
 	_driver.set_impostor_shared(&"alpha_scissor", alpha_scissor)
 	_driver.set_impostor_shared(&"thinning_start", thinning_distance)
 	_driver.set_impostor_shared(&"thinning_min_density", thinning_min_density)
 	set_notify_transform(true)  # the far impostors are placed through the field's transform
+
+
+## The settings the driver keeps for every field it draws, told as they change.
+func _tell_wind() -> void:
+	_driver.set_wind(wind)
+
+
+func _tell_lod() -> void:
+	_driver.set_lod(lod_distances, lod_hysteresis, lod_fade, lod_interval, force_lod)
+
+
+func _tell_push() -> void:
+	_driver.set_push(push_strength, push_recovery_time)
+
+
+func _on_built(plants: int) -> void:
+	update_configuration_warnings()
+	field_built.emit(plants)
+
+
+func _on_map_error(message: String) -> void:
+	map_error.emit(message)
+	update_configuration_warnings()
 
 
 func _validate_property(property: Dictionary) -> void:
