@@ -254,7 +254,7 @@ if runs demo; then
     echo "== demo recording mode (Xvfb, Forward+): screenshot and stats"
     frames=12
     rm -f "$artifacts/demo_recording.png" "$artifacts/demo_stats.json"
-    timeout 600 "${xvfb[@]}" "$godot" --audio-driver Dummy --resolution 640x360 \
+    timeout 300 "${xvfb[@]}" "$godot" --audio-driver Dummy --resolution 640x360 \
       --path "$repo/demo_project" -- --frames "$frames" --screenshot "$artifacts/demo_recording.png" \
       --stats "$artifacts/demo_stats.json" >"$artifacts/demo_recording.log" 2>&1
     grep '^demo:' "$artifacts/demo_recording.log"

@@ -355,3 +355,18 @@ func get_plant_parts(plant: int) -> PackedFloat32Array:
 ## ([constant BUCKET_COUNT] per species, species by species).
 func get_filled_buckets() -> PackedByteArray:
 	return native.get_filled_buckets()
+
+
+## Instances written into a dynamic bucket last frame.
+func get_bucket_instance_count(bucket: int) -> int:
+	return native.get_bucket_instance_count(bucket)
+
+
+## How long the last update took, microseconds.
+func get_last_update_usec() -> int:
+	return native.get_last_update_usec()
+
+
+## CPU memory held for the field, in bytes.
+func get_memory_bytes() -> int:
+	return native.get_memory_bytes()

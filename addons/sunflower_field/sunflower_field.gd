@@ -581,6 +581,29 @@ func get_lod_counts() -> PackedInt32Array:
 	return _driver.simulation().get_lod_counts()
 
 
+## What the field drawn costs now, for a HUD or a benchmark: [code]update_ms[/code] (the native
+## update of the last frame), [code]memory_bytes[/code] (CPU memory the native field holds) and
+## [code]near_meshes[/code] (plants written at each mesh level last frame, after culling: three
+## counts, every plant type together). Zeros before a field is drawn.
+func get_frame_stats() -> Dictionary:
+	var near: PackedInt32Array = PackedInt32Array()
+	near.resize(Lod.SPRITE)
+	var simulation: NativeField = _driver.simulation()
+	if simulation == null:
+		return {"update_ms": 0.0, "memory_bytes": 0, "near_meshes": near}
+	var per_species: int = Native.constant(&"BUCKET_COUNT")
+	for species: int in _species_plants().size():
+		for level: int in Lod.SPRITE:
+			near[level] += simulation.get_bucket_instance_count(
+				species * per_species + Native.mesh_bucket(level, 0)
+			)
+	return {
+		"update_ms": simulation.get_last_update_usec() / 1000.0,
+		"memory_bytes": simulation.get_memory_bytes(),
+		"near_meshes": near,
+	}
+
+
 ## The plant types grown, species by species: [member plant] (the map's '*'), then the legend's
 ## plants in its order. [method get_lod_counts_by_species] follows this order.
 func get_plant_types() -> Array[FieldPlant]:

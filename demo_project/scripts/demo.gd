@@ -31,36 +31,17 @@ const HILLS_MAP: String = "hills.field"
 const INCREMENTS: PackedFloat32Array = [0.1, 10.0]
 const TRIANGLES_SPRITE: int = 4
 const TRIANGLES_BILLBOARD: int = 2
-## How long a recording waits after its last frame before it quits (see _finish_recording).
-const RECORDING_EXIT_SETTLE_SECONDS: float = 3.0
 ## Below this eye height the camera is a pusher: the flowers part around it.
 const PUSHER_HEIGHT: float = 2.5
 ## How far around the low camera the flowers part, metres (wide enough to see the parting ahead).
 const PUSHER_RADIUS: float = 1.1
 
 var _map_path: String = MAP_PATHS[0]
-var _frames_total: int = -1
-var _frame: int = 0
-var _camera_path: CameraPath
-var _screenshot: String = ""
-var _screenshot_every: int = 0
-var _stats_path: String = ""
-var _frame_times: PackedFloat32Array = []
-var _update_times: PackedFloat32Array = []
-var _lod_sums: PackedFloat64Array = [0, 0, 0, 0, 0]
 var _triangles_per_plant: PackedInt32Array = [0, 0, 0]
-var _last_ticks: int = 0
 var _stats_timer: float = 0.0
-var _exit_code: int = 0
-var _build_ms: float = 0.0
-var _baseline: String = ""
-var _view: String = ""
 var _draw_distance: float = NativeBaseline.CUT_OFF
-## The renderer's own counts per recorded frame (draw calls, objects, primitives: Arrays, which
-## are shared by reference), and its render buffer memory before the map, after the field and after
-## the baseline.
-var _rendering: Dictionary = {"draw_calls": [], "objects": [], "primitives": []}
-var _buffer_memory: Dictionary = {}
+## The recording mode (the benchmark harness), configured from the command line.
+var _recording: DemoRecording = DemoRecording.new()
 
 @onready var _field: SunflowerField = $Field
 @onready var _camera: FlyCamera = $Camera
@@ -73,8 +54,9 @@ func _ready() -> void:
 	_field.field_built.connect(_on_field_built)
 	_field.map_error.connect(_on_map_error)
 	_hud.map_chosen.connect(load_map)
+	_recording.name = "Recording"
+	add_child(_recording)
 	var parts: PackedStringArray = []
-	var path_file: String = ""
 	var args: PackedStringArray = OS.get_cmdline_user_args()
 	var i: int = 0
 	while i < args.size():
@@ -85,28 +67,28 @@ func _ready() -> void:
 			"--part":
 				parts.append(value)
 			"--frames":
-				_frames_total = value.to_int()
+				_recording.frames_total = value.to_int()
 			"--path":
-				path_file = value
+				_recording.path_file = value
 			"--view":
-				_view = value
+				_recording.view = value
 			"--draw-distance":
 				_draw_distance = value.to_float()
 				_field.max_draw_distance = _draw_distance
 			"--tile-merge":
 				_field.tile_merge_distance = value.to_float()
 			"--screenshot":
-				_screenshot = value
+				_recording.screenshot = value
 			"--screenshot-every":
-				_screenshot_every = value.to_int()
+				_recording.screenshot_every = value.to_int()
 			"--stats":
-				_stats_path = value
+				_recording.stats_path = value
 			"--force-lod":
 				_field.force_lod = value.to_int()
 			"--culling":
 				_field.frustum_culling = value != "off"
 			"--baseline":
-				_baseline = value
+				_recording.baseline = value
 			"--whole":
 				var own: FieldPlant = FieldPlant.default_plant().duplicate()
 				own.draw_whole = value != "off"
@@ -120,36 +102,40 @@ func _ready() -> void:
 				_fail("unknown argument '%s' (see demo.gd for the options)" % args[i])
 				i -= 1
 		i += 2
-	if _frames_total < 0 and not (_screenshot.is_empty() and _stats_path.is_empty()):
-		_frames_total = 60
-	if not _stats_path.is_empty():
+	var stats_wanted: bool = not _recording.stats_path.is_empty()
+	if _recording.wanted() and _recording.frames_total < 0:
+		_recording.frames_total = 60
+	if stats_wanted:
 		for frame: int in 3:  # the scene without a field, drawn: what the renderer holds anyway
 			await get_tree().process_frame
-		_buffer_memory["before"] = RenderingServer.get_rendering_info(
+		_recording.buffer_memory["before"] = RenderingServer.get_rendering_info(
 			RenderingServer.RENDERING_INFO_BUFFER_MEM_USED
 		)
 	var build_start: int = Time.get_ticks_usec()
 	load_map(_map_path)
 	while _field.is_building():  # a large map builds in the background; the HUD shows its progress
 		await get_tree().process_frame
-	if not _stats_path.is_empty():
+	if stats_wanted:
 		await get_tree().process_frame  # the field's first frame: its buffers are allocated
-		_buffer_memory["field"] = RenderingServer.get_rendering_info(
+		_recording.buffer_memory["field"] = RenderingServer.get_rendering_info(
 			RenderingServer.RENDERING_INFO_BUFFER_MEM_USED
 		)
-	if _baseline == "native":
+	if _recording.baseline == "native":
 		_build_native_baseline()
-		if not _stats_path.is_empty():
+		if stats_wanted:
 			await get_tree().process_frame
-			_buffer_memory["baseline"] = RenderingServer.get_rendering_info(
+			_recording.buffer_memory["baseline"] = RenderingServer.get_rendering_info(
 				RenderingServer.RENDERING_INFO_BUFFER_MEM_USED
 			)
-	_build_ms = (Time.get_ticks_usec() - build_start) / 1000.0
-	print("demo: %s built in %.0f ms; %s" % [_map_path, _build_ms, _field.get_build_stats()])
+	_recording.build_ms = (Time.get_ticks_usec() - build_start) / 1000.0
+	_recording.map_path = _map_path
+	print(
+		"demo: %s built in %.0f ms; %s" % [_map_path, _recording.build_ms, _field.get_build_stats()]
+	)
 	for argument: String in parts:
 		apply_part_argument(argument)
-	if _frames_total >= 0:
-		_start_recording(path_file)
+	if _recording.frames_total >= 0:
+		_recording.start(_field, _camera)
 
 
 ## Loads a map; an imported res:// map is used as a resource, any other path is read directly.
@@ -194,7 +180,7 @@ func load_part(lod: int, part: int, path: String) -> String:
 		"warning",
 		(
 			"mesh %d %s replaced by %s"
-			% [lod + 1, SunflowerField.FieldNodes.PART_NAMES[part], path.get_file()]
+			% [lod + 1, SunflowerField.Part.keys()[part].to_lower(), path.get_file()]
 		)
 	)
 	_hud.show_message(message)
@@ -265,8 +251,8 @@ func _process(delta: float) -> void:
 	if _stats_timer <= 0.0:
 		_stats_timer = 0.25
 		_hud.set_stats(_stats_text())
-	if _frames_total >= 0 and _camera_path != null:  # recording starts once the field is built
-		_record_frame()
+	if _recording.is_running():  # recording starts once the field is built
+		_recording.record_frame()
 
 
 ## Steps one component of the wind direction by 0.5 through -1 … 1 (thesis keys F4 / F5).
@@ -279,10 +265,7 @@ func _step_direction(direction: Vector2, axis: int) -> Vector2:
 
 
 func _on_field_built(_plants: int) -> void:
-	var size: Vector2 = Vector2(
-		_field.get_simulation().get_map_columns(), _field.get_simulation().get_map_rows()
-	)
-	size *= _field.cell_size
+	var size: Vector2 = Vector2(_field.map.columns, _field.map.rows) * _field.cell_size
 	var plane: PlaneMesh = _ground.mesh as PlaneMesh
 	plane.size = size + Vector2(400.0, 400.0)
 	_ground.position = Vector3(size.x * 0.5, 0.0, size.y * 0.5)
@@ -295,9 +278,9 @@ func _on_field_built(_plants: int) -> void:
 
 
 func _count_triangles() -> void:
-	for lod: int in SunflowerSimulation.MESH_LEVEL_COUNT:
+	for lod: int in SunflowerField.Lod.SPRITE:  # the mesh levels
 		var total: int = 0
-		for part: int in SunflowerSimulation.PART_COUNT:
+		for part: int in SunflowerField.Part.size():
 			var mesh: Mesh = _field.get_part_mesh(lod, part)
 			for surface: int in mesh.get_surface_count() if mesh else 0:
 				var arrays: Array = mesh.surface_get_arrays(surface)
@@ -315,14 +298,11 @@ func _count_triangles() -> void:
 
 func _stats_text() -> String:
 	var counts: PackedInt32Array = _field.get_lod_counts()
-	var simulation: SunflowerSimulation = _field.get_simulation() as SunflowerSimulation
+	var costs: Dictionary = _field.get_frame_stats()
 	var triangles: int = counts[3] * TRIANGLES_SPRITE + counts[4] * TRIANGLES_BILLBOARD
-	for lod: int in SunflowerSimulation.MESH_LEVEL_COUNT:
-		# Near meshes: the instances actually written (frustum-culled), times the model's size.
-		triangles += (
-			simulation.get_bucket_instance_count(SunflowerSimulation.mesh_bucket(lod, 0))
-			* _triangles_per_plant[lod]
-		)
+	for lod: int in SunflowerField.Lod.SPRITE:
+		# Near meshes: the plants actually written (frustum-culled), times the model's size.
+		triangles += costs["near_meshes"][lod] * _triangles_per_plant[lod]
 	var fps: float = Engine.get_frames_per_second()
 	return (
 		(
@@ -335,7 +315,7 @@ func _stats_text() -> String:
 		% [
 			fps,
 			1000.0 / maxf(fps, 1.0),
-			simulation.get_last_update_usec() / 1000.0,
+			costs["update_ms"],
 			_field.get_plant_count(),
 			counts[0],
 			counts[1],
@@ -382,6 +362,7 @@ func _build_native_baseline() -> void:
 	var baseline: NativeBaseline = NativeBaseline.new()
 	baseline.name = "NativeBaseline"
 	add_child(baseline)
+	_recording.baseline_node = baseline
 	var plants: int = baseline.build(_field.map, _field, _draw_distance)
 	_field.visible = false
 	_field.process_mode = Node.PROCESS_MODE_DISABLED
@@ -390,182 +371,12 @@ func _build_native_baseline() -> void:
 	)
 
 
-# --- Recording mode ---------------------------------------------------------------------------
-
-
-func _start_recording(path_file: String) -> void:
-	var size: Vector2 = Vector2(
-		_field.get_simulation().get_map_columns(), _field.get_simulation().get_map_rows()
-	)
-	size *= _field.cell_size
-	if path_file.is_empty():
-		_camera_path = CameraPath.built_in(size, _camera.ground_below)
-	else:
-		var errors: Array[String] = []
-		_camera_path = CameraPath.from_file(path_file, errors)
-		if _camera_path == null:
-			_fail(errors[0])
-			_camera_path = CameraPath.built_in(size, _camera.ground_below)
-	if not _view.is_empty():
-		_camera_path = CameraPath.view(_view, size)
-		if _camera_path == null:
-			_fail("unknown view '%s' (inside, outside40, above45, down60)" % _view)
-			_camera_path = CameraPath.built_in(size, _camera.ground_below)
-	_camera.manual = false
-	_last_ticks = Time.get_ticks_usec()
-
-
-func _record_frame() -> void:
-	var now: int = Time.get_ticks_usec()
-	if _frame > 0:
-		_frame_times.append((now - _last_ticks) / 1000.0)
-		if _baseline.is_empty():
-			_update_times.append(_field.get_simulation().get_last_update_usec() / 1000.0)
-		var counts: PackedInt32Array = _field.get_lod_counts()
-		for lod: int in 5:
-			_lod_sums[lod] += counts[lod]
-		# The frame drawn last (all viewports).
-		(_rendering["draw_calls"] as Array).append(
-			RenderingServer.get_rendering_info(
-				RenderingServer.RENDERING_INFO_TOTAL_DRAW_CALLS_IN_FRAME
-			)
-		)
-		(_rendering["objects"] as Array).append(
-			RenderingServer.get_rendering_info(
-				RenderingServer.RENDERING_INFO_TOTAL_OBJECTS_IN_FRAME
-			)
-		)
-		(_rendering["primitives"] as Array).append(
-			RenderingServer.get_rendering_info(
-				RenderingServer.RENDERING_INFO_TOTAL_PRIMITIVES_IN_FRAME
-			)
-		)
-	_last_ticks = now
-	_camera.transform = _camera_path.sample(float(_frame) / maxf(_frames_total - 1, 1))
-	if (
-		_screenshot_every > 0
-		and _frame % _screenshot_every == 0
-		and not _screenshot.is_empty()
-		and _frame > 0
-	):
-		_save_screenshot("%s_%04d.png" % [_screenshot.get_basename(), _frame])
-	_frame += 1
-	if _frame >= _frames_total:
-		_frames_total = -1
-		_finish_recording.call_deferred()
-
-
-func _finish_recording() -> void:
-	if DisplayServer.get_name() == "headless":
-		if not _screenshot.is_empty():
-			_fail("no screenshot without a display (run under xvfb-run)")
-	else:
-		await RenderingServer.frame_post_draw  # headless mode draws nothing, so this would never come
-		if not _screenshot.is_empty():
-			_save_screenshot(_screenshot)
-	var counts: PackedInt32Array = _field.get_lod_counts()
-	print(
-		(
-			"demo: %d plants; per level (mesh 1, mesh 2, mesh 3, sprite, billboard): %s"
-			% [_field.get_plant_count(), counts]
-		)
-	)
-	print(
-		(
-			"demo: frame time median %.2f ms, native update median %.3f ms"
-			% [_median(_frame_times), _median(_update_times)]
-		)
-	)
-	if not _stats_path.is_empty():
-		_write_stats()
-	# A recording ends a few frames after its first: the renderer may still compile a pipeline in the
-	# background, and quitting then can deadlock the engine's exit (godot#117064).
-	await get_tree().create_timer(RECORDING_EXIT_SETTLE_SECONDS).timeout
-	get_tree().quit(_exit_code)
-
-
-func _save_screenshot(path: String) -> void:
-	var image: Image = get_viewport().get_texture().get_image()
-	DirAccess.make_dir_recursive_absolute(path.get_base_dir())
-	var error: Error = image.save_png(path)
-	print("demo: screenshot %s (%s)" % [path, error_string(error)])
-	if error != OK:
-		_fail("cannot save the screenshot %s (%s)" % [path, error_string(error)])
-
-
-func _write_stats() -> void:
-	var frames: int = _frame_times.size()
-	var mean_counts: Array[float] = []
-	for lod: int in 5:
-		mean_counts.append(_lod_sums[lod] / maxf(frames, 1))
-	var stats: Dictionary = {
-		"map": _map_path,
-		"plants": _field.get_plant_count(),
-		"build_ms": _build_ms,
-		"build": _field.get_build_stats(),
-		"force_lod": _field.force_lod,
-		"culling": _field.frustum_culling,
-		"baseline": _baseline,
-		"native_memory_bytes": _field.get_simulation().get_memory_bytes(),
-		"frames": frames,
-		"frame_ms": _summary(_frame_times),
-		"native_update_ms": _summary(_update_times),
-		"frame_times_ms": Array(_frame_times),
-		"native_update_times_ms": Array(_update_times),
-		"lod_counts_final": Array(_field.get_lod_counts()),
-		"view": _view,
-		"draw_distance": _field.max_draw_distance,
-		"tile_merge_distance": _field.tile_merge_distance,
-		"draw_calls": _summary(PackedFloat32Array(_rendering["draw_calls"])),
-		"objects": _summary(PackedFloat32Array(_rendering["objects"])),
-		"primitives": _summary(PackedFloat32Array(_rendering["primitives"])),
-		"buffer_memory_bytes": _buffer_memory,
-		"baseline_chunks":
-		get_node("NativeBaseline").get_child_count() if has_node("NativeBaseline") else 0,
-		"lod_counts_mean": mean_counts,
-		"engine": Engine.get_version_info()["string"],
-		"renderer": RenderingServer.get_current_rendering_method(),
-		"driver": RenderingServer.get_current_rendering_driver_name(),
-		"adapter": RenderingServer.get_video_adapter_name(),
-		"adapter_vendor": RenderingServer.get_video_adapter_vendor(),
-	}
-	DirAccess.make_dir_recursive_absolute(_stats_path.get_base_dir())
-	var file: FileAccess = FileAccess.open(_stats_path, FileAccess.WRITE)
-	if file == null:
-		_fail("cannot write %s (%s)" % [_stats_path, error_string(FileAccess.get_open_error())])
-		return
-	file.store_string(JSON.stringify(stats, "  "))
-	file.close()
-	print("demo: stats %s" % _stats_path)
-
-
 ## Shows a problem on the HUD; in recording mode it also goes to the log and the run exits with 1.
 func _fail(message: String) -> void:
 	_hud.show_message(message)
-	if _frames_total >= 0 or not (_screenshot.is_empty() and _stats_path.is_empty()):
-		printerr("demo: FAILED: " + message)
-		_exit_code = 1
+	if _recording.wanted():
+		_recording.fail(message)
 
 
 func _on_map_error(message: String) -> void:
 	_fail(message)
-
-
-func _summary(values: PackedFloat32Array) -> Dictionary:
-	if values.is_empty():
-		return {"median": 0.0, "p99": 0.0, "mean": 0.0, "max": 0.0}
-	var sorted: PackedFloat32Array = values.duplicate()
-	sorted.sort()
-	var total: float = 0.0
-	for v: float in sorted:
-		total += v
-	return {
-		"median": sorted[sorted.size() / 2],
-		"p99": sorted[mini(sorted.size() - 1, int(sorted.size() * 0.99))],
-		"mean": total / sorted.size(),
-		"max": sorted[sorted.size() - 1],
-	}
-
-
-func _median(values: PackedFloat32Array) -> float:
-	return _summary(values)["median"]
