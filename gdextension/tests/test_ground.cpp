@@ -268,3 +268,28 @@ TEST_CASE("on ground: LOD distances are measured from the plant on its hill, and
 	sim.update(0.1f);
 	CHECK(sim.near().get_pushes().get_pushed_count() > 0);
 }
+
+TEST_CASE("a height grid read from RGBA pixels: red spans the height range, low alpha is a hole, bad arguments are named") {
+	// 2 × 2 pixels: red 0, 0.5, 1 and a hole.
+	const float pixels[] = { 0.0f, 0, 0, 1.0f, 0.5f, 0, 0, 1.0f, 1.0f, 0, 0, 1.0f, 1.0f, 0, 0, 0.2f };
+	HeightGrid grid;
+	CHECK(height_grid_from_rgba(pixels, 16, 2, 2, glm::vec2(-1.0f, 2.0f), glm::vec2(4.0f, 4.0f), 10.0, 20.0, grid).empty());
+	CHECK(grid.width == 2);
+	CHECK(grid.depth == 2);
+	CHECK(grid.origin == glm::vec2(-1.0f, 2.0f));
+	CHECK(grid.heights[0] == doctest::Approx(10.0f));
+	CHECK(grid.heights[1] == doctest::Approx(15.0f));
+	CHECK(grid.heights[2] == doctest::Approx(20.0f));
+	CHECK(std::isnan(grid.heights[3]));
+	// Each bad argument gets its message, and the grid is left as it was.
+	const HeightGrid before = grid;
+	CHECK(height_grid_from_rgba(pixels, 16, 1, 16, glm::vec2(0.0f), glm::vec2(1.0f), 0.0, 1.0, grid).find("2 to 16384") != std::string::npos);
+	CHECK(height_grid_from_rgba(pixels, 16, 16385, 2, glm::vec2(0.0f), glm::vec2(1.0f), 0.0, 1.0, grid).find("2 to 16384") != std::string::npos);
+	CHECK(height_grid_from_rgba(pixels, 12, 2, 2, glm::vec2(0.0f), glm::vec2(1.0f), 0.0, 1.0, grid).find("12 floats for 2 × 2") != std::string::npos);
+	CHECK(height_grid_from_rgba(nullptr, 16, 2, 2, glm::vec2(0.0f), glm::vec2(1.0f), 0.0, 1.0, grid).find("16 floats") != std::string::npos);
+	CHECK(height_grid_from_rgba(pixels, 16, 2, 2, glm::vec2(NAN, 0.0f), glm::vec2(1.0f), 0.0, 1.0, grid).find("rectangle") != std::string::npos);
+	CHECK(height_grid_from_rgba(pixels, 16, 2, 2, glm::vec2(0.0f), glm::vec2(0.0f, 1.0f), 0.0, 1.0, grid).find("rectangle") != std::string::npos);
+	CHECK(height_grid_from_rgba(pixels, 16, 2, 2, glm::vec2(0.0f), glm::vec2(1.0f), 0.0, INFINITY, grid).find("finite ends") != std::string::npos);
+	CHECK(grid.origin == before.origin);
+	CHECK(grid.heights.size() == before.heights.size());
+}

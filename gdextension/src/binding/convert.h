@@ -2,13 +2,13 @@
 // The one place where engine types and core (GLM / std) types meet.
 #include "godot_api.h"
 
-#include "core/field_simulation.h"
+#include "core/ground.h"
+#include "core/plant_pushes.h"
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
-#include <cmath>
 #include <string>
 #include <vector>
 
@@ -52,38 +52,12 @@ inline void to_core_pushers(const PackedFloat32Array &p_packed, std::vector<sunf
 	}
 }
 
-// A height map from an image's pixels as RGBA floats (Image.FORMAT_RGBAF): red 0–1 spans p_height_min
-// to p_height_max (as HeightMapShape3D.update_map_data_from_image reads it), alpha below one half is a
-// hole. Returns what is wrong with the arguments, or an empty string.
+// A height map from an image's pixels as RGBA floats: the core checks and reads them
+// (sunflower::height_grid_from_rgba). Returns what is wrong with the arguments, or an empty string.
 inline std::string to_core_height_grid(const PackedFloat32Array &p_rgba, int64_t p_width, int64_t p_depth, Vector2 p_origin,
 		Vector2 p_size, double p_height_min, double p_height_max, sunflower::HeightGrid &r_grid) {
-	if (p_width < 2 || p_depth < 2 || p_width > 16384 || p_depth > 16384) {
-		return "height map: " + std::to_string(p_width) + " × " + std::to_string(p_depth) +
-				" pixels; it needs 2 to 16384 on each side";
-	}
-	if (p_rgba.size() != p_width * p_depth * 4) {
-		return "height map: " + std::to_string(p_rgba.size()) + " floats for " + std::to_string(p_width) + " × " +
-				std::to_string(p_depth) + " RGBA pixels";
-	}
-	if (!(p_size.x > 0.0f && p_size.y > 0.0f) || !std::isfinite(p_size.x) || !std::isfinite(p_size.y) ||
-			!std::isfinite(p_origin.x) || !std::isfinite(p_origin.y)) {
-		return "height map: the rectangle it covers needs a finite position and a positive size";
-	}
-	if (!std::isfinite(p_height_min) || !std::isfinite(p_height_max)) {
-		return "height map: the height range needs finite ends";
-	}
-	r_grid.width = int(p_width);
-	r_grid.depth = int(p_depth);
-	r_grid.origin = to_core(p_origin);
-	r_grid.size = to_core(p_size);
-	const float *pixel = p_rgba.data();
-	const float low = float(p_height_min);
-	const float span = float(p_height_max - p_height_min);
-	r_grid.heights.resize(size_t(p_width) * size_t(p_depth));
-	for (size_t i = 0; i < r_grid.heights.size(); ++i, pixel += 4) {
-		r_grid.heights[i] = pixel[3] >= 0.5f ? low + pixel[0] * span : NAN;
-	}
-	return std::string();
+	return sunflower::height_grid_from_rgba(p_rgba.data(), size_t(p_rgba.size()), p_width, p_depth, to_core(p_origin), to_core(p_size),
+			p_height_min, p_height_max, r_grid);
 }
 
 inline PackedInt32Array to_godot_indices(const std::vector<uint32_t> &p_indices) {

@@ -98,4 +98,36 @@ glm::vec2 Ground::lean_at(uint32_t p_index, const glm::vec2 &p) const {
 	return glm::vec2(up.x, up.z);
 }
 
+std::string height_grid_from_rgba(const float *p_rgba, size_t p_floats, int64_t p_width, int64_t p_depth, const glm::vec2 &p_origin,
+		const glm::vec2 &p_size, double p_height_min, double p_height_max, HeightGrid &r_grid) {
+	const int64_t most = HeightGrid::MAX_SIDE;
+	if (p_width < 2 || p_depth < 2 || p_width > most || p_depth > most) {
+		return "height map: " + std::to_string(p_width) + " × " + std::to_string(p_depth) + " pixels; it needs 2 to " +
+				std::to_string(most) + " on each side";
+	}
+	if (p_floats != size_t(p_width * p_depth * 4) || (p_floats > 0 && p_rgba == nullptr)) {
+		return "height map: " + std::to_string(p_floats) + " floats for " + std::to_string(p_width) + " × " +
+				std::to_string(p_depth) + " RGBA pixels";
+	}
+	if (!(p_size.x > 0.0f && p_size.y > 0.0f) || !std::isfinite(p_size.x) || !std::isfinite(p_size.y) ||
+			!std::isfinite(p_origin.x) || !std::isfinite(p_origin.y)) {
+		return "height map: the rectangle it covers needs a finite position and a positive size";
+	}
+	if (!std::isfinite(p_height_min) || !std::isfinite(p_height_max)) {
+		return "height map: the height range needs finite ends";
+	}
+	r_grid.width = int(p_width);
+	r_grid.depth = int(p_depth);
+	r_grid.origin = p_origin;
+	r_grid.size = p_size;
+	const float low = float(p_height_min);
+	const float span = float(p_height_max - p_height_min);
+	r_grid.heights.resize(size_t(p_width) * size_t(p_depth));
+	const float *pixel = p_rgba;
+	for (size_t i = 0; i < r_grid.heights.size(); ++i, pixel += 4) {
+		r_grid.heights[i] = pixel[3] >= 0.5f ? low + pixel[0] * span : NAN;
+	}
+	return std::string();
+}
+
 } // namespace sunflower

@@ -10,6 +10,7 @@
 #include <glm/vec3.hpp>
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace sunflower {
@@ -17,6 +18,8 @@ namespace sunflower {
 // A height map over a rectangle of the field's space (x, z). Samples lie on a regular lattice whose
 // first and last rows and columns are the rectangle's edges, as the vertices of a HeightMapShape3D.
 struct HeightGrid {
+	// The most samples along either side.
+	static constexpr int MAX_SIDE = 16384;
 	int width = 0; // samples along x (≥ 2 to span anything)
 	int depth = 0; // samples along z
 	std::vector<float> heights; // width × depth, row by row (z major), metres; NaN marks a hole
@@ -31,6 +34,12 @@ struct HeightGrid {
 	// is NaN).
 	glm::vec3 normal(const glm::vec2 &p) const;
 };
+
+// A height grid from an image's pixels as RGBA floats (p_floats of them, row by row): red 0–1 spans
+// p_height_min to p_height_max (as the engine's HeightMapShape3D reads an image), alpha below one half
+// is a hole. Returns what is wrong with the arguments (r_grid untouched), or an empty string.
+std::string height_grid_from_rgba(const float *p_rgba, size_t p_floats, int64_t p_width, int64_t p_depth, const glm::vec2 &p_origin,
+		const glm::vec2 &p_size, double p_height_min, double p_height_max, HeightGrid &r_grid);
 
 struct Ground {
 	enum Kind : uint8_t {
