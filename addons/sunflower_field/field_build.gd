@@ -26,6 +26,8 @@ class Job:
 	var text: PackedByteArray
 	var source: String
 	var legend: String
+	## The legend as the node had it (symbol → PackedScene or FieldPlant): the scenes it places.
+	var scenes: Dictionary
 	var max_plants: int
 	var cell_size: float
 	var seed: int
@@ -49,6 +51,7 @@ class Job:
 		job.text = field.map.text
 		job.source = field.map.source_path
 		job.legend = FieldLegend.object_symbols(field.legend)
+		job.scenes = field.legend.duplicate()
 		job.max_plants = field.max_plants
 		job.cell_size = field.cell_size
 		job.seed = field.seed

@@ -24,6 +24,19 @@ const ImpostorSet: GDScript = preload("impostor_set.gd")
 ## background_build is on; smaller ones take a few milliseconds and build at once.
 const BACKGROUND_BUILD_MIN_BYTES: int = 65536
 
+
+## What each frame's update follows, as the node told it (its properties of the same names).
+class FrameSettings:
+	extends RefCounted
+	var observer: NodePath
+	var frustum_culling: bool = true
+	var pusher_group: StringName
+	var pusher_radius: float = 0.0
+	var collision_reach: float = 0.0
+	var collision_layer: int = 1
+	var collision_mask: int = 1
+
+
 ## Fields building in the background now, for progress displays.
 static var building: Array[Node3D] = []
 
@@ -36,6 +49,8 @@ var stats: Dictionary = {}
 var last_error: String = ""
 var rebuild_queued: bool = false
 var interaction: FieldInteraction
+## What each frame follows, set by the node as its properties change.
+var frame: FrameSettings = FrameSettings.new()
 ## The far levels' look per species, shared by the field drawn and one being built.
 var impostor_sets: Array[ImpostorSet] = []
 ## The plant types drawn (FieldPlant): species 0 the node's plant ('*'), then the legend's.
@@ -62,7 +77,7 @@ func simulation() -> NativeField:
 
 ## Whom the field measures distances from now, or null.
 func observer_node() -> Node3D:
-	return FieldObserver.resolve(_field, _field.observer)
+	return FieldObserver.resolve(_field, frame.observer)
 
 
 ## Plants in the field drawn now.
@@ -123,7 +138,7 @@ func step_build(budget_usec: int) -> void:
 	var done: FieldBuild = build
 	build = null
 	building.erase(_field)
-	show(done.nodes)
+	show(done.nodes, done.job.scenes, done.job.cell_size)
 	done.add_main_thread_time(start)
 	stats = done.get_stats()
 	last_error = ""
@@ -140,8 +155,9 @@ func cancel_build() -> void:
 	building.erase(_field)
 
 
-## Draws [param nodes] (a completed build's) in place of the field drawn now; null draws nothing.
-func show(nodes: FieldNodes) -> void:
+## Draws [param nodes] (a completed build's) in place of the field drawn now, the legend's
+## [param scenes] placed on cells of [param cell_size] metres; null draws nothing.
+func show(nodes: FieldNodes, scenes: Dictionary = {}, cell_size: float = 0.0) -> void:
 	if drawn:
 		drawn.free_nodes()
 	drawn = nodes
@@ -151,9 +167,9 @@ func show(nodes: FieldNodes) -> void:
 	var tallest: float = 0.0
 	for species_plant: Resource in plants:
 		tallest = maxf(tallest, species_plant.height * species_plant.scale_max)
-	drawn.finish(plants, _field.legend, _field.cell_size, tallest * 0.5)
+	drawn.finish(plants, scenes, cell_size, tallest * 0.5)
 	_configure_drawn()
-	FieldObserver.push(_field, _field.observer, _field.frustum_culling, drawn.simulation)
+	FieldObserver.push(_field, frame.observer, frame.frustum_culling, drawn.simulation)
 	drawn.simulation.update(0.0)
 	drawn.show_filled_buckets()
 	drawn.update_masks()
@@ -178,10 +194,10 @@ func update_field(delta: float) -> void:
 		return
 	var native_simulation: NativeField = drawn.simulation
 	var observer: Node3D = FieldObserver.push(
-		_field, _field.observer, _field.frustum_culling, native_simulation
+		_field, frame.observer, frame.frustum_culling, native_simulation
 	)
 	native_simulation.set_pushers(
-		interaction.gather_pushers(_field.pusher_group, _field.pusher_radius)
+		interaction.gather_pushers(frame.pusher_group, frame.pusher_radius)
 	)
 	native_simulation.update(delta)
 	drawn.show_filled_buckets()
@@ -189,16 +205,16 @@ func update_field(delta: float) -> void:
 	drawn.follow_sun()
 	var wind_state: PackedFloat32Array = native_simulation.get_wind_state()
 	for impostors: ImpostorSet in impostor_sets:
-		impostors.sway(wind_state, _field.wind, _field.global_transform)
+		impostors.sway(wind_state, _wind, _field.global_transform)
 		if observer:
 			impostors.set_shared(&"observer_position", observer.global_position)
 	if not Engine.is_editor_hint():
 		interaction.update_colliders(
 			native_simulation,
 			observer,
-			_field.collision_reach,
-			_field.collision_layer,
-			_field.collision_mask
+			frame.collision_reach,
+			frame.collision_layer,
+			frame.collision_mask
 		)
 
 

@@ -303,7 +303,10 @@ var force_lod: int = -1:
 			force_lod = value
 			_tell_lod()
 ## Skip writing plants outside the observer camera's view (the engine culls the far chunks itself).
-@export var frustum_culling: bool = true
+@export var frustum_culling: bool = true:
+	set(value):
+		frustum_culling = value
+		_tell_frame()
 ## Beyond this distance, draw only a share of the impostors, falling with the square of the
 ## distance (down to [member thinning_min_density]); the kept ones widen to keep the coverage.
 ## Done on the GPU, so it costs no CPU time. 0 turns thinning off.
@@ -333,11 +336,15 @@ var force_lod: int = -1:
 ## Nodes in this group part the plants around them, like a body walking through the field: near
 ## plants within the pusher's radius bend away from it and spring back once it has gone. A pusher's
 ## [code]push_radius[/code] meta sets its own radius. Empty: no pushers.
-@export var pusher_group: StringName = &"sunflower_pushers"
+@export var pusher_group: StringName = &"sunflower_pushers":
+	set(value):
+		pusher_group = value
+		_tell_frame()
 ## A pusher's radius when it sets none.
 @export_range(0.01, 20.0, 0.01, "or_greater", "suffix:m") var pusher_radius: float = 0.6:
 	set(value):
 		pusher_radius = Native.accept("SunflowerField.pusher_radius", value, pusher_radius)
+		_tell_frame()
 ## How far a pusher bends the plants at its centre (a bend, like the wind's: 0.8 tilts a plant about
 ## 45°); it falls to 0 at the pusher's radius.
 @export_range(0.0, 10.0, 0.01) var push_strength: float = 1.2:
@@ -358,10 +365,17 @@ var force_lod: int = -1:
 @export_range(0.0, 100.0, 0.1, "or_greater", "suffix:m") var collision_reach: float = 0.0:
 	set(value):
 		collision_reach = Native.accept("SunflowerField.collision_reach", value, collision_reach)
+		_tell_frame()
 ## The physics layers the stalk colliders are in.
-@export_flags_3d_physics var collision_layer: int = 1
+@export_flags_3d_physics var collision_layer: int = 1:
+	set(value):
+		collision_layer = value
+		_tell_frame()
 ## The physics layers the stalk colliders scan.
-@export_flags_3d_physics var collision_mask: int = 1
+@export_flags_3d_physics var collision_mask: int = 1:
+	set(value):
+		collision_mask = value
+		_tell_frame()
 
 @export_group("Performance")
 ## Build large maps without stalling: the map is read and laid out on a worker thread, then the
@@ -391,6 +405,7 @@ var force_lod: int = -1:
 @export var observer: NodePath:
 	set(value):
 		observer = value
+		_tell_frame()
 		update_configuration_warnings()
 
 ## Everything behind the public face: builds, the field drawn, each frame, impostors, part meshes.
@@ -435,6 +450,7 @@ func _init() -> void:
 	_tell_wind()
 	_tell_lod()
 	_tell_push()
+	_tell_frame()
 	_driver.set_threads(worker_threads)
 	_driver.configure_plants(_species_plants())
 	_driver.set_impostor_shared(&"alpha_scissor", alpha_scissor)
@@ -454,6 +470,17 @@ func _tell_lod() -> void:
 
 func _tell_push() -> void:
 	_driver.set_push(push_strength, push_recovery_time)
+
+
+func _tell_frame() -> void:
+	var frame: FieldDriver.FrameSettings = _driver.frame
+	frame.observer = observer
+	frame.frustum_culling = frustum_culling
+	frame.pusher_group = pusher_group
+	frame.pusher_radius = pusher_radius
+	frame.collision_reach = collision_reach
+	frame.collision_layer = collision_layer
+	frame.collision_mask = collision_mask
 
 
 func _on_built(plants: int) -> void:
