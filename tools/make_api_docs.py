@@ -107,8 +107,9 @@ def page(xml_path):
             out.append(f"| <a id=\"{m.get('name')}\"></a>`{m.get('name')}` | `{type_of(m)}` | "
                        f"{default} | {one_line(m.text or '', name)} |")
         out.append("")
-    methods = root.find("methods")
-    if methods is not None and len(methods):
+    # The API: a script's own helpers and the engine's callbacks (a leading underscore) are not in it.
+    methods = [m for m in root.find("methods") or [] if not m.get("name").startswith("_")]
+    if methods:
         out += ["## Methods", ""]
         for m in methods:
             params = []
