@@ -1,0 +1,159 @@
+// SunflowerSimulation's queries: plants and their levels, counts, buckets filled, costs, and the
+// core's parameter rules for the node's setters.
+#include "sunflower_simulation.h"
+
+#include "binding/class_binder.h"
+#include "binding/convert.h"
+#include "binding/error_macros.h"
+#include "binding/rendering_server.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <iterator>
+
+using namespace sunflower;
+
+bool SunflowerSimulation::_is_plant(int64_t p_plant) const {
+	SF_FAIL_COND_V_MSG(p_plant < 0 || p_plant >= int64_t(_sim.plants().get_plant_count()), false,
+			"plant index " + std::to_string(p_plant) + " is out of range (the field has " +
+					std::to_string(_sim.plants().get_plant_count()) + " plants)");
+	return true;
+}
+
+int64_t SunflowerSimulation::get_plant_count() const {
+	return _sim.plants().get_plant_count();
+}
+
+gdx::PackedInt32Array SunflowerSimulation::get_lod_counts_by_species() const {
+	std::vector<int32_t> values;
+	for (uint32_t species = 0; species < _sim.plants().get_species_count(); ++species) {
+		for (int64_t count : _sim.near().get_lod_counts(species)) {
+			values.push_back(static_cast<int32_t>(count));
+		}
+	}
+	gdx::PackedInt32Array out;
+	out.assign(values.data(), values.size());
+	return out;
+}
+
+gdx::PackedInt32Array SunflowerSimulation::get_lod_counts() const {
+	const auto counts = _sim.near().get_lod_counts();
+	int32_t values[LOD_COUNT];
+	for (size_t i = 0; i < LOD_COUNT; ++i) {
+		values[i] = static_cast<int32_t>(counts[i]);
+	}
+	gdx::PackedInt32Array out;
+	out.assign(values, LOD_COUNT);
+	return out;
+}
+
+gdx::Vector3 SunflowerSimulation::get_plant_position(int64_t p_plant) const {
+	if (!_is_plant(p_plant)) {
+		return gdx::Vector3{};
+	}
+	return gdx::to_godot(_sim.plants().get_layout().plants[size_t(p_plant)].root());
+}
+
+gdx::Vector2 SunflowerSimulation::get_plant_stalk(int64_t p_plant) const {
+	return _is_plant(p_plant) ? gdx::to_godot(_sim.plants().get_stalk(uint32_t(p_plant))) : gdx::Vector2{};
+}
+
+int64_t SunflowerSimulation::get_plant_lod(int64_t p_plant) const {
+	return _is_plant(p_plant) ? _sim.near().get_plant_lod(uint32_t(p_plant)) : -1;
+}
+
+int64_t SunflowerSimulation::get_plant_tile_level(int64_t p_plant) const {
+	return _is_plant(p_plant) ? int64_t(_sim.tiles().plant_tile_level(_sim.plants().get_layout().plants[size_t(p_plant)])) : -1;
+}
+
+gdx::PackedFloat32Array SunflowerSimulation::get_plant_parts(int64_t p_plant) const {
+	gdx::PackedFloat32Array out;
+	if (!_is_plant(p_plant)) {
+		return out;
+	}
+	PartTransforms parts;
+	_sim.near().get_plant_parts(uint32_t(p_plant), parts);
+	out.resize(PART_COUNT * TRANSFORM_FLOATS);
+	float *data = out.data();
+	for (uint32_t part = 0; part < PART_COUNT; ++part) {
+		write_transform(data + part * TRANSFORM_FLOATS, parts.basis[part], parts.origin[part]);
+	}
+	return out;
+}
+
+int64_t SunflowerSimulation::get_bucket_instance_count(int64_t p_bucket) const {
+	return p_bucket >= 0 && p_bucket < int64_t(_sim.near().get_bucket_count()) ? _sim.near().get_bucket(uint32_t(p_bucket)).get_count() : 0;
+}
+
+gdx::PackedByteArray SunflowerSimulation::get_filled_buckets() const {
+	gdx::PackedByteArray out;
+	out.resize(_sim.near().get_bucket_count());
+	uint8_t *filled = out.data();
+	for (uint32_t b = 0; b < _sim.near().get_bucket_count(); ++b) {
+		filled[b] = _sim.near().get_bucket(b).get_count() > 0 ? 1 : 0;
+	}
+	return out;
+}
+
+int64_t SunflowerSimulation::get_last_update_usec() const {
+	return _last_update_usec;
+}
+
+int64_t SunflowerSimulation::get_pushed_count() const {
+	return _sim.near().get_pushes().get_pushed_count();
+}
+
+gdx::PackedInt32Array SunflowerSimulation::get_plants_near(gdx::Vector3 p_position, double p_radius) const {
+	std::vector<uint32_t> plants;
+	_sim.plants().find_plants_near(gdx::to_core_ground(p_position), float(p_radius), plants);
+	return gdx::to_godot_indices(plants);
+}
+
+int64_t SunflowerSimulation::get_memory_bytes() const {
+	return static_cast<int64_t>(_sim.get_memory_bytes());
+}
+
+double SunflowerSimulation::sanitize_parameter(const gdx::String &p_name, double p_value, double p_current) {
+	const ParameterSpec *spec = find_parameter(p_name.utf8());
+	SF_FAIL_COND_V_MSG(spec == nullptr, p_value, "no parameter is called '" + p_name.utf8() + "'");
+	return sanitize(*spec, p_value, p_current);
+}
+
+gdx::String SunflowerSimulation::explain_parameter(const gdx::String &p_name, double p_value, double p_used) {
+	const ParameterSpec *spec = find_parameter(p_name.utf8());
+	SF_FAIL_COND_V_MSG(spec == nullptr, gdx::String(), "no parameter is called '" + p_name.utf8() + "'");
+	return gdx::String(explain_sanitized(*spec, p_value, p_used));
+}
+
+double SunflowerSimulation::get_parameter_default(const gdx::String &p_name) {
+	const ParameterSpec *spec = find_parameter(p_name.utf8());
+	SF_FAIL_COND_V_MSG(spec == nullptr, 0.0, "no parameter is called '" + p_name.utf8() + "'");
+	return spec->default_value;
+}
+
+gdx::String SunflowerSimulation::get_parameter_names() {
+	std::string names;
+	for (const ParameterSpec *spec : param::ALL) {
+		names += (names.empty() ? "" : ",") + std::string(spec->name);
+	}
+	return gdx::String(names);
+}
+
+gdx::String SunflowerSimulation::check_lod_distances(const gdx::PackedFloat32Array &p_distances) {
+	return gdx::String(sunflower::check_lod_distances(p_distances.data(), size_t(p_distances.size())));
+}
+
+gdx::Vector2 SunflowerSimulation::sanitize_wind_direction(gdx::Vector2 p_direction) {
+	return gdx::to_godot(sunflower::sanitize_wind_direction(gdx::to_core(p_direction)));
+}
+
+int64_t SunflowerSimulation::mesh_bucket(int64_t p_level, int64_t p_part) {
+	SF_FAIL_COND_V_MSG(p_level < 0 || p_level >= LOD_MESH_COUNT || p_part < 0 || p_part >= PART_COUNT, -1,
+			"mesh level " + std::to_string(p_level) + " / part " + std::to_string(p_part) + " is out of range (0–2 each)");
+	return sunflower::mesh_bucket(uint32_t(p_level), uint32_t(p_part));
+}
+
+double SunflowerSimulation::get_plant_height_units() {
+	return PlantShape::HEIGHT;
+}
