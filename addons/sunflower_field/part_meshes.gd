@@ -3,6 +3,8 @@ extends RefCounted
 ## Part addresses: a mesh level (0–2) and a part (0–2: bottom, middle, head), their check, and the
 ## [code]part_meshes/mesh_N/part[/code] property names scenes saved before plant types used.
 
+## The parts and the mesh levels, as the library counts them (PART_COUNT, MESH_LEVEL_COUNT: a test
+## compares them; these are constants so that plants load without the library).
 const PART_NAMES: PackedStringArray = ["bottom", "middle", "head"]
 const LEVELS: int = 3
 const PREFIX: String = "part_meshes/mesh_"

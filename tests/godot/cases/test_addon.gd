@@ -22,6 +22,7 @@ func test_the_node_names_the_cores_indices() -> void:
 	check_eq(
 		SunflowerField.FieldNodes.PART_NAMES.size(), SunflowerSimulation.PART_COUNT, "part names"
 	)
+	check_eq(FieldPlant.PartMeshes.LEVELS, SunflowerSimulation.MESH_LEVEL_COUNT, "a plant's levels")
 	check_eq(
 		SunflowerSimulation.mesh_bucket(2, SunflowerField.Part.HEAD), 8, "the last mesh bucket"
 	)
