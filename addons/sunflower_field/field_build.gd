@@ -29,6 +29,7 @@ class Job:
 	## The legend as the node had it (symbol → PackedScene or FieldPlant): the scenes it places.
 	var scenes: Dictionary
 	var max_plants: int
+	var cheap_shadows: bool = true
 	var cell_size: float
 	var seed: int
 	var independent_jitter: bool
@@ -53,6 +54,7 @@ class Job:
 		job.legend = FieldLegend.object_symbols(field.legend)
 		job.scenes = field.legend.duplicate()
 		job.max_plants = field.max_plants
+		job.cheap_shadows = field.cheap_shadows
 		job.cell_size = field.cell_size
 		job.seed = field.seed
 		job.independent_jitter = field.independent_jitter
@@ -119,6 +121,7 @@ func _init(
 	background = in_background
 	_field = field
 	nodes = FieldNodes.new(field, job.simulation, impostors)
+	nodes.cheap_shadows = job.cheap_shadows
 	_previous = previous
 	if background:
 		_task = WorkerThreadPool.add_task(job.run, true, "SunflowerField: " + job.source.get_file())

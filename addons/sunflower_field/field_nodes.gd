@@ -29,6 +29,9 @@ const PART_NAMES: PackedStringArray = PartMeshes.PART_NAMES
 var simulation: NativeField
 ## The simulation's far tiles, read when the first tile node is made.
 var tiles: FarTileTable
+## Near plants drawn at mesh level 1 or 2 cast their shadows from their level-3 mesh (set before
+## [method finish]; see SunflowerField.cheap_shadows).
+var cheap_shadows: bool = true
 ## Tile nodes made, and taken over from the previous field, by this field's build.
 var tiles_made: int = 0
 var tiles_kept: int = 0
@@ -236,12 +239,15 @@ func finish(
 		var plant: Resource = species_plants[species]
 		var first: int = species * per_species
 		_whole.append(plant.drawn_whole())
-		for level: int in Native.constant(&"MESH_LEVEL_COUNT"):
+		var levels: int = Native.constant(&"MESH_LEVEL_COUNT")
+		for level: int in levels:
 			if _whole[species]:
 				var whole: MultiMeshInstance3D = _make_node(
 					"%sMesh%d" % [prefix, level + 1], plant.whole_mesh(level), aabb
 				)
 				_add_dynamic(whole, first + Native.mesh_bucket(level, 0))
+				if cheap_shadows and level < levels - 1:
+					_add_shadow_twin(whole, plant.whole_mesh(levels - 1))
 				continue
 			for part: int in PART_NAMES.size():
 				var node_name: String = (
@@ -251,6 +257,8 @@ func finish(
 					node_name, plant.mesh_for_field(level, part), aabb
 				)
 				_add_dynamic(node, first + Native.mesh_bucket(level, part))
+				if cheap_shadows and level < levels - 1:
+					_add_shadow_twin(node, plant.mesh_for_field(levels - 1, part))
 		# The near sprites and billboards: one multi-view impostor draws both.
 		var impostors: MultiMeshInstance3D = _make_node(
 			prefix + "Impostors", _impostors[species].mesh(), aabb
@@ -322,22 +330,38 @@ func apply_ranges(max_draw_distance: float) -> void:
 func set_plant_meshes(species: int, plant: Resource) -> void:
 	if species >= _whole.size() or _whole[species] != plant.drawn_whole():
 		return
-	for level: int in Native.constant(&"MESH_LEVEL_COUNT"):
+	var levels: int = Native.constant(&"MESH_LEVEL_COUNT")
+	for level: int in levels:
 		if _whole[species]:
-			_set_bucket_mesh(species, Native.mesh_bucket(level, 0), plant.whole_mesh(level))
+			_set_bucket_mesh(
+				species,
+				Native.mesh_bucket(level, 0),
+				plant.whole_mesh(level),
+				plant.whole_mesh(levels - 1)
+			)
 			continue
 		for part: int in PART_NAMES.size():
 			_set_bucket_mesh(
-				species, Native.mesh_bucket(level, part), plant.mesh_for_field(level, part)
+				species,
+				Native.mesh_bucket(level, part),
+				plant.mesh_for_field(level, part),
+				plant.mesh_for_field(levels - 1, part)
 			)
 
 
-func _set_bucket_mesh(species: int, bucket_in_species: int, mesh: Mesh) -> void:
+## Draws a near bucket with [param mesh], and its shadow twin (if any) with [param shadow_mesh].
+func _set_bucket_mesh(species: int, bucket_in_species: int, mesh: Mesh, shadow_mesh: Mesh) -> void:
 	var slot: int = _dynamic_buckets.find(
 		species * Native.constant(&"BUCKET_COUNT") + bucket_in_species
 	)
-	if slot >= 0 and _dynamic_nodes[slot].multimesh.mesh != mesh:
-		_dynamic_nodes[slot].multimesh.mesh = mesh
+	if slot < 0:
+		return
+	var node: MultiMeshInstance3D = _dynamic_nodes[slot]
+	if node.multimesh.mesh != mesh:
+		node.multimesh.mesh = mesh
+	var twin: MultiMeshInstance3D = node.get_node_or_null(NodePath(CASTER_NAME))
+	if twin and twin.multimesh.mesh != shadow_mesh:
+		twin.multimesh.mesh = shadow_mesh
 
 
 ## Adds every node of this field to [param nodes] (as keys), to tell them from foreign children.
@@ -367,6 +391,21 @@ func _add_dynamic(node: MultiMeshInstance3D, bucket: int) -> void:
 	simulation.set_bucket_multimesh(bucket, node.multimesh.get_rid())
 	_dynamic_nodes.append(node)
 	_dynamic_buckets.append(bucket)
+
+
+## Gives a near bucket's [param node] a shadow-only child drawing the same instances with
+## [param mesh] (the library fills both MultiMeshes); the node itself casts none.
+func _add_shadow_twin(node: MultiMeshInstance3D, mesh: Mesh) -> void:
+	node.cast_shadow = GeometryInstance3D.SHADOW_CASTING_SETTING_OFF
+	var twin: MultiMeshInstance3D = MultiMeshInstance3D.new()
+	twin.name = CASTER_NAME
+	twin.multimesh = MultiMesh.new()
+	twin.multimesh.mesh = mesh
+	twin.cast_shadow = GeometryInstance3D.SHADOW_CASTING_SETTING_SHADOWS_ONLY
+	node.add_child(twin, false, Node.INTERNAL_MODE_BACK)
+	simulation.set_bucket_shadow_multimesh(
+		_dynamic_buckets[_dynamic_nodes.find(node)], twin.multimesh.get_rid()
+	)
 
 
 ## A MultiMesh node for the native buffers. The library allocates each MultiMesh's data in the

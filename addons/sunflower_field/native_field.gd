@@ -245,6 +245,11 @@ func set_bucket_multimesh(bucket: int, multimesh: RID) -> void:
 	native.set_bucket_multimesh(bucket, multimesh)
 
 
+## A second MultiMesh for a bucket, given the same instances every update (a shadow-only node).
+func set_bucket_shadow_multimesh(bucket: int, multimesh: RID) -> void:
+	native.set_bucket_shadow_multimesh(bucket, multimesh)
+
+
 ## The static MultiMesh of a far tile's impostors (sprites and billboards are one multi-view
 ## impostor).
 func set_tile_multimesh(tile: int, multimesh: RID) -> void:

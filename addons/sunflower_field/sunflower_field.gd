@@ -378,6 +378,14 @@ var force_lod: int = -1:
 		_tell_frame()
 
 @export_group("Performance")
+## Near plants at mesh level 1 or 2 cast their shadows from their mesh 3 (the shadow of a plant a
+## few shadow-map texels wide looks the same, at a quarter of the triangles); off: each casts from the
+## mesh it is drawn with.
+@export var cheap_shadows: bool = true:
+	set(value):
+		if value != cheap_shadows:
+			cheap_shadows = value
+			_queue_rebuild()
 ## Build large maps without stalling: the map is read and laid out on a worker thread, then the
 ## field's nodes are made a few at a time, at most [member build_budget_ms] per frame. The previous
 ## field stays drawn until the new one is complete ([signal build_progress] reports, the editor shows

@@ -18,6 +18,7 @@ extends Node3D
 ##   --baseline native        draw the field the Godot-native way instead (benchmark baseline)
 ##   --wind P                 the wind power (0: calm)
 ##   --whole off              draw the near plants part by part (FieldPlant.draw_whole off)
+##   --cheap-shadows off      near plants cast shadows from the mesh they are drawn with
 ##   --no-hud                 hide the heads-up display (pictures for measurements)
 
 const MAP_NAMES: PackedStringArray = [
@@ -95,6 +96,8 @@ func _ready() -> void:
 				_field.plant = own
 			"--wind":
 				_field.wind_power = value.to_float()
+			"--cheap-shadows":
+				_field.cheap_shadows = value != "off"
 			"--no-hud":
 				_hud.visible = false
 				i -= 1

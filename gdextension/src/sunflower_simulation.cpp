@@ -56,6 +56,7 @@ void SunflowerSimulation::bind_methods() {
 	gdx::bind_method(CLASS, "get_pushed_count", &SunflowerSimulation::get_pushed_count);
 	gdx::bind_method(CLASS, "get_plants_near", &SunflowerSimulation::get_plants_near, { "position", "radius" });
 	gdx::bind_method(CLASS, "set_bucket_multimesh", &SunflowerSimulation::set_bucket_multimesh, { "bucket", "multimesh" });
+	gdx::bind_method(CLASS, "set_bucket_shadow_multimesh", &SunflowerSimulation::set_bucket_shadow_multimesh, { "bucket", "multimesh" });
 	gdx::bind_method(CLASS, "set_tile_multimesh", &SunflowerSimulation::set_tile_multimesh, { "tile", "multimesh" });
 	gdx::bind_method(CLASS, "release_multimeshes", &SunflowerSimulation::release_multimeshes);
 	gdx::bind_method(CLASS, "adopt_tile_multimesh", &SunflowerSimulation::adopt_tile_multimesh, { "tile", "multimesh" });

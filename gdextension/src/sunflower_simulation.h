@@ -63,6 +63,9 @@ public:
 	gdx::PackedInt32Array get_plants_near(gdx::Vector3 p_position, double p_radius) const;
 
 	void set_bucket_multimesh(int64_t p_bucket, gdx::Rid p_multimesh);
+	// A second MultiMesh for a bucket that gets the same instances every frame: the node that casts
+	// the bucket's shadows with another mesh (an invalid RID: none).
+	void set_bucket_shadow_multimesh(int64_t p_bucket, gdx::Rid p_multimesh);
 	void set_tile_multimesh(int64_t p_tile, gdx::Rid p_multimesh);
 	void adopt_tile_multimesh(int64_t p_tile, gdx::Rid p_multimesh);
 	int64_t get_tile_count() const;
@@ -122,6 +125,9 @@ private:
 
 	struct BucketTarget {
 		gdx::Rid multimesh;
+		// A MultiMesh that draws the same instances with a cheaper mesh into the shadow passes only
+		// (set_bucket_shadow_multimesh), or none.
+		gdx::Rid shadow;
 		gdx::PackedFloat32Array staging;
 		uint32_t allocated = 0;
 		uint32_t stride = 0; // floats per instance allocated (the bucket's)

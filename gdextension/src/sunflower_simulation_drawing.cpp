@@ -27,6 +27,16 @@ void SunflowerSimulation::set_bucket_multimesh(int64_t p_bucket, gdx::Rid p_mult
 	target.last_count = 0;
 }
 
+void SunflowerSimulation::set_bucket_shadow_multimesh(int64_t p_bucket, gdx::Rid p_multimesh) {
+	SF_FAIL_COND_MSG(p_bucket < 0 || p_bucket >= int64_t(_buckets.size()),
+			"bucket " + std::to_string(p_bucket) + " is out of range (0 to " + std::to_string(_buckets.size() - 1) + ")");
+	BucketTarget &target = _buckets[static_cast<size_t>(p_bucket)];
+	target.shadow = p_multimesh;
+	target.allocated = 0; // both are allocated anew at the next push
+	target.last_count = 0;
+	target.bounds_low = target.bounds_high = glm::vec3(0.0f);
+}
+
 void SunflowerSimulation::set_tile_multimesh(int64_t p_tile, gdx::Rid p_multimesh) {
 	if (!_is_tile(p_tile) || !gdx::RenderingServer::ensure_loaded()) {
 		return;
@@ -168,6 +178,9 @@ void SunflowerSimulation::_push_bucket(uint32_t p_bucket) {
 	if (!target.multimesh.is_valid() || (count == 0 && target.last_count == 0)) {
 		return;
 	}
+	// The bucket's MultiMesh and, when it has one, its shadow caster's get the same instances.
+	const gdx::Rid meshes[2] = { target.multimesh, target.shadow };
+	const size_t mesh_count = target.shadow.is_valid() ? 2 : 1;
 	const uint32_t stride = bucket.get_stride();
 	if (count > target.allocated || stride != target.stride) {
 		target.allocated = std::max(bucket.get_capacity(), count);
@@ -179,21 +192,28 @@ void SunflowerSimulation::_push_bucket(uint32_t p_bucket) {
 		} else if (stride == FAR_FLOATS_PER_INSTANCE) {
 			format = gdx::RenderingServer::COMPACT;
 		}
-		gdx::RenderingServer::multimesh_allocate_data(target.multimesh, target.allocated, format);
+		for (size_t m = 0; m < mesh_count; ++m) {
+			gdx::RenderingServer::multimesh_allocate_data(meshes[m], target.allocated, format);
+		}
 		target.staging.resize(int64_t(target.allocated) * stride);
 	}
 	if (count > 0) {
 		std::copy_n(bucket.get_data(), size_t(count) * stride, target.staging.data());
-		gdx::RenderingServer::multimesh_set_buffer(target.multimesh, target.staging);
 		// The box of this frame's plants, so that each pass (a shadow cascade, the camera) draws the
 		// bucket only when they reach into it.
-		if (bucket.get_bounds_low() != target.bounds_low || bucket.get_bounds_high() != target.bounds_high) {
-			target.bounds_low = bucket.get_bounds_low();
-			target.bounds_high = bucket.get_bounds_high();
-			gdx::RenderingServer::multimesh_set_custom_aabb(target.multimesh, gdx::to_godot_aabb(target.bounds_low, target.bounds_high));
+		const bool moved = bucket.get_bounds_low() != target.bounds_low || bucket.get_bounds_high() != target.bounds_high;
+		target.bounds_low = bucket.get_bounds_low();
+		target.bounds_high = bucket.get_bounds_high();
+		for (size_t m = 0; m < mesh_count; ++m) {
+			gdx::RenderingServer::multimesh_set_buffer(meshes[m], target.staging);
+			if (moved) {
+				gdx::RenderingServer::multimesh_set_custom_aabb(meshes[m], gdx::to_godot_aabb(target.bounds_low, target.bounds_high));
+			}
 		}
 	}
-	gdx::RenderingServer::multimesh_set_visible_instances(target.multimesh, count);
+	for (size_t m = 0; m < mesh_count; ++m) {
+		gdx::RenderingServer::multimesh_set_visible_instances(meshes[m], count);
+	}
 	target.last_count = count;
 }
 

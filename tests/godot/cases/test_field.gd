@@ -83,6 +83,47 @@ func test_lod_counts_follow_the_observer() -> void:
 			)
 
 
+## Near plants at mesh 1 and 2 cast their shadows from mesh 3: their nodes cast none, and each has a
+## shadow-only child the library fills with the same instances, drawing the level-3 mesh. With
+## cheap_shadows off, every level casts from its own mesh.
+func test_near_plants_cast_shadows_from_mesh_3() -> void:
+	observer.position = Vector3(10.0, 1.7, 7.5)
+	field.advance(0.3)
+	var last: MultiMeshInstance3D = _node("Mesh3")
+	check_eq(last.cast_shadow, GeometryInstance3D.SHADOW_CASTING_SETTING_ON, "mesh 3 casts its own")
+	check(last.get_child_count(true) == 0, "mesh 3 has no shadow twin")
+	for level: int in 2:
+		var node: MultiMeshInstance3D = _node("Mesh%d" % (level + 1))
+		check_eq(node.cast_shadow, GeometryInstance3D.SHADOW_CASTING_SETTING_OFF, node.name)
+		var twin: MultiMeshInstance3D = node.get_child(0, true) as MultiMeshInstance3D
+		if not check(twin != null, "%s has a shadow twin" % node.name):
+			continue
+		check_eq(
+			twin.cast_shadow, GeometryInstance3D.SHADOW_CASTING_SETTING_SHADOWS_ONLY, "shadows only"
+		)
+		check(twin.multimesh.mesh == last.multimesh.mesh, "%s's twin draws mesh 3" % node.name)
+		var drawn: RID = node.multimesh.get_rid()
+		var cast: RID = twin.multimesh.get_rid()
+		var count: int = RenderingServer.multimesh_get_visible_instances(drawn)
+		check(count > 0 or level == 1, "%s draws plants (%d)" % [node.name, count])
+		check_eq(RenderingServer.multimesh_get_visible_instances(cast), count, "the same plants")
+		check(
+			(
+				RenderingServer.multimesh_get_buffer(cast)
+				== RenderingServer.multimesh_get_buffer(drawn)
+			),
+			"%s's twin has its instances" % node.name
+		)
+	field.cheap_shadows = false
+	field.advance(0.1)
+	for level: int in 3:
+		var node: MultiMeshInstance3D = _node("Mesh%d" % (level + 1))
+		check_eq(
+			node.cast_shadow, GeometryInstance3D.SHADOW_CASTING_SETTING_ON, "full: " + node.name
+		)
+		check_eq(node.get_child_count(true), 0, "full: no twin under " + node.name)
+
+
 func test_buffers_reach_the_rendering_server() -> void:
 	observer.position = Vector3(10.0, 1.7, 7.5)
 	field.advance(0.3)
