@@ -34,9 +34,7 @@ func refresh() -> void:
 		names.append(field.name)
 	_bar.value = 100.0 * total / fields.size()
 	_label.text = "Building sunflowers"
-	tooltip_text = (
-		"Building in the background: %s (the previous field is drawn meanwhile)" % ", ".join(names)
-	)
+	tooltip_text = ("Building in the background: %s (the previous field is drawn meanwhile)" % ", ".join(names))
 
 
 ## What the display says, with the names of the fields building, e.g.

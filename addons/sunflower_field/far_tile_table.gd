@@ -55,8 +55,7 @@ func parent(tile: int) -> int:
 func aabb(tile: int) -> AABB:
 	var i: int = tile * _place_stride
 	return AABB(
-		Vector3(_places[i], _places[i + 1], _places[i + 2]),
-		Vector3(_places[i + 3], _places[i + 4], _places[i + 5])
+		Vector3(_places[i], _places[i + 1], _places[i + 2]), Vector3(_places[i + 3], _places[i + 4], _places[i + 5])
 	)
 
 

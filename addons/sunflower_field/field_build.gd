@@ -44,9 +44,7 @@ class Job:
 
 	## A job for [param field]'s map and layout properties and [param species_plants] (a FieldPlant
 	## per species), filling [param native_simulation].
-	static func for_field(
-		field: Node3D, species_plants: Array, native_simulation: NativeField
-	) -> Job:
+	static func for_field(field: Node3D, species_plants: Array, native_simulation: NativeField) -> Job:
 		var job: Job = Job.new()
 		job.simulation = native_simulation
 		job.text = field.map.text
@@ -111,11 +109,7 @@ var _longest_step_ms: float = 0.0
 ## Starts reading [param build_job] on a worker thread when [param in_background], else at once.
 ## Chunks that draw as [param previous]'s (the FieldNodes drawn now, or null) take its nodes.
 func _init(
-	field: Node3D,
-	impostors: Array[ImpostorSet],
-	build_job: Job,
-	in_background: bool,
-	previous: FieldNodes
+	field: Node3D, impostors: Array[ImpostorSet], build_job: Job, in_background: bool, previous: FieldNodes
 ) -> void:
 	job = build_job
 	background = in_background
@@ -154,10 +148,7 @@ func step(budget_usec: int, max_draw_distance: float, exclude: Array[RID]) -> bo
 		if job.ground.needs_rays():
 			_phase = Phase.RAYS
 			job.ground.start_rays(
-				_field,
-				_field.ground_ray_above,
-				_field.ground_ray_below,
-				_field.ground_collision_mask
+				_field, _field.ground_ray_above, _field.ground_ray_below, _field.ground_collision_mask
 			)
 	if _phase == Phase.RAYS:
 		var left: int = budget_usec - (Time.get_ticks_usec() - start) if budget_usec >= 0 else -1

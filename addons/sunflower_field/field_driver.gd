@@ -108,11 +108,7 @@ func rebuild(background: bool = false) -> void:
 		show(null)
 		return
 	var job: FieldBuild.Job = FieldBuild.Job.for_field(_field, plants, native_simulation)
-	background = (
-		background
-		and _field.background_build
-		and field_map.text.size() >= BACKGROUND_BUILD_MIN_BYTES
-	)
+	background = (background and _field.background_build and field_map.text.size() >= BACKGROUND_BUILD_MIN_BYTES)
 	build = FieldBuild.new(_field, impostor_sets, job, background, drawn)
 	if background or build.needs_frames():
 		building.append(_field)
@@ -193,12 +189,8 @@ func update_field(delta: float) -> void:
 	if plant_count() == 0:
 		return
 	var native_simulation: NativeField = drawn.simulation
-	var observer: Node3D = FieldObserver.push(
-		_field, frame.observer, frame.frustum_culling, native_simulation
-	)
-	native_simulation.set_pushers(
-		interaction.gather_pushers(frame.pusher_group, frame.pusher_radius)
-	)
+	var observer: Node3D = FieldObserver.push(_field, frame.observer, frame.frustum_culling, native_simulation)
+	native_simulation.set_pushers(interaction.gather_pushers(frame.pusher_group, frame.pusher_radius))
 	native_simulation.update(delta)
 	drawn.show_filled_buckets()
 	drawn.update_masks()
@@ -210,11 +202,7 @@ func update_field(delta: float) -> void:
 			impostors.set_shared(&"observer_position", observer.global_position)
 	if not Engine.is_editor_hint():
 		interaction.update_colliders(
-			native_simulation,
-			observer,
-			frame.collision_reach,
-			frame.collision_layer,
-			frame.collision_mask
+			native_simulation, observer, frame.collision_reach, frame.collision_layer, frame.collision_mask
 		)
 
 
@@ -255,9 +243,7 @@ func set_wind(wind: SunflowerWind) -> void:
 
 
 ## The levels of detail of the fields drawn (SunflowerField's lod_* and force_lod).
-func set_lod(
-	distances: PackedFloat32Array, hysteresis: float, fade: float, interval: float, force: int
-) -> void:
+func set_lod(distances: PackedFloat32Array, hysteresis: float, fade: float, interval: float, force: int) -> void:
 	_lod = [distances, hysteresis, fade, interval, force]
 	if drawn:
 		drawn.simulation.set_lod(distances, hysteresis, fade, interval, force)

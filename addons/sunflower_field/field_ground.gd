@@ -66,19 +66,11 @@ func apply_height_map(simulation: NativeField, cell_size: float) -> String:
 		return "SunflowerField.height_map: the ground source is Height Map but no height map is set"
 	var image: Image = height_map.duplicate() as Image
 	if image.is_compressed() and image.decompress() != OK:
-		return (
-			"SunflowerField.height_map: %s is compressed in a format that cannot be read back"
-			% _name()
-		)
+		return "SunflowerField.height_map: %s is compressed in a format that cannot be read back" % _name()
 	image.convert(Image.FORMAT_RGBAF)
 	var rect: Rect2 = height_map_rect
 	if not rect.has_area():  # the whole field
-		rect = Rect2(
-			0.0,
-			0.0,
-			simulation.get_map_columns() * cell_size,
-			simulation.get_map_rows() * cell_size
-		)
+		rect = Rect2(0.0, 0.0, simulation.get_map_columns() * cell_size, simulation.get_map_rows() * cell_size)
 	var message: String = simulation.set_ground_height_map(
 		image.get_data().to_float32_array(),
 		image.get_width(),

@@ -38,9 +38,7 @@ func gather_pushers(group: StringName, default_radius: float) -> PackedFloat32Ar
 ## Keeps a capsule (the plant's stalk, as the core sizes it for its plant type and size) standing on
 ## every plant within [param reach] of the gathered pushers and of [param observer] (if any), in the
 ## field's physics space, with the given collision layer and mask. [param reach] 0 frees them all.
-func update_colliders(
-	simulation: NativeField, observer: Node3D, reach: float, layer: int, mask: int
-) -> void:
+func update_colliders(simulation: NativeField, observer: Node3D, reach: float, layer: int, mask: int) -> void:
 	if reach <= 0.0 or not _field.is_inside_tree():
 		free_colliders()
 		return
@@ -60,12 +58,7 @@ func update_colliders(
 	for plant: int in wanted:
 		if not _bodies.has(plant):
 			_make_body(
-				plant,
-				simulation.get_plant_position(plant),
-				simulation.get_plant_stalk(plant),
-				space,
-				layer,
-				mask
+				plant, simulation.get_plant_position(plant), simulation.get_plant_stalk(plant), space, layer, mask
 			)
 
 
@@ -93,24 +86,18 @@ func free_colliders() -> void:
 
 
 ## A static body for [param plant] at [param root] with a capsule of [param stalk] (radius, height).
-func _make_body(
-	plant: int, root: Vector3, stalk: Vector2, space: RID, layer: int, mask: int
-) -> void:
+func _make_body(plant: int, root: Vector3, stalk: Vector2, space: RID, layer: int, mask: int) -> void:
 	var shape: RID = PhysicsServer3D.capsule_shape_create()
 	var height: float = maxf(stalk.y, 2.0 * stalk.x)  # a capsule is at least its two caps tall
 	PhysicsServer3D.shape_set_data(shape, {"radius": stalk.x, "height": height})
 	var body: RID = PhysicsServer3D.body_create()
 	PhysicsServer3D.body_set_mode(body, PhysicsServer3D.BODY_MODE_STATIC)
-	PhysicsServer3D.body_add_shape(
-		body, shape, Transform3D(Basis(), Vector3(0.0, height * 0.5, 0.0))
-	)
+	PhysicsServer3D.body_add_shape(body, shape, Transform3D(Basis(), Vector3(0.0, height * 0.5, 0.0)))
 	PhysicsServer3D.body_set_collision_layer(body, layer)
 	PhysicsServer3D.body_set_collision_mask(body, mask)
 	PhysicsServer3D.body_attach_object_instance_id(body, _field.get_instance_id())
 	PhysicsServer3D.body_set_state(
-		body,
-		PhysicsServer3D.BODY_STATE_TRANSFORM,
-		_field.global_transform * Transform3D(Basis(), root)
+		body, PhysicsServer3D.BODY_STATE_TRANSFORM, _field.global_transform * Transform3D(Basis(), root)
 	)
 	PhysicsServer3D.body_set_space(body, space)
 	_bodies[plant] = body

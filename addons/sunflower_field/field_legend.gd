@@ -41,10 +41,7 @@ static func _usable_keys(legend: Dictionary, warn: bool) -> Array:
 		if symbol.length() != 1 or symbol in ["*", " ", "."]:
 			if warn:
 				push_warning(
-					(
-						"SunflowerField.legend: key '%s' must be one character other than '*', ' ' and '.'"
-						% symbol
-					)
+					"SunflowerField.legend: key '%s' must be one character other than '*', ' ' and '.'" % symbol
 				)
 			continue
 		keys.append(key)

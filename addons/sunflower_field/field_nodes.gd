@@ -98,9 +98,7 @@ func make_tiles(budget_usec: int, max_draw_distance: float) -> bool:
 		tiles_made += 1
 		var aabb: AABB = tiles.aabb(tile)
 		var impostors: ImpostorSet = _impostors[tiles.species(tile)]
-		var node: MultiMeshInstance3D = _make_node(
-			_tile_node_name(tile), impostors.mesh(true), aabb
-		)
+		var node: MultiMeshInstance3D = _make_node(_tile_node_name(tile), impostors.mesh(true), aabb)
 		_add_caster(node, impostors.caster(true))
 		node.visible = false  # shown when the whole field is ready
 		_tile_nodes.append(node)
@@ -147,9 +145,7 @@ func _link_parents() -> void:
 		var parent: int = tiles.parent(tile)
 		var node: MultiMeshInstance3D = _tile_nodes[tile]
 		for drawn: GeometryInstance3D in [node, _caster_of(node)]:
-			drawn.visibility_parent = (
-				drawn.get_path_to(_tile_nodes[parent]) if parent >= 0 else NodePath()
-			)
+			drawn.visibility_parent = (drawn.get_path_to(_tile_nodes[parent]) if parent >= 0 else NodePath())
 
 
 ## A merged level's plants are at least its begin distance away (200 m by default): beyond the sun's
@@ -229,9 +225,7 @@ func get_tile_progress() -> float:
 ## [param species_plants] holds each species' FieldPlant: a plant drawn whole gets one node per
 ## level ([code]Mesh1[/code]…), any other one per level and part ([code]Mesh1Bottom[/code]…). The
 ## near plants' bounds reach [param sway_margin] metres past the chunks' (a swaying plant's lean).
-func finish(
-	species_plants: Array, legend: Dictionary, cell_size: float, sway_margin: float
-) -> void:
+func finish(species_plants: Array, legend: Dictionary, cell_size: float, sway_margin: float) -> void:
 	var aabb: AABB = _field_aabb().grow(sway_margin)
 	var per_species: int = Native.constant(&"BUCKET_COUNT")
 	for species: int in simulation.get_species_count():
@@ -250,19 +244,13 @@ func finish(
 					_add_shadow_twin(whole, plant.whole_mesh(levels - 1))
 				continue
 			for part: int in PART_NAMES.size():
-				var node_name: String = (
-					"%sMesh%d%s" % [prefix, level + 1, PART_NAMES[part].capitalize()]
-				)
-				var node: MultiMeshInstance3D = _make_node(
-					node_name, plant.mesh_for_field(level, part), aabb
-				)
+				var node_name: String = "%sMesh%d%s" % [prefix, level + 1, PART_NAMES[part].capitalize()]
+				var node: MultiMeshInstance3D = _make_node(node_name, plant.mesh_for_field(level, part), aabb)
 				_add_dynamic(node, first + Native.mesh_bucket(level, part))
 				if cheap_shadows and level < levels - 1:
 					_add_shadow_twin(node, plant.mesh_for_field(levels - 1, part))
 		# The near sprites and billboards: one multi-view impostor draws both.
-		var impostors: MultiMeshInstance3D = _make_node(
-			prefix + "Impostors", _impostors[species].mesh(), aabb
-		)
+		var impostors: MultiMeshInstance3D = _make_node(prefix + "Impostors", _impostors[species].mesh(), aabb)
 		_add_dynamic(impostors, first + Native.constant(&"BUCKET_IMPOSTOR"))
 		_add_caster(impostors, _impostors[species].caster())
 	_place_objects(legend, cell_size)
@@ -334,10 +322,7 @@ func set_plant_meshes(species: int, plant: Resource) -> void:
 	for level: int in levels:
 		if _whole[species]:
 			_set_bucket_mesh(
-				species,
-				Native.mesh_bucket(level, 0),
-				plant.whole_mesh(level),
-				plant.whole_mesh(levels - 1)
+				species, Native.mesh_bucket(level, 0), plant.whole_mesh(level), plant.whole_mesh(levels - 1)
 			)
 			continue
 		for part: int in PART_NAMES.size():
@@ -351,9 +336,7 @@ func set_plant_meshes(species: int, plant: Resource) -> void:
 
 ## Draws a near bucket with [param mesh], and its shadow twin (if any) with [param shadow_mesh].
 func _set_bucket_mesh(species: int, bucket_in_species: int, mesh: Mesh, shadow_mesh: Mesh) -> void:
-	var slot: int = _dynamic_buckets.find(
-		species * Native.constant(&"BUCKET_COUNT") + bucket_in_species
-	)
+	var slot: int = _dynamic_buckets.find(species * Native.constant(&"BUCKET_COUNT") + bucket_in_species)
 	if slot < 0:
 		return
 	var node: MultiMeshInstance3D = _dynamic_nodes[slot]
@@ -403,9 +386,7 @@ func _add_shadow_twin(node: MultiMeshInstance3D, mesh: Mesh) -> void:
 	twin.multimesh.mesh = mesh
 	twin.cast_shadow = GeometryInstance3D.SHADOW_CASTING_SETTING_SHADOWS_ONLY
 	node.add_child(twin, false, Node.INTERNAL_MODE_BACK)
-	simulation.set_bucket_shadow_multimesh(
-		_dynamic_buckets[_dynamic_nodes.find(node)], twin.multimesh.get_rid()
-	)
+	simulation.set_bucket_shadow_multimesh(_dynamic_buckets[_dynamic_nodes.find(node)], twin.multimesh.get_rid())
 
 
 ## A MultiMesh node for the native buffers. The library allocates each MultiMesh's data in the

@@ -26,9 +26,7 @@ static func resolve(field: Node3D, observer: NodePath) -> Node3D:
 ## Hands the observer's position (and with [param culling], a camera's frustum planes) to
 ## [param simulation], in [param field]'s space, and returns the observer. Nothing happens without
 ## one (null).
-static func push(
-	field: Node3D, observer: NodePath, culling: bool, simulation: NativeField
-) -> Node3D:
+static func push(field: Node3D, observer: NodePath, culling: bool, simulation: NativeField) -> Node3D:
 	var node: Node3D = resolve(field, observer)
 	if node == null:
 		return null
@@ -38,8 +36,6 @@ static func push(
 	if culling and camera and camera.is_inside_tree():
 		for plane: Plane in camera.get_frustum():
 			var local_plane: Plane = to_local * plane
-			frustum.append_array(
-				[local_plane.normal.x, local_plane.normal.y, local_plane.normal.z, local_plane.d]
-			)
+			frustum.append_array([local_plane.normal.x, local_plane.normal.y, local_plane.normal.z, local_plane.d])
 	simulation.set_observer(to_local * node.global_position, frustum)
 	return node

@@ -63,15 +63,11 @@ func _init(undo_redo: EditorUndoRedoManager) -> void:
 		_buttons[entry[1]] = button
 	_symbols = OptionButton.new()
 	_symbols.tooltip_text = "The map symbol painted"
-	_symbols.item_selected.connect(
-		func(index: int) -> void: symbol = _symbols.get_item_text(index).left(1)
-	)
+	_symbols.item_selected.connect(func(index: int) -> void: symbol = _symbols.get_item_text(index).left(1))
 	toolbar.add_child(_symbols)
 	_radius_box = _spin_box("Brush radius", 0.25, 50.0, 0.25, radius, " m")
 	_radius_box.value_changed.connect(func(value: float) -> void: radius = value)
-	_density_box = _spin_box(
-		"Density: the share of cells a stroke fills", 0.05, 1.0, 0.05, density, ""
-	)
+	_density_box = _spin_box("Density: the share of cells a stroke fills", 0.05, 1.0, 0.05, density, "")
 	_density_box.value_changed.connect(func(value: float) -> void: density = value)
 	toolbar.visible = false
 	if Engine.is_editor_hint():  # tools and tests also paint outside the editor
@@ -81,10 +77,7 @@ func _init(undo_redo: EditorUndoRedoManager) -> void:
 ## Lets go of the editor (the plugin leaves): frees the toolbar; no painter is active any more.
 func release() -> void:
 	edit(null)
-	if (
-		Engine.is_editor_hint()
-		and EditorInterface.get_inspector().property_edited.is_connected(_on_property_edited)
-	):
+	if Engine.is_editor_hint() and EditorInterface.get_inspector().property_edited.is_connected(_on_property_edited):
 		EditorInterface.get_inspector().property_edited.disconnect(_on_property_edited)
 	if is_instance_valid(toolbar):
 		if toolbar.is_inside_tree():
@@ -172,10 +165,7 @@ func handle_input(camera: Camera3D, event: InputEvent) -> bool:
 		return false
 	if event is InputEventMouseMotion:
 		return _on_motion(camera, event as InputEventMouseMotion)
-	if (
-		event is InputEventMouseButton
-		and (event as InputEventMouseButton).button_index == MOUSE_BUTTON_LEFT
-	):
+	if event is InputEventMouseButton and (event as InputEventMouseButton).button_index == MOUSE_BUTTON_LEFT:
 		return _on_left_button(camera, event as InputEventMouseButton)
 	return false
 
@@ -214,10 +204,7 @@ func ground_point(camera: Camera3D, screen_point: Vector2) -> Variant:
 		var hit: Dictionary = _field.get_world_3d().direct_space_state.intersect_ray(query)
 		if not hit.is_empty():
 			return hit["position"]
-	if (
-		_field.ground_source == SunflowerField.GroundSource.HEIGHT_MAP
-		and _field.get_plant_count() > 0
-	):
+	if _field.ground_source == SunflowerField.GroundSource.HEIGHT_MAP and _field.get_plant_count() > 0:
 		return _height_map_point(from, direction)
 	var plane: Plane = Plane(_field.global_basis.y.normalized(), _field.global_position)
 	return plane.intersects_ray(from, direction)
@@ -271,12 +258,7 @@ func _open_map(field: SunflowerField) -> NativeField:
 		return null
 	var path: String = field_map.source_path
 	if not path.begins_with("res://") or not FileAccess.file_exists(path):
-		_fail(
-			(
-				"SunflowerField painter: %s is not a .field file in the project; nothing to write back"
-				% path
-			)
-		)
+		_fail("SunflowerField painter: %s is not a .field file in the project; nothing to write back" % path)
 		return null
 	var writable: FileAccess = FileAccess.open(path, FileAccess.READ_WRITE)
 	if writable == null:
@@ -294,11 +276,7 @@ func _open_map(field: SunflowerField) -> NativeField:
 	editor.set_ground_heights(PackedFloat32Array(), PackedFloat32Array(), 0.0)  # a map only: no plants laid out
 	var legend: Dictionary = field.legend
 	var message: String = editor.load_map(
-		field_map.text,
-		path,
-		FieldLegend.object_symbols(legend),
-		FieldLegend.plant_symbols(legend),
-		0
+		field_map.text, path, FieldLegend.object_symbols(legend), FieldLegend.plant_symbols(legend), 0
 	)
 	if not message.is_empty():
 		_fail("SunflowerField painter: the map cannot be painted: " + message)
@@ -312,9 +290,7 @@ func _paint_at(world_point: Vector3) -> void:
 	var local: Vector3 = _field.to_local(world_point)
 	var cells: Vector2 = Vector2(local.x, local.z) / _field.cell_size
 	var painted: String = "" if _erasing else symbol
-	var changed: PackedInt32Array = _stroke.paint_map(
-		cells, radius / _field.cell_size, painted, density, _seed, false
-	)
+	var changed: PackedInt32Array = _stroke.paint_map(cells, radius / _field.cell_size, painted, density, _seed, false)
 	_preview_due = _preview_due or not changed.is_empty()
 	_preview_if_due()
 
@@ -322,11 +298,7 @@ func _paint_at(world_point: Vector3) -> void:
 ## Shows the stroke so far once the last preview has been built (a large field builds over a few
 ## frames; starting another would drop it) and the interval has passed.
 func _preview_if_due() -> void:
-	if (
-		_preview_due
-		and not _field.is_building()
-		and Time.get_ticks_msec() - _last_preview_ms >= PREVIEW_INTERVAL_MS
-	):
+	if _preview_due and not _field.is_building() and Time.get_ticks_msec() - _last_preview_ms >= PREVIEW_INTERVAL_MS:
 		_preview_due = false
 		_preview()
 
@@ -376,9 +348,7 @@ func new_map(field: SunflowerField, columns: int, rows: int, filled: bool) -> St
 		return ""
 	var scene: Node = field.get_tree().edited_scene_root if field.is_inside_tree() else null
 	var folder: String = (
-		scene.scene_file_path.get_base_dir()
-		if scene and not scene.scene_file_path.is_empty()
-		else "res://"
+		scene.scene_file_path.get_base_dir() if scene and not scene.scene_file_path.is_empty() else "res://"
 	)
 	var path: String = folder.path_join(str(field.name).to_snake_case() + ".field")
 	var serial: int = 2
@@ -387,12 +357,7 @@ func new_map(field: SunflowerField, columns: int, rows: int, filled: bool) -> St
 		serial += 1
 	var file: FileAccess = FileAccess.open(path, FileAccess.WRITE)
 	if file == null:
-		_fail(
-			(
-				"SunflowerField: cannot write %s (%s)"
-				% [path, error_string(FileAccess.get_open_error())]
-			)
-		)
+		_fail("SunflowerField: cannot write %s (%s)" % [path, error_string(FileAccess.get_open_error())])
 		return ""
 	file.store_buffer(editor.write_map())
 	file.close()
@@ -493,9 +458,7 @@ func _remove_circle() -> void:
 	_circle = null
 
 
-func _spin_box(
-	tooltip: String, low: float, high: float, step: float, value: float, suffix: String
-) -> SpinBox:
+func _spin_box(tooltip: String, low: float, high: float, step: float, value: float, suffix: String) -> SpinBox:
 	var box: SpinBox = SpinBox.new()
 	box.min_value = low
 	box.max_value = high

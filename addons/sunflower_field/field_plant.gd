@@ -110,9 +110,7 @@ static var _default: FieldPlant
 ## largest bend with its leaves: culling and chunk bounds use it.
 @export_range(0.01, 100.0, 0.01, "or_greater") var cull_radius_units: float = 1.9:
 	set(value):
-		var accepted: float = Native.accept(
-			"FieldPlant.cull_radius_units", value, cull_radius_units
-		)
+		var accepted: float = Native.accept("FieldPlant.cull_radius_units", value, cull_radius_units)
 		if accepted != cull_radius_units:
 			cull_radius_units = accepted
 			emit_changed()
@@ -170,9 +168,7 @@ static var _default: FieldPlant
 ## impostors.
 @export_range(0.0, 1.0, 0.01) var brightness_variation: float = 0.0:
 	set(value):
-		var accepted: float = Native.accept(
-			"FieldPlant.brightness_variation", value, brightness_variation
-		)
+		var accepted: float = Native.accept("FieldPlant.brightness_variation", value, brightness_variation)
 		if accepted != brightness_variation:
 			brightness_variation = accepted
 			emit_changed()
@@ -217,9 +213,7 @@ static var _default: FieldPlant
 ## make the far levels glow less than the meshes); set it yourself for an atlas made elsewhere.
 @export_range(1.0, 32768.0, 1.0) var impostor_emission_range: float = 8.0:
 	set(value):
-		var accepted: float = Native.accept(
-			"FieldPlant.impostor_emission_range", value, impostor_emission_range
-		)
+		var accepted: float = Native.accept("FieldPlant.impostor_emission_range", value, impostor_emission_range)
 		if accepted != impostor_emission_range:
 			impostor_emission_range = accepted
 			emit_changed()
@@ -229,9 +223,7 @@ static var _default: FieldPlant
 ## shade each other (0.03 suits the sunflower; more shades a lone plant's own leaves with specks).
 @export_range(0.0, 0.5, 0.01) var impostor_shadow_shift: float = 0.03:
 	set(value):
-		var accepted: float = Native.accept(
-			"FieldPlant.impostor_shadow_shift", value, impostor_shadow_shift
-		)
+		var accepted: float = Native.accept("FieldPlant.impostor_shadow_shift", value, impostor_shadow_shift)
 		if accepted != impostor_shadow_shift:
 			impostor_shadow_shift = accepted
 			emit_changed()
@@ -303,9 +295,7 @@ func texture_drawn(kind: String) -> Texture2D:
 	if own or self == default_plant():
 		return own
 	return (
-		default_plant().get("impostor_" + kind)
-		if mesh_level_1.all(func(m: Mesh) -> bool: return m == null)
-		else null
+		default_plant().get("impostor_" + kind) if mesh_level_1.all(func(m: Mesh) -> bool: return m == null) else null
 	)
 
 
@@ -313,9 +303,7 @@ func texture_drawn(kind: String) -> Texture2D:
 ## the [member impostor_width] × [member height_units] cylinder fits it from every elevation
 ## (its outline seen at elevation e is w wide and h·cos e + w·sin e tall, at most √(h² + w²)).
 func impostor_frame() -> Vector2:
-	return Vector2(
-		sqrt(height_units * height_units + impostor_width * impostor_width), height_units * 0.5
-	)
+	return Vector2(sqrt(height_units * height_units + impostor_width * impostor_width), height_units * 0.5)
 
 
 ## What the layout depends on, and whether the plant is drawn whole (the native buckets follow it):
@@ -361,13 +349,9 @@ func bake_impostors(host: Node, folder: String = "", base_name: String = "") -> 
 
 ## Hands the plant's form, height and variety to a native simulation, as [param species].
 func apply_to(simulation: NativeField, species: int = 0) -> void:
-	simulation.set_plant_form(
-		species, part_lengths, middle_variation, height_units, cull_radius_units, stiffness
-	)
+	simulation.set_plant_form(species, part_lengths, middle_variation, height_units, cull_radius_units, stiffness)
 	simulation.set_plant_height(species, height)
-	simulation.set_plant_variation(
-		species, yaw_range, scale_min, scale_max, brightness_variation, tint_variation
-	)
+	simulation.set_plant_variation(species, yaw_range, scale_min, scale_max, brightness_variation, tint_variation)
 
 
 func _drawn_parts(level: int) -> Array[Mesh]:

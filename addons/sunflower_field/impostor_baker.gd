@@ -62,9 +62,7 @@ class Glow:
 ## and, for a plant that glows, [code]_emission.png[/code] (default: beside the plant's resource
 ## file, named after it), and gives them to the plant (reimported in the editor;
 ## loaded from the files elsewhere). Returns OK, or an error after pushing what went wrong.
-static func bake(
-	plant: FieldPlant, host: Node, folder: String = "", base_name: String = ""
-) -> Error:
+static func bake(plant: FieldPlant, host: Node, folder: String = "", base_name: String = "") -> Error:
 	# The editor draws a frame only when something on screen changed; the bake waits for drawn frames
 	# of its own viewport, so frames are drawn continuously while it runs.
 	var low_processor: bool = OS.low_processor_usage_mode
@@ -79,16 +77,10 @@ static func _bake(plant: FieldPlant, host: Node, folder: String, base_name: Stri
 		push_error("Bake impostors: needs a plant and a node in the scene tree to render under")
 		return ERR_INVALID_PARAMETER
 	if DisplayServer.get_name() == "headless":
-		push_error(
-			"Bake impostors: rendering is off (--headless); run with a display or under Xvfb"
-		)
+		push_error("Bake impostors: rendering is off (--headless); run with a display or under Xvfb")
 		return ERR_UNAVAILABLE
 	if folder.is_empty():
-		folder = (
-			plant.resource_path.get_base_dir()
-			if plant.resource_path.begins_with("res://")
-			else "user://"
-		)
+		folder = (plant.resource_path.get_base_dir() if plant.resource_path.begins_with("res://") else "user://")
 	if base_name.is_empty():
 		base_name = (
 			plant.resource_path.get_file().get_basename()
@@ -144,9 +136,7 @@ static func _bake(plant: FieldPlant, host: Node, folder: String, base_name: Stri
 ## light.
 static func _emission(viewport: SubViewport, plant: FieldPlant) -> Glow:
 	var glow: Glow = Glow.new()
-	glow.energy_range = (FieldPlant as Script).get_property_default_value(
-		&"impostor_emission_range"
-	)
+	glow.energy_range = (FieldPlant as Script).get_property_default_value(&"impostor_emission_range")
 	if not _can_glow(plant):
 		return glow
 	for instance: Node in viewport.find_children("*", "MeshInstance3D", true, false):
@@ -170,9 +160,7 @@ static func _emission(viewport: SubViewport, plant: FieldPlant) -> Glow:
 		# The brightest colour channel, from a comparison with black (the alpha left out).
 		var colours: Image = image.duplicate() as Image
 		colours.convert(Image.FORMAT_RGB8)
-		var black: Image = Image.create(
-			colours.get_width(), colours.get_height(), false, Image.FORMAT_RGB8
-		)
+		var black: Image = Image.create(colours.get_width(), colours.get_height(), false, Image.FORMAT_RGB8)
 		var brightest: float = float(colours.compute_image_metrics(black, false)["max"])
 		if brightest < 2.0:
 			return glow
@@ -194,10 +182,7 @@ static func _can_glow(plant: FieldPlant) -> bool:
 		for surface: int in mesh.get_surface_count():
 			var material: Material = mesh.surface_get_material(surface)
 			while material:
-				if (
-					not (material is BaseMaterial3D)
-					or (material as BaseMaterial3D).emission_enabled
-				):
+				if not (material is BaseMaterial3D) or (material as BaseMaterial3D).emission_enabled:
 					return true
 				material = material.next_pass
 	return false
@@ -223,9 +208,7 @@ static func view_basis(column: int, row: int) -> Basis:
 	var azimuth: float = TAU * column / FieldPlant.ATLAS_VIEWS.x
 	var elevation: float = 0.5 * PI * row / (FieldPlant.ATLAS_VIEWS.y - 1)
 	var right: Vector3 = Vector3(cos(azimuth), 0.0, -sin(azimuth))
-	var back: Vector3 = Vector3(
-		sin(azimuth) * cos(elevation), sin(elevation), cos(azimuth) * cos(elevation)
-	)
+	var back: Vector3 = Vector3(sin(azimuth) * cos(elevation), sin(elevation), cos(azimuth) * cos(elevation))
 	return Basis(right, back.cross(right), back)
 
 
@@ -253,9 +236,7 @@ static func _stage(plant: FieldPlant) -> SubViewport:
 		for column: int in views.x:
 			# The view's basis maps image axes to the plant's; its inverse turns the plant to the camera.
 			var turn: Basis = view_basis(column, row).transposed()
-			var square_centre: Vector3 = Vector3(
-				(column + 0.5) * frame.x, -(row + 0.5) * frame.x, 0.0
-			)
+			var square_centre: Vector3 = Vector3((column + 0.5) * frame.x, -(row + 0.5) * frame.x, 0.0)
 			var copy: Node3D = Node3D.new()
 			copy.transform = Transform3D(turn, square_centre - turn * Vector3(0.0, frame.y, 0.0))
 			viewport.add_child(copy)
@@ -292,12 +273,7 @@ static func _give_textures(
 		_write_import_settings(paths)
 		filesystem.reimport_files(paths)
 		for path: String in paths:
-			textures.append(
-				(
-					ResourceLoader.load(path, "Texture2D", ResourceLoader.CACHE_MODE_REPLACE)
-					as Texture2D
-				)
-			)
+			textures.append(ResourceLoader.load(path, "Texture2D", ResourceLoader.CACHE_MODE_REPLACE) as Texture2D)
 	else:
 		for image: Image in images:
 			image.premultiply_alpha()
@@ -308,11 +284,7 @@ static func _give_textures(
 	plant.impostor_emission = null
 	for i: int in textures.size():
 		plant.set("impostor_" + kinds[i], textures[i])
-	if (
-		in_project
-		and plant.resource_path.begins_with("res://")
-		and not plant.resource_path.contains("::")
-	):
+	if in_project and plant.resource_path.begins_with("res://") and not plant.resource_path.contains("::"):
 		ResourceSaver.save(plant)
 
 

@@ -22,9 +22,7 @@ func _bake(object: Object, button: Button) -> void:
 	if object is SunflowerField:
 		plant = (object as SunflowerField).plant
 		if plant == null:
-			push_warning(
-				"Bake impostors: the field grows the built-in sunflower, whose impostors ship baked"
-			)
+			push_warning("Bake impostors: the field grows the built-in sunflower, whose impostors ship baked")
 			return
 	button.disabled = true
 	button.text = "Baking…"
@@ -33,11 +31,6 @@ func _bake(object: Object, button: Button) -> void:
 		button.disabled = false
 		button.text = "Bake impostors"
 	if result == OK:
-		print(
-			(
-				"Bake impostors: %s's textures are %s"
-				% [plant.name, plant.impostor_views.resource_path]
-			)
-		)
+		print("Bake impostors: %s's textures are %s" % [plant.name, plant.impostor_views.resource_path])
 		if plant.resource_path.contains("::") or plant.resource_path.is_empty():
 			EditorInterface.mark_scene_as_unsaved()

@@ -13,9 +13,7 @@ extends RefCounted
 const SHADER: Shader = preload("shaders/impostor.gdshader")
 const SHADOW_SHADER: Shader = preload("shaders/impostor_shadow.gdshader")
 ## The shader's sampler of each of [constant FieldPlant.IMPOSTOR_TEXTURES].
-const ATLAS_PARAMETERS: Dictionary = {
-	"views": "view_atlas", "normals": "normal_atlas", "depths": "depth_atlas"
-}
+const ATLAS_PARAMETERS: Dictionary = {"views": "view_atlas", "normals": "normal_atlas", "depths": "depth_atlas"}
 
 ## The material of the near bucket's impostors (records with shares).
 var material: ShaderMaterial = ShaderMaterial.new()
@@ -45,15 +43,11 @@ func configure(plant: Resource) -> void:
 		set_texture(kind, plant.texture_drawn(kind))
 	var emission: Texture2D = plant.texture_drawn(FieldPlant.EMISSION_TEXTURE)
 	# The built-in plant's atlas (drawn for a plant without meshes of its own) has its own range.
-	var range_of: Resource = (
-		plant if emission == plant.impostor_emission else FieldPlant.default_plant()
-	)
+	var range_of: Resource = plant if emission == plant.impostor_emission else FieldPlant.default_plant()
 	set_emission(emission, range_of.impostor_emission_range)
 	_stiffness = plant.stiffness
 	# Model units of the bottom part, and of the middle and head above it (how the wind bends them).
-	_set_all(
-		"part_reach", Vector2(plant.part_lengths.x, plant.part_lengths.y + plant.part_lengths.z)
-	)
+	_set_all("part_reach", Vector2(plant.part_lengths.x, plant.part_lengths.y + plant.part_lengths.z))
 	var frame: Vector2 = plant.impostor_frame()
 	_set_all("frame_size", frame.x)
 	_set_all("frame_centre", frame.y)
@@ -82,12 +76,7 @@ func set_texture(kind: String, texture: Texture2D) -> void:
 			push_warning(
 				(
 					"SunflowerField: the impostor views texture %s %s; it is read as %d × %d views (re-bake the plant's impostors)"
-					% [
-						texture.resource_path if texture.resource_path else "(unsaved)",
-						problem,
-						layout.x,
-						layout.y
-					]
+					% [texture.resource_path if texture.resource_path else "(unsaved)", problem, layout.x, layout.y]
 				)
 			)
 		_set_all("atlas_views", layout)
@@ -143,9 +132,7 @@ static func view_bounds(texture: Texture2D, views: Vector2i) -> PackedVector4Arr
 	var square: Vector2i = image.get_size() / views
 	for row: int in views.y:
 		for column: int in views.x:
-			var used: Rect2i = (
-				image.get_region(Rect2i(Vector2i(column, row) * square, square)).get_used_rect()
-			)
+			var used: Rect2i = image.get_region(Rect2i(Vector2i(column, row) * square, square)).get_used_rect()
 			var start: Vector2 = Vector2(used.position) / Vector2(square)
 			var end: Vector2 = Vector2(used.end) / Vector2(square)
 			bounds.append(Vector4(start.x, start.y, end.x, end.y))
@@ -195,19 +182,10 @@ func mesh(for_tiles: bool = false) -> ArrayMesh:
 		var arrays: Array = []
 		arrays.resize(Mesh.ARRAY_MAX)
 		arrays[Mesh.ARRAY_VERTEX] = PackedVector3Array(
-			[
-				Vector3(-0.5, -0.5, 0),
-				Vector3(0.5, -0.5, 0),
-				Vector3(0.5, 0.5, 0),
-				Vector3(-0.5, 0.5, 0)
-			]
+			[Vector3(-0.5, -0.5, 0), Vector3(0.5, -0.5, 0), Vector3(0.5, 0.5, 0), Vector3(-0.5, 0.5, 0)]
 		)
-		arrays[Mesh.ARRAY_NORMAL] = PackedVector3Array(
-			[Vector3.BACK, Vector3.BACK, Vector3.BACK, Vector3.BACK]
-		)
-		arrays[Mesh.ARRAY_TEX_UV] = PackedVector2Array(
-			[Vector2(0, 1), Vector2(1, 1), Vector2(1, 0), Vector2(0, 0)]
-		)
+		arrays[Mesh.ARRAY_NORMAL] = PackedVector3Array([Vector3.BACK, Vector3.BACK, Vector3.BACK, Vector3.BACK])
+		arrays[Mesh.ARRAY_TEX_UV] = PackedVector2Array([Vector2(0, 1), Vector2(1, 1), Vector2(1, 0), Vector2(0, 0)])
 		arrays[Mesh.ARRAY_INDEX] = PackedInt32Array([0, 2, 1, 0, 3, 2])
 		quad.add_surface_from_arrays(Mesh.PRIMITIVE_TRIANGLES, arrays)
 		quad.surface_set_material(0, tile_material if for_tiles else material)

@@ -32,9 +32,7 @@ func _ask_size(field: SunflowerField, resizing: bool) -> void:
 	var dialog: ConfirmationDialog = ConfirmationDialog.new()
 	dialog.title = "Resize the field map" if resizing else "New field map"
 	var box: VBoxContainer = VBoxContainer.new()
-	var columns: SpinBox = _size_box(
-		box, "Columns", field.map.columns if resizing and field.map else 40
-	)
+	var columns: SpinBox = _size_box(box, "Columns", field.map.columns if resizing and field.map else 40)
 	var rows: SpinBox = _size_box(box, "Rows", field.map.rows if resizing and field.map else 30)
 	var filled: CheckBox = CheckBox.new()
 	filled.text = "Every cell a sunflower"

@@ -66,13 +66,9 @@ static func plant_height_units() -> float:
 static func accept(property: String, value: float, current: float) -> float:
 	if not is_available():
 		return value
-	var used: float = ClassDB.class_call_static(
-		CLASS, &"sanitize_parameter", property, value, current
-	)
+	var used: float = ClassDB.class_call_static(CLASS, &"sanitize_parameter", property, value, current)
 	if used != value:  # also for NaN, which equals nothing
-		var why: String = ClassDB.class_call_static(
-			CLASS, &"explain_parameter", property, value, used
-		)
+		var why: String = ClassDB.class_call_static(CLASS, &"explain_parameter", property, value, used)
 		push_warning("%s: %s" % [property, why])
 	return used
 
@@ -100,36 +96,24 @@ static func check_map(
 ) -> String:
 	if not is_available():
 		return missing_message()
-	return ClassDB.class_call_static(
-		CLASS, &"check_map", text, source, symbols, "", max_plants, any_symbol
-	)
+	return ClassDB.class_call_static(CLASS, &"check_map", text, source, symbols, "", max_plants, any_symbol)
 
 
 ## The columns, rows and sunflowers of a valid map (see [method check_map]); empty otherwise.
 static func map_figures(text: PackedByteArray, max_plants: int) -> PackedInt32Array:
 	return (
-		ClassDB.class_call_static(CLASS, &"get_map_figures", text, max_plants)
-		if is_available()
-		else PackedInt32Array()
+		ClassDB.class_call_static(CLASS, &"get_map_figures", text, max_plants) if is_available() else PackedInt32Array()
 	)
 
 
 ## What is wrong with these LOD switch distances, or an empty string.
 static func check_lod_distances(distances: PackedFloat32Array) -> String:
-	return (
-		ClassDB.class_call_static(CLASS, &"check_lod_distances", distances)
-		if is_available()
-		else ""
-	)
+	return ClassDB.class_call_static(CLASS, &"check_lod_distances", distances) if is_available() else ""
 
 
 ## The wind direction the core uses for [param direction] (a zero vector means +x).
 static func sanitize_wind_direction(direction: Vector2) -> Vector2:
-	return (
-		ClassDB.class_call_static(CLASS, &"sanitize_wind_direction", direction)
-		if is_available()
-		else direction
-	)
+	return ClassDB.class_call_static(CLASS, &"sanitize_wind_direction", direction) if is_available() else direction
 
 
 ## Transforms from the native instance layout: 12 floats each, the 3 × 4 matrix [basis | origin]

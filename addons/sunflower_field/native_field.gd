@@ -24,9 +24,7 @@ func _init(simulation: RefCounted) -> void:
 
 
 ## Parses a field map (see [code]fields/FORMAT.md[/code]) and lays out its plants.
-func load_map(
-	text: PackedByteArray, source: String, legend: String, plant_symbols: String, max_plants: int
-) -> String:
+func load_map(text: PackedByteArray, source: String, legend: String, plant_symbols: String, max_plants: int) -> String:
 	return native.load_map(text, source, legend, plant_symbols, max_plants)
 
 
@@ -69,9 +67,7 @@ func get_map_objects() -> PackedInt32Array:
 
 ## Metres per map character, the random seed, whether x and z get independent jitter (the thesis
 ## uses one α for both), and the chunk size in metres.
-func set_layout(
-	cell_size: float, layout_seed: int, independent_jitter: bool, chunk_size: float
-) -> void:
+func set_layout(cell_size: float, layout_seed: int, independent_jitter: bool, chunk_size: float) -> void:
 	native.set_layout(cell_size, layout_seed, independent_jitter, chunk_size)
 
 
@@ -96,15 +92,11 @@ func set_ground_height_map(
 	height_max: float,
 	tilt: float
 ) -> String:
-	return native.set_ground_height_map(
-		rgba, width, depth, origin, size, height_min, height_max, tilt
-	)
+	return native.set_ground_height_map(rgba, width, depth, origin, size, height_min, height_max, tilt)
 
 
 ## Stands the plants on heights measured elsewhere (rays at colliders).
-func set_ground_heights(
-	heights: PackedFloat32Array, normals: PackedFloat32Array, tilt: float
-) -> String:
+func set_ground_heights(heights: PackedFloat32Array, normals: PackedFloat32Array, tilt: float) -> String:
 	return native.set_ground_heights(heights, normals, tilt)
 
 
@@ -147,9 +139,7 @@ func set_plant_form(
 	cull_radius_units: float,
 	stiffness: float
 ) -> void:
-	native.set_plant_form(
-		species, part_lengths, middle_variation, height_units, cull_radius_units, stiffness
-	)
+	native.set_plant_form(species, part_lengths, middle_variation, height_units, cull_radius_units, stiffness)
 
 
 ## Whether a species' near plants are drawn whole.
@@ -159,12 +149,7 @@ func set_plant_whole(species: int, whole: bool) -> void:
 
 ## A species' variety between its plants, all seeded.
 func set_plant_variation(
-	species: int,
-	yaw_range: float,
-	scale_min: float,
-	scale_max: float,
-	brightness: float,
-	tint: float
+	species: int, yaw_range: float, scale_min: float, scale_max: float, brightness: float, tint: float
 ) -> void:
 	native.set_plant_variation(species, yaw_range, scale_min, scale_max, brightness, tint)
 
@@ -201,9 +186,7 @@ func set_wind(
 ## The four switch distances in metres (mesh 1→2, 2→3, 3→sprite, sprite→billboard), the hysteresis
 ## margin in metres, the metres over which mesh 3 dithers into the impostor before the sprite
 ## switch (its share in the instance colour's alpha.
-func set_lod(
-	distances: PackedFloat32Array, hysteresis: float, fade: float, interval: float, force_level: int
-) -> void:
+func set_lod(distances: PackedFloat32Array, hysteresis: float, fade: float, interval: float, force_level: int) -> void:
 	native.set_lod(distances, hysteresis, fade, interval, force_level)
 
 

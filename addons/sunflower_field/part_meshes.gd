@@ -14,9 +14,7 @@ const PREFIX: String = "part_meshes/mesh_"
 static func check(level: int, part: int, function: String) -> bool:
 	if level >= 0 and level < LEVELS and part >= 0 and part < PART_NAMES.size():
 		return true
-	push_error(
-		"SunflowerField.%s: lod %d / part %d is out of range (0–2 each)" % [function, level, part]
-	)
+	push_error("SunflowerField.%s: lod %d / part %d is out of range (0–2 each)" % [function, level, part])
 	return false
 
 

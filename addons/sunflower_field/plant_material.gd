@@ -85,10 +85,7 @@ static func adopt(material: Material, has_vertex_colours: bool) -> ShaderMateria
 	var standard: StandardMaterial3D = material as StandardMaterial3D
 	if standard == null or not _only_carried(standard):
 		return null
-	if (
-		standard.transparency
-		not in [BaseMaterial3D.TRANSPARENCY_DISABLED, BaseMaterial3D.TRANSPARENCY_ALPHA_SCISSOR]
-	):
+	if standard.transparency not in [BaseMaterial3D.TRANSPARENCY_DISABLED, BaseMaterial3D.TRANSPARENCY_ALPHA_SCISSOR]:
 		return null
 	if standard.cull_mode == BaseMaterial3D.CULL_FRONT:
 		return null
@@ -103,22 +100,16 @@ static func adopt(material: Material, has_vertex_colours: bool) -> ShaderMateria
 	adopted.set_shader_parameter(&"use_albedo_texture", standard.albedo_texture != null)
 	adopted.set_shader_parameter(&"albedo_texture", standard.albedo_texture)
 	adopted.set_shader_parameter(&"uv_scale", Vector2(standard.uv1_scale.x, standard.uv1_scale.y))
-	adopted.set_shader_parameter(
-		&"uv_offset", Vector2(standard.uv1_offset.x, standard.uv1_offset.y)
-	)
+	adopted.set_shader_parameter(&"uv_offset", Vector2(standard.uv1_offset.x, standard.uv1_offset.y))
 	adopted.set_shader_parameter(&"roughness", standard.roughness)
 	adopted.set_shader_parameter(&"metallic", standard.metallic)
 	for map: String in ["roughness", "metallic"]:
 		var texture: Texture2D = standard.get(map + "_texture")
 		adopted.set_shader_parameter("use_%s_texture" % map, texture != null)
 		adopted.set_shader_parameter(map + "_texture", texture)
-		adopted.set_shader_parameter(
-			map + "_channel", CHANNELS[standard.get(map + "_texture_channel")]
-		)
+		adopted.set_shader_parameter(map + "_channel", CHANNELS[standard.get(map + "_texture_channel")])
 	adopted.set_shader_parameter(&"specular", standard.metallic_specular)
-	adopted.set_shader_parameter(
-		&"use_normal_texture", standard.normal_enabled and standard.normal_texture != null
-	)
+	adopted.set_shader_parameter(&"use_normal_texture", standard.normal_enabled and standard.normal_texture != null)
 	adopted.set_shader_parameter(&"normal_texture", standard.normal_texture)
 	adopted.set_shader_parameter(&"normal_scale", standard.normal_scale)
 	if standard.emission_enabled:
@@ -134,9 +125,7 @@ static func adopt(material: Material, has_vertex_colours: bool) -> ShaderMateria
 		adopted.set_shader_parameter(&"ao_channel", CHANNELS[standard.ao_texture_channel])
 		adopted.set_shader_parameter(&"ao_light_affect", standard.ao_light_affect)
 	var scissor: bool = standard.transparency == BaseMaterial3D.TRANSPARENCY_ALPHA_SCISSOR
-	adopted.set_shader_parameter(
-		&"alpha_scissor", standard.alpha_scissor_threshold if scissor else 0.0
-	)
+	adopted.set_shader_parameter(&"alpha_scissor", standard.alpha_scissor_threshold if scissor else 0.0)
 	adopted.set_shader_parameter(&"vertex_colour_is_srgb", standard.vertex_color_is_srgb)
 	return adopted
 
@@ -150,11 +139,7 @@ static func _only_carried(material: StandardMaterial3D) -> bool:
 		return false
 	for property: Dictionary in material.get_property_list():
 		var name: String = property.name
-		if (
-			property.usage & PROPERTY_USAGE_STORAGE == 0
-			or name in CARRIED
-			or name.begins_with("resource_")
-		):
+		if property.usage & PROPERTY_USAGE_STORAGE == 0 or name in CARRIED or name.begins_with("resource_"):
 			continue
 		if name == "script" or name == "next_pass":
 			continue

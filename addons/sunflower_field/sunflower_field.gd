@@ -295,8 +295,7 @@ const WIND_PROPERTIES: Dictionary = {
 			lod_interval = value
 			_tell_lod()
 ## Draw every plant as one representation, whatever its distance (for benchmarks and debugging).
-@export_enum("Automatic:-1", "Mesh 1:0", "Mesh 2:1", "Mesh 3:2", "Sprite:3", "Billboard:4")
-var force_lod: int = -1:
+@export_enum("Automatic:-1", "Mesh 1:0", "Mesh 2:1", "Mesh 3:2", "Sprite:3", "Billboard:4") var force_lod: int = -1:
 	set(value):
 		value = Native.accept_int("SunflowerField.force_lod", value, force_lod)
 		if value != force_lod:
@@ -312,16 +311,12 @@ var force_lod: int = -1:
 ## Done on the GPU, so it costs no CPU time. 0 turns thinning off.
 @export_range(0.0, 1000.0, 1.0, "or_greater", "suffix:m") var thinning_distance: float = 0.0:
 	set(value):
-		thinning_distance = Native.accept(
-			"SunflowerField.thinning_distance", value, thinning_distance
-		)
+		thinning_distance = Native.accept("SunflowerField.thinning_distance", value, thinning_distance)
 		_driver.set_impostor_shared(&"thinning_start", thinning_distance)
 ## The least share of impostors drawn far away, with thinning on.
 @export_range(0.01, 1.0, 0.01) var thinning_min_density: float = 0.25:
 	set(value):
-		thinning_min_density = Native.accept(
-			"SunflowerField.thinning_min_density", value, thinning_min_density
-		)
+		thinning_min_density = Native.accept("SunflowerField.thinning_min_density", value, thinning_min_density)
 		_driver.set_impostor_shared(&"thinning_min_density", thinning_min_density)
 ## Plants beyond this distance are not drawn (0: no limit); each dithers out over the last tenth
 ## of it (at least 2 m) by its own distance, so no chunk of plants vanishes at once.
@@ -512,11 +507,7 @@ func _property_can_revert(property: StringName) -> bool:
 
 
 func _property_get_revert(property: StringName) -> Variant:
-	return (
-		SunflowerWind.new().get(WIND_PROPERTIES[property])
-		if WIND_PROPERTIES.has(property)
-		else null
-	)
+	return SunflowerWind.new().get(WIND_PROPERTIES[property]) if WIND_PROPERTIES.has(property) else null
 
 
 func _ready() -> void:
@@ -629,9 +620,7 @@ func get_frame_stats() -> Dictionary:
 	var per_species: int = Native.constant(&"BUCKET_COUNT")
 	for species: int in _species_plants().size():
 		for level: int in Lod.SPRITE:
-			near[level] += simulation.get_bucket_instance_count(
-				species * per_species + Native.mesh_bucket(level, 0)
-			)
+			near[level] += simulation.get_bucket_instance_count(species * per_species + Native.mesh_bucket(level, 0))
 	return {
 		"update_ms": simulation.get_last_update_usec() / 1000.0,
 		"memory_bytes": simulation.get_memory_bytes(),
@@ -651,9 +640,7 @@ func get_plant_types() -> Array[FieldPlant]:
 ## [method get_lod_counts]).
 func get_lod_counts_by_species() -> Array[PackedInt32Array]:
 	var counts: Array[PackedInt32Array] = []
-	var flat: PackedInt32Array = (
-		_driver.simulation().get_lod_counts_by_species() if get_plant_count() > 0 else []
-	)
+	var flat: PackedInt32Array = _driver.simulation().get_lod_counts_by_species() if get_plant_count() > 0 else []
 	for species: int in _species_plants().size():
 		var own: PackedInt32Array = flat.slice(species * Lod.size(), (species + 1) * Lod.size())
 		own.resize(Lod.size())
@@ -666,12 +653,7 @@ func get_lod_counts_by_species() -> Array[PackedInt32Array]:
 ## top, as drawn now; upright for sprites and billboards).
 func get_plant_info(index: int) -> Dictionary:
 	if index < 0 or index >= get_plant_count():
-		push_error(
-			(
-				"SunflowerField.get_plant_info: index %d is out of range (%d plants)"
-				% [index, get_plant_count()]
-			)
-		)
+		push_error("SunflowerField.get_plant_info: index %d is out of range (%d plants)" % [index, get_plant_count()])
 		return {}
 	return {
 		"position": _driver.simulation().get_plant_position(index),
@@ -718,9 +700,7 @@ func get_plant_at(point: Vector3, max_distance: float = 0.5) -> int:
 	var nearest: int = -1
 	var best: float = INF
 	var simulation: NativeField = _driver.simulation()
-	for plant: int in (
-		simulation.get_plants_near(point, max_distance) if simulation else PackedInt32Array()
-	):
+	for plant: int in simulation.get_plants_near(point, max_distance) if simulation else PackedInt32Array():
 		var root: Vector3 = simulation.get_plant_position(plant)
 		var distance: float = Vector2(root.x, root.z).distance_squared_to(Vector2(point.x, point.z))
 		if distance < best:
@@ -765,17 +745,13 @@ func _get_configuration_warnings() -> PackedStringArray:
 	if not Native.is_available():
 		warnings.append(Native.missing_message())
 	if map == null:
-		warnings.append(
-			"No map: import a .field file and assign it to 'map', or call load_map_file()."
-		)
+		warnings.append("No map: import a .field file and assign it to 'map', or call load_map_file().")
 	elif _driver.last_error != "":
 		warnings.append("The map cannot be used: " + _driver.last_error)
 	if not observer.is_empty() and not (get_node_or_null(observer) is Node3D):
 		warnings.append("'observer' does not point to a Node3D; the active camera is used instead.")
 	if is_inside_tree() and not Engine.is_editor_hint() and _driver.observer_node() == null:
-		warnings.append(
-			"No observer: set 'observer' or add a current Camera3D; the field keeps its last LOD."
-		)
+		warnings.append("No observer: set 'observer' or add a current Camera3D; the field keeps its last LOD.")
 	if not scale.is_equal_approx(Vector3.ONE):
 		warnings.append("Keep the field's scale at 1; size it with 'cell_size' and 'plant_height'.")
 	return warnings
@@ -820,9 +796,7 @@ func _set(property: StringName, value: Variant) -> bool:
 	if slot.x < 0:
 		return false
 	if value != null and not (value is Mesh):
-		push_warning(
-			"SunflowerField.%s: %s is not a Mesh; using the default part" % [property, value]
-		)
+		push_warning("SunflowerField.%s: %s is not a Mesh; using the default part" % [property, value])
 		value = null
 	set_part_mesh(slot.x, slot.y, value as Mesh)
 	return true

@@ -119,10 +119,7 @@ const NativeField: GDScript = preload("native_field.gd")
 func is_default() -> bool:
 	var fresh: SunflowerWind = SunflowerWind.new()
 	for property: Dictionary in get_property_list():
-		if (
-			property["usage"] & PROPERTY_USAGE_STORAGE
-			and property["usage"] & PROPERTY_USAGE_SCRIPT_VARIABLE
-		):
+		if property["usage"] & PROPERTY_USAGE_STORAGE and property["usage"] & PROPERTY_USAGE_SCRIPT_VARIABLE:
 			if get(property["name"]) != fresh.get(property["name"]):
 				return false
 	return true

@@ -11,9 +11,7 @@ extends RefCounted
 const PARTS_SHADER: Shader = preload("shaders/plant_parts.gdshader")
 const WHOLE_SHADER: Shader = preload("shaders/plant_whole.gdshader")
 ## The vertex arrays a merged surface keeps (the surfaces merged into it must all have the same).
-const KEPT: Array[int] = [
-	Mesh.ARRAY_VERTEX, Mesh.ARRAY_NORMAL, Mesh.ARRAY_TANGENT, Mesh.ARRAY_COLOR, Mesh.ARRAY_TEX_UV
-]
+const KEPT: Array[int] = [Mesh.ARRAY_VERTEX, Mesh.ARRAY_NORMAL, Mesh.ARRAY_TANGENT, Mesh.ARRAY_COLOR, Mesh.ARRAY_TEX_UV]
 
 
 ## Whether [param parts] (bottom, middle, head) can be merged: see the script's description.
@@ -30,9 +28,7 @@ static func merge(parts: Array[Mesh], part_lengths: Vector3) -> ArrayMesh:
 	var groups: Array[Dictionary] = []
 	for part: int in parts.size():
 		for surface: int in parts[part].get_surface_count():
-			var material: ShaderMaterial = (
-				parts[part].surface_get_material(surface) as ShaderMaterial
-			)
+			var material: ShaderMaterial = parts[part].surface_get_material(surface) as ShaderMaterial
 			var group: Dictionary = {}
 			for candidate: Dictionary in groups:
 				if _same_settings(candidate.material, material):
@@ -49,9 +45,7 @@ static func merge(parts: Array[Mesh], part_lengths: Vector3) -> ArrayMesh:
 		var whole: ShaderMaterial = ShaderMaterial.new()
 		whole.shader = WHOLE_SHADER
 		for uniform: Dictionary in PARTS_SHADER.get_shader_uniform_list():
-			whole.set_shader_parameter(
-				uniform.name, group.material.get_shader_parameter(uniform.name)
-			)
+			whole.set_shader_parameter(uniform.name, group.material.get_shader_parameter(uniform.name))
 		whole.set_shader_parameter(&"part_lengths", part_lengths)
 		mesh.surface_set_material(mesh.get_surface_count() - 1, whole)
 	return mesh
@@ -124,10 +118,7 @@ static func _mergeable(parts: Array[Mesh]) -> bool:
 				return false
 			if (
 				mesh is ArrayMesh
-				and (
-					(mesh as ArrayMesh).surface_get_primitive_type(surface)
-					!= Mesh.PRIMITIVE_TRIANGLES
-				)
+				and ((mesh as ArrayMesh).surface_get_primitive_type(surface) != Mesh.PRIMITIVE_TRIANGLES)
 			):
 				return false
 			if mesh.surface_get_blend_shape_arrays(surface).size() > 0:

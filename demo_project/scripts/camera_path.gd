@@ -79,15 +79,10 @@ static func from_file(file_path: String, r_error: Array[String]) -> CameraPath:
 			numbers.append(word.to_float())
 		if numbers.size() != 6:
 			r_error.append(
-				(
-					"%s:%d: expected 6 numbers (x y z tx ty tz), found %d"
-					% [file_path, line_number, numbers.size()]
-				)
+				"%s:%d: expected 6 numbers (x y z tx ty tz), found %d" % [file_path, line_number, numbers.size()]
 			)
 			return null
-		path.add(
-			Vector3(numbers[0], numbers[1], numbers[2]), Vector3(numbers[3], numbers[4], numbers[5])
-		)
+		path.add(Vector3(numbers[0], numbers[1], numbers[2]), Vector3(numbers[3], numbers[4], numbers[5]))
 	if path.eyes.size() < 2:
 		r_error.append("%s: a path needs at least 2 waypoints" % file_path)
 		return null

@@ -24,9 +24,7 @@ extends Node3D
 const MAP_NAMES: PackedStringArray = [
 	"Demo field (40 x 30)", "Large field (400 x 300)", "Hills (240 x 240, on a terrain)"
 ]
-const MAP_PATHS: PackedStringArray = [
-	"res://fields/demo.field", "res://fields/large.field", "res://fields/hills.field"
-]
+const MAP_PATHS: PackedStringArray = ["res://fields/demo.field", "res://fields/large.field", "res://fields/hills.field"]
 ## The map that stands on the demo's hills (ground source Colliders); the others lie on the plane.
 const HILLS_MAP: String = "hills.field"
 const INCREMENTS: PackedFloat32Array = [0.1, 10.0]
@@ -132,9 +130,7 @@ func _ready() -> void:
 			)
 	_recording.build_ms = (Time.get_ticks_usec() - build_start) / 1000.0
 	_recording.map_path = _map_path
-	print(
-		"demo: %s built in %.0f ms; %s" % [_map_path, _recording.build_ms, _field.get_build_stats()]
-	)
+	print("demo: %s built in %.0f ms; %s" % [_map_path, _recording.build_ms, _field.get_build_stats()])
 	for argument: String in parts:
 		apply_part_argument(argument)
 	if _recording.frames_total >= 0:
@@ -148,12 +144,8 @@ func load_map(path: String) -> void:
 	var hilly: bool = path.get_file() == HILLS_MAP
 	_hills.set_enabled(hilly)
 	_ground.visible = not hilly
-	_field.ground_source = (
-		SunflowerField.GroundSource.COLLIDERS if hilly else SunflowerField.GroundSource.FLAT
-	)
-	var imported: Resource = (
-		load(path) if path.begins_with("res://") and ResourceLoader.exists(path) else null
-	)
+	_field.ground_source = (SunflowerField.GroundSource.COLLIDERS if hilly else SunflowerField.GroundSource.FLAT)
+	var imported: Resource = load(path) if path.begins_with("res://") and ResourceLoader.exists(path) else null
 	if imported is SunflowerFieldMap:
 		_field.map = imported
 	elif _field.load_map_file(path, true) != OK:
@@ -180,11 +172,7 @@ func load_part(lod: int, part: int, path: String) -> String:
 	_field.set_part_mesh(lod, part, loaded["mesh"])
 	_count_triangles()
 	var message: String = loaded.get(
-		"warning",
-		(
-			"mesh %d %s replaced by %s"
-			% [lod + 1, SunflowerField.Part.keys()[part].to_lower(), path.get_file()]
-		)
+		"warning", "mesh %d %s replaced by %s" % [lod + 1, SunflowerField.Part.keys()[part].to_lower(), path.get_file()]
 	)
 	_hud.show_message(message)
 	if lod == 0 and DisplayServer.get_name() != "headless":
@@ -210,24 +198,18 @@ func _unhandled_input(event: InputEvent) -> void:
 		_field.wind_direction = _step_direction(_field.wind_direction, 1)
 	elif event.is_action_pressed("toggle_increment"):
 		_field.wind_increment = (
-			INCREMENTS[1]
-			if is_equal_approx(_field.wind_increment, INCREMENTS[0])
-			else INCREMENTS[0]
+			INCREMENTS[1] if is_equal_approx(_field.wind_increment, INCREMENTS[0]) else INCREMENTS[0]
 		)
 	elif event.is_action_pressed("walk_mode"):
 		_camera.walking = not _camera.walking
-		_hud.show_message(
-			"walk mode: head height, the flowers part around you" if _camera.walking else "fly mode"
-		)
+		_hud.show_message("walk mode: head height, the flowers part around you" if _camera.walking else "fly mode")
 	elif event.is_action_pressed("wind_model"):
 		var natural: bool = _field.wind.model == SunflowerWind.Model.NATURAL
 		_field.wind.model = SunflowerWind.Model.THESIS if natural else SunflowerWind.Model.NATURAL
 		_hud.show_message("wind model: " + _wind_model_name())
 	elif event.is_action_pressed("toggle_wireframe"):
 		var wireframe: bool = get_viewport().debug_draw != Viewport.DEBUG_DRAW_WIREFRAME
-		get_viewport().debug_draw = (
-			Viewport.DEBUG_DRAW_WIREFRAME if wireframe else Viewport.DEBUG_DRAW_DISABLED
-		)
+		get_viewport().debug_draw = (Viewport.DEBUG_DRAW_WIREFRAME if wireframe else Viewport.DEBUG_DRAW_DISABLED)
 	elif event.is_action_pressed("toggle_help"):
 		_hud.toggle_help()
 	elif event.is_action_pressed("next_map"):
@@ -289,11 +271,7 @@ func _count_triangles() -> void:
 				var arrays: Array = mesh.surface_get_arrays(surface)
 				var indices: PackedInt32Array = arrays[Mesh.ARRAY_INDEX]
 				total += (
-					(
-						indices.size()
-						if indices.size() > 0
-						else (arrays[Mesh.ARRAY_VERTEX] as PackedVector3Array).size()
-					)
+					(indices.size() if indices.size() > 0 else (arrays[Mesh.ARRAY_VERTEX] as PackedVector3Array).size())
 					/ 3
 				)
 		_triangles_per_plant[lod] = total
@@ -369,9 +347,7 @@ func _build_native_baseline() -> void:
 	var plants: int = baseline.build(_field.map, _field, _draw_distance)
 	_field.visible = false
 	_field.process_mode = Node.PROCESS_MODE_DISABLED
-	_hud.show_message(
-		"baseline: %d plants as Godot-native chunked MultiMeshes with automatic mesh LOD" % plants
-	)
+	_hud.show_message("baseline: %d plants as Godot-native chunked MultiMeshes with automatic mesh LOD" % plants)
 
 
 ## Shows a problem on the HUD; in recording mode it also goes to the log and the run exits with 1.

@@ -24,9 +24,7 @@ static func height_image() -> Image:
 	var image: Image = Image.create(SIDE, SIDE, false, Image.FORMAT_RF)
 	for z: int in SIDE:
 		for x: int in SIDE:
-			image.set_pixel(
-				x, z, Color(clampf(0.5 + 0.6 * noise.get_noise_2d(x, z), 0.0, 1.0), 0.0, 0.0)
-			)
+			image.set_pixel(x, z, Color(clampf(0.5 + 0.6 * noise.get_noise_2d(x, z), 0.0, 1.0), 0.0, 0.0))
 	return image
 
 

@@ -26,9 +26,7 @@ func build(field_map: SunflowerFieldMap, field: SunflowerField, cut_off: float =
 	var chunks: Dictionary = {}
 	for i: int in simulation.get_plant_count():
 		var position: Vector3 = simulation.get_plant_position(i)
-		var key: Vector2i = Vector2i(
-			floori(position.x / CHUNK_SIZE), floori(position.z / CHUNK_SIZE)
-		)
+		var key: Vector2i = Vector2i(floori(position.x / CHUNK_SIZE), floori(position.z / CHUNK_SIZE))
 		if not chunks.has(key):
 			chunks[key] = []  # an Array, which is shared by reference (a packed array would be copied)
 		(chunks[key] as Array).append(position)
@@ -40,9 +38,7 @@ func build(field_map: SunflowerFieldMap, field: SunflowerField, cut_off: float =
 		multimesh.instance_count = positions.size()
 		for k: int in positions.size():
 			var origin: Vector3 = positions[k]
-			multimesh.set_instance_transform(
-				k, Transform3D(Basis.from_scale(Vector3.ONE * scale_factor), origin)
-			)
+			multimesh.set_instance_transform(k, Transform3D(Basis.from_scale(Vector3.ONE * scale_factor), origin))
 		var node: MultiMeshInstance3D = MultiMeshInstance3D.new()
 		node.multimesh = multimesh
 		node.visibility_range_end = cut_off
@@ -60,8 +56,6 @@ func _whole_plant_mesh(field: SunflowerField) -> ArrayMesh:
 			for v: int in vertices.size():
 				vertices[v].y += part
 			arrays[Mesh.ARRAY_VERTEX] = vertices
-			importer.add_surface(
-				Mesh.PRIMITIVE_TRIANGLES, arrays, [], {}, source.surface_get_material(surface)
-			)
+			importer.add_surface(Mesh.PRIMITIVE_TRIANGLES, arrays, [], {}, source.surface_get_material(surface))
 	importer.generate_lods(25.0, 60.0, [])
 	return importer.get_mesh()

@@ -35,25 +35,15 @@ static func load_mesh(path: String) -> Dictionary:
 static func parse_argument(argument: String) -> Dictionary:
 	var pieces: PackedStringArray = argument.split(",", true, 2)
 	if pieces.size() != 3:
-		return {
-			"error": "--part %s: expected LEVEL,PART,PATH, e.g. 1,head,/tmp/head.glb" % argument
-		}
+		return {"error": "--part %s: expected LEVEL,PART,PATH, e.g. 1,head,/tmp/head.glb" % argument}
 	if not pieces[0].is_valid_int() or pieces[0].to_int() < 1 or pieces[0].to_int() > 3:
 		return {"error": "--part %s: LEVEL must be 1, 2 or 3, not '%s'" % [argument, pieces[0]]}
 	var names: PackedStringArray = ["bottom", "middle", "head"]
 	var part: int = names.find(pieces[1].to_lower())
-	if (
-		part < 0
-		and pieces[1].is_valid_int()
-		and pieces[1].to_int() >= 1
-		and pieces[1].to_int() <= 3
-	):
+	if part < 0 and pieces[1].is_valid_int() and pieces[1].to_int() >= 1 and pieces[1].to_int() <= 3:
 		part = pieces[1].to_int() - 1
 	if part < 0:
-		return {
-			"error":
-			"--part %s: PART must be bottom, middle, head or 1–3, not '%s'" % [argument, pieces[1]]
-		}
+		return {"error": "--part %s: PART must be bottom, middle, head or 1–3, not '%s'" % [argument, pieces[1]]}
 	return {"lod": pieces[0].to_int() - 1, "part": part, "path": pieces[2]}
 
 

@@ -90,28 +90,17 @@ func record_frame() -> void:
 			_lod_sums[lod] += counts[lod]
 		# The frame drawn last (all viewports).
 		(_rendering["draw_calls"] as Array).append(
-			RenderingServer.get_rendering_info(
-				RenderingServer.RENDERING_INFO_TOTAL_DRAW_CALLS_IN_FRAME
-			)
+			RenderingServer.get_rendering_info(RenderingServer.RENDERING_INFO_TOTAL_DRAW_CALLS_IN_FRAME)
 		)
 		(_rendering["objects"] as Array).append(
-			RenderingServer.get_rendering_info(
-				RenderingServer.RENDERING_INFO_TOTAL_OBJECTS_IN_FRAME
-			)
+			RenderingServer.get_rendering_info(RenderingServer.RENDERING_INFO_TOTAL_OBJECTS_IN_FRAME)
 		)
 		(_rendering["primitives"] as Array).append(
-			RenderingServer.get_rendering_info(
-				RenderingServer.RENDERING_INFO_TOTAL_PRIMITIVES_IN_FRAME
-			)
+			RenderingServer.get_rendering_info(RenderingServer.RENDERING_INFO_TOTAL_PRIMITIVES_IN_FRAME)
 		)
 	_last_ticks = now
 	_camera.transform = _camera_path.sample(float(_frame) / maxf(frames_total - 1, 1))
-	if (
-		screenshot_every > 0
-		and _frame % screenshot_every == 0
-		and not screenshot.is_empty()
-		and _frame > 0
-	):
+	if screenshot_every > 0 and _frame % screenshot_every == 0 and not screenshot.is_empty() and _frame > 0:
 		_save_screenshot("%s_%04d.png" % [screenshot.get_basename(), _frame])
 	_frame += 1
 	if _frame >= frames_total:

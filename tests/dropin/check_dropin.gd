@@ -65,14 +65,10 @@ func _check_terrain() -> PackedStringArray:
 			at + Vector3.UP * 50.0, at + Vector3.DOWN * 50.0
 		)
 		var hit: Dictionary = space.intersect_ray(ray)
-		worst = maxf(
-			worst, absf(at.y - (hit["position"] as Vector3).y) if not hit.is_empty() else INF
-		)
+		worst = maxf(worst, absf(at.y - (hit["position"] as Vector3).y) if not hit.is_empty() else INF)
 		highest = maxf(highest, at.y)
 	if worst > 0.001 or highest < 1.0:
-		problems.append(
-			"terrain: roots off the hills by up to %.3f m (highest %.2f m)" % [worst, highest]
-		)
+		problems.append("terrain: roots off the hills by up to %.3f m (highest %.2f m)" % [worst, highest])
 	print("dropin: terrain scene, %d plants on the hills (highest root %.2f m)" % [plants, highest])
 	scene.free()
 	return problems

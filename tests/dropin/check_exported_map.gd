@@ -30,11 +30,7 @@ func _run() -> void:
 		print(
 			(
 				"exported map: %s (source gone: %s, %d plants)"
-				% [
-					"ok" if same and source_gone else "DIFFERENT",
-					source_gone,
-					field.get_plant_count()
-				]
+				% ["ok" if same and source_gone else "DIFFERENT", source_gone, field.get_plant_count()]
 			)
 		)
 	field.queue_free()

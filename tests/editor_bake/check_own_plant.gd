@@ -28,9 +28,7 @@ func _check() -> void:
 	for i: int in plants:
 		highest = maxf(highest, (field.call("get_plant_info", i) as Dictionary)["position"].y)
 	if plants != 1103 or highest < 1.0:
-		problems.append(
-			"%d plants, highest root %.2f m: not the field on the hills" % [plants, highest]
-		)
+		problems.append("%d plants, highest root %.2f m: not the field on the hills" % [plants, highest])
 	var counts: PackedInt32Array = field.call("get_lod_counts")
 	print("own plant: %d plants on the hills, per level %s" % [plants, counts])
 	print("own plant: " + ("ok" if problems.is_empty() else "; ".join(problems)))

@@ -9,9 +9,7 @@ static func dress_parts(owner: Object, material_of: Callable) -> void:
 	for level: int in SunflowerSimulation.MESH_LEVEL_COUNT:
 		for part: int in SunflowerSimulation.PART_COUNT:
 			var drawn: Mesh = (
-				owner.get_part_mesh(level, part)
-				if owner is SunflowerField
-				else owner.mesh_drawn(level, part)
+				owner.get_part_mesh(level, part) if owner is SunflowerField else owner.mesh_drawn(level, part)
 			)
 			var mesh: ArrayMesh = drawn.duplicate() as ArrayMesh
 			var material: Material = material_of.call(level, part)

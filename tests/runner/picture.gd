@@ -25,9 +25,7 @@ func luminance(image: Image) -> PackedFloat32Array:
 	var out: PackedFloat32Array = PackedFloat32Array()
 	out.resize(width * height)
 	for i: int in out.size():
-		out[i] = (
-			(0.2126 * bytes[3 * i] + 0.7152 * bytes[3 * i + 1] + 0.0722 * bytes[3 * i + 2]) / 255.0
-		)
+		out[i] = ((0.2126 * bytes[3 * i] + 0.7152 * bytes[3 * i + 1] + 0.0722 * bytes[3 * i + 2]) / 255.0)
 	return out
 
 
@@ -124,9 +122,4 @@ func _window_sum(integral: PackedFloat64Array, x: int, y: int) -> float:
 	var stride: int = width + 1
 	var top: int = y * stride
 	var bottom: int = (y + WINDOW) * stride
-	return (
-		integral[bottom + x + WINDOW]
-		- integral[top + x + WINDOW]
-		- integral[bottom + x]
-		+ integral[top + x]
-	)
+	return integral[bottom + x + WINDOW] - integral[top + x + WINDOW] - integral[bottom + x] + integral[top + x]

@@ -25,9 +25,7 @@ class ErrorLog:
 		_script_backtraces: Array[ScriptBacktrace]
 	) -> void:
 		_mutex.lock()
-		var text: String = (
-			"%s (%s:%d %s)" % [rationale if rationale else code, file, line, function]
-		)
+		var text: String = "%s (%s:%d %s)" % [rationale if rationale else code, file, line, function]
 		if error_type == ERROR_TYPE_WARNING:
 			_warnings.append(text)
 		else:
@@ -80,9 +78,7 @@ func _run() -> void:
 	var wanted: PackedStringArray = OS.get_cmdline_user_args()
 	var passed: int = 0
 	var failed: int = 0
-	var folder: String = (
-		"res://cases" if DirAccess.dir_exists_absolute("res://cases") else "res://tests/cases"
-	)
+	var folder: String = "res://cases" if DirAccess.dir_exists_absolute("res://cases") else "res://tests/cases"
 	var files: PackedStringArray = DirAccess.get_files_at(folder)
 	files.sort()
 	for file: String in files:

@@ -67,12 +67,7 @@ func check(condition: bool, message: String = "") -> bool:
 func check_eq(actual: Variant, expected: Variant, message: String = "") -> bool:
 	var same: bool = typeof(actual) == typeof(expected) and actual == expected
 	if not same:
-		failures.append(
-			(
-				"%s: %s expected %s, got %s"
-				% [_caller(), message + ":" if message else "", expected, actual]
-			)
-		)
+		failures.append("%s: %s expected %s, got %s" % [_caller(), message + ":" if message else "", expected, actual])
 	return same
 
 

@@ -12,23 +12,14 @@ func _initialize() -> void:
 	else:
 		var data: Dictionary = stats
 		for key: String in [
-			"plants",
-			"frames",
-			"frame_ms",
-			"native_update_ms",
-			"lod_counts_final",
-			"engine",
-			"renderer",
-			"driver"
+			"plants", "frames", "frame_ms", "native_update_ms", "lod_counts_final", "engine", "renderer", "driver"
 		]:
 			if not data.has(key):
 				problems.append("stats lack '%s'" % key)
 		if data.get("plants", 0) != 1103.0:
 			problems.append("stats: plants %s, expected 1103" % data.get("plants"))
 		if data.get("frames", 0) != float(args[2].to_int() - 1):
-			problems.append(
-				"stats: %s frames timed, expected %d" % [data.get("frames"), args[2].to_int() - 1]
-			)
+			problems.append("stats: %s frames timed, expected %d" % [data.get("frames"), args[2].to_int() - 1])
 		var counts: Array = data.get("lod_counts_final", [])
 		var total: float = 0.0
 		for c: Variant in counts:
@@ -51,13 +42,7 @@ func _initialize() -> void:
 		print(
 			(
 				"recording: %s, %d x %d, %.1f%% petal yellow, %.1f%% leaf green"
-				% [
-					args[1],
-					image.get_width(),
-					image.get_height(),
-					100.0 * yellow / samples,
-					100.0 * green / samples
-				]
+				% [args[1], image.get_width(), image.get_height(), 100.0 * yellow / samples, 100.0 * green / samples]
 			)
 		)
 		# The flight ends beside the field, seeing most heads from the side and behind: with every plant

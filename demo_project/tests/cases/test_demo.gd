@@ -61,8 +61,7 @@ func test_the_keys_change_the_wind_as_the_thesis_says() -> void:
 	check(not is_equal_approx(field.wind_direction.y, direction.y), "F5 changes z")
 	var events: Array[InputEvent] = InputMap.action_get_events("wind_more")
 	check(
-		events.size() > 0 and (events[0] as InputEventKey).physical_keycode == KEY_F2,
-		"wind_more is F2 in the InputMap"
+		events.size() > 0 and (events[0] as InputEventKey).physical_keycode == KEY_F2, "wind_more is F2 in the InputMap"
 	)
 
 
@@ -94,26 +93,11 @@ func test_a_gltf_part_replaces_a_mesh_and_a_bad_file_is_refused() -> void:
 	file.close()
 	allow_error("modules/gltf/")  # the engine's own report of the unreadable file
 	var message: String = demo.call("apply_part_argument", "2,bottom," + bad)
-	check(
-		message.contains(bad) and message.contains("not a readable glTF"),
-		"bad file message: " + message
-	)
-	check(
-		field.get_part_mesh(1, SunflowerField.Part.BOTTOM) is ArrayMesh,
-		"the part stays the default"
-	)
-	check(
-		str(demo.call("apply_part_argument", "4,head," + good)).contains("LEVEL must be 1, 2 or 3"),
-		"a bad level"
-	)
-	check(
-		str(demo.call("apply_part_argument", "1,leaf," + good)).contains("PART must be"),
-		"a bad part"
-	)
-	check(
-		str(demo.call("apply_part_argument", "1,head,/no/such.glb")).contains("no such file"),
-		"a missing file"
-	)
+	check(message.contains(bad) and message.contains("not a readable glTF"), "bad file message: " + message)
+	check(field.get_part_mesh(1, SunflowerField.Part.BOTTOM) is ArrayMesh, "the part stays the default")
+	check(str(demo.call("apply_part_argument", "4,head," + good)).contains("LEVEL must be 1, 2 or 3"), "a bad level")
+	check(str(demo.call("apply_part_argument", "1,leaf," + good)).contains("PART must be"), "a bad part")
+	check(str(demo.call("apply_part_argument", "1,head,/no/such.glb")).contains("no such file"), "a missing file")
 
 
 func test_the_map_menu_builds_a_large_map_in_the_background_with_progress_shown() -> void:
@@ -128,9 +112,7 @@ func test_the_map_menu_builds_a_large_map_in_the_background_with_progress_shown(
 	for i: int in 600:
 		await frames(1)
 		shown = shown or (progress != null and progress.visible)
-		check(
-			field.get_plant_count() in [1103, 113000], "one of the two fields is drawn at any time"
-		)
+		check(field.get_plant_count() in [1103, 113000], "one of the two fields is drawn at any time")
 		if not field.is_building():
 			break
 	check(shown, "the progress display showed while the large map built")
@@ -146,15 +128,10 @@ func test_walk_mode_puts_the_camera_among_the_flowers_and_they_part() -> void:
 	await _press("walk_mode")  # F8
 	check(camera.walking, "F8 walks")
 	check_near(camera.global_position.y, camera.walk_height, 1e-4, "at head height")
-	camera.global_position = (
-		field.get_plant_info(600)["position"] + Vector3(0.2, camera.walk_height, 0.0)
-	)
+	camera.global_position = (field.get_plant_info(600)["position"] + Vector3(0.2, camera.walk_height, 0.0))
 	await frames(30)
 	check(camera.is_in_group(field.pusher_group), "a low camera is a pusher")
-	check(
-		field.get_pushed_count() > 0,
-		"the flowers around it are pushed (%d)" % field.get_pushed_count()
-	)
+	check(field.get_pushed_count() > 0, "the flowers around it are pushed (%d)" % field.get_pushed_count())
 	await _press("walk_mode")
 	check(not camera.walking, "F8 again flies")
 	await _press("wind_model")  # F9
@@ -166,9 +143,7 @@ func test_walk_mode_puts_the_camera_among_the_flowers_and_they_part() -> void:
 func test_the_hills_map_stands_the_field_on_the_terrain() -> void:
 	await frames(2)
 	demo.call("load_map", "res://fields/hills.field")
-	await frames_until(
-		func() -> bool: return field.get_plant_count() == 55008 and not field.is_building(), 600
-	)
+	await frames_until(func() -> bool: return field.get_plant_count() == 55008 and not field.is_building(), 600)
 	check_eq(field.get_plant_count(), 55008, "the hills field is built")
 	# Two plant types: the map's 'r' cells are the addon's red sunflower (the demo's legend).
 	var types: Array[FieldPlant] = field.get_plant_types()
@@ -183,15 +158,8 @@ func test_the_hills_map_stands_the_field_on_the_terrain() -> void:
 				total += count
 			sums.append(total)
 		check_eq(sums, [47167, 7841], "plants per type")
-	check_eq(
-		field.ground_source, SunflowerField.GroundSource.COLLIDERS, "on the terrain's collision"
-	)
-	check(
-		(
-			(demo.get_node("Hills") as Node3D).visible
-			and not (demo.get_node("Ground") as Node3D).visible
-		)
-	)
+	check_eq(field.ground_source, SunflowerField.GroundSource.COLLIDERS, "on the terrain's collision")
+	check((demo.get_node("Hills") as Node3D).visible and not (demo.get_node("Ground") as Node3D).visible)
 	var camera: FlyCamera = demo.get_node("Camera") as FlyCamera
 	var worst: float = 0.0
 	var lowest: float = INF
@@ -204,21 +172,8 @@ func test_the_hills_map_stands_the_field_on_the_terrain() -> void:
 	check(worst < 0.001, "plants stand on the terrain (worst %.4f m)" % worst)
 	check(highest - lowest > 3.0, "the terrain is hilly (%.1f m)" % (highest - lowest))
 	await _press("walk_mode")  # F8 walks over the hills at head height
-	check_near(
-		camera.global_position.y - camera.ground_below(camera.global_position),
-		camera.walk_height,
-		0.01
-	)
+	check_near(camera.global_position.y - camera.ground_below(camera.global_position), camera.walk_height, 0.01)
 	demo.call("load_map", "res://fields/demo.field")
-	await frames_until(
-		func() -> bool: return field.get_plant_count() == 1103 and not field.is_building(), 600
-	)
-	check_eq(
-		field.ground_source, SunflowerField.GroundSource.FLAT, "the demo field lies flat again"
-	)
-	check(
-		(
-			not (demo.get_node("Hills") as Node3D).visible
-			and (demo.get_node("Ground") as Node3D).visible
-		)
-	)
+	await frames_until(func() -> bool: return field.get_plant_count() == 1103 and not field.is_building(), 600)
+	check_eq(field.ground_source, SunflowerField.GroundSource.FLAT, "the demo field lies flat again")
+	check(not (demo.get_node("Hills") as Node3D).visible and (demo.get_node("Ground") as Node3D).visible)

@@ -29,18 +29,13 @@ func _run() -> void:
 	await _frames(5)
 	field.finish_build()
 	var painter: RefCounted = load("res://addons/sunflower_field/field_painter.gd").get("active")
-	_check(
-		painter != null and painter.toolbar.visible,
-		"the painter's toolbar shows for a selected field"
-	)
+	_check(painter != null and painter.toolbar.visible, "the painter's toolbar shows for a selected field")
 	await _check_toolbar_follows_the_field(painter, field)
 	var camera: Camera3D = Camera3D.new()
 	camera.projection = Camera3D.PROJECTION_ORTHOGONAL
 	camera.size = 40.0
 	root.add_child(camera)
-	camera.global_transform = Transform3D(
-		Basis.from_euler(Vector3(-PI / 2.0, 0.0, 0.0)), Vector3(10.0, 50.0, 7.5)
-	)
+	camera.global_transform = Transform3D(Basis.from_euler(Vector3(-PI / 2.0, 0.0, 0.0)), Vector3(10.0, 50.0, 7.5))
 	var original: PackedByteArray = FileAccess.get_file_as_bytes(MAP_PATH)
 	var plants_before: int = field.get_plant_count()
 	var cells_before: Dictionary = _cells(original)
@@ -49,17 +44,12 @@ func _run() -> void:
 	painter.set_mode(1)  # Paint
 	painter.radius = 1.5
 	painter.density = 1.0
-	var points: Array[Vector3] = [
-		Vector3(15.0, 0.0, 5.0), Vector3(15.5, 0.0, 7.0), Vector3(16.0, 0.0, 9.0)
-	]
+	var points: Array[Vector3] = [Vector3(15.0, 0.0, 5.0), Vector3(15.5, 0.0, 7.0), Vector3(16.0, 0.0, 9.0)]
 	_drag(painter, camera, points, false)
 	await _frames(3)
 	var painted: PackedByteArray = FileAccess.get_file_as_bytes(MAP_PATH)
 	_check(painted != original, "the stroke wrote the file")
-	_check(
-		painted.get_string_from_utf8().begins_with("# Painting test field"),
-		"the comment line is kept"
-	)
+	_check(painted.get_string_from_utf8().begins_with("# Painting test field"), "the comment line is kept")
 	var cells_after: Dictionary = _cells(painted)
 	var added: int = 0
 	for cell: Vector2i in cells_after:
@@ -85,9 +75,7 @@ func _run() -> void:
 	history.undo()
 	await _frames(2)
 	field.finish_build()
-	_check(
-		FileAccess.get_file_as_bytes(MAP_PATH) == original, "undo restores the file byte for byte"
-	)
+	_check(FileAccess.get_file_as_bytes(MAP_PATH) == original, "undo restores the file byte for byte")
 	_check(field.get_plant_count() == plants_before, "undo restores the plants")
 	history.redo()
 	await _frames(2)
@@ -114,10 +102,7 @@ func _run() -> void:
 	orphan.text = painted
 	field.map = orphan
 	_drag(painter, camera, points, false)
-	_check(
-		str(painter.last_error).contains("res://gone.field"),
-		"the error names the file: " + str(painter.last_error)
-	)
+	_check(str(painter.last_error).contains("res://gone.field"), "the error names the file: " + str(painter.last_error))
 	_check(not FileAccess.file_exists("res://gone.field"), "nothing written")
 	_check(history.get_version() == version, "no undo step")
 
@@ -128,15 +113,9 @@ func _run() -> void:
 	var took: int = Time.get_ticks_msec() - start
 	print("probe: New map took %d ms" % took)
 	_check(took < 2000, "New map answers within 2 s (%d ms)" % took)
-	_check(
-		made == "res://field.field" and FileAccess.file_exists(made),
-		"a new map beside the scene: " + made
-	)
+	_check(made == "res://field.field" and FileAccess.file_exists(made), "a new map beside the scene: " + made)
 	field.finish_build()
-	_check(
-		field.map.source_path == made and field.get_plant_count() == 0,
-		"the field has the new, empty map"
-	)
+	_check(field.map.source_path == made and field.get_plant_count() == 0, "the field has the new, empty map")
 	_check(field.get_simulation().get_map_columns() == 30, "30 columns")
 	history.undo()
 	field.finish_build()
@@ -149,15 +128,9 @@ func _run() -> void:
 	_check(painter.resize_map(field, 50, 25), "resized")
 	field.finish_build()
 	_check(FileAccess.get_file_as_string(MAP_PATH).contains("\n50 25\n"), "the header says 50 25")
-	_check(
-		field.get_plant_count() == kept,
-		"the shared cells kept (%d of %d)" % [field.get_plant_count(), kept]
-	)
+	_check(field.get_plant_count() == kept, "the shared cells kept (%d of %d)" % [field.get_plant_count(), kept])
 	history.undo()
-	_check(
-		FileAccess.get_file_as_bytes(MAP_PATH) == before_resize,
-		"undo restores the map before the resize"
-	)
+	_check(FileAccess.get_file_as_bytes(MAP_PATH) == before_resize, "undo restores the map before the resize")
 	camera.free()
 	# With PROBE_SHOT set (a run under Xvfb): a picture of the editor with the brush over the field.
 	var shot: String = OS.get_environment("PROBE_SHOT")
@@ -172,26 +145,19 @@ func _run() -> void:
 func _check_toolbar_follows_the_field(painter: RefCounted, field: SunflowerField) -> void:
 	var symbols: OptionButton = painter.toolbar.get_child(2) as OptionButton
 	var paint: Button = painter.toolbar.get_child(0) as Button
-	_check(
-		symbols.get_item_text(0).contains(field.get_plant_types()[0].name),
-		"the symbol list names the plant"
-	)
+	_check(symbols.get_item_text(0).contains(field.get_plant_types()[0].name), "the symbol list names the plant")
 	var red: FieldPlant = load("res://addons/sunflower_field/plants/red_sunflower.tres")
 	field.plant = red
 	await _frames(3)
 	field.finish_build()
-	_check(
-		symbols.get_item_text(0).contains(red.name),
-		"the list follows a new plant: " + symbols.get_item_text(0)
-	)
+	_check(symbols.get_item_text(0).contains(red.name), "the list follows a new plant: " + symbols.get_item_text(0))
 	field.plant = null
 	var kept: SunflowerFieldMap = field.map
 	field.map = null
 	EditorInterface.get_inspector().property_edited.emit("map")  # as the inspector does after an edit
 	await _frames(2)
 	_check(
-		paint.disabled and paint.tooltip_text.contains("no map"),
-		"Paint is off without a map: " + paint.tooltip_text
+		paint.disabled and paint.tooltip_text.contains("no map"), "Paint is off without a map: " + paint.tooltip_text
 	)
 	field.map = kept
 	await _frames(3)
@@ -202,9 +168,7 @@ func _check_toolbar_follows_the_field(painter: RefCounted, field: SunflowerField
 	camera.projection = Camera3D.PROJECTION_ORTHOGONAL
 	camera.size = 40.0
 	field.add_sibling(camera)
-	camera.global_transform = Transform3D(
-		Basis.from_euler(Vector3(-PI / 2.0, 0.0, 0.0)), Vector3(10.0, 50.0, 7.5)
-	)
+	camera.global_transform = Transform3D(Basis.from_euler(Vector3(-PI / 2.0, 0.0, 0.0)), Vector3(10.0, 50.0, 7.5))
 	var motion: InputEventMouseMotion = InputEventMouseMotion.new()
 	motion.position = camera.unproject_position(field.to_global(Vector3(10.0, 0.0, 7.5)))
 	painter.handle_input(camera, motion)
@@ -213,10 +177,7 @@ func _check_toolbar_follows_the_field(painter: RefCounted, field: SunflowerField
 		var colour: Color = (circle.material_override as StandardMaterial3D).albedo_color
 		painter.set_mode(2)  # Erase, straight from Paint
 		var erase_colour: Color = (circle.material_override as StandardMaterial3D).albedo_color
-		_check(
-			colour != erase_colour and erase_colour == painter.brush_colour(),
-			"the brush turns Erase's colour"
-		)
+		_check(colour != erase_colour and erase_colour == painter.brush_colour(), "the brush turns Erase's colour")
 	painter.set_mode(0)
 	camera.free()
 

@@ -19,18 +19,14 @@ func _run() -> void:
 	camera.make_current()
 	for i: int in 10:
 		await process_frame
-	var before: int = RenderingServer.get_rendering_info(
-		RenderingServer.RENDERING_INFO_BUFFER_MEM_USED
-	)
+	var before: int = RenderingServer.get_rendering_info(RenderingServer.RENDERING_INFO_BUFFER_MEM_USED)
 	var field: SunflowerField = SunflowerField.new()
 	root.add_child(field)
 	field.map = Maps.filled(SIDE, SIDE, "user://million.field")
 	field.finish_build()
 	for i: int in 10:
 		await process_frame
-	var after: int = RenderingServer.get_rendering_info(
-		RenderingServer.RENDERING_INFO_BUFFER_MEM_USED
-	)
+	var after: int = RenderingServer.get_rendering_info(RenderingServer.RENDERING_INFO_BUFFER_MEM_USED)
 	var plants: int = field.get_plant_count()
 	var counts: PackedInt32Array = field.get_lod_counts()
 	var far: int = counts[3] + counts[4]
@@ -39,13 +35,7 @@ func _run() -> void:
 	print(
 		(
 			"| %d | %d | %.1f MB | %.1f MB | %.1f B |"
-			% [
-				plants,
-				far,
-				before / 1048576.0,
-				after / 1048576.0,
-				float(after - before) / maxi(plants, 1)
-			]
+			% [plants, far, before / 1048576.0, after / 1048576.0, float(after - before) / maxi(plants, 1)]
 		)
 	)
 	field.free()

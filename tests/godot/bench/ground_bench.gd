@@ -26,9 +26,7 @@ func _run() -> void:
 	terrain.add_child(collision)
 	root.add_child(terrain)
 	var field_map: SunflowerFieldMap = Maps.filled(1000, 1000, "user://million.field")
-	print(
-		"| ground | plants | worker ms | rays ms (main thread) | frames | longest step ms | total ms |"
-	)
+	print("| ground | plants | worker ms | rays ms (main thread) | frames | longest step ms | total ms |")
 	print("|---|---|---|---|---|---|---|")
 	for source: SunflowerField.GroundSource in [
 		SunflowerField.GroundSource.HEIGHT_MAP, SunflowerField.GroundSource.COLLIDERS
@@ -48,11 +46,7 @@ func _run() -> void:
 			(
 				"| %s | %d | %.0f | %.0f | %d | %.2f | %.0f |"
 				% [
-					(
-						"height map"
-						if source == SunflowerField.GroundSource.HEIGHT_MAP
-						else "colliders"
-					),
+					"height map" if source == SunflowerField.GroundSource.HEIGHT_MAP else "colliders",
 					field.get_plant_count(),
 					stats.worker_ms,
 					stats.ground_ray_ms,

@@ -29,9 +29,7 @@ func _run() -> void:
 	camera.projection = Camera3D.PROJECTION_ORTHOGONAL
 	camera.size = 60.0
 	root.add_child(camera)
-	camera.global_transform = Transform3D(
-		Basis.from_euler(Vector3(-PI / 2.0, 0.0, 0.0)), Vector3(400.0, 100.0, 250.0)
-	)
+	camera.global_transform = Transform3D(Basis.from_euler(Vector3(-PI / 2.0, 0.0, 0.0)), Vector3(400.0, 100.0, 250.0))
 	camera.current = true
 	await process_frame
 	field.finish_build()
@@ -79,9 +77,7 @@ func _run() -> void:
 			made += stats.tiles_made
 			kept += stats.tiles_kept
 	frame_ms.sort()
-	print(
-		"| stroke begin ms | frame median ms | frame max ms | previews built | tiles made | tiles kept |"
-	)
+	print("| stroke begin ms | frame median ms | frame max ms | previews built | tiles made | tiles kept |")
 	print("|---|---|---|---|---|---|")
 	print(
 		(

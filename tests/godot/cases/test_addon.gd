@@ -4,10 +4,7 @@ extends TestCase
 
 func test_native_class_is_registered() -> void:
 	check(ClassDB.class_exists("SunflowerSimulation"), "SunflowerSimulation is not registered")
-	check(
-		ClassDB.is_parent_class("SunflowerSimulation", "RefCounted"),
-		"SunflowerSimulation is not a RefCounted"
-	)
+	check(ClassDB.is_parent_class("SunflowerSimulation", "RefCounted"), "SunflowerSimulation is not a RefCounted")
 	check_eq(SunflowerSimulation.BUCKET_COUNT, 10, "bucket constant")
 
 
@@ -15,17 +12,11 @@ func test_the_node_names_the_cores_indices() -> void:
 	check_eq(SunflowerField.Part.size(), SunflowerSimulation.PART_COUNT, "parts")
 	check_eq(SunflowerField.Lod.size(), SunflowerSimulation.LOD_COUNT, "levels")
 	check_eq(
-		SunflowerField.Lod.SPRITE,
-		SunflowerSimulation.MESH_LEVEL_COUNT,
-		"the first impostor level follows the meshes"
+		SunflowerField.Lod.SPRITE, SunflowerSimulation.MESH_LEVEL_COUNT, "the first impostor level follows the meshes"
 	)
-	check_eq(
-		SunflowerField.FieldNodes.PART_NAMES.size(), SunflowerSimulation.PART_COUNT, "part names"
-	)
+	check_eq(SunflowerField.FieldNodes.PART_NAMES.size(), SunflowerSimulation.PART_COUNT, "part names")
 	check_eq(FieldPlant.PartMeshes.LEVELS, SunflowerSimulation.MESH_LEVEL_COUNT, "a plant's levels")
-	check_eq(
-		SunflowerSimulation.mesh_bucket(2, SunflowerField.Part.HEAD), 8, "the last mesh bucket"
-	)
+	check_eq(SunflowerSimulation.mesh_bucket(2, SunflowerField.Part.HEAD), 8, "the last mesh bucket")
 	check_eq(SunflowerSimulation.BUCKET_IMPOSTOR, 9, "the impostors follow the mesh buckets")
 
 
@@ -34,9 +25,7 @@ func test_the_node_names_the_cores_indices() -> void:
 func test_the_shaders_record_layout_is_the_librarys() -> void:
 	var path: String = "res://addons/sunflower_field/shaders/records.gdshaderinc"
 	var text: String = FileAccess.get_file_as_string(path)
-	var pattern: RegEx = RegEx.create_from_string(
-		"(?m)^const (?:float|uint|int) RECORD_(\\w+) = ([0-9.]+)u?;"
-	)
+	var pattern: RegEx = RegEx.create_from_string("(?m)^const (?:float|uint|int) RECORD_(\\w+) = ([0-9.]+)u?;")
 	var found: int = 0
 	for match: RegExMatch in pattern.search_all(text):
 		var name: String = "FAR_" + match.get_string(1)
@@ -58,26 +47,20 @@ func test_the_shaders_record_layout_is_the_librarys() -> void:
 func test_inspector_defaults_equal_the_cores() -> void:
 	var field: SunflowerField = SunflowerField.new()
 	var owners: Dictionary = {
-		"SunflowerField": field,
-		"SunflowerWind": SunflowerWind.new(),
-		"FieldPlant": FieldPlant.new()
+		"SunflowerField": field, "SunflowerWind": SunflowerWind.new(), "FieldPlant": FieldPlant.new()
 	}
 	var names: PackedStringArray = SunflowerField.Native.parameter_names()
 	check(names.size() >= 20, "the core lists its parameters (%d)" % names.size())
 	for qualified: String in names:
 		var pieces: PackedStringArray = qualified.split(".")
 		var object: Object = owners.get(pieces[0])
-		if not check(
-			object != null and pieces[1] in object, "%s is no inspector property" % qualified
-		):
+		if not check(object != null and pieces[1] in object, "%s is no inspector property" % qualified):
 			continue
 		var shown: Variant = object.get_script().get_property_default_value(pieces[1])
 		var core: float = SunflowerField.Native.default_of(qualified)
 		# A vector's every component has the default (FieldPlant.part_lengths).
 		var agrees: bool = (
-			shown.is_equal_approx(Vector3.ONE * core)
-			if shown is Vector3
-			else is_equal_approx(float(shown), core)
+			shown.is_equal_approx(Vector3.ONE * core) if shown is Vector3 else is_equal_approx(float(shown), core)
 		)
 		check(agrees, "%s: the inspector shows %s, the core %s" % [qualified, shown, core])
 	field.free()
@@ -85,9 +68,7 @@ func test_inspector_defaults_equal_the_cores() -> void:
 
 func test_imported_map_is_a_field_map_resource() -> void:
 	var field_map: SunflowerFieldMap = load("res://fields/demo.field") as SunflowerFieldMap
-	if not check(
-		field_map != null, "res://fields/demo.field did not import as a SunflowerFieldMap"
-	):
+	if not check(field_map != null, "res://fields/demo.field did not import as a SunflowerFieldMap"):
 		return
 	check_eq(field_map.columns, 40, "columns")
 	check_eq(field_map.rows, 30, "rows")
@@ -108,9 +89,7 @@ func test_default_part_meshes_are_unit_height_and_near_thesis_triangle_counts() 
 				box.position.y >= -0.01 and box.position.y <= 0.02,
 				"part %d/%d does not start at its root (y %s)" % [lod, part, box.position.y]
 			)
-			check(
-				box.end.y <= 1.05, "part %d/%d is taller than 1 unit (%s)" % [lod, part, box.end.y]
-			)
+			check(box.end.y <= 1.05, "part %d/%d is taller than 1 unit (%s)" % [lod, part, box.end.y])
 			for surface: int in mesh.get_surface_count():
 				triangles += mesh.surface_get_arrays(surface)[Mesh.ARRAY_INDEX].size() / 3
 		check(
@@ -130,18 +109,14 @@ func test_a_new_field_stores_only_what_was_changed() -> void:
 	check_eq(_stored(root), PackedStringArray(["script"]), "a new field's scene")
 	field.wind_power = 3.0
 	field.lod_hysteresis = 1.0
-	check_eq(
-		_stored(root), PackedStringArray(["script", "wind", "lod_hysteresis"]), "after two changes"
-	)
+	check_eq(_stored(root), PackedStringArray(["script", "wind", "lod_hysteresis"]), "after two changes")
 	var reloaded: SunflowerField = _packed(root).instantiate().get_child(0) as SunflowerField
 	check_eq(reloaded.wind_power, 3.0, "the wind power comes back from the stored wind")
 	check_eq(reloaded.lod_hysteresis, 1.0, "the hysteresis comes back")
 	reloaded.get_parent().free()
 	for property: StringName in SunflowerField.WIND_PROPERTIES:
 		check(field.property_can_revert(property), "%s offers a revert" % property)
-	check_eq(
-		field.property_get_revert(&"wind_power"), 1.0, "wind_power reverts to the wind's default"
-	)
+	check_eq(field.property_get_revert(&"wind_power"), 1.0, "wind_power reverts to the wind's default")
 	root.free()
 
 

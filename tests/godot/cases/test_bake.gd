@@ -102,21 +102,11 @@ func test_a_gltf_plant_gets_impostors_in_its_own_colours() -> void:
 	var result: Error = await plant.bake_impostors(tree.root, FOLDER, "red_plant")
 	check_eq(result, OK, "baked")
 	for kind: String in FieldPlant.IMPOSTOR_TEXTURES:
-		check(
-			FileAccess.file_exists(FOLDER.path_join("red_plant_%s.png" % kind)),
-			"%s atlas written" % kind
-		)
+		check(FileAccess.file_exists(FOLDER.path_join("red_plant_%s.png" % kind)), "%s atlas written" % kind)
 	check(plant.impostor_emission == null, "a plant that gives off no light gets no emission atlas")
-	check(
-		not FileAccess.file_exists(FOLDER.path_join("red_plant_emission.png")),
-		"and no emission file"
-	)
+	check(not FileAccess.file_exists(FOLDER.path_join("red_plant_emission.png")), "and no emission file")
 	if not check(
-		(
-			plant.impostor_views != null
-			and plant.impostor_normals != null
-			and plant.impostor_depths != null
-		),
+		plant.impostor_views != null and plant.impostor_normals != null and plant.impostor_depths != null,
 		"the plant has its atlases"
 	):
 		return
@@ -124,9 +114,7 @@ func test_a_gltf_plant_gets_impostors_in_its_own_colours() -> void:
 	var normals: Image = plant.impostor_normals.get_image()
 	views.clear_mipmaps()
 	normals.clear_mipmaps()
-	check_eq(
-		views.get_size(), FieldPlant.ATLAS_VIEWS * ImpostorBaker.CELL_PIXELS, "one square per view"
-	)
+	check_eq(views.get_size(), FieldPlant.ATLAS_VIEWS * ImpostorBaker.CELL_PIXELS, "one square per view")
 	var cell: int = ImpostorBaker.CELL_PIXELS
 	var frame: Vector2 = plant.impostor_frame()
 	var pixels_per_unit: float = cell / frame.x
@@ -138,26 +126,16 @@ func test_a_gltf_plant_gets_impostors_in_its_own_colours() -> void:
 			measured[0] > 0.04 and measured[0] < 0.25,
 			"view %d covers part of its square (%.2f)" % [column, measured[0]]
 		)
-		check(
-			(measured[1] as Color).r > (measured[1] as Color).g * 1.5,
-			"mostly the head's red: %s" % measured[1]
-		)
+		check((measured[1] as Color).r > (measured[1] as Color).g * 1.5, "mostly the head's red: %s" % measured[1])
 		# The head's rows are red, the stalk's green: the parts stacked as the plant stands.
 		var top: Color = side.get_pixel(cell / 2, roundi(cell / 2 - 1.0 * pixels_per_unit))
 		var low: Color = side.get_pixel(cell / 2, roundi(cell / 2 + 1.0 * pixels_per_unit))
-		check(
-			top.r > 0.6 and top.g < 0.3, "view %d: the head at the top is red: %s" % [column, top]
-		)
-		check(
-			low.g > low.r and low.a > 0.5, "view %d: the stalk below is green: %s" % [column, low]
-		)
+		check(top.r > 0.6 and top.g < 0.3, "view %d: the head at the top is red: %s" % [column, top])
+		check(low.g > low.r and low.a > 0.5, "view %d: the stalk below is green: %s" % [column, low])
 	# From straight above only the head's top shows: red in the middle, facing up; from the front,
 	# the head's front face faces +z, from the right side (a quarter turn) +x.
 	var above: Image = _view(views, 0, FieldPlant.ATLAS_VIEWS.y - 1)
-	check(
-		above.get_pixel(cell / 2, cell / 2).r > 0.6,
-		"from above, the head: %s" % above.get_pixel(cell / 2, cell / 2)
-	)
+	check(above.get_pixel(cell / 2, cell / 2).r > 0.6, "from above, the head: %s" % above.get_pixel(cell / 2, cell / 2))
 	var head_point: Vector2i = Vector2i(cell / 2, roundi(cell / 2 - 1.0 * pixels_per_unit))
 	var quarter: int = FieldPlant.ATLAS_VIEWS.x / 4
 	var expected: Array = [
@@ -168,21 +146,14 @@ func test_a_gltf_plant_gets_impostors_in_its_own_colours() -> void:
 	for case: Array in expected:
 		var at: Vector2i = (case[0] as Vector2i) * cell + (case[1] as Vector2i)
 		var normal: Vector3 = _normal(normals, at)
-		check(
-			normal.dot(case[2]) > 0.95,
-			"view %s: the head's normal %s points %s" % [case[0], normal, case[2]]
-		)
+		check(normal.dot(case[2]) > 0.95, "view %s: the head's normal %s points %s" % [case[0], normal, case[2]])
 	# Depths along the view, in shares of the square from the plant's middle (1.5 units up): from
 	# above, the head's top (3 units up) is the nearest; from the side, the thin stalk stands on the
 	# plant's axis, as deep as the middle.
 	var depths: Image = plant.impostor_depths.get_image()
 	depths.clear_mipmaps()
 	var above_depth: float = (
-		depths
-		. get_pixelv(
-			Vector2i(0, FieldPlant.ATLAS_VIEWS.y - 1) * cell + Vector2i(cell / 2, cell / 2)
-		)
-		. r
+		depths.get_pixelv(Vector2i(0, FieldPlant.ATLAS_VIEWS.y - 1) * cell + Vector2i(cell / 2, cell / 2)).r
 	)
 	check(
 		above_depth > 0.5 + 1.3 / frame.x,
@@ -190,10 +161,7 @@ func test_a_gltf_plant_gets_impostors_in_its_own_colours() -> void:
 	)
 	for column: int in [0, 3, 7]:
 		var stalk_depth: Color = depths.get_pixelv(
-			(
-				Vector2i(column, 0) * cell
-				+ Vector2i(cell / 2, roundi(cell / 2 + 1.0 * pixels_per_unit))
-			)
+			Vector2i(column, 0) * cell + Vector2i(cell / 2, roundi(cell / 2 + 1.0 * pixels_per_unit))
 		)
 		check(
 			stalk_depth.a > 0.5 and absf(stalk_depth.r - 0.5) < 0.2 / frame.x,
@@ -224,10 +192,7 @@ func _glowing_plant(plant_name: String, head_file: String, energy: float) -> Fie
 	head.surface_set_material(0, glowing)
 	var base_name: String = plant_name.to_snake_case()
 	check_eq(await plant.bake_impostors(tree.root, FOLDER, base_name), OK, "baked")
-	check(
-		FileAccess.file_exists(FOLDER.path_join(base_name + "_emission.png")),
-		"emission atlas written"
-	)
+	check(FileAccess.file_exists(FOLDER.path_join(base_name + "_emission.png")), "emission atlas written")
 	if not check(plant.impostor_emission != null, "the plant has an emission atlas"):
 		return null
 	return plant
@@ -243,21 +208,13 @@ func _check_glow(plant: FieldPlant, energy: float) -> void:
 	var expected: Color = GLOW.srgb_to_linear() * (energy / plant.impostor_emission_range)
 	for column: int in [0, 5]:
 		var side: Image = _view(emission, column, 0)
-		var lit: Color = (
-			side.get_pixel(cell / 2, roundi(cell / 2 - 1.0 * pixels_per_unit)).srgb_to_linear()
-		)
+		var lit: Color = side.get_pixel(cell / 2, roundi(cell / 2 - 1.0 * pixels_per_unit)).srgb_to_linear()
 		var dark: Color = side.get_pixel(cell / 2, roundi(cell / 2 + 1.0 * pixels_per_unit))
 		check(
 			absf(lit.r - expected.r) < 0.03 and absf(lit.g - expected.g) < 0.03 and lit.b < 0.03,
-			(
-				"view %d: the head's light, %s, is the material's over the range, %s"
-				% [column, lit, expected]
-			)
+			"view %d: the head's light, %s, is the material's over the range, %s" % [column, lit, expected]
 		)
-		check(
-			dark.a > 0.5 and maxf(dark.r, dark.g) < 0.02,
-			"view %d: the stalk gives off none: %s" % [column, dark]
-		)
+		check(dark.a > 0.5 and maxf(dark.r, dark.g) < 0.02, "view %d: the stalk gives off none: %s" % [column, dark])
 
 
 ## A plant whose head gives off light (a StandardMaterial3D's emission, energy 2) gets an emission
@@ -301,12 +258,8 @@ func test_a_glowing_plant_glows_as_far_impostors() -> void:
 		await RenderingServer.frame_post_draw
 		await RenderingServer.frame_post_draw
 		var image: Image = tree.root.get_viewport().get_texture().get_image()
-		image.save_png(
-			artifact_path("glowing_%s.png" % ["impostors", "meshes", "no_emission"][step])
-		)
-		var pixels: PackedFloat32Array = (
-			Picture.new(image.get_width(), image.get_height()).luminance(image)
-		)
+		image.save_png(artifact_path("glowing_%s.png" % ["impostors", "meshes", "no_emission"][step]))
+		var pixels: PackedFloat32Array = Picture.new(image.get_width(), image.get_height()).luminance(image)
 		var sum: float = 0.0
 		for value: float in pixels:
 			sum += value
@@ -321,10 +274,7 @@ func test_a_glowing_plant_glows_as_far_impostors() -> void:
 		)
 	)
 	check(brightness[1] > 0.005, "the meshes glow: mean brightness %.4f" % brightness[1])
-	check(
-		ratio > 0.8 and ratio < 1.25,
-		"the impostors glow as the meshes do: %.3f of their brightness" % ratio
-	)
+	check(ratio > 0.8 and ratio < 1.25, "the impostors glow as the meshes do: %.3f of their brightness" % ratio)
 	check(without < 0.2, "without the atlas they would stay dark: %.3f" % without)
 
 
@@ -347,9 +297,7 @@ func test_a_bright_glow_gets_a_wider_range() -> void:
 			tile = node
 	if check(tile != null, "a far tile"):
 		var material: ShaderMaterial = tile.multimesh.mesh.surface_get_material(0) as ShaderMaterial
-		check_eq(
-			material.get_shader_parameter("emission_range"), 64.0, "the far levels multiply it back"
-		)
+		check_eq(material.get_shader_parameter("emission_range"), 64.0, "the far levels multiply it back")
 	field.free()
 
 
@@ -358,9 +306,7 @@ func test_the_built_in_sunflower_baked_again_matches_the_shipped_textures() -> v
 	var result: Error = await plant.bake_impostors(tree.root, FOLDER, "sunflower_again")
 	check_eq(result, OK)
 	for kind: String in FieldPlant.IMPOSTOR_TEXTURES:
-		var shipped: Image = (
-			(FieldPlant.default_plant().get("impostor_" + kind) as Texture2D).get_image()
-		)
+		var shipped: Image = (FieldPlant.default_plant().get("impostor_" + kind) as Texture2D).get_image()
 		var baked: Image = (plant.get("impostor_" + kind) as Texture2D).get_image()
 		shipped.decompress()
 		shipped.clear_mipmaps()
@@ -376,19 +322,8 @@ func test_the_built_in_sunflower_baked_again_matches_the_shipped_textures() -> v
 				var a: Color = baked.get_pixel(x, y)
 				var b: Color = shipped.get_pixel(x, y)
 				total += 1
-				if (
-					(a.a > 0.5) != (b.a > 0.5)
-					or (a.a > 0.5 and absf(a.get_luminance() - b.get_luminance()) > 0.15)
-				):
+				if (a.a > 0.5) != (b.a > 0.5) or (a.a > 0.5 and absf(a.get_luminance() - b.get_luminance()) > 0.15):
 					differ += 1
 		var share: float = float(differ) / total
-		print(
-			(
-				"     bake: %s differs from the shipped atlas in %.1f %% of pixels"
-				% [kind, share * 100.0]
-			)
-		)
-		check(
-			share < 0.03,
-			"%s: the baker reproduces the shipped atlas (%.1f %% differ)" % [kind, share * 100.0]
-		)
+		print("     bake: %s differs from the shipped atlas in %.1f %% of pixels" % [kind, share * 100.0])
+		check(share < 0.03, "%s: the baker reproduces the shipped atlas (%.1f %% differ)" % [kind, share * 100.0])

@@ -63,9 +63,7 @@ func test_a_large_map_builds_over_frames_while_the_old_field_is_drawn() -> void:
 	var frames_seen: int = 0
 	while field.is_building() and frames_seen < 2000:
 		check_eq(field.get_plant_count(), 1103, "the old field is the one counted during the build")
-		if not check_eq(
-			_visible_multimesh_nodes(), old_nodes, "only the old field's nodes are drawn"
-		):
+		if not check_eq(_visible_multimesh_nodes(), old_nodes, "only the old field's nodes are drawn"):
 			break
 		await frames(1)
 		frames_seen += 1
@@ -74,34 +72,20 @@ func test_a_large_map_builds_over_frames_while_the_old_field_is_drawn() -> void:
 	check_eq(built, [360000] as Array[int], "one field_built, with the new plant count")
 	check_eq(field.get_plant_count(), 360000, "the new field is counted")
 	# The sunflower is drawn whole: a node per mesh level and one of the near impostors, then the tiles.
-	var expected_nodes: int = (
-		SunflowerSimulation.MESH_LEVEL_COUNT + 1 + field.get_simulation().get_tile_count()
-	)
-	check_eq(
-		field.get_child_count(true) - field.get_child_count(false),
-		expected_nodes,
-		"only the new nodes remain"
-	)
+	var expected_nodes: int = SunflowerSimulation.MESH_LEVEL_COUNT + 1 + field.get_simulation().get_tile_count()
+	check_eq(field.get_child_count(true) - field.get_child_count(false), expected_nodes, "only the new nodes remain")
 	check(progress.size() >= 3, "progress reported while building (%d times)" % progress.size())
 	var monotonic: bool = true
 	for i: int in range(1, progress.size()):
 		monotonic = monotonic and progress[i] >= progress[i - 1]
-	check(
-		monotonic and progress[0] >= 0.0, "progress never goes back: %s" % str(progress.slice(0, 8))
-	)
+	check(monotonic and progress[0] >= 0.0, "progress never goes back: %s" % str(progress.slice(0, 8)))
 	check_eq(progress[-1], 1.0, "progress ends at 1")
 	check(not SunflowerField.get_building_fields().has(field), "no longer listed as building")
 	var stats: Dictionary = field.get_build_stats()
 	check(stats["background"], "the stats say background")
 	check(stats["frames"] >= 3, "the stats count the frames: %s" % stats)
-	check(
-		stats["longest_step_ms"] <= stats["main_thread_ms"],
-		"no step is longer than the whole: %s" % stats
-	)
-	check(
-		stats["total_ms"] >= stats["main_thread_ms"],
-		"the build lasted at least its main-thread work: %s" % stats
-	)
+	check(stats["longest_step_ms"] <= stats["main_thread_ms"], "no step is longer than the whole: %s" % stats)
+	check(stats["total_ms"] >= stats["main_thread_ms"], "the build lasted at least its main-thread work: %s" % stats)
 
 
 func test_a_bad_large_map_reports_its_place_after_the_worker_and_keeps_the_field() -> void:
@@ -109,21 +93,13 @@ func test_a_bad_large_map_reports_its_place_after_the_worker_and_keeps_the_field
 	field.map = _square_map(400, 250)
 	await frames(2)
 	await frames_until(func() -> bool: return not field.is_building(), 200)
-	check_eq(
-		progress,
-		[0.0] as Array[float],
-		"the bad map was read in the background, and went no further"
-	)
+	check_eq(progress, [0.0] as Array[float], "the bad map was read in the background, and went no further")
 	check_eq(errors.size(), 1, "one map_error")
-	check(
-		errors.size() == 1 and errors[0].contains("square_400.field:252:400"),
-		"file:line:column in %s" % str(errors)
-	)
+	check(errors.size() == 1 and errors[0].contains("square_400.field:252:400"), "file:line:column in %s" % str(errors))
 	check_eq(built.size(), 0, "no field_built")
 	check_eq(field.get_plant_count(), 1103, "the old field stays")
 	check(
-		" ".join(field._get_configuration_warnings()).contains("252:400"),
-		"the configuration warning names the place"
+		" ".join(field._get_configuration_warnings()).contains("252:400"), "the configuration warning names the place"
 	)
 
 
@@ -145,10 +121,7 @@ func test_blocking_paths_complete_the_build_at_once() -> void:
 		if not progress.is_empty():
 			break
 		await frames(1)
-	check(
-		progress.size() == 1 and field.is_building(),
-		"background again, and still building: %s" % str(progress)
-	)
+	check(progress.size() == 1 and field.is_building(), "background again, and still building: %s" % str(progress))
 	field.finish_build()
 	check(not field.is_building(), "finish_build() waits for it")
 	check_eq(field.get_plant_count(), 490000, "the third map")
@@ -169,16 +142,8 @@ func test_the_progress_bar_shows_running_builds_only() -> void:
 		bar.call("refresh")
 		check(bar.visible, "shown while building")
 		seen.append(bar.call("get_percent"))
-		check_near(
-			seen[-1],
-			100.0 * field.get_build_progress(),
-			0.01,
-			"the bar shows the field's progress (its step)"
-		)
-		check(
-			str(bar.call("get_text")).contains("BigField"),
-			"names the field: %s" % bar.call("get_text")
-		)
+		check_near(seen[-1], 100.0 * field.get_build_progress(), 0.01, "the bar shows the field's progress (its step)")
+		check(str(bar.call("get_text")).contains("BigField"), "names the field: %s" % bar.call("get_text"))
 	bar.call("refresh")
 	check(not bar.visible, "hidden once built")
 	check(seen.size() >= 1, "the bar was seen during the build")
@@ -193,10 +158,7 @@ func test_parameter_changes_during_a_build_reach_the_new_field() -> void:
 		await frames(1)
 	check(
 		field.is_building(),
-		(
-			"some tile nodes are made, not all: %s %s"
-			% [field.get_build_progress(), field.get_build_stats()]
-		)
+		"some tile nodes are made, not all: %s %s" % [field.get_build_progress(), field.get_build_stats()]
 	)
 	field.max_draw_distance = 123.0
 	field.lod_distances = PackedFloat32Array([5.0, 9.0, 18.0, 30.0])
@@ -211,19 +173,12 @@ func test_parameter_changes_during_a_build_reach_the_new_field() -> void:
 	var simulation: RefCounted = field.get_simulation()
 	for tile: int in simulation.get_tile_count():
 		var parent: int = FarTileTable.new(NativeField.new(simulation)).parent(tile)
-		var node_name: String = (
-			"FarTile%d" % FarTileTable.new(NativeField.new(simulation)).key(tile)
-		)
+		var node_name: String = "FarTile%d" % FarTileTable.new(NativeField.new(simulation)).key(tile)
 		begins[node_name] = FarTileTable.new(NativeField.new(simulation)).shown_from(tile)
 		parents[node_name] = (
-			"FarTile%d" % FarTileTable.new(NativeField.new(simulation)).key(parent)
-			if parent >= 0
-			else ""
+			"FarTile%d" % FarTileTable.new(NativeField.new(simulation)).key(parent) if parent >= 0 else ""
 		)
-	check(
-		begins.values().any(func(begin: float) -> bool: return begin > 0.0),
-		"the field has merged tiles"
-	)
+	check(begins.values().any(func(begin: float) -> bool: return begin > 0.0), "the field has merged tiles")
 	var wrong_ranges: int = 0
 	var wrong_parents: int = 0
 	var impostor_material: ShaderMaterial = null
@@ -234,35 +189,20 @@ func test_parameter_changes_during_a_build_reach_the_new_field() -> void:
 			var begin: float = begins.get(str(instance.name), -1.0)
 			wrong_ranges += (
 				0
-				if (
-					instance.visibility_range_begin == begin
-					and is_equal_approx(instance.visibility_range_end, end)
-				)
+				if (instance.visibility_range_begin == begin and is_equal_approx(instance.visibility_range_end, end))
 				else 1
 			)
 			for drawn: GeometryInstance3D in [instance, instance.get_child(0, true)]:
 				var parent: Node = (
-					null
-					if drawn.visibility_parent.is_empty()
-					else drawn.get_node(drawn.visibility_parent)
+					null if drawn.visibility_parent.is_empty() else drawn.get_node(drawn.visibility_parent)
 				)
-				wrong_parents += (
-					0 if (str(parent.name) if parent else "") == parents[str(instance.name)] else 1
-				)
+				wrong_parents += (0 if (str(parent.name) if parent else "") == parents[str(instance.name)] else 1)
 			impostor_material = instance.multimesh.mesh.surface_get_material(0) as ShaderMaterial
 	check_eq(wrong_ranges, 0, "every tile's range follows the draw distance set during the build")
-	check_eq(
-		wrong_parents, 0, "every tile's node and shadow caster hide where its parent tile is drawn"
-	)
+	check_eq(wrong_parents, 0, "every tile's node and shadow caster hide where its parent tile is drawn")
 	if check(impostor_material != null, "tiles draw the impostor material"):
-		check_eq(
-			impostor_material.get_shader_parameter("draw_distance"),
-			123.0,
-			"the plants fade out at it"
-		)
-		check_near(
-			impostor_material.get_shader_parameter("draw_fade"), 12.3, 1e-4, "over its last tenth"
-		)
+		check_eq(impostor_material.get_shader_parameter("draw_distance"), 123.0, "the plants fade out at it")
+		check_near(impostor_material.get_shader_parameter("draw_fade"), 12.3, 1e-4, "over its last tenth")
 	check_eq(field.get_simulation().get_lod_counts().size(), 5, "the new simulation answers")
 	# Wind set during the build moves the new field's plants (drawn as meshes to see them sway).
 	field.force_lod = SunflowerField.Lod.MESH_1
@@ -278,23 +218,16 @@ func test_parameter_changes_during_a_build_reach_the_new_field() -> void:
 ## drawing from the same MultiMesh, casts them (and nothing else) while it is visible.
 func _casts(node: Node) -> bool:
 	var caster: GeometryInstance3D = node.get_child(0, true) as GeometryInstance3D
-	if not check(
-		caster != null and caster.name == "ShadowCaster", "%s has a shadow caster" % node.name
-	):
+	if not check(caster != null and caster.name == "ShadowCaster", "%s has a shadow caster" % node.name):
 		return false
 	check_eq(
 		(node as GeometryInstance3D).cast_shadow,
 		GeometryInstance3D.SHADOW_CASTING_SETTING_OFF,
 		"%s casts none itself" % node.name
 	)
-	check_eq(
-		caster.cast_shadow,
-		GeometryInstance3D.SHADOW_CASTING_SETTING_SHADOWS_ONLY,
-		"its caster only casts"
-	)
+	check_eq(caster.cast_shadow, GeometryInstance3D.SHADOW_CASTING_SETTING_SHADOWS_ONLY, "its caster only casts")
 	check(
-		(caster as MultiMeshInstance3D).multimesh == (node as MultiMeshInstance3D).multimesh,
-		"from the same MultiMesh"
+		(caster as MultiMeshInstance3D).multimesh == (node as MultiMeshInstance3D).multimesh, "from the same MultiMesh"
 	)
 	return caster.visible
 
@@ -354,9 +287,7 @@ func test_a_small_change_of_a_large_map_makes_nodes_only_for_the_tiles_it_touche
 	simulation = field.get_simulation()
 	var merged: int = simulation.get_tile_count() - 1
 	check_eq(
-		FarTileTable.new(NativeField.new(simulation)).begin(merged),
-		500.0,
-		"the merged tile begins at the new distance"
+		FarTileTable.new(NativeField.new(simulation)).begin(merged), 500.0, "the merged tile begins at the new distance"
 	)
 	var merged_node: GeometryInstance3D = null
 	for node: Node in field.get_children(true):
@@ -365,14 +296,8 @@ func test_a_small_change_of_a_large_map_makes_nodes_only_for_the_tiles_it_touche
 	if check(merged_node != null, "the merged tile's node"):
 		# From where all its plants are at least 500 m away.
 		var reach: float = 0.5 * merged_node.custom_aabb.size.length()
-		check_near(
-			merged_node.visibility_range_begin, 500.0 + reach, 1e-3, "its node's range begins there"
-		)
-		check_eq(
-			merged_node.get_instance_shader_parameter(&"tile_merge").z,
-			500.0,
-			"its shader knows the distance"
-		)
+		check_near(merged_node.visibility_range_begin, 500.0 + reach, 1e-3, "its node's range begins there")
+		check_eq(merged_node.get_instance_shader_parameter(&"tile_merge").z, 500.0, "its shader knows the distance")
 		check(not _casts(merged_node), "beyond the sun's shadows")
 		# The tiles follow the sun's shadows from frame to frame, without a rebuild: a sun added whose
 		# shadows reach past where the merged level begins lets it cast; shorter shadows, shadows

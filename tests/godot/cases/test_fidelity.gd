@@ -74,24 +74,14 @@ func test_far_levels_look_like_the_full_mesh_picture() -> void:
 		var target: Vector3 = VIEWS[view][1]
 		var auto: PackedFloat32Array = await _render(eye, target, -1, view + ".auto")
 		var mesh_1: PackedFloat32Array = await _render(eye, target, 0, view + ".mesh1")
-		var inside: PackedByteArray = picture.region(
-			await _impostors_alone(eye, target, view + ".mask")
-		)
+		var inside: PackedByteArray = picture.region(await _impostors_alone(eye, target, view + ".mask"))
 		var share: float = float(inside.count(1)) / inside.size()
 		var brightness: float = picture.mean_in(auto, inside) / picture.mean_in(mesh_1, inside)
-		figures[view] = [
-			picture.ssim(auto, mesh_1), picture.mean_difference(auto, mesh_1), share, brightness
-		]
+		figures[view] = [picture.ssim(auto, mesh_1), picture.mean_difference(auto, mesh_1), share, brightness]
 		print(
 			(
 				"     %s: SSIM to mesh 1 %.3f, mean difference %.4f, impostor region %.1f %%, its brightness %s"
-				% [
-					view,
-					figures[view][0],
-					figures[view][1],
-					100.0 * share,
-					"%.3f" % brightness if share > 0 else "—"
-				]
+				% [view, figures[view][0], figures[view][1], 100.0 * share, "%.3f" % brightness if share > 0 else "—"]
 			)
 		)
 		if full and view in ["above45", "down60"]:
@@ -104,25 +94,13 @@ func test_far_levels_look_like_the_full_mesh_picture() -> void:
 	# impostor's look, not the plants' places; reading the footprint's mip, or each view at one shared
 	# place instead of where the pixel's point lies in it, scores lower), brightness within ±5 %.
 	# What is checked is what this code reaches, so that a regression fails.
-	check(
-		figures["inside"][0] >= 0.99,
-		"at head height the picture is the full-mesh one (%.3f)" % figures["inside"][0]
-	)
-	check(
-		figures["above45"][0] >= 0.72,
-		"25 m up at 45°: SSIM %.3f, at least 0.72" % figures["above45"][0]
-	)
-	check(
-		figures["down60"][0] >= 0.86,
-		"60 m straight down: SSIM %.3f, at least 0.86" % figures["down60"][0]
-	)
+	check(figures["inside"][0] >= 0.99, "at head height the picture is the full-mesh one (%.3f)" % figures["inside"][0])
+	check(figures["above45"][0] >= 0.72, "25 m up at 45°: SSIM %.3f, at least 0.72" % figures["above45"][0])
+	check(figures["down60"][0] >= 0.86, "60 m straight down: SSIM %.3f, at least 0.86" % figures["down60"][0])
 	for view: String in ["above45", "down60"]:
 		check(
 			absf(figures[view][3] - 1.0) <= 0.05,
-			(
-				"%s: the impostors' brightness %.3f of the meshes', within ±5 %%"
-				% [view, figures[view][3]]
-			)
+			"%s: the impostors' brightness %.3f of the meshes', within ±5 %%" % [view, figures[view][3]]
 		)
 
 
@@ -139,10 +117,7 @@ func _check_anti_aliased() -> void:
 		var mesh_1: Image = await _render_image(eye, target, 0, view + "_x4.mesh1")
 		var figure: float = _ssim_anti_aliased(auto, mesh_1, 2)
 		print(
-			(
-				"     %s anti-aliased (%d × %d box-filtered 4 × 4): SSIM to mesh 1 %.3f"
-				% [view, large.x, large.y, figure]
-			)
+			"     %s anti-aliased (%d × %d box-filtered 4 × 4): SSIM to mesh 1 %.3f" % [view, large.x, large.y, figure]
 		)
 		check(figure >= 0.85, "%s anti-aliased: SSIM %.3f, at least 0.85" % [view, figure])
 
@@ -152,18 +127,12 @@ func _check_anti_aliased() -> void:
 ## distance). An impostor cannot keep the meshes' aliasing to the pixel; a figure near these is as
 ## close as the meshes stay to themselves after a step of a few centimetres (0.779 and 0.631 at
 ## 45°, 0.824 and 0.761 straight down, docs/fidelity.md).
-func _print_pixel_noise(
-	eye: Vector3, target: Vector3, mesh_1: PackedFloat32Array, view: String
-) -> void:
-	var pixel: float = (
-		2.0 * tan(deg_to_rad(0.5 * camera.fov)) / picture.height * eye.distance_to(target)
-	)
+func _print_pixel_noise(eye: Vector3, target: Vector3, mesh_1: PackedFloat32Array, view: String) -> void:
+	var pixel: float = 2.0 * tan(deg_to_rad(0.5 * camera.fov)) / picture.height * eye.distance_to(target)
 	var figures: PackedStringArray = []
 	for share: float in [0.25, 0.5]:
 		camera.h_offset = share * pixel
-		var moved: PackedFloat32Array = await _render(
-			eye, target, 0, "%s.mesh1_moved%d" % [view, roundi(100 * share)]
-		)
+		var moved: PackedFloat32Array = await _render(eye, target, 0, "%s.mesh1_moved%d" % [view, roundi(100 * share)])
 		figures.append("%.3f moved %.2f of a pixel" % [picture.ssim(moved, mesh_1), share])
 	camera.h_offset = 0.0
 	print("     %s: mesh 1 against itself %s (%.3f m a pixel)" % [view, ", ".join(figures), pixel])
@@ -182,9 +151,7 @@ func test_the_far_field_keeps_its_cover() -> void:
 	var meshes_in: PackedByteArray = picture.region(meshes)
 	var impostors_in: PackedByteArray = picture.region(impostors)
 	var cover: float = float(impostors_in.count(1)) / maxf(meshes_in.count(1), 1.0)
-	var brightness: float = (
-		picture.mean_in(impostors, impostors_in) / picture.mean_in(meshes, meshes_in)
-	)
+	var brightness: float = picture.mean_in(impostors, impostors_in) / picture.mean_in(meshes, meshes_in)
 	print(
 		(
 			"     150 m away: the impostors cover %d pixels, the meshes %d: %.2f; their brightness %.3f of the meshes'"
@@ -192,14 +159,8 @@ func test_the_far_field_keeps_its_cover() -> void:
 		)
 	)
 	check(meshes_in.count(1) > 1000, "the field is in view (%d pixels)" % meshes_in.count(1))
-	check(
-		cover >= 0.8 and cover <= 1.2,
-		"the impostors cover %.2f of what the meshes cover, within 0.8–1.2" % cover
-	)
-	check(
-		brightness >= 0.88,
-		"the far impostors' brightness %.3f of the meshes', at least 0.88" % brightness
-	)
+	check(cover >= 0.8 and cover <= 1.2, "the impostors cover %.2f of what the meshes cover, within 0.8–1.2" % cover)
+	check(brightness >= 0.88, "the far impostors' brightness %.3f of the meshes', at least 0.88" % brightness)
 
 
 ## The 45° view at 1 280 × 720 (the window resized): a plant 20–35 m away then samples a mip one
@@ -217,9 +178,7 @@ func test_far_levels_keep_their_brightness_at_twice_the_resolution() -> void:
 	var mesh_1_image: Image = await _render_image(eye, target, 0, "above45_x2.mesh1")
 	var auto: PackedFloat32Array = picture.luminance(auto_image)
 	var mesh_1: PackedFloat32Array = picture.luminance(mesh_1_image)
-	var inside: PackedByteArray = picture.region(
-		await _impostors_alone(eye, target, "above45_x2.mask")
-	)
+	var inside: PackedByteArray = picture.region(await _impostors_alone(eye, target, "above45_x2.mask"))
 	var brightness: float = picture.mean_in(auto, inside) / picture.mean_in(mesh_1, inside)
 	var anti_aliased: float = _ssim_anti_aliased(auto_image, mesh_1_image, 1)
 	print(
@@ -229,26 +188,14 @@ func test_far_levels_keep_their_brightness_at_twice_the_resolution() -> void:
 		)
 	)
 	# Two samples a pixel each way: 0.826 when last measured; 0.85 is reached with four (FIDELITY_FULL).
-	check(
-		anti_aliased >= 0.80,
-		"anti-aliased (2 × 2 samples a pixel): SSIM %.3f, at least 0.80" % anti_aliased
-	)
+	check(anti_aliased >= 0.80, "anti-aliased (2 × 2 samples a pixel): SSIM %.3f, at least 0.80" % anti_aliased)
 	check(inside.count(1) > 40000, "the impostors are in view (%d pixels)" % inside.count(1))
-	check(
-		absf(brightness - 1.0) <= 0.05,
-		"the impostors' brightness %.3f of the meshes', within ±5 %%" % brightness
-	)
+	check(absf(brightness - 1.0) <= 0.05, "the impostors' brightness %.3f of the meshes', within ±5 %%" % brightness)
 	var midway: PackedByteArray = _seen_from(inside, large, 50.0, 55.0)
 	var band: float = picture.mean_in(auto, midway) / picture.mean_in(mesh_1, midway)
 	print("     seen from 50–55° above (%d pixels): %.3f" % [midway.count(1), band])
-	check(
-		midway.count(1) > 20000,
-		"plants seen from 50–55° above are in view (%d pixels)" % midway.count(1)
-	)
-	check(
-		band >= 0.95,
-		"those seen from 50–55° above: brightness %.3f of the meshes', at least 0.95" % band
-	)
+	check(midway.count(1) > 20000, "plants seen from 50–55° above are in view (%d pixels)" % midway.count(1))
+	check(band >= 0.95, "those seen from 50–55° above: brightness %.3f of the meshes', at least 0.95" % band)
 
 
 ## Makes the window [param factor] times as wide and high (after_each sizes it back) and returns the
@@ -276,9 +223,7 @@ func _ssim_anti_aliased(a: Image, b: Image, halvings: int) -> float:
 
 ## The pixels of [param inside] (a picture of [param size]) that the camera sees from
 ## [param lowest]–[param highest] degrees above the horizontal.
-func _seen_from(
-	inside: PackedByteArray, size: Vector2i, lowest: float, highest: float
-) -> PackedByteArray:
+func _seen_from(inside: PackedByteArray, size: Vector2i, lowest: float, highest: float) -> PackedByteArray:
 	var seen: PackedByteArray = []
 	seen.resize(inside.size())
 	for y: int in size.y:
@@ -286,9 +231,7 @@ func _seen_from(
 			var i: int = y * size.x + x
 			if inside[i] == 0:
 				continue
-			var elevation: float = rad_to_deg(
-				-asin(camera.project_ray_normal(Vector2(x + 0.5, y + 0.5)).y)
-			)
+			var elevation: float = rad_to_deg(-asin(camera.project_ray_normal(Vector2(x + 0.5, y + 0.5)).y))
 			if elevation >= lowest and elevation < highest:
 				seen[i] = 1
 	return seen
@@ -317,24 +260,11 @@ func test_no_pops_where_plants_switch_level() -> void:
 		print(
 			(
 				"     switch at %.0f m: largest 16 × 16 change %.4f on %d frames with switches, %.4f on %d without: ratio %.2f"
-				% [
-					distances[switch],
-					at_switches,
-					changes[0].size(),
-					elsewhere,
-					changes[1].size(),
-					ratio
-				]
+				% [distances[switch], at_switches, changes[0].size(), elsewhere, changes[1].size(), ratio]
 			)
 		)
-		check(
-			changes[0].size() > 0 and changes[1].size() > 0,
-			"frames of both kinds at %.0f m" % distances[switch]
-		)
-		check(
-			ratio <= 1.3,
-			"no pop at the %.0f m switch: ratio %.2f, at most 1.3" % [distances[switch], ratio]
-		)
+		check(changes[0].size() > 0 and changes[1].size() > 0, "frames of both kinds at %.0f m" % distances[switch])
+		check(ratio <= 1.3, "no pop at the %.0f m switch: ratio %.2f, at most 1.3" % [distances[switch], ratio])
 
 
 ## Far tiles merge plant by plant: walking towards the band where the first merged level begins, no
@@ -354,10 +284,7 @@ func test_no_pops_where_far_tiles_merge() -> void:
 			% [MERGE_DISTANCE, _largest(merged[0]), merged[0].size(), _largest(never[0]), ratio]
 		)
 	)
-	check(
-		fade > 0.0 and fade < 1.0,
-		"the walk looks into the fade to the first merged level (%.2f)" % fade
-	)
+	check(fade > 0.0 and fade < 1.0, "the walk looks into the fade to the first merged level (%.2f)" % fade)
 	var apart: float = picture.mean_difference(merged[1], never[1])
 	check(apart > 0.01, "merged tiles are drawn: the walks' first pictures differ by %.4f" % apart)
 	check(ratio <= 1.3, "no pop where far tiles merge: ratio %.2f, at most 1.3" % ratio)
@@ -376,12 +303,8 @@ func _walk_onto_merge(merge: float, frames: int) -> Array[PackedFloat32Array]:
 	var before: PackedFloat32Array = []
 	for frame: int in frames:
 		var eye: Vector3 = MERGE_EYE + Vector3(0.0, 0.0, -frame * STEP)
-		var name: String = (
-			"merge_walk_%s" % ("merged" if merge > 0.0 else "never") if frame == 0 else ""
-		)
-		var now: PackedFloat32Array = await _render(
-			eye, eye + MERGE_LOOK, -1, name, 10 if frame == 0 else 1
-		)
+		var name: String = "merge_walk_%s" % ("merged" if merge > 0.0 else "never") if frame == 0 else ""
+		var now: PackedFloat32Array = await _render(eye, eye + MERGE_LOOK, -1, name, 10 if frame == 0 else 1)
 		if frame == 0:
 			first = now
 		else:
@@ -402,9 +325,7 @@ func _walk_across(distance: float) -> Array[PackedFloat32Array]:
 	var frames: int = WALK_FRAMES if full else QUICK_WALK_FRAMES
 	for frame: int in frames:
 		var z: float = edge + distance + (frames * 0.5 - frame) * STEP
-		var now: PackedFloat32Array = await _render(
-			Vector3(30.0, 1.7, z), Vector3(30.0, 1.0, z - 20.0), -1, "", 1
-		)
+		var now: PackedFloat32Array = await _render(Vector3(30.0, 1.7, z), Vector3(30.0, 1.0, z - 20.0), -1, "", 1)
 		var now_counts: PackedInt32Array = field.get_lod_counts()
 		if frame > 0:
 			var change: float = picture.largest_block_change(before, now)
@@ -419,16 +340,12 @@ func _walk_across(distance: float) -> Array[PackedFloat32Array]:
 
 ## The picture from [param eye] towards [param target] with [param force] (-1: automatic LOD),
 ## after [param updates] updates of a 60th of a second; saved to the artifacts as [param name].
-func _render(
-	eye: Vector3, target: Vector3, force: int, name: String, updates: int = 10
-) -> PackedFloat32Array:
+func _render(eye: Vector3, target: Vector3, force: int, name: String, updates: int = 10) -> PackedFloat32Array:
 	return picture.luminance(await _render_image(eye, target, force, name, updates))
 
 
 ## The picture of [method _render] as an image, at the window's size.
-func _render_image(
-	eye: Vector3, target: Vector3, force: int, name: String, updates: int = 10
-) -> Image:
+func _render_image(eye: Vector3, target: Vector3, force: int, name: String, updates: int = 10) -> Image:
 	camera.look_at_from_position(eye, target)
 	field.force_lod = force
 	for i: int in updates:  # a jump turns chunks active a budget's worth per update

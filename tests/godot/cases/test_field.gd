@@ -27,9 +27,7 @@ func after_each() -> void:
 func _map_cells() -> Dictionary:
 	# The demo map read independently of the addon: cells holding '*'.
 	var cells: Dictionary = {}
-	var lines: PackedStringArray = FileAccess.get_file_as_string("res://fields/demo.field").split(
-		"\n"
-	)
+	var lines: PackedStringArray = FileAccess.get_file_as_string("res://fields/demo.field").split("\n")
 	var row: int = -1
 	for line: String in lines:
 		if line.begins_with("#"):
@@ -78,9 +76,7 @@ func test_lod_counts_follow_the_observer() -> void:
 		var info: Dictionary = field.get_plant_info(i)
 		var d: float = (info["position"] + Vector3(0, 1.067, 0)).distance_to(observer.position)
 		if d < 9.5 or (d > 10.5 and d < 19.5):
-			check_eq(
-				info["lod"], 0 if d < 6.0 else 1 if d < 10.0 else 2, "plant %d at %.1f m" % [i, d]
-			)
+			check_eq(info["lod"], 0 if d < 6.0 else 1 if d < 10.0 else 2, "plant %d at %.1f m" % [i, d])
 
 
 ## Near plants at mesh 1 and 2 cast their shadows from mesh 3: their nodes cast none, and each has a
@@ -98,9 +94,7 @@ func test_near_plants_cast_shadows_from_mesh_3() -> void:
 		var twin: MultiMeshInstance3D = node.get_child(0, true) as MultiMeshInstance3D
 		if not check(twin != null, "%s has a shadow twin" % node.name):
 			continue
-		check_eq(
-			twin.cast_shadow, GeometryInstance3D.SHADOW_CASTING_SETTING_SHADOWS_ONLY, "shadows only"
-		)
+		check_eq(twin.cast_shadow, GeometryInstance3D.SHADOW_CASTING_SETTING_SHADOWS_ONLY, "shadows only")
 		check(twin.multimesh.mesh == last.multimesh.mesh, "%s's twin draws mesh 3" % node.name)
 		var drawn: RID = node.multimesh.get_rid()
 		var cast: RID = twin.multimesh.get_rid()
@@ -108,19 +102,14 @@ func test_near_plants_cast_shadows_from_mesh_3() -> void:
 		check(count > 0 or level == 1, "%s draws plants (%d)" % [node.name, count])
 		check_eq(RenderingServer.multimesh_get_visible_instances(cast), count, "the same plants")
 		check(
-			(
-				RenderingServer.multimesh_get_buffer(cast)
-				== RenderingServer.multimesh_get_buffer(drawn)
-			),
+			RenderingServer.multimesh_get_buffer(cast) == RenderingServer.multimesh_get_buffer(drawn),
 			"%s's twin has its instances" % node.name
 		)
 	field.cheap_shadows = false
 	field.advance(0.1)
 	for level: int in 3:
 		var node: MultiMeshInstance3D = _node("Mesh%d" % (level + 1))
-		check_eq(
-			node.cast_shadow, GeometryInstance3D.SHADOW_CASTING_SETTING_ON, "full: " + node.name
-		)
+		check_eq(node.cast_shadow, GeometryInstance3D.SHADOW_CASTING_SETTING_ON, "full: " + node.name)
 		check_eq(node.get_child_count(true), 0, "full: no twin under " + node.name)
 
 
@@ -134,11 +123,7 @@ func test_buffers_reach_the_rendering_server() -> void:
 	var count: int = simulation.get_bucket_instance_count(SunflowerSimulation.mesh_bucket(0, 0))
 	var whole: int = SunflowerSimulation.WHOLE_FLOATS_PER_INSTANCE
 	check(count > 100, "mesh-1 plants written: %d" % count)
-	check_eq(
-		simulation.get_bucket_instance_count(SunflowerSimulation.mesh_bucket(0, 2)),
-		0,
-		"no instances per part"
-	)
+	check_eq(simulation.get_bucket_instance_count(SunflowerSimulation.mesh_bucket(0, 2)), 0, "no instances per part")
 	check_eq(RenderingServer.multimesh_get_visible_instances(rid), count, "visible instances")
 	var buffer: PackedFloat32Array = RenderingServer.multimesh_get_buffer(rid)
 	check(buffer.size() >= count * whole, "buffer holds the instances")
@@ -153,28 +138,19 @@ func test_buffers_reach_the_rendering_server() -> void:
 			bottoms[_key(bottom.origin)] = bottom
 	check_eq(heads_by_origin.size(), count, "mesh-1 plants vs instances")
 	for k: int in count:
-		var origin: Vector3 = Vector3(
-			buffer[k * whole + 3], buffer[k * whole + 7], buffer[k * whole + 11]
-		)
+		var origin: Vector3 = Vector3(buffer[k * whole + 3], buffer[k * whole + 7], buffer[k * whole + 11])
 		var expected: Variant = bottoms.get(_key(origin))
 		if not check(expected != null, "instance %d at %s is no plant's root" % [k, origin]):
 			break
-		var up: Vector3 = Vector3(
-			buffer[k * whole + 1], buffer[k * whole + 5], buffer[k * whole + 9]
-		)
-		check_near(
-			up.length(), (expected as Transform3D).basis.y.length(), 1e-4, "size of instance %d" % k
-		)
+		var up: Vector3 = Vector3(buffer[k * whole + 1], buffer[k * whole + 5], buffer[k * whole + 9])
+		check_near(up.length(), (expected as Transform3D).basis.y.length(), 1e-4, "size of instance %d" % k)
 	# The renderer culls the bucket by the box of the plants it holds (and the node adds none of its
 	# own): every head lies in it, and it is smaller than the field's.
 	var box: AABB = RenderingServer.multimesh_get_aabb(rid)
 	check(heads.custom_aabb == AABB(), "the bucket's node has no box of its own")
 	for origin_key: Vector2i in heads_by_origin:
 		var origin: Vector3 = (heads_by_origin[origin_key] as Transform3D).origin
-		if not check(
-			box.grow(1e-3).has_point(origin),
-			"head at %s inside the bucket's box %s" % [origin, box]
-		):
+		if not check(box.grow(1e-3).has_point(origin), "head at %s inside the bucket's box %s" % [origin, box]):
 			break
 	var field_box: AABB = FarTileTable.new(NativeField.new(field.get_simulation())).aabb(0)
 	check(
@@ -195,12 +171,7 @@ func test_wind_moves_the_plants_and_calm_keeps_them_upright() -> void:
 	var after: Array = field.get_plant_info(plant)["parts"]
 	for part: int in 3:
 		check(after[part].is_equal_approx(before[part]), "calm: part %d moved" % part)
-		check_near(
-			(after[part] as Transform3D).basis.y.normalized().y,
-			1.0,
-			1e-5,
-			"calm: part %d upright" % part
-		)
+		check_near((after[part] as Transform3D).basis.y.normalized().y, 1.0, 1e-5, "calm: part %d upright" % part)
 	field.wind_power = 4.0
 	field.wind_direction = Vector2(0.0, 1.0)
 	for i: int in 40:
@@ -255,9 +226,7 @@ func test_merged_far_tiles_draw_each_place_once_across_levels() -> void:
 	for tile: int in simulation.get_tile_count():
 		levels[FarTileTable.new(NativeField.new(simulation)).level(tile)] = true
 	check_eq(levels.keys(), [0, 1, 2], "three tile levels")
-	var path: Array[Vector3] = [
-		Vector3(10, 1.7, 7), Vector3(-25, 1.7, 7), Vector3(-30, 20, -30), Vector3(-70, 10, 7)
-	]
+	var path: Array[Vector3] = [Vector3(10, 1.7, 7), Vector3(-25, 1.7, 7), Vector3(-30, 20, -30), Vector3(-70, 10, 7)]
 	var counted: Vector2i = _check_drawn_once_along(path)
 	check(counted.y > 0, "merged tiles left plants out along the path")
 	check(faded > 0, "plants the next level leaves out were fading along the path")
@@ -296,15 +265,9 @@ func _check_drawn_once_along(path: Array[Vector3]) -> Vector2i:
 		for node: MultiMeshInstance3D in _field_nodes():
 			var rid: RID = node.multimesh.get_rid()
 			var visible: int = RenderingServer.multimesh_get_visible_instances(rid)
-			var instances: int = (
-				visible if visible >= 0 else RenderingServer.multimesh_get_instance_count(rid)
-			)
+			var instances: int = visible if visible >= 0 else RenderingServer.multimesh_get_instance_count(rid)
 			var tile: bool = node.name.begins_with("FarTile")
-			var shown: bool = (
-				node.visible
-				and _in_visibility_range(node, stop)
-				and not _hidden_by_parent(node, stop)
-			)
+			var shown: bool = node.visible and _in_visibility_range(node, stop) and not _hidden_by_parent(node, stop)
 			if instances == 0 or not (shown or tile):
 				continue
 			if node.name.contains("Middle") or node.name.contains("Head"):
@@ -321,9 +284,7 @@ func _check_drawn_once_along(path: Array[Vector3]) -> Vector2i:
 			)
 			# A tile skips the plants of the chunks its material's mask marks (the near buckets draw them).
 			var mask: PackedByteArray = _mask_of(node) if tile else PackedByteArray()
-			var merge: Vector4 = (
-				node.get_instance_shader_parameter(&"tile_merge") if tile else Vector4()
-			)
+			var merge: Vector4 = node.get_instance_shader_parameter(&"tile_merge") if tile else Vector4()
 			if tile:
 				var expected: Vector4 = FarTileTable.new(NativeField.new(simulation)).merge(
 					tile_of_node[str(node.name)]
@@ -360,16 +321,12 @@ func _check_drawn_once_along(path: Array[Vector3]) -> Vector2i:
 					drawn[index] += 1
 					shares[index] += share
 					fading[index] += 1 if not tile and share < 1.0 else 0
-		check_eq(
-			below, 0, "from %s no drawn tile holds a plant given to a level below its own" % stop
-		)
+		check_eq(below, 0, "from %s no drawn tile holds a plant given to a level below its own" % stop)
 		var wrong: int = 0
 		var crossfading: int = 0
 		for i: int in drawn.size():
 			var once: bool = drawn[i] == 1 and is_equal_approx(shares[i], 1.0)
-			var complementary: bool = (
-				drawn[i] == 2 and fading[i] == 2 and absf(shares[i] - 1.0) < 1e-4
-			)
+			var complementary: bool = drawn[i] == 2 and fading[i] == 2 and absf(shares[i] - 1.0) < 1e-4
 			crossfading += 1 if complementary else 0
 			var position: Vector3 = field.get_plant_info(i)["position"]
 			var level: int = int(simulation.choose_tile_level(stop.distance_to(position)).x)
@@ -379,13 +336,7 @@ func _check_drawn_once_along(path: Array[Vector3]) -> Vector2i:
 			if not once and not complementary:
 				wrong += 1
 				if wrong <= 3:
-					check(
-						false,
-						(
-							"from %s plant %d is drawn %d times, shares %.4f"
-							% [stop, i, drawn[i], shares[i]]
-						)
-					)
+					check(false, "from %s plant %d is drawn %d times, shares %.4f" % [stop, i, drawn[i], shares[i]])
 		check_eq(wrong, 0, "from %s plants not drawn once (or twice complementarily)" % stop)
 		crossfades += crossfading
 		check_eq(_sum(field.get_lod_counts()), field.get_plant_count(), "LOD counts from %s" % stop)
@@ -420,11 +371,7 @@ func test_a_bad_map_keeps_the_field_and_reports_file_line_column() -> void:
 	check_eq(field.load_map_file(path), OK, "a good map loads")
 	check_eq(field.get_plant_count(), 5, "the new field")
 	# The check before the build only parses; its figures are the built field's.
-	check_eq(
-		[field.map.columns, field.map.rows, field.map.plant_count],
-		[3, 2, 5],
-		"the checked map's size and plants"
-	)
+	check_eq([field.map.columns, field.map.rows, field.map.plant_count], [3, 2, 5], "the checked map's size and plants")
 
 
 # --- helpers ---
@@ -443,11 +390,7 @@ func _mask_of(node: MultiMeshInstance3D) -> PackedByteArray:
 	var material: ShaderMaterial = node.multimesh.mesh.surface_get_material(0) as ShaderMaterial
 	var texture: Texture2D = material.get_shader_parameter("active_chunks")
 	var bytes: PackedByteArray = texture.get_image().get_data() if texture else PackedByteArray()
-	check_eq(
-		bytes,
-		field.get_simulation().get_active_mask(0),
-		"%s's mask is the simulation's" % node.name
-	)
+	check_eq(bytes, field.get_simulation().get_active_mask(0), "%s's mask is the simulation's" % node.name)
 	return bytes
 
 
@@ -493,8 +436,7 @@ func _hidden_by_parent(node: GeometryInstance3D, camera: Vector3) -> bool:
 	var parent: GeometryInstance3D = _visibility_parent_of(node)
 	while parent and parent.visible:
 		if not (
-			parent.visibility_range_begin > 0.0
-			and _distance_to_box(parent, camera) < parent.visibility_range_begin
+			parent.visibility_range_begin > 0.0 and _distance_to_box(parent, camera) < parent.visibility_range_begin
 		):
 			return true
 		parent = _visibility_parent_of(parent)
@@ -540,9 +482,7 @@ func test_legend_symbols_place_scenes_and_unknown_symbols_fail() -> void:
 		if child.name.begins_with("Stone"):
 			stones.append((child as Node3D).position)
 	check_eq(stones.size(), 2, "two stones placed")
-	check(
-		stones.has(Vector3(0.75, 0.0, 0.25)), "a stone at the centre of cell (1, 0): %s" % [stones]
-	)
+	check(stones.has(Vector3(0.75, 0.0, 0.25)), "a stone at the centre of cell (1, 0): %s" % [stones])
 	field.legend = {}
 	allow_error("legend.field:2:2: unexpected 'S'")
 	check_eq(field.load_map_file(path), ERR_PARSE_ERROR, "without the legend 'S' is an error")
@@ -555,9 +495,7 @@ func test_an_imported_map_uses_any_symbol_its_fields_legend_defines() -> void:
 	var imported: SunflowerFieldMap = load("res://maps/stones.field") as SunflowerFieldMap
 	if not check(imported != null, "the map with S and r imported without any import option"):
 		return
-	check_eq(
-		[imported.columns, imported.rows, imported.plant_count], [6, 3, 14], "the import counted it"
-	)
+	check_eq([imported.columns, imported.rows, imported.plant_count], [6, 3, 14], "the import counted it")
 	var stone: Node3D = Node3D.new()
 	stone.name = "Stone"
 	var packed: PackedScene = PackedScene.new()
@@ -581,8 +519,7 @@ func test_an_imported_map_uses_any_symbol_its_fields_legend_defines() -> void:
 	check_eq(messages.size(), 1, "map_error emitted once")
 	var warnings: String = " ".join(field._get_configuration_warnings())
 	check(
-		warnings.contains("res://maps/stones.field:3:2: unexpected 'S'"),
-		"the warning names the place: %s" % warnings
+		warnings.contains("res://maps/stones.field:3:2: unexpected 'S'"), "the warning names the place: %s" % warnings
 	)
 
 
@@ -597,15 +534,10 @@ func test_part_meshes_can_be_swapped_at_run_time() -> void:
 	check(field.get_part_mesh(0, SunflowerField.Part.HEAD) == box, "get_part_mesh returns it")
 	var sphere: SphereMesh = SphereMesh.new()
 	field.set_part_mesh(0, SunflowerField.Part.HEAD, sphere)  # drawn as before: swapped in place
-	check(
-		_node("Mesh1Head").multimesh.mesh == sphere, "the head multimesh draws the other new mesh"
-	)
+	check(_node("Mesh1Head").multimesh.mesh == sphere, "the head multimesh draws the other new mesh")
 	field.set("part_meshes/mesh_1/head", null)
 	field.finish_build()
-	check(
-		_node("Mesh1").multimesh.mesh.get_surface_count() == 1,
-		"null restores the default, drawn whole"
-	)
+	check(_node("Mesh1").multimesh.mesh.get_surface_count() == 1, "null restores the default, drawn whole")
 	allow_error("out of range")
 	field.set_part_mesh(3, 0, box)
 	for level: int in 3:
@@ -616,6 +548,4 @@ func test_part_meshes_can_be_swapped_at_run_time() -> void:
 			)
 	allow_error("is not a Mesh")
 	field.set("part_meshes/mesh_2/bottom", Texture2D.new())
-	check(
-		field.get_part_mesh(1, 0) is ArrayMesh, "a non-mesh resource falls back to the default part"
-	)
+	check(field.get_part_mesh(1, 0) is ArrayMesh, "a non-mesh resource falls back to the default part")

@@ -42,9 +42,7 @@ func _hills_image() -> Image:
 	var hills: Image = Image.create(SIDE, SIDE, false, Image.FORMAT_RF)
 	for z: int in SIDE:
 		for x: int in SIDE:
-			var value: float = (
-				0.5 + 0.3 * sin(x * 0.16) * cos(z * 0.13) + 0.15 * sin(0.07 * (x + 2 * z))
-			)
+			var value: float = 0.5 + 0.3 * sin(x * 0.16) * cos(z * 0.13) + 0.15 * sin(0.07 * (x + 2 * z))
 			hills.set_pixel(x, z, Color(value, 0.0, 0.0))
 	return hills
 
@@ -64,10 +62,7 @@ func _terrain_body(heights: Image) -> StaticBody3D:
 func _map(text_rows: PackedStringArray) -> SunflowerFieldMap:
 	var field_map: SunflowerFieldMap = SunflowerFieldMap.new()
 	field_map.source_path = "user://ground_%d.field" % text_rows.size()
-	field_map.text = (
-		("%d %d\n" % [text_rows[0].length(), text_rows.size()] + "\n".join(text_rows))
-		. to_utf8_buffer()
-	)
+	field_map.text = (("%d %d\n" % [text_rows[0].length(), text_rows.size()] + "\n".join(text_rows)).to_utf8_buffer())
 	return field_map
 
 
@@ -89,9 +84,7 @@ func _field(source: SunflowerField.GroundSource, at: Vector3 = Vector3.ZERO) -> 
 	field.height_range = Vector2(LOW, HIGH) + Vector2(TERRAIN_AT.y - at.y, TERRAIN_AT.y - at.y)
 	# The terrain's heights in the field's space: the shape's lattice is centred on its body.
 	var half: float = (SIDE - 1) * 0.5
-	field.height_map_rect = Rect2(
-		TERRAIN_AT.x - half - at.x, TERRAIN_AT.z - half - at.z, SIDE - 1.0, SIDE - 1.0
-	)
+	field.height_map_rect = Rect2(TERRAIN_AT.x - half - at.x, TERRAIN_AT.z - half - at.z, SIDE - 1.0, SIDE - 1.0)
 	field.map = _full_map()
 	tree.root.add_child(field)
 	fields.append(field)
@@ -129,10 +122,7 @@ func test_plants_stand_on_a_hilly_collider_and_on_its_height_map_alike() -> void
 	for i: int in plants:
 		var ray_root: Vector3 = on_colliders.get_plant_info(i).position
 		var map_root: Vector3 = on_image.get_plant_info(i).position
-		check(
-			Vector2(ray_root.x, ray_root.z).is_equal_approx(Vector2(map_root.x, map_root.z)),
-			"the same plants"
-		)
+		check(Vector2(ray_root.x, ray_root.z).is_equal_approx(Vector2(map_root.x, map_root.z)), "the same plants")
 		worst_pair = maxf(worst_pair, absf(ray_root.y - map_root.y))
 		worst_image = maxf(worst_image, absf(map_root.y - _image_height(map_root.x, map_root.z)))
 		lowest = minf(lowest, map_root.y)
@@ -143,23 +133,12 @@ func test_plants_stand_on_a_hilly_collider_and_on_its_height_map_alike() -> void
 			% [worst_pair, worst_image]
 		)
 	)
-	check(
-		worst_pair <= 0.02,
-		"every plant's root on the two grounds within 2 cm (worst %.4f m)" % worst_pair
-	)
-	check(
-		worst_image <= 0.001, "the height map is the image, bilinear (worst %.5f m)" % worst_image
-	)
-	check(
-		highest - lowest > 2.0,
-		"the ground is hilly (%.2f m from lowest to highest root)" % (highest - lowest)
-	)
+	check(worst_pair <= 0.02, "every plant's root on the two grounds within 2 cm (worst %.4f m)" % worst_pair)
+	check(worst_image <= 0.001, "the height map is the image, bilinear (worst %.5f m)" % worst_image)
+	check(highest - lowest > 2.0, "the ground is hilly (%.2f m from lowest to highest root)" % (highest - lowest))
 	# The parts stand on the root; the stone stands on the ground at its cell's centre.
 	var info: Dictionary = on_colliders.get_plant_info(123)
-	check(
-		(info.parts[0] as Transform3D).origin.is_equal_approx(info.position),
-		"the bottom part starts at the root"
-	)
+	check((info.parts[0] as Transform3D).origin.is_equal_approx(info.position), "the bottom part starts at the root")
 	for field: SunflowerField in [on_colliders, on_image]:
 		var stones: Array[Node] = field.get_children(true).filter(
 			func(n: Node) -> bool: return n.name.begins_with("Stone")
@@ -174,9 +153,7 @@ func test_plants_stand_on_a_hilly_collider_and_on_its_height_map_alike() -> void
 
 
 func test_the_field_moves_with_its_node_and_the_ground_stays_where_it_is() -> void:
-	var moved: SunflowerField = _field(
-		SunflowerField.GroundSource.COLLIDERS, Vector3(-3.0, 1.5, 2.0)
-	)
+	var moved: SunflowerField = _field(SunflowerField.GroundSource.COLLIDERS, Vector3(-3.0, 1.5, 2.0))
 	await frames_until(func() -> bool: return not moved.is_building(), 300)
 	check_eq(moved.get_plant_count(), COLUMNS * COLUMNS - 1)
 	var worst: float = 0.0
@@ -207,9 +184,7 @@ func test_holes_and_ground_that_ends_get_no_plants_and_are_counted() -> void:
 			check(false, "no plant within the cells around the hole's pixels: %s" % root)
 			break
 	# Colliders that end: the field reaches 5 m past the terrain's edge.
-	var past_edge: SunflowerField = _field(
-		SunflowerField.GroundSource.COLLIDERS, Vector3(15.0, 0.0, 0.0)
-	)
+	var past_edge: SunflowerField = _field(SunflowerField.GroundSource.COLLIDERS, Vector3(15.0, 0.0, 0.0))
 	await frames_until(func() -> bool: return not past_edge.is_building(), 300)
 	var expected_missing: int = 0
 	for i: int in past_edge.get_simulation().get_ground_points().size() / 2 - 1:
@@ -217,11 +192,7 @@ func test_holes_and_ground_that_ends_get_no_plants_and_are_counted() -> void:
 		if x > TERRAIN_AT.x + (SIDE - 1) * 0.5:
 			expected_missing += 1
 	check(expected_missing > 0)
-	check_eq(
-		past_edge.get_build_stats().cells_without_ground,
-		expected_missing,
-		"the cells past the terrain"
-	)
+	check_eq(past_edge.get_build_stats().cells_without_ground, expected_missing, "the cells past the terrain")
 	check_eq(past_edge.get_plant_count(), COLUMNS * COLUMNS - 1 - expected_missing)
 	# The holed image's stone stood in the hole: it is left out, with a warning.
 	check(warned("1 of 1 objects have no ground under them"), "the stone over the hole is reported")
@@ -235,10 +206,7 @@ func test_a_height_map_without_an_image_is_a_clear_error_and_the_field_stays() -
 	field.height_map = null
 	field.finish_build()
 	check_eq(field.get_plant_count(), plants, "the previous field stays")
-	check(
-		" ".join(field._get_configuration_warnings()).contains("height_map"),
-		"the warning names the property"
-	)
+	check(" ".join(field._get_configuration_warnings()).contains("height_map"), "the warning names the property")
 
 
 func test_collider_rays_keep_frames_within_the_build_budget() -> void:
@@ -252,11 +220,7 @@ func test_collider_rays_keep_frames_within_the_build_budget() -> void:
 	var waited: int = await frames_until(func() -> bool: return not field.is_building(), 2000)
 	check(waited < 2000, "a 200 × 200 map on colliders builds")
 	check_eq(field.get_simulation().get_map_columns(), 200)
-	check_eq(
-		field.get_plant_count() + field.get_build_stats().cells_without_ground,
-		40000,
-		"every cell asked"
-	)
+	check_eq(field.get_plant_count() + field.get_build_stats().cells_without_ground, 40000, "every cell asked")
 	var stats: Dictionary = field.get_build_stats()
 	print(
 		(
@@ -276,9 +240,7 @@ func test_the_painters_brush_sits_on_the_height_map() -> void:
 	tree.root.add_child(camera)
 	camera.look_at_from_position(Vector3(4.0, 25.0, 30.0), Vector3(10.0, 0.0, 10.0))
 	var worst: float = 0.0
-	for target: Vector3 in [
-		Vector3(5.0, 0.0, 5.0), Vector3(12.0, 0.0, 8.0), Vector3(17.0, 0.0, 14.0)
-	]:
+	for target: Vector3 in [Vector3(5.0, 0.0, 5.0), Vector3(12.0, 0.0, 8.0), Vector3(17.0, 0.0, 14.0)]:
 		target.y = _image_height(target.x, target.z)
 		var hit: Variant = painter.ground_point(camera, camera.unproject_position(target))
 		if not check(hit != null, "the brush finds the ground under %s" % target):

@@ -36,9 +36,7 @@ func _field(plant: FieldPlant = null) -> SunflowerField:
 ## rebuild that is due is done.
 func _drawn_mesh(field: SunflowerField, level: int, part: int) -> Mesh:
 	field.finish_build()
-	var node: MultiMeshInstance3D = _child_named(
-		field, "Mesh%d%s" % [level + 1, ["Bottom", "Middle", "Head"][part]]
-	)
+	var node: MultiMeshInstance3D = _child_named(field, "Mesh%d%s" % [level + 1, ["Bottom", "Middle", "Head"][part]])
 	return node.multimesh.mesh if node else null
 
 
@@ -73,31 +71,16 @@ func test_the_built_in_sunflower_is_the_default_and_stays_shared_unchanged() -> 
 	var second: SunflowerField = _field()
 	check(first.plant == null, "no plant set: the built-in one is grown")
 	check(default_plant.drawn_whole(), "the sunflower is drawn whole")
-	check(
-		_whole_mesh(first, 0) == default_plant.whole_mesh(0),
-		"the sunflower's parts are drawn, merged"
-	)
+	check(_whole_mesh(first, 0) == default_plant.whole_mesh(0), "the sunflower's parts are drawn, merged")
 	check(first.impostor_views == default_plant.impostor_views, "and its impostor textures")
 	var box: BoxMesh = BoxMesh.new()
 	first.set_part_mesh(0, 2, box)
-	check(
-		first.plant != null and first.plant != default_plant,
-		"set_part_mesh gives the field its own plant"
-	)
-	check(
-		_drawn_mesh(first, 0, 2) == box,
-		"the new head is drawn (part by part: a box cannot be merged)"
-	)
-	check(
-		_drawn_mesh(first, 0, 1) == default_plant.get_part_mesh(0, 1),
-		"with the sunflower's other parts"
-	)
+	check(first.plant != null and first.plant != default_plant, "set_part_mesh gives the field its own plant")
+	check(_drawn_mesh(first, 0, 2) == box, "the new head is drawn (part by part: a box cannot be merged)")
+	check(_drawn_mesh(first, 0, 1) == default_plant.get_part_mesh(0, 1), "with the sunflower's other parts")
 	check(default_plant.get_part_mesh(0, 2) != box, "the built-in plant is unchanged")
 	check(_whole_mesh(second, 0) == default_plant.whole_mesh(0), "another field is unchanged")
-	check(
-		first.get_part_mesh(0, 1) == default_plant.get_part_mesh(0, 1),
-		"the other parts stay the sunflower's"
-	)
+	check(first.get_part_mesh(0, 1) == default_plant.get_part_mesh(0, 1), "the other parts stay the sunflower's")
 	first.set_part_mesh(0, 2, null)
 	check(_whole_mesh(first, 0) != null, "null restores the default part, drawn whole again")
 	# Scenes saved before plant types named part meshes "part_meshes/mesh_N/part".
@@ -120,16 +103,9 @@ func test_a_plants_form_and_height_shape_the_plants_drawn() -> void:
 	field.advance(1.0)  # the natural wind eases out over half a second
 	var parts: Array = field.get_plant_info(10)["parts"]
 	var root: Vector3 = field.get_plant_info(10)["position"]
-	check_near(
-		(parts[1] as Transform3D).origin.y - root.y, 4.0, 0.01, "the middle starts 2 units (4 m) up"
-	)
-	check_near(
-		(parts[2] as Transform3D).origin.y - root.y, 5.0, 0.01, "the head 0.5 units (1 m) above it"
-	)
-	check(
-		(parts[0] as Transform3D).basis.z.is_equal_approx(Vector3(0, 0, 2)),
-		"no yaw with a zero yaw range"
-	)
+	check_near((parts[1] as Transform3D).origin.y - root.y, 4.0, 0.01, "the middle starts 2 units (4 m) up")
+	check_near((parts[2] as Transform3D).origin.y - root.y, 5.0, 0.01, "the head 0.5 units (1 m) above it")
+	check((parts[0] as Transform3D).basis.z.is_equal_approx(Vector3(0, 0, 2)), "no yaw with a zero yaw range")
 	# Without meshes of its own, the plant is drawn with the sunflower's parts and impostors; with
 	# its own level-1 parts but no textures (not baked yet), its impostors are untextured, and it says so.
 	check(_whole_mesh(field, 0) == plant.whole_mesh(0), "drawn whole")
@@ -160,10 +136,7 @@ func test_a_plants_variety_spreads_sizes_and_yaws_within_its_ranges() -> void:
 		smallest = minf(smallest, size)
 		largest = maxf(largest, size)
 		widest = maxf(widest, absf(atan2(bottom.basis.z.x, bottom.basis.z.z)))
-	check(
-		smallest >= 0.6 - 1e-4 and largest <= 1.4 + 1e-4,
-		"sizes within 0.6–1.4 (%.3f–%.3f)" % [smallest, largest]
-	)
+	check(smallest >= 0.6 - 1e-4 and largest <= 1.4 + 1e-4, "sizes within 0.6–1.4 (%.3f–%.3f)" % [smallest, largest])
 	check(largest - smallest > 0.7, "and spread over the range")
 	check(widest <= PI / 2.0 + 1e-4 and widest > 1.3, "yaws within ±90° (widest %.2f rad)" % widest)
 	# Colour variety: the near buckets' instance colours (after the transform) vary by the range.
@@ -171,28 +144,18 @@ func test_a_plants_variety_spreads_sizes_and_yaws_within_its_ranges() -> void:
 	var stride: int = SunflowerSimulation.WHOLE_FLOATS_PER_INSTANCE
 	var white: bool = true
 	for k: int in mini(RenderingServer.multimesh_get_buffer(heads.get_rid()).size() / stride, 50):
-		white = (
-			white and RenderingServer.multimesh_get_buffer(heads.get_rid())[k * stride + 12] == 1.0
-		)
+		white = (white and RenderingServer.multimesh_get_buffer(heads.get_rid())[k * stride + 12] == 1.0)
 	check(white, "no colour variety: white instances")
 	plant.brightness_variation = 0.3
 	await frames(1)
 	field.finish_build()
 	field.advance(0.1)
-	var buffer: PackedFloat32Array = RenderingServer.multimesh_get_buffer(
-		_heads_node(field).multimesh.get_rid()
-	)
+	var buffer: PackedFloat32Array = RenderingServer.multimesh_get_buffer(_heads_node(field).multimesh.get_rid())
 	var greens: Array[float] = []
 	for k: int in mini(buffer.size() / stride, 200):
 		greens.append(buffer[k * stride + 13])
-	check(
-		not greens.is_empty() and greens.min() >= 0.7 - 1e-4 and greens.max() <= 1.3 + 1e-4,
-		"brightness within ±0.3"
-	)
-	check(
-		not greens.is_empty() and greens.max() - greens.min() > 0.3,
-		"and spread (%s)" % [greens.slice(0, 5)]
-	)
+	check(not greens.is_empty() and greens.min() >= 0.7 - 1e-4 and greens.max() <= 1.3 + 1e-4, "brightness within ±0.3")
+	check(not greens.is_empty() and greens.max() - greens.min() > 0.3, "and spread (%s)" % [greens.slice(0, 5)])
 	take_warnings()
 
 
@@ -228,43 +191,23 @@ func test_changing_a_shared_plant_rebuilds_every_field_that_grows_it() -> void:
 	first.finish_build()
 	second.finish_build()
 	for field: SunflowerField in [first, second]:
-		check_near(
-			field.get_simulation().get_chunk_aabb(0).end.y,
-			before * 2.0,
-			0.05,
-			"chunk bounds follow the height"
-		)
+		check_near(field.get_simulation().get_chunk_aabb(0).end.y, before * 2.0, 0.05, "chunk bounds follow the height")
 	# Drawn whole: a part that merges as well is swapped into both fields' merged meshes in place.
 	var other_bottom: Mesh = FieldPlant.default_plant().get_part_mesh(1, 0)
 	plant.set_part_mesh(2, 0, other_bottom)
-	check(
-		not first.is_building() and not second.is_building(),
-		"a mesh change drawn the same way needs no rebuild"
-	)
+	check(not first.is_building() and not second.is_building(), "a mesh change drawn the same way needs no rebuild")
 	var merged: Mesh = plant.whole_mesh(2)
-	check(
-		_whole_mesh(first, 2) == merged and _whole_mesh(second, 2) == merged,
-		"a mesh change shows in both"
-	)
-	check(
-		merged.get_faces().size() > FieldPlant.default_plant().whole_mesh(2).get_faces().size(),
-		"with the new part"
-	)
+	check(_whole_mesh(first, 2) == merged and _whole_mesh(second, 2) == merged, "a mesh change shows in both")
+	check(merged.get_faces().size() > FieldPlant.default_plant().whole_mesh(2).get_faces().size(), "with the new part")
 	# Part by part (a box cannot be merged: both rebuild once), then a mesh change swaps in place.
 	var box: BoxMesh = BoxMesh.new()
 	plant.set_part_mesh(2, 0, box)
 	check(first.is_building(), "changing how the plant is drawn rebuilds the field")
-	check(
-		_drawn_mesh(first, 2, 0) == box and _drawn_mesh(second, 2, 0) == box,
-		"a mesh change shows in both"
-	)
+	check(_drawn_mesh(first, 2, 0) == box and _drawn_mesh(second, 2, 0) == box, "a mesh change shows in both")
 	var sphere: SphereMesh = SphereMesh.new()
 	plant.set_part_mesh(2, 1, sphere)
 	check(not first.is_building(), "a mesh change drawn the same way needs no rebuild")
-	check(
-		_drawn_mesh(first, 2, 1) == sphere and _drawn_mesh(second, 2, 1) == sphere,
-		"and shows in both"
-	)
+	check(_drawn_mesh(first, 2, 1) == sphere and _drawn_mesh(second, 2, 1) == sphere, "and shows in both")
 	take_warnings()
 
 
@@ -277,30 +220,21 @@ func test_the_impostor_quad_covers_only_what_its_views_show() -> void:
 	)
 	check_eq(bounds.size(), 2, "a rectangle per view")
 	check(
-		bounds[0].is_equal_approx(Vector4(2.0, 4.0, 6.0, 16.0) / 16.0),
-		"the drawn pixels' rectangle (%s)" % bounds[0]
+		bounds[0].is_equal_approx(Vector4(2.0, 4.0, 6.0, 16.0) / 16.0), "the drawn pixels' rectangle (%s)" % bounds[0]
 	)
 	check(bounds[1].z <= bounds[1].x, "an empty view has an empty rectangle (%s)" % bounds[1])
-	check(
-		ImpostorSetScript.view_bounds(null, Vector2i(2, 1)).is_empty(), "no texture: no rectangles"
-	)
+	check(ImpostorSetScript.view_bounds(null, Vector2i(2, 1)).is_empty(), "no texture: no rectangles")
 	# The built-in sunflower's views fill about a quarter of their squares: its impostors' quads are
 	# cut to that, for the near buckets' material and the far tiles' alike.
 	var field: SunflowerField = _field()
-	for name: String in [
-		"Impostors", "FarTile%d" % FarTileTable.new(NativeField.new(field.get_simulation())).key(0)
-	]:
+	for name: String in ["Impostors", "FarTile%d" % FarTileTable.new(NativeField.new(field.get_simulation())).key(0)]:
 		var node: MultiMeshInstance3D = _child_named(field, name)
 		var material: ShaderMaterial = node.multimesh.mesh.surface_get_material(0) as ShaderMaterial
 		var drawn: PackedVector4Array = material.get_shader_parameter("view_bounds")
 		var area: float = 0.0
 		for view: Vector4 in drawn:
 			area += (view.z - view.x) * (view.w - view.y) / drawn.size()
-		check_eq(
-			drawn.size(),
-			FieldPlant.ATLAS_VIEWS.x * FieldPlant.ATLAS_VIEWS.y,
-			"%s: a rectangle per view" % name
-		)
+		check_eq(drawn.size(), FieldPlant.ATLAS_VIEWS.x * FieldPlant.ATLAS_VIEWS.y, "%s: a rectangle per view" % name)
 		check(area > 0.1 and area < 0.4, "%s: the views fill %.2f of their squares" % [name, area])
 
 
@@ -312,59 +246,36 @@ func test_an_atlas_is_read_with_the_rows_it_was_baked_with() -> void:
 	var oldest: ImageTexture = ImageTexture.create_from_image(
 		Image.create(columns * 8, 4 * 8, false, Image.FORMAT_RGBA8)
 	)
-	var old: ImageTexture = ImageTexture.create_from_image(
-		Image.create(columns * 8, 7 * 8, false, Image.FORMAT_RGBA8)
-	)
+	var old: ImageTexture = ImageTexture.create_from_image(Image.create(columns * 8, 7 * 8, false, Image.FORMAT_RGBA8))
 	var now: ImageTexture = ImageTexture.create_from_image(
 		Image.create(columns * 8, FieldPlant.ATLAS_VIEWS.y * 8, false, Image.FORMAT_RGBA8)
 	)
-	check_eq(
-		FieldPlant.ATLAS_VIEWS, Vector2i(12, 10), "the baker's views: 12 around, 10 elevations"
-	)
+	check_eq(FieldPlant.ATLAS_VIEWS, Vector2i(12, 10), "the baker's views: 12 around, 10 elevations")
 	check_eq(ImpostorSetScript.atlas_layout(oldest), Vector2i(columns, 4), "a 4-row atlas")
 	check_eq(ImpostorSetScript.atlas_layout(old), Vector2i(columns, 7), "a 7-row atlas")
 	check_eq(ImpostorSetScript.atlas_layout(now), FieldPlant.ATLAS_VIEWS, "a 10-row atlas")
-	check_eq(
-		ImpostorSetScript.atlas_layout(null), FieldPlant.ATLAS_VIEWS, "no atlas: the baker's layout"
-	)
+	check_eq(ImpostorSetScript.atlas_layout(null), FieldPlant.ATLAS_VIEWS, "no atlas: the baker's layout")
 	var impostors: RefCounted = ImpostorSetScript.new()
 	for texture: ImageTexture in [oldest, old, now]:
 		impostors.set_texture("views", texture)
 		var rows: int = texture.get_height() / 8
 		for material: ShaderMaterial in [impostors.material, impostors.tile_material]:
-			check_eq(
-				material.get_shader_parameter("atlas_views"),
-				Vector2i(columns, rows),
-				"%d rows drawn" % rows
-			)
-			check_eq(
-				material.get_shader_parameter("view_bounds").size(),
-				columns * rows,
-				"a rectangle per view"
-			)
+			check_eq(material.get_shader_parameter("atlas_views"), Vector2i(columns, rows), "%d rows drawn" % rows)
+			check_eq(material.get_shader_parameter("view_bounds").size(), columns * rows, "a rectangle per view")
 	# An atlas of another shape is named as such (and warned of when drawn).
 	check_eq(ImpostorSetScript.atlas_problem(oldest), "", "a 4-row atlas is one the baker made")
 	check_eq(ImpostorSetScript.atlas_problem(old), "", "a 7-row atlas is one the baker made")
 	check_eq(ImpostorSetScript.atlas_problem(now), "", "a 10-row atlas is one the baker made")
 	for size: Vector2i in [
-		Vector2i(columns * 8 + 3, 32),
-		Vector2i(columns * 8, 30),
-		Vector2i(columns * 8, 8),
-		Vector2i(512, 512)
+		Vector2i(columns * 8 + 3, 32), Vector2i(columns * 8, 30), Vector2i(columns * 8, 8), Vector2i(512, 512)
 	]:
-		var odd: ImageTexture = ImageTexture.create_from_image(
-			Image.create(size.x, size.y, false, Image.FORMAT_RGBA8)
-		)
+		var odd: ImageTexture = ImageTexture.create_from_image(Image.create(size.x, size.y, false, Image.FORMAT_RGBA8))
 		var problem: String = ImpostorSetScript.atlas_problem(odd)
-		check(
-			not problem.is_empty(), "a %d × %d atlas is not one the baker makes" % [size.x, size.y]
-		)
+		check(not problem.is_empty(), "a %d × %d atlas is not one the baker makes" % [size.x, size.y])
 		print("     %d × %d: %s" % [size.x, size.y, problem])
 	# The shipped sunflower is baked with the baker's layout.
 	check_eq(
-		ImpostorSetScript.atlas_problem(FieldPlant.default_plant().impostor_views),
-		"",
-		"the built-in atlas' shape"
+		ImpostorSetScript.atlas_problem(FieldPlant.default_plant().impostor_views), "", "the built-in atlas' shape"
 	)
 	check_eq(
 		ImpostorSetScript.atlas_layout(FieldPlant.default_plant().impostor_views),
@@ -374,9 +285,7 @@ func test_an_atlas_is_read_with_the_rows_it_was_baked_with() -> void:
 
 
 func test_plain_standard_materials_are_taken_over_and_others_kept() -> void:
-	var texture: ImageTexture = ImageTexture.create_from_image(
-		Image.create(4, 4, false, Image.FORMAT_RGBA8)
-	)
+	var texture: ImageTexture = ImageTexture.create_from_image(Image.create(4, 4, false, Image.FORMAT_RGBA8))
 	var leaf: StandardMaterial3D = StandardMaterial3D.new()
 	leaf.albedo_color = Color(0.2, 0.6, 0.1)
 	leaf.albedo_texture = texture
@@ -395,10 +304,7 @@ func test_plain_standard_materials_are_taken_over_and_others_kept() -> void:
 	leaf.metallic_texture_channel = BaseMaterial3D.TEXTURE_CHANNEL_BLUE
 	var taken: ShaderMaterial = PlantMaterialScript.adopt(leaf, false)
 	if check(taken != null, "a plain textured, scissored StandardMaterial3D is taken over"):
-		check(
-			taken.shader == preload("res://addons/sunflower_field/shaders/plant_parts.gdshader"),
-			"plant shader"
-		)
+		check(taken.shader == preload("res://addons/sunflower_field/shaders/plant_parts.gdshader"), "plant shader")
 		check_eq(taken.get_shader_parameter("albedo_colour"), leaf.albedo_color, "albedo colour")
 		check_eq(taken.get_shader_parameter("albedo_texture"), texture, "albedo texture")
 		check_eq(taken.get_shader_parameter("use_albedo_texture"), true, "the texture is used")
@@ -410,24 +316,10 @@ func test_plain_standard_materials_are_taken_over_and_others_kept() -> void:
 		check_eq(taken.get_shader_parameter("use_normal_texture"), true, "the normal map is used")
 		check_eq(taken.get_shader_parameter("normal_texture"), texture, "normal map")
 		check(is_equal_approx(taken.get_shader_parameter("normal_scale"), 0.5), "normal scale")
-		check_eq(
-			taken.get_shader_parameter("use_roughness_texture"),
-			true,
-			"the roughness texture is used"
-		)
-		check_eq(
-			taken.get_shader_parameter("roughness_channel"),
-			Vector4(0, 1, 0, 0),
-			"roughness from green"
-		)
-		check_eq(
-			taken.get_shader_parameter("use_metallic_texture"), true, "the metallic texture is used"
-		)
-		check_eq(
-			taken.get_shader_parameter("metallic_channel"),
-			Vector4(0, 0, 1, 0),
-			"metallic from blue"
-		)
+		check_eq(taken.get_shader_parameter("use_roughness_texture"), true, "the roughness texture is used")
+		check_eq(taken.get_shader_parameter("roughness_channel"), Vector4(0, 1, 0, 0), "roughness from green")
+		check_eq(taken.get_shader_parameter("use_metallic_texture"), true, "the metallic texture is used")
+		check_eq(taken.get_shader_parameter("metallic_channel"), Vector4(0, 0, 1, 0), "metallic from blue")
 	# Emission and ambient occlusion carry over.
 	var glowing: StandardMaterial3D = leaf.duplicate()
 	glowing.emission_enabled = true
@@ -441,37 +333,21 @@ func test_plain_standard_materials_are_taken_over_and_others_kept() -> void:
 	glowing.ao_light_affect = 0.6
 	var lit_up: ShaderMaterial = PlantMaterialScript.adopt(glowing, false)
 	if check(lit_up != null, "emission and ambient occlusion are taken over"):
-		check_eq(
-			lit_up.get_shader_parameter("emission_colour"), glowing.emission, "emission colour"
-		)
-		check(
-			is_equal_approx(lit_up.get_shader_parameter("emission_energy"), 2.5), "emission energy"
-		)
-		check_eq(
-			lit_up.get_shader_parameter("emission_multiply"), true, "emission times its texture"
-		)
+		check_eq(lit_up.get_shader_parameter("emission_colour"), glowing.emission, "emission colour")
+		check(is_equal_approx(lit_up.get_shader_parameter("emission_energy"), 2.5), "emission energy")
+		check_eq(lit_up.get_shader_parameter("emission_multiply"), true, "emission times its texture")
 		check_eq(lit_up.get_shader_parameter("emission_texture"), texture, "emission texture")
-		check_eq(
-			lit_up.get_shader_parameter("use_ao_texture"), true, "the occlusion texture is used"
-		)
+		check_eq(lit_up.get_shader_parameter("use_ao_texture"), true, "the occlusion texture is used")
 		check_eq(lit_up.get_shader_parameter("ao_texture"), texture, "occlusion texture")
-		check_eq(
-			lit_up.get_shader_parameter("ao_channel"), Vector4(0, 0, 0, 1), "occlusion from alpha"
-		)
-		check(
-			is_equal_approx(lit_up.get_shader_parameter("ao_light_affect"), 0.6),
-			"occlusion's light affect"
-		)
+		check_eq(lit_up.get_shader_parameter("ao_channel"), Vector4(0, 0, 0, 1), "occlusion from alpha")
+		check(is_equal_approx(lit_up.get_shader_parameter("ao_light_affect"), 0.6), "occlusion's light affect")
 	if taken:
 		check(not taken.get_shader_parameter("emission_energy"), "no emission unless enabled")
 		check(not taken.get_shader_parameter("use_ao_texture"), "no occlusion unless enabled")
 	# What the plant material cannot draw is kept: the part is drawn by its own material.
 	var second_uv: StandardMaterial3D = glowing.duplicate()
 	second_uv.ao_on_uv2 = true
-	check(
-		PlantMaterialScript.adopt(second_uv, false) == null,
-		"occlusion read from UV2 is kept as it is"
-	)
+	check(PlantMaterialScript.adopt(second_uv, false) == null, "occlusion read from UV2 is kept as it is")
 	ProjectSettings.set_setting(PlantMaterialScript.PHYSICAL_LIGHT_UNITS, true)
 	var physical: ShaderMaterial = PlantMaterialScript.adopt(glowing, false)
 	ProjectSettings.set_setting(PlantMaterialScript.PHYSICAL_LIGHT_UNITS, false)
@@ -484,27 +360,16 @@ func test_plain_standard_materials_are_taken_over_and_others_kept() -> void:
 	check(PlantMaterialScript.adopt(blended, false) == null, "alpha blending is kept as it is")
 	var front: StandardMaterial3D = leaf.duplicate()
 	front.cull_mode = BaseMaterial3D.CULL_FRONT
-	check(
-		PlantMaterialScript.adopt(front, false) == null, "front faces culled are kept as they are"
-	)
+	check(PlantMaterialScript.adopt(front, false) == null, "front faces culled are kept as they are")
 	var passes: StandardMaterial3D = leaf.duplicate()
 	passes.next_pass = StandardMaterial3D.new()
 	check(PlantMaterialScript.adopt(passes, false) == null, "a next pass is kept as it is")
-	check(
-		PlantMaterialScript.adopt(ORMMaterial3D.new(), false) == null,
-		"an ORMMaterial3D is kept as it is"
-	)
-	check(
-		PlantMaterialScript.adopt(leaf, true) == null,
-		"vertex colours the material ignores: kept as it is"
-	)
+	check(PlantMaterialScript.adopt(ORMMaterial3D.new(), false) == null, "an ORMMaterial3D is kept as it is")
+	check(PlantMaterialScript.adopt(leaf, true) == null, "vertex colours the material ignores: kept as it is")
 	var coloured: ArrayMesh = FieldPlant.default_plant().mesh_drawn(0, 0).duplicate() as ArrayMesh  # has them
 	for surface: int in coloured.get_surface_count():
 		coloured.surface_set_material(surface, leaf)
-	check(
-		PlantMaterialScript.adopt_mesh(coloured) == coloured,
-		"a mesh with vertex colours its material ignores"
-	)
+	check(PlantMaterialScript.adopt_mesh(coloured) == coloured, "a mesh with vertex colours its material ignores")
 	leaf.vertex_color_use_as_albedo = true
 	check(PlantMaterialScript.adopt(leaf, true) != null, "vertex colours as albedo: taken over")
 	# A plant of such parts is drawn whole, one surface per distinct material; switched off, or with
@@ -514,16 +379,10 @@ func test_plain_standard_materials_are_taken_over_and_others_kept() -> void:
 	stalk.vertex_color_use_as_albedo = true
 	var head: StandardMaterial3D = stalk.duplicate()
 	head.albedo_color = Color(1.0, 0.8, 0.2)
-	Dressing.dress_parts(
-		plant, func(_level: int, part: int) -> Material: return head if part == 2 else stalk
-	)
+	Dressing.dress_parts(plant, func(_level: int, part: int) -> Material: return head if part == 2 else stalk)
 	check(plant.drawn_whole(), "plain StandardMaterial3D parts: drawn whole")
 	check_eq(plant.whole_mesh(0).get_surface_count(), 2, "one merged surface per distinct material")
-	check_eq(
-		plant.mesh_drawn(0, 2).surface_get_material(0),
-		head,
-		"the plant's own mesh keeps its material"
-	)
+	check_eq(plant.mesh_drawn(0, 2).surface_get_material(0), head, "the plant's own mesh keeps its material")
 	plant.use_plant_material = false
 	check(not plant.drawn_whole(), "their own materials: drawn part by part")
 	plant.use_plant_material = true
@@ -531,6 +390,4 @@ func test_plain_standard_materials_are_taken_over_and_others_kept() -> void:
 	lit.surface_set_material(0, rimmed)
 	plant.set_part_mesh(1, 0, lit)
 	check(not plant.drawn_whole(), "a part with rim lighting: drawn part by part")
-	check_eq(
-		plant.mesh_for_field(1, 0).surface_get_material(0), rimmed, "that part keeps its material"
-	)
+	check_eq(plant.mesh_for_field(1, 0).surface_get_material(0), rimmed, "that part keeps its material")

@@ -37,10 +37,7 @@ func test_demo_field_renders_as_sunflowers() -> void:
 	)
 	await frames(8)
 	var counts: PackedInt32Array = field.get_lod_counts()
-	check(
-		counts[0] > 0 and counts[2] > 0 and counts[3] + counts[4] > 0,
-		"several representations in view: %s" % counts
-	)
+	check(counts[0] > 0 and counts[2] > 0 and counts[3] + counts[4] > 0, "several representations in view: %s" % counts)
 	var image: Image = tree.root.get_viewport().get_texture().get_image()
 	var path: String = artifact_path(SHOT)
 	check_eq(image.save_png(path), OK, "saving " + path)
@@ -81,17 +78,14 @@ func test_density_thinning_draws_fewer_far_impostors() -> void:
 	var thinned_image: Image = tree.root.get_viewport().get_texture().get_image()
 	thinned_image.save_png(artifact_path("render_thinning.png"))
 	var thinned: float = _plant_pixels(thinned_image)
-	print(
-		"     plant pixels: %.1f%% without thinning, %.1f%% with" % [100.0 * full, 100.0 * thinned]
-	)
+	print("     plant pixels: %.1f%% without thinning, %.1f%% with" % [100.0 * full, 100.0 * thinned])
 	check(full > 0.05, "the far field covers the picture without thinning (%s)" % full)
 	# The kept plants widen to keep the cover (far plants' hashed alpha test keeps it closely), so what
 	# shows that fewer are drawn is a changed picture with about the same cover.
 	var changed: float = _changed_share(full_image, thinned_image)
 	print("     %.1f%% of the pixels changed" % (100.0 * changed))
 	check(
-		thinned > full * 0.7 and thinned < full * 1.3,
-		"thinning keeps the field's cover (%s vs %s)" % [thinned, full]
+		thinned > full * 0.7 and thinned < full * 1.3, "thinning keeps the field's cover (%s vs %s)" % [thinned, full]
 	)
 	check(changed > 0.02, "thinning changes the far field (%.3f of the pixels)" % changed)
 
@@ -126,16 +120,11 @@ func test_thinning_keeps_the_same_plants_whatever_their_order_in_a_buffer() -> v
 	var changed: int = 0
 	for y: int in range(0, before.get_height(), 2):
 		for x: int in range(0, before.get_width(), 2):
-			changed += (
-				1 if before.get_pixel(x, y).is_equal_approx(after.get_pixel(x, y)) == false else 0
-			)
+			changed += (1 if before.get_pixel(x, y).is_equal_approx(after.get_pixel(x, y)) == false else 0)
 	var share: float = changed / float((before.get_height() / 2) * (before.get_width() / 2))
 	print("     %d tile buffers reversed; %.2f%% of pixels changed" % [reversed, 100.0 * share])
 	check(reversed > 1, "far tiles were reversed (%d)" % reversed)
-	check(
-		share < 0.002,
-		"the same plants are drawn after reordering (%.2f%% of pixels changed)" % (100.0 * share)
-	)
+	check(share < 0.002, "the same plants are drawn after reordering (%.2f%% of pixels changed)" % (100.0 * share))
 	field.set_process(true)
 
 
@@ -149,16 +138,8 @@ func test_empty_near_buckets_are_not_drawn() -> void:
 	var tiles: int = 0
 	for node: Node in field.get_children(true):
 		tiles += 1 if node.name.begins_with("FarTile") else 0
-	print(
-		(
-			"     draw calls of the field: %d, for %d tiles (the sun's shadow pass included)"
-			% [field_calls, tiles]
-		)
-	)
-	check(
-		field_calls <= 2 * tiles,
-		"only the tiles draw: %d calls for %d tiles" % [field_calls, tiles]
-	)
+	print("     draw calls of the field: %d, for %d tiles (the sun's shadow pass included)" % [field_calls, tiles])
+	check(field_calls <= 2 * tiles, "only the tiles draw: %d calls for %d tiles" % [field_calls, tiles])
 
 
 func test_the_engine_draws_each_far_place_by_one_tile() -> void:
@@ -181,9 +162,7 @@ func test_the_engine_draws_each_far_place_by_one_tile() -> void:
 	check(not tiles.has(null), "every tile has its node")
 	var camera: Camera3D = scene.get_viewport().get_camera_3d()
 	var views_merged: int = 0
-	for eye: Vector3 in [
-		Vector3(10.0, 2.0, 22.0), Vector3(-12.0, 2.0, 7.0), Vector3(10.0, 30.0, 150.0)
-	]:
+	for eye: Vector3 in [Vector3(10.0, 2.0, 22.0), Vector3(-12.0, 2.0, 7.0), Vector3(10.0, 30.0, 150.0)]:
 		camera.look_at_from_position(eye, Vector3(10.0, 0.0, 7.5))
 		field.advance(0.0)
 		var cut: int = await _field_draw_calls(field)
@@ -194,12 +173,7 @@ func test_the_engine_draws_each_far_place_by_one_tile() -> void:
 				node.visible = false
 			picked += 1 if node.visible else 0
 			merged += (
-				1
-				if (
-					node.visible
-					and FarTileTable.new(NativeField.new(simulation)).level(tiles[node]) > 0
-				)
-				else 0
+				1 if (node.visible and FarTileTable.new(NativeField.new(simulation)).level(tiles[node]) > 0) else 0
 			)
 		views_merged += 1 if merged > 0 else 0
 		var alone: int = await _field_draw_calls(field)
@@ -213,25 +187,17 @@ func test_the_engine_draws_each_far_place_by_one_tile() -> void:
 			for drawn: GeometryInstance3D in [node, node.get_child(0, true)]:
 				drawn.visibility_parent = drawn.get_meta(&"parent")
 		print(
-			(
-				"     from %s: %d draw calls, %d for the %d tiles picked alone, %d uncut"
-				% [eye, cut, alone, picked, uncut]
-			)
+			"     from %s: %d draw calls, %d for the %d tiles picked alone, %d uncut" % [eye, cut, alone, picked, uncut]
 		)
 		check_eq(cut, alone, "from %s the engine draws the tiles the cut picks" % eye)
 		if merged > 0:
-			check(
-				uncut > cut,
-				"from %s more tiles are drawn without visibility parents (%d)" % [eye, uncut]
-			)
+			check(uncut > cut, "from %s more tiles are drawn without visibility parents (%d)" % [eye, uncut])
 	check_eq(views_merged, 2, "merged tiles drawn from the two farther views")
 
 
 ## Whether a tile is drawn from [param eye] by the rule of FieldSimulation's cut: in its range, and no
 ## tile above it in its own.
-func _picked_by_the_cut(
-	simulation: RefCounted, tile: int, node: GeometryInstance3D, eye: Vector3
-) -> bool:
+func _picked_by_the_cut(simulation: RefCounted, tile: int, node: GeometryInstance3D, eye: Vector3) -> bool:
 	var tiles: FarTileTable = FarTileTable.new(NativeField.new(simulation))
 	var shown_from: Callable = func(t: int) -> bool:
 		var box: AABB = node.global_transform * tiles.aabb(t)
@@ -249,14 +215,10 @@ func _picked_by_the_cut(
 ## The draw calls of [param field]'s nodes in a frame: the frame's less the frame's without it.
 func _field_draw_calls(field: SunflowerField) -> int:
 	await frames(3)
-	var with_field: int = RenderingServer.get_rendering_info(
-		RenderingServer.RENDERING_INFO_TOTAL_DRAW_CALLS_IN_FRAME
-	)
+	var with_field: int = RenderingServer.get_rendering_info(RenderingServer.RENDERING_INFO_TOTAL_DRAW_CALLS_IN_FRAME)
 	field.visible = false
 	await frames(3)
-	var without: int = RenderingServer.get_rendering_info(
-		RenderingServer.RENDERING_INFO_TOTAL_DRAW_CALLS_IN_FRAME
-	)
+	var without: int = RenderingServer.get_rendering_info(RenderingServer.RENDERING_INFO_TOTAL_DRAW_CALLS_IN_FRAME)
 	field.visible = true
 	return with_field - without
 
@@ -272,23 +234,14 @@ func test_plants_drawn_whole_look_as_drawn_part_by_part() -> void:
 		own.draw_whole = whole
 		var field: SunflowerField = await _windy_demo_field(own)
 		var counts: PackedInt32Array = field.get_lod_counts()
-		check(
-			counts[0] > 20 and counts[1] > 20 and counts[2] > 20,
-			"plants at every mesh level: %s" % counts
-		)
+		check(counts[0] > 20 and counts[1] > 20 and counts[2] > 20, "plants at every mesh level: %s" % counts)
 		var nodes: Array[String] = []
 		for node: Node in field.get_children(true):
 			if node.name.begins_with("Mesh") and node.visible:
 				nodes.append(node.name)
 		check_eq(nodes.size(), 3 if whole else 9, "near mesh nodes drawn (%s)" % ", ".join(nodes))
-		calls.append(
-			RenderingServer.get_rendering_info(
-				RenderingServer.RENDERING_INFO_TOTAL_DRAW_CALLS_IN_FRAME
-			)
-		)
-		pictures.append(
-			_snapshot(picture, "render_whole_%s.png" % ("plants" if whole else "parts"))
-		)
+		calls.append(RenderingServer.get_rendering_info(RenderingServer.RENDERING_INFO_TOTAL_DRAW_CALLS_IN_FRAME))
+		pictures.append(_snapshot(picture, "render_whole_%s.png" % ("plants" if whole else "parts")))
 		field.free()
 	var similarity: float = picture.ssim(pictures[0], pictures[1])
 	var difference: float = picture.mean_difference(pictures[0], pictures[1])
@@ -346,9 +299,7 @@ func test_plain_standard_materials_are_drawn_as_the_plant_material() -> void:
 	mapped.ao_texture = ImageTexture.create_from_image(occlusion)
 	mapped.ao_texture_channel = BaseMaterial3D.TEXTURE_CHANNEL_GREEN
 	mapped.ao_light_affect = 0.7
-	var ways: Array[String] = [
-		"built-in", "taken over", "own material", "mapped, taken over", "mapped, own material"
-	]
+	var ways: Array[String] = ["built-in", "taken over", "own material", "mapped, taken over", "mapped, own material"]
 	for way: String in ways:
 		var own: FieldPlant = FieldPlant.default_plant().duplicate()
 		if way != "built-in":
@@ -357,9 +308,7 @@ func test_plain_standard_materials_are_drawn_as_the_plant_material() -> void:
 			own.use_plant_material = way.ends_with("taken over")
 		var field: SunflowerField = await _windy_demo_field(own)
 		check_eq(own.drawn_whole(), not way.ends_with("own material"), "%s: drawn whole" % way)
-		pictures.append(
-			_snapshot(picture, "render_standard_%s.png" % way.replace(" ", "_").replace(",", ""))
-		)
+		pictures.append(_snapshot(picture, "render_standard_%s.png" % way.replace(" ", "_").replace(",", "")))
 		field.free()
 	var as_built_in: float = picture.ssim(pictures[1], pictures[0])
 	var as_own: float = picture.ssim(pictures[1], pictures[2])
@@ -371,43 +320,23 @@ func test_plain_standard_materials_are_drawn_as_the_plant_material() -> void:
 				"     standard materials taken over: SSIM %.4f to the built-in plant, %.4f to their own material;"
 				% [as_built_in, as_own]
 			)
-			+ (
-				" with a normal map, roughness and metallic maps, emission and occlusion %.4f"
-				% mapped_as_own
-			)
+			+ (" with a normal map, roughness and metallic maps, emission and occlusion %.4f" % mapped_as_own)
 			+ (" (their own against the plain one %.4f)" % mapped_as_plain)
 		)
 	)
-	check(
-		as_built_in > 0.99,
-		"taken over, the plant looks as the built-in one (SSIM %.4f)" % as_built_in
-	)
-	check(
-		mapped_as_plain < 0.97,
-		"the maps, emission and occlusion change the look (SSIM %.4f)" % mapped_as_plain
-	)
+	check(as_built_in > 0.99, "taken over, the plant looks as the built-in one (SSIM %.4f)" % as_built_in)
+	check(mapped_as_plain < 0.97, "the maps, emission and occlusion change the look (SSIM %.4f)" % mapped_as_plain)
 	# Forward+ lights the plant material as it lights the StandardMaterial3D it took over (0.998). The
 	# Compatibility renderer draws any spatial shader that contains a discard (the plant material's
 	# screen door) darker than the same shader without one, even where it never discards (measured
 	# on one head: mean yellow (0.81, 0.67, 0.09) against (1.00, 0.98, 0.17)): there taking over
 	# changes the look (0.779 here), which the README says and use_plant_material switches off.
 	if RenderingServer.get_current_rendering_method() == "forward_plus":
-		check(
-			as_own > 0.97,
-			"taken over, the plant looks as its own material draws it (SSIM %.4f)" % as_own
-		)
+		check(as_own > 0.97, "taken over, the plant looks as its own material draws it (SSIM %.4f)" % as_own)
 		# Without the emission carried over this measured 0.946, without the occlusion 0.926.
-		check(
-			mapped_as_own > 0.99,
-			"with the maps, emission and occlusion too (SSIM %.4f)" % mapped_as_own
-		)
+		check(mapped_as_own > 0.99, "with the maps, emission and occlusion too (SSIM %.4f)" % mapped_as_own)
 	else:
-		print(
-			(
-				"     (not the same look on the Compatibility renderer: SSIM %.4f, not checked there)"
-				% as_own
-			)
-		)
+		print("     (not the same look on the Compatibility renderer: SSIM %.4f, not checked there)" % as_own)
 
 
 func test_a_shader_of_your_own_fades_with_one_line() -> void:
@@ -436,17 +365,13 @@ func test_a_shader_of_your_own_fades_with_one_line() -> void:
 		scene.add_child(camera)
 		camera.fov = 20.0  # the plant fills the picture's height from 18 m
 		for distance: float in [12.0, 18.0]:
-			camera.look_at_from_position(
-				root + Vector3(0.0, 1.3, distance), root + Vector3(0.0, 1.3, 0.0)
-			)
+			camera.look_at_from_position(root + Vector3(0.0, 1.3, distance), root + Vector3(0.0, 1.3, 0.0))
 			camera.make_current()
 			for step: int in 3:
 				field.advance(0.3)  # past the LOD interval: a pass at this distance
 			await frames(4)
 			var image: Image = tree.root.get_viewport().get_texture().get_image()
-			image.save_png(
-				artifact_path("render_own_shader_%s_%d.png" % [way.replace(" ", "_"), distance])
-			)
+			image.save_png(artifact_path("render_own_shader_%s_%d.png" % [way.replace(" ", "_"), distance]))
 			red["%s %d" % [way, distance]] = _red_pixels(image)
 		field.free()
 		camera.free()
@@ -459,15 +384,10 @@ func test_a_shader_of_your_own_fades_with_one_line() -> void:
 			% [kept, red["fading 12"], red["not fading 18"]]
 		)
 	)
-	check(
-		red["fading 12"] > 2000.0, "the red mesh is seen from 12 m (%d pixels)" % red["fading 12"]
-	)
+	check(red["fading 12"] > 2000.0, "the red mesh is seen from 12 m (%d pixels)" % red["fading 12"])
 	check(
 		absf(red["fading 12"] - red["not fading 12"]) < 0.02 * red["fading 12"],
-		(
-			"outside the fade the call changes nothing (%d against %d)"
-			% [red["fading 12"], red["not fading 12"]]
-		)
+		"outside the fade the call changes nothing (%d against %d)" % [red["fading 12"], red["not fading 12"]]
 	)
 	check(kept > 0.3 and kept < 0.7, "mid-fade the mesh keeps about half its pixels (%.2f)" % kept)
 
@@ -510,9 +430,7 @@ func test_far_plants_sway_as_the_near_ones_do() -> void:
 		var bent: Vector2 = (windy[0] - calm[0]) * metres_per_pixel
 		strongest = bent if bent.length() > strongest.length() else strongest
 		for i: int in 2:
-			worst[i] = maxf(
-				worst[i], ((windy[i + 1] - calm[i + 1]) * metres_per_pixel).distance_to(bent)
-			)
+			worst[i] = maxf(worst[i], ((windy[i + 1] - calm[i + 1]) * metres_per_pixel).distance_to(bent))
 	print(
 		(
 			"     head bent up to %.3f m; at 14 moments the impostor's within %.3f m of the mesh's (sprite), %.3f m (billboard)"
@@ -533,14 +451,9 @@ func test_far_impostors_stand_where_their_plants_do_on_a_moved_and_turned_field(
 	)
 	await frames(6)
 	var counts: PackedInt32Array = field.get_lod_counts()
-	check(
-		counts[3] + counts[4] > counts[0] + counts[1] + counts[2],
-		"mostly far plants in view: %s" % counts
-	)
+	check(counts[3] + counts[4] > counts[0] + counts[1] + counts[2], "mostly far plants in view: %s" % counts)
 	var picture: Picture = Picture.new(640, 360)
-	var still: PackedFloat32Array = picture.luminance(
-		tree.root.get_viewport().get_texture().get_image()
-	)
+	var still: PackedFloat32Array = picture.luminance(tree.root.get_viewport().get_texture().get_image())
 	var moved: Transform3D = Transform3D(Basis(Vector3.UP, 0.6), Vector3(-230.0, 4.0, 170.0))
 	scene.transform = moved  # the camera is on the stage too
 	field.advance(0.0)
@@ -550,9 +463,7 @@ func test_far_impostors_stand_where_their_plants_do_on_a_moved_and_turned_field(
 	var after: PackedFloat32Array = picture.luminance(image)
 	var similarity: float = picture.ssim(still, after)
 	print("     moved and turned field: SSIM %.4f to the picture before" % similarity)
-	check(
-		similarity > 0.97, "the far field looks the same moved and turned (SSIM %.4f)" % similarity
-	)
+	check(similarity > 0.97, "the far field looks the same moved and turned (SSIM %.4f)" % similarity)
 
 
 ## A lone sunflower 40 m away (a narrow view, nearly orthographic), 45° above its front, drawn as
@@ -570,16 +481,12 @@ func test_a_lone_far_plant_shades_itself_as_its_mesh_does() -> void:
 		field.advance(0.0)
 		await frames(3)
 		var image: Image = tree.root.get_viewport().get_texture().get_image()
-		image.save_png(
-			artifact_path("render_lone_plant_%s.png" % ["mesh1", "", "", "sprite"][level])
-		)
+		image.save_png(artifact_path("render_lone_plant_%s.png" % ["mesh1", "", "", "sprite"][level]))
 		leaves.append(_mean_green_luminance(image))
 	var ratio: float = leaves[1] / maxf(leaves[0], 1e-6)
 	print("     a lone plant's leaves as a sprite: %.3f of the mesh's brightness" % ratio)
 	check(leaves[0] > 0.05, "the mesh's leaves are in view and lit (%.3f)" % leaves[0])
-	check(
-		ratio > 0.9 and ratio < 1.1, "the sprite's leaves are as bright as the mesh's: %.3f" % ratio
-	)
+	check(ratio > 0.9 and ratio < 1.1, "the sprite's leaves are as bright as the mesh's: %.3f" % ratio)
 
 
 ## A lone sunflower 40 m away (a 4° view, nearly orthographic) seen from 8 sides at 4 elevations,
@@ -603,17 +510,13 @@ func test_a_lone_far_plant_looks_like_its_mesh_from_every_side() -> void:
 		for side: int in sides:
 			var direction: Vector3 = Vector3.BACK.rotated(Vector3.RIGHT, -deg_to_rad(elevation))
 			direction = direction.rotated(Vector3.UP, TAU * side / sides)
-			var up: Vector3 = (
-				Vector3.UP if elevation < 80.0 else -direction.slide(Vector3.UP).normalized()
-			)
+			var up: Vector3 = Vector3.UP if elevation < 80.0 else -direction.slide(Vector3.UP).normalized()
 			camera.look_at_from_position(target + direction * 40.0, target, up)
 			for i: int in 2:
 				field.force_lod = [0, 3][i]
 				field.advance(0.0)
 				await frames(3)
-				var image: Image = tree.root.get_viewport().get_texture().get_image().get_region(
-					crop
-				)
+				var image: Image = tree.root.get_viewport().get_texture().get_image().get_region(crop)
 				seen[i].append(_yellowness(image))
 	var failures: PackedStringArray = []
 	var own_worst: float = 1.0
@@ -628,10 +531,7 @@ func test_a_lone_far_plant_looks_like_its_mesh_from_every_side() -> void:
 		margin = minf(margin, own - others)
 		if own <= others:
 			failures.append(
-				(
-					"%d° up, side %d: %.3f against %.3f"
-					% [elevations[floori(at / float(sides))], at % sides, own, others]
-				)
+				"%d° up, side %d: %.3f against %.3f" % [elevations[floori(at / float(sides))], at % sides, own, others]
 			)
 	print(
 		(
@@ -639,10 +539,7 @@ func test_a_lone_far_plant_looks_like_its_mesh_from_every_side() -> void:
 			% [own_worst, margin]
 		)
 	)
-	check(
-		failures.is_empty(),
-		"the sprite looks like the mesh seen from where it is: %s" % ", ".join(failures)
-	)
+	check(failures.is_empty(), "the sprite looks like the mesh seen from where it is: %s" % ", ".join(failures))
 
 
 ## How much more red than blue each pixel of [param image] is, row by row: the petals' yellow stands

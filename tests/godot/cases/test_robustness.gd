@@ -38,44 +38,20 @@ func test_every_malformed_map_is_refused_with_its_place_and_the_field_stays() ->
 		garbage.append(random.randi_range(0, 255))
 	var huge_row: String = "*".repeat(2100) + "\n"
 	var cases: Array[Array] = [
-		[
-			"missing_header.field",
-			"***\n***\n".to_utf8_buffer(),
-			":1:1: expected a whole number for COLUMNS"
-		],
-		[
-			"garbled_header.field",
-			"4x3\n****\n".to_utf8_buffer(),
-			":1:2: expected a whole number for COLUMNS"
-		],
+		["missing_header.field", "***\n***\n".to_utf8_buffer(), ":1:1: expected a whole number for COLUMNS"],
+		["garbled_header.field", "4x3\n****\n".to_utf8_buffer(), ":1:2: expected a whole number for COLUMNS"],
 		["zero.field", "0 3\n".to_utf8_buffer(), ":1:1: COLUMNS must be positive"],
 		["negative.field", "3 -2\n".to_utf8_buffer(), ":1:3: ROWS must be positive"],
 		["words.field", "wide tall\n".to_utf8_buffer(), ":1:1: expected a whole number"],
-		[
-			"enormous.field",
-			"100000 100000\n*\n".to_utf8_buffer(),
-			":1:1: a 100000 x 100000 map has"
-		],
-		[
-			"long_row.field",
-			"3 1\n****\n".to_utf8_buffer(),
-			":2:4: row 1 is longer than the 3 columns"
-		],
+		["enormous.field", "100000 100000\n*\n".to_utf8_buffer(), ":1:1: a 100000 x 100000 map has"],
+		["long_row.field", "3 1\n****\n".to_utf8_buffer(), ":2:4: row 1 is longer than the 3 columns"],
 		["extra_rows.field", "3 1\n***\n***\n".to_utf8_buffer(), ":3:1: more rows than the 1"],
 		["unknown.field", "3 1\n*x*\n".to_utf8_buffer(), ":2:2: unexpected 'x'"],
 		["tab.field", "3 1\n*\t*\n".to_utf8_buffer(), ":2:2: unexpected tab character"],
-		[
-			"nul.field",
-			PackedByteArray([51, 32, 49, 10, 42, 0, 42, 10]),
-			":2:2: unexpected NUL byte"
-		],
+		["nul.field", PackedByteArray([51, 32, 49, 10, 42, 0, 42, 10]), ":2:2: unexpected NUL byte"],
 		["garbage.field", garbage, ":1:"],
 		["empty.field", PackedByteArray(), ": the file is empty"],
-		[
-			"huge.field",
-			("2100 2000\n" + huge_row.repeat(2000)).to_utf8_buffer(),
-			"more than 4000000 sunflowers"
-		],
+		["huge.field", ("2100 2000\n" + huge_row.repeat(2000)).to_utf8_buffer(), "more than 4000000 sunflowers"],
 	]
 	var before: int = field.get_plant_count()
 	var messages: Array[String] = []
@@ -86,10 +62,7 @@ func test_every_malformed_map_is_refused_with_its_place_and_the_field_stays() ->
 		messages.clear()
 		check_eq(field.load_map_file(path), ERR_PARSE_ERROR, entry[0])
 		if check_eq(messages.size(), 1, entry[0] + ": map_error emitted once"):
-			check(
-				messages[0].begins_with(path) and messages[0].contains(entry[2]),
-				"%s: %s" % [entry[0], messages[0]]
-			)
+			check(messages[0].begins_with(path) and messages[0].contains(entry[2]), "%s: %s" % [entry[0], messages[0]])
 			check(
 				" ".join(field._get_configuration_warnings()).contains(messages[0]),
 				entry[0] + ": configuration warning"
@@ -98,14 +71,9 @@ func test_every_malformed_map_is_refused_with_its_place_and_the_field_stays() ->
 	field.max_plants = 5
 	allow_error("six.field")
 	check_eq(
-		field.load_map_file(_write("six.field", "6 1\n******\n".to_utf8_buffer())),
-		ERR_PARSE_ERROR,
-		"max_plants guard"
+		field.load_map_file(_write("six.field", "6 1\n******\n".to_utf8_buffer())), ERR_PARSE_ERROR, "max_plants guard"
 	)
-	check(
-		messages.back().contains("more than 5 sunflowers"),
-		"the guard says the limit: %s" % messages.back()
-	)
+	check(messages.back().contains("more than 5 sunflowers"), "the guard says the limit: %s" % messages.back())
 
 
 func test_accepted_oddities_load_correctly() -> void:
@@ -153,17 +121,9 @@ func test_bad_values_are_rejected_or_clamped_with_a_warning() -> void:
 	check_eq(plant.impostor_emission_range, 8.0, "a NaN emission range is the default")
 	check(warned("FieldPlant.impostor_emission_range: nan"), "a NaN emission range warns")
 	plant.impostor_emission_range = 0.0
-	check_eq(
-		plant.impostor_emission_range,
-		1.0,
-		"an emission range below 1 is clamped (no division by 0)"
-	)
+	check_eq(plant.impostor_emission_range, 1.0, "an emission range below 1 is clamped (no division by 0)")
 	field.lod_distances = PackedFloat32Array([6.0, 5.0, 20.0, 25.0])
-	check_eq(
-		field.lod_distances,
-		PackedFloat32Array([6.0, 10.0, 20.0, 25.0]),
-		"decreasing distances are rejected"
-	)
+	check_eq(field.lod_distances, PackedFloat32Array([6.0, 10.0, 20.0, 25.0]), "decreasing distances are rejected")
 	check(warned("distances must increase"), "decreasing distances warn")
 	field.lod_distances = PackedFloat32Array([6.0, 10.0])
 	check(warned("needs 4 distances"), "too few distances warn")
@@ -181,15 +141,11 @@ func test_bad_values_are_rejected_or_clamped_with_a_warning() -> void:
 
 func test_no_observer_is_a_configuration_warning_and_no_crash() -> void:
 	field.advance(0.1)
-	check(
-		" ".join(field._get_configuration_warnings()).contains("No observer"),
-		"warning without a camera"
-	)
+	check(" ".join(field._get_configuration_warnings()).contains("No observer"), "warning without a camera")
 	field.observer = NodePath("../Nowhere")
 	field.advance(0.1)
 	check(
-		" ".join(field._get_configuration_warnings()).contains("does not point to a Node3D"),
-		"warning for a bad path"
+		" ".join(field._get_configuration_warnings()).contains("does not point to a Node3D"), "warning for a bad path"
 	)
 
 
@@ -200,23 +156,12 @@ func test_lifecycles_leave_nothing_behind() -> void:
 	await _lifecycle_round(killer_script)
 	await frames(2)
 	var objects_before: int = Performance.get_monitor(Performance.OBJECT_COUNT) as int
-	var memory_before: int = RenderingServer.get_rendering_info(
-		RenderingServer.RENDERING_INFO_BUFFER_MEM_USED
-	)
+	var memory_before: int = RenderingServer.get_rendering_info(RenderingServer.RENDERING_INFO_BUFFER_MEM_USED)
 	await _lifecycle_round(killer_script)
 	await frames(3)
-	check_eq(
-		Performance.get_monitor(Performance.OBJECT_COUNT) as int,
-		objects_before,
-		"objects after a round"
-	)
-	var memory_after: int = RenderingServer.get_rendering_info(
-		RenderingServer.RENDERING_INFO_BUFFER_MEM_USED
-	)
-	check(
-		memory_after <= memory_before,
-		"GPU buffer memory back to %d bytes, is %d" % [memory_before, memory_after]
-	)
+	check_eq(Performance.get_monitor(Performance.OBJECT_COUNT) as int, objects_before, "objects after a round")
+	var memory_after: int = RenderingServer.get_rendering_info(RenderingServer.RENDERING_INFO_BUFFER_MEM_USED)
+	check(memory_after <= memory_before, "GPU buffer memory back to %d bytes, is %d" % [memory_before, memory_after])
 
 
 ## Adds, removes, re-adds, re-parents, duplicates, swaps maps and frees a field mid-frame.
@@ -244,12 +189,8 @@ func _lifecycle_round(killer_script: GDScript) -> void:
 	check_eq(copy.get_plant_count(), 1103, "a duplicate builds its own field")
 	var internal: int = copy.get_child_count(true) - copy.get_child_count(false)
 	# The sunflower is drawn whole: a node per mesh level and one of the near impostors, then the tiles.
-	var expected: int = (
-		SunflowerSimulation.MESH_LEVEL_COUNT + 1 + copy.get_simulation().get_tile_count()
-	)
-	check_eq(
-		internal, expected, "the duplicate holds its own nodes only, not copies of the original's"
-	)
+	var expected: int = SunflowerSimulation.MESH_LEVEL_COUNT + 1 + copy.get_simulation().get_tile_count()
+	check_eq(internal, expected, "the duplicate holds its own nodes only, not copies of the original's")
 	subject.map = null
 	await frames(1)
 	check_eq(subject.get_plant_count(), 0, "no map, no field")
@@ -313,11 +254,7 @@ func test_reloading_the_scene_rebuilds_the_field() -> void:
 	check_eq(internal_saved, 0, "the generated nodes are not saved in the user's scene")
 	check_eq(tree.reload_current_scene(), OK, "reloading")
 	await frames(3)
-	check_eq(
-		(tree.current_scene.get_node("Field") as SunflowerField).get_plant_count(),
-		1103,
-		"rebuilt after reload"
-	)
+	check_eq((tree.current_scene.get_node("Field") as SunflowerField).get_plant_count(), 1103, "rebuilt after reload")
 	tree.unload_current_scene()
 	await frames(2)
 
@@ -331,17 +268,13 @@ func test_soak_10000_frames_with_jumps_wind_changes_and_map_swaps() -> void:
 	field.observer = field.get_path_to(observer)
 	var maps: Array[SunflowerFieldMap] = [
 		DEMO_MAP,
-		SunflowerFieldMap.from_file(
-			_write("soak_small.field", "10 10\n**********\n* * * * *\n".to_utf8_buffer())
-		),
+		SunflowerFieldMap.from_file(_write("soak_small.field", "10 10\n**********\n* * * * *\n".to_utf8_buffer())),
 	]
 	var memory_start: int = 0
 	for frame: int in 10000:
 		if frame % 37 == 0:
 			observer.position = Vector3(
-				random.randf_range(-30, 50),
-				random.randf_range(0.5, 40),
-				random.randf_range(-30, 50)
+				random.randf_range(-30, 50), random.randf_range(0.5, 40), random.randf_range(-30, 50)
 			)
 		if frame % 101 == 0:
 			field.wind_power = random.randf_range(0.0, 30.0)
@@ -354,16 +287,8 @@ func test_soak_10000_frames_with_jumps_wind_changes_and_map_swaps() -> void:
 		if frame == 999:
 			memory_start = OS.get_static_memory_usage()
 	var memory_end: int = OS.get_static_memory_usage()
-	print(
-		(
-			"     soak memory: %.1f MB after 1 000 frames, %.1f MB after 10 000"
-			% [memory_start / 1e6, memory_end / 1e6]
-		)
-	)
-	check(
-		memory_end < memory_start + 2_000_000,
-		"memory stays flat (%d → %d bytes)" % [memory_start, memory_end]
-	)
+	print("     soak memory: %.1f MB after 1 000 frames, %.1f MB after 10 000" % [memory_start / 1e6, memory_end / 1e6])
+	check(memory_end < memory_start + 2_000_000, "memory stays flat (%d → %d bytes)" % [memory_start, memory_end])
 	check(field.get_plant_count() > 0, "still a field")
 	observer.free()
 

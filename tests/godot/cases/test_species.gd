@@ -64,20 +64,11 @@ func test_a_legend_plant_is_a_species_with_its_own_buckets_impostors_and_counts(
 	field.finish_build()
 	check_eq(field.get_plant_count(), 60 * 60 - 1, "plants of both types (and one stone)")
 	var types: Array[FieldPlant] = field.get_plant_types()
-	check(
-		types.size() == 2 and types[1] == maize,
-		"the field grows the sunflower and the legend's plant"
-	)
-	check(
-		_node_named(field, "Plant1Mesh1Head") != null,
-		"the second type has its own near bucket nodes"
-	)
+	check(types.size() == 2 and types[1] == maize, "the field grows the sunflower and the legend's plant")
+	check(_node_named(field, "Plant1Mesh1Head") != null, "the second type has its own near bucket nodes")
 	check(_node_named(field, "Plant1Mesh1Head").multimesh.mesh == box, "drawn with its own parts")
 	check(_node_named(field, "Plant1Mesh1") == null, "part by part: a box cannot be merged")
-	check(
-		_node_named(field, "Mesh1").multimesh.mesh == types[0].whole_mesh(0),
-		"the sunflower keeps its own, whole"
-	)
+	check(_node_named(field, "Mesh1").multimesh.mesh == types[0].whole_mesh(0), "the sunflower keeps its own, whole")
 	# The far impostors of the second type are framed for it: 3.5 model units tall.
 	var maize_quad: Mesh = _node_named(field, "Plant1Impostors").multimesh.mesh
 	var sunflower_quad: Mesh = _node_named(field, "Impostors").multimesh.mesh
@@ -87,18 +78,14 @@ func test_a_legend_plant_is_a_species_with_its_own_buckets_impostors_and_counts(
 	]
 	var framed: Array[float] = []
 	for quad: Mesh in [sunflower_quad, maize_quad]:
-		framed.append(
-			(quad.surface_get_material(0) as ShaderMaterial).get_shader_parameter("frame_size")
-		)
+		framed.append((quad.surface_get_material(0) as ShaderMaterial).get_shader_parameter("frame_size"))
 	check_near(framed[1], frames[1], 1e-3, "the second type's impostor frame")
 	check_near(framed[0], frames[0], 1e-3, "the sunflower's impostor frame")
 	# Each type's shadow casters (the impostor nodes' caster children) stand out as far as it says,
 	# and a change is drawn without a rebuild.
 	var casters: Array[ShaderMaterial] = []
 	for node_name: String in ["Impostors", "Plant1Impostors"]:
-		casters.append(
-			_node_named(field, node_name).get_child(0, true).material_override as ShaderMaterial
-		)
+		casters.append(_node_named(field, node_name).get_child(0, true).material_override as ShaderMaterial)
 	var shifts: Array[float] = []
 	for caster: ShaderMaterial in casters:
 		shifts.append(caster.get_shader_parameter("shadow_caster_shift"))
@@ -116,9 +103,7 @@ func test_a_legend_plant_is_a_species_with_its_own_buckets_impostors_and_counts(
 		var impostors: MultiMeshInstance3D = _node_named(
 			field, "FarTile%d" % FarTileTable.new(NativeField.new(simulation)).key(tile)
 		)
-		var material: ShaderMaterial = (
-			impostors.multimesh.mesh.surface_get_material(0) as ShaderMaterial
-		)
+		var material: ShaderMaterial = impostors.multimesh.mesh.surface_get_material(0) as ShaderMaterial
 		check(
 			(
 				material.get_shader_parameter("records_hold_shares") != true
@@ -150,14 +135,9 @@ func test_a_legend_plant_is_a_species_with_its_own_buckets_impostors_and_counts(
 	var maize_parts: Array = field.get_plant_info(maize_plant)["parts"]
 	var sunflower_parts: Array = field.get_plant_info(sunflower_plant)["parts"]
 	check_near((maize_parts[0] as Transform3D).basis.y.length(), 1.0, 1e-3, "3 m over 3 units")
-	check_near(
-		(sunflower_parts[0] as Transform3D).basis.y.length(), 2.0 / 3.0, 1e-3, "2 m over 3 units"
-	)
+	check_near((sunflower_parts[0] as Transform3D).basis.y.length(), 2.0 / 3.0, 1e-3, "2 m over 3 units")
 	# The stone is still an object; a symbol that is neither is still an error.
-	check(
-		field.get_children(true).any(func(n: Node) -> bool: return n.name.begins_with("Stone")),
-		"the stone"
-	)
+	check(field.get_children(true).any(func(n: Node) -> bool: return n.name.begins_with("Stone")), "the stone")
 	check_eq(SunflowerField.FieldLegend.plant_symbols(field.legend), "m")
 	check_eq(SunflowerField.FieldLegend.object_symbols(field.legend), "S")
 
@@ -206,12 +186,7 @@ func test_a_hilly_field_of_two_plant_types_renders_both_on_the_hills() -> void:
 			elif c.r > 0.35 and c.r > 2.0 * c.g and c.b < 0.25:
 				red += 1
 	var samples: float = (image.get_width() / 2) * (image.get_height() / 2)
-	print(
-		(
-			"     hilly mixed render: %.1f %% yellow, %.1f %% red"
-			% [yellow * 100.0 / samples, red * 100.0 / samples]
-		)
-	)
+	print("     hilly mixed render: %.1f %% yellow, %.1f %% red" % [yellow * 100.0 / samples, red * 100.0 / samples])
 	check(yellow > samples * 0.01, "sunflower heads are seen")
 	check(red > samples * 0.003, "red sunflower heads are seen")
 	var roots: Array[float] = []
