@@ -145,7 +145,7 @@ func _link_parents() -> void:
 		var parent: int = tiles.parent(tile)
 		var node: MultiMeshInstance3D = _tile_nodes[tile]
 		for drawn: GeometryInstance3D in [node, _caster_of(node)]:
-			drawn.visibility_parent = (drawn.get_path_to(_tile_nodes[parent]) if parent >= 0 else NodePath())
+			drawn.visibility_parent = drawn.get_path_to(_tile_nodes[parent]) if parent >= 0 else NodePath()
 
 
 ## A merged level's plants are at least its begin distance away (200 m by default): beyond the sun's
@@ -239,16 +239,18 @@ func finish(species_plants: Array, legend: Dictionary, cell_size: float, sway_ma
 				var whole: MultiMeshInstance3D = _make_node(
 					"%sMesh%d" % [prefix, level + 1], plant.whole_mesh(level), aabb
 				)
-				_add_dynamic(whole, first + Native.mesh_bucket(level, 0))
+				var whole_bucket: int = first + Native.mesh_bucket(level, 0)
+				_add_dynamic(whole, whole_bucket)
 				if cheap_shadows and level < levels - 1:
-					_add_shadow_twin(whole, plant.whole_mesh(levels - 1))
+					_add_shadow_twin(whole, whole_bucket, plant.whole_mesh(levels - 1))
 				continue
 			for part: int in PART_NAMES.size():
 				var node_name: String = "%sMesh%d%s" % [prefix, level + 1, PART_NAMES[part].capitalize()]
 				var node: MultiMeshInstance3D = _make_node(node_name, plant.mesh_for_field(level, part), aabb)
-				_add_dynamic(node, first + Native.mesh_bucket(level, part))
+				var bucket: int = first + Native.mesh_bucket(level, part)
+				_add_dynamic(node, bucket)
 				if cheap_shadows and level < levels - 1:
-					_add_shadow_twin(node, plant.mesh_for_field(levels - 1, part))
+					_add_shadow_twin(node, bucket, plant.mesh_for_field(levels - 1, part))
 		# The near sprites and billboards: one multi-view impostor draws both.
 		var impostors: MultiMeshInstance3D = _make_node(prefix + "Impostors", _impostors[species].mesh(), aabb)
 		_add_dynamic(impostors, first + Native.constant(&"BUCKET_IMPOSTOR"))
@@ -376,9 +378,9 @@ func _add_dynamic(node: MultiMeshInstance3D, bucket: int) -> void:
 	_dynamic_buckets.append(bucket)
 
 
-## Gives a near bucket's [param node] a shadow-only child drawing the same instances with
+## Gives the node of near [param bucket] a shadow-only child drawing the same instances with
 ## [param mesh] (the library fills both MultiMeshes); the node itself casts none.
-func _add_shadow_twin(node: MultiMeshInstance3D, mesh: Mesh) -> void:
+func _add_shadow_twin(node: MultiMeshInstance3D, bucket: int, mesh: Mesh) -> void:
 	node.cast_shadow = GeometryInstance3D.SHADOW_CASTING_SETTING_OFF
 	var twin: MultiMeshInstance3D = MultiMeshInstance3D.new()
 	twin.name = CASTER_NAME
@@ -386,7 +388,7 @@ func _add_shadow_twin(node: MultiMeshInstance3D, mesh: Mesh) -> void:
 	twin.multimesh.mesh = mesh
 	twin.cast_shadow = GeometryInstance3D.SHADOW_CASTING_SETTING_SHADOWS_ONLY
 	node.add_child(twin, false, Node.INTERNAL_MODE_BACK)
-	simulation.set_bucket_shadow_multimesh(_dynamic_buckets[_dynamic_nodes.find(node)], twin.multimesh.get_rid())
+	simulation.set_bucket_shadow_multimesh(bucket, twin.multimesh.get_rid())
 
 
 ## A MultiMesh node for the native buffers. The library allocates each MultiMesh's data in the

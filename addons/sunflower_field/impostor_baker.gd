@@ -80,7 +80,7 @@ static func _bake(plant: FieldPlant, host: Node, folder: String, base_name: Stri
 		push_error("Bake impostors: rendering is off (--headless); run with a display or under Xvfb")
 		return ERR_UNAVAILABLE
 	if folder.is_empty():
-		folder = (plant.resource_path.get_base_dir() if plant.resource_path.begins_with("res://") else "user://")
+		folder = plant.resource_path.get_base_dir() if plant.resource_path.begins_with("res://") else "user://"
 	if base_name.is_empty():
 		base_name = (
 			plant.resource_path.get_file().get_basename()

@@ -118,7 +118,7 @@ static func _mergeable(parts: Array[Mesh]) -> bool:
 				return false
 			if (
 				mesh is ArrayMesh
-				and ((mesh as ArrayMesh).surface_get_primitive_type(surface) != Mesh.PRIMITIVE_TRIANGLES)
+				and (mesh as ArrayMesh).surface_get_primitive_type(surface) != Mesh.PRIMITIVE_TRIANGLES
 			):
 				return false
 			if mesh.surface_get_blend_shape_arrays(surface).size() > 0:

@@ -144,7 +144,7 @@ func load_map(path: String) -> void:
 	var hilly: bool = path.get_file() == HILLS_MAP
 	_hills.set_enabled(hilly)
 	_ground.visible = not hilly
-	_field.ground_source = (SunflowerField.GroundSource.COLLIDERS if hilly else SunflowerField.GroundSource.FLAT)
+	_field.ground_source = SunflowerField.GroundSource.COLLIDERS if hilly else SunflowerField.GroundSource.FLAT
 	var imported: Resource = load(path) if path.begins_with("res://") and ResourceLoader.exists(path) else null
 	if imported is SunflowerFieldMap:
 		_field.map = imported
@@ -209,7 +209,7 @@ func _unhandled_input(event: InputEvent) -> void:
 		_hud.show_message("wind model: " + _wind_model_name())
 	elif event.is_action_pressed("toggle_wireframe"):
 		var wireframe: bool = get_viewport().debug_draw != Viewport.DEBUG_DRAW_WIREFRAME
-		get_viewport().debug_draw = (Viewport.DEBUG_DRAW_WIREFRAME if wireframe else Viewport.DEBUG_DRAW_DISABLED)
+		get_viewport().debug_draw = Viewport.DEBUG_DRAW_WIREFRAME if wireframe else Viewport.DEBUG_DRAW_DISABLED
 	elif event.is_action_pressed("toggle_help"):
 		_hud.toggle_help()
 	elif event.is_action_pressed("next_map"):

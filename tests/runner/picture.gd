@@ -25,7 +25,7 @@ func luminance(image: Image) -> PackedFloat32Array:
 	var out: PackedFloat32Array = PackedFloat32Array()
 	out.resize(width * height)
 	for i: int in out.size():
-		out[i] = ((0.2126 * bytes[3 * i] + 0.7152 * bytes[3 * i + 1] + 0.0722 * bytes[3 * i + 2]) / 255.0)
+		out[i] = (0.2126 * bytes[3 * i] + 0.7152 * bytes[3 * i + 1] + 0.0722 * bytes[3 * i + 2]) / 255.0
 	return out
 
 

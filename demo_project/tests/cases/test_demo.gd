@@ -128,7 +128,7 @@ func test_walk_mode_puts_the_camera_among_the_flowers_and_they_part() -> void:
 	await _press("walk_mode")  # F8
 	check(camera.walking, "F8 walks")
 	check_near(camera.global_position.y, camera.walk_height, 1e-4, "at head height")
-	camera.global_position = (field.get_plant_info(600)["position"] + Vector3(0.2, camera.walk_height, 0.0))
+	camera.global_position = field.get_plant_info(600)["position"] + Vector3(0.2, camera.walk_height, 0.0)
 	await frames(30)
 	check(camera.is_in_group(field.pusher_group), "a low camera is a pusher")
 	check(field.get_pushed_count() > 0, "the flowers around it are pushed (%d)" % field.get_pushed_count())

@@ -189,14 +189,14 @@ func test_parameter_changes_during_a_build_reach_the_new_field() -> void:
 			var begin: float = begins.get(str(instance.name), -1.0)
 			wrong_ranges += (
 				0
-				if (instance.visibility_range_begin == begin and is_equal_approx(instance.visibility_range_end, end))
+				if instance.visibility_range_begin == begin and is_equal_approx(instance.visibility_range_end, end)
 				else 1
 			)
 			for drawn: GeometryInstance3D in [instance, instance.get_child(0, true)]:
 				var parent: Node = (
 					null if drawn.visibility_parent.is_empty() else drawn.get_node(drawn.visibility_parent)
 				)
-				wrong_parents += (0 if (str(parent.name) if parent else "") == parents[str(instance.name)] else 1)
+				wrong_parents += 0 if (str(parent.name) if parent else "") == parents[str(instance.name)] else 1
 			impostor_material = instance.multimesh.mesh.surface_get_material(0) as ShaderMaterial
 	check_eq(wrong_ranges, 0, "every tile's range follows the draw distance set during the build")
 	check_eq(wrong_parents, 0, "every tile's node and shadow caster hide where its parent tile is drawn")

@@ -62,7 +62,7 @@ func _terrain_body(heights: Image) -> StaticBody3D:
 func _map(text_rows: PackedStringArray) -> SunflowerFieldMap:
 	var field_map: SunflowerFieldMap = SunflowerFieldMap.new()
 	field_map.source_path = "user://ground_%d.field" % text_rows.size()
-	field_map.text = (("%d %d\n" % [text_rows[0].length(), text_rows.size()] + "\n".join(text_rows)).to_utf8_buffer())
+	field_map.text = ("%d %d\n" % [text_rows[0].length(), text_rows.size()] + "\n".join(text_rows)).to_utf8_buffer()
 	return field_map
 
 

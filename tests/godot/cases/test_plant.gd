@@ -144,7 +144,7 @@ func test_a_plants_variety_spreads_sizes_and_yaws_within_its_ranges() -> void:
 	var stride: int = SunflowerSimulation.WHOLE_FLOATS_PER_INSTANCE
 	var white: bool = true
 	for k: int in mini(RenderingServer.multimesh_get_buffer(heads.get_rid()).size() / stride, 50):
-		white = (white and RenderingServer.multimesh_get_buffer(heads.get_rid())[k * stride + 12] == 1.0)
+		white = white and RenderingServer.multimesh_get_buffer(heads.get_rid())[k * stride + 12] == 1.0
 	check(white, "no colour variety: white instances")
 	plant.brightness_variation = 0.3
 	await frames(1)

@@ -120,7 +120,7 @@ func test_thinning_keeps_the_same_plants_whatever_their_order_in_a_buffer() -> v
 	var changed: int = 0
 	for y: int in range(0, before.get_height(), 2):
 		for x: int in range(0, before.get_width(), 2):
-			changed += (1 if before.get_pixel(x, y).is_equal_approx(after.get_pixel(x, y)) == false else 0)
+			changed += 1 if before.get_pixel(x, y).is_equal_approx(after.get_pixel(x, y)) == false else 0
 	var share: float = changed / float((before.get_height() / 2) * (before.get_width() / 2))
 	print("     %d tile buffers reversed; %.2f%% of pixels changed" % [reversed, 100.0 * share])
 	check(reversed > 1, "far tiles were reversed (%d)" % reversed)
