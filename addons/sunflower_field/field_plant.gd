@@ -13,7 +13,10 @@ extends Resource
 ## [member impostor_normals], [member impostor_depths] and, for a plant that glows,
 ## [member impostor_emission] (the editor's "Bake impostors"); each view frames the cylinder
 ## [member impostor_width] wide and [member height_units] tall that holds the plant.
-## The built-in sunflower is [method default_plant]; [code]null[/code] mesh or texture slots use it.
+## An empty part slot draws nothing: a plant of one or two parts leaves the slots above them empty
+## (their [member part_lengths] then count 0), and a mesh level with no parts at all draws the level
+## above it. The built-in sunflower is [method default_plant]: the plant a field grows when it is
+## given none, never a source of parts for another plant.
 
 const Native: GDScript = preload("native.gd")
 const NativeField: GDScript = preload("native_field.gd")
@@ -87,7 +90,8 @@ static var _default: FieldPlant
 
 @export_group("Form")
 ## Model units from each part's root to the next one's: bottom → middle, middle → head, and the
-## head's own length. [member height] spans their sum.
+## head's own length. [member height] spans their sum, the lengths of empty slots above the top
+## level-1 part left out ([method stacked_lengths]).
 @export var part_lengths: Vector3 = Vector3(1.0, 1.0, 1.0):
 	set(value):
 		var accepted: Vector3 = Vector3(
@@ -244,10 +248,49 @@ func get_part_mesh(level: int, part: int) -> Mesh:
 	return _level(level)[part]
 
 
-## The mesh a part is drawn with: its own, else the built-in sunflower's.
+## The mesh a part is drawn with: its own, or at a level with no parts at all the nearest level
+## above that has some (a plant of one set of meshes draws it at all three levels); null for an
+## empty slot, which draws nothing.
 func mesh_drawn(level: int, part: int) -> Mesh:
-	var mesh: Mesh = _level(level)[part]
-	return mesh if mesh else default_plant().get_part_mesh(level, part)
+	for source: int in range(level, -1, -1):
+		var meshes: Array[Mesh] = _level(source)
+		if meshes.any(func(mesh: Mesh) -> bool: return mesh != null):
+			return meshes[part]
+	return null
+
+
+## [member part_lengths] as the parts stack: the slots above the top level-1 part are empty, and
+## their lengths count 0, so that [member height] spans the parts there are.
+func stacked_lengths() -> Vector3:
+	var lengths: Vector3 = part_lengths
+	for part: int in [2, 1]:
+		if mesh_level_1[part] != null:
+			break
+		lengths[part] = 0.0
+	return lengths
+
+
+## What keeps the parts from stacking as a plant, a sentence each naming the slot: no level-1 part,
+## or an empty slot below a filled one (the parts above it float over the gap). Empty when it stacks.
+func stacking_problems() -> PackedStringArray:
+	var problems: PackedStringArray = []
+	if mesh_level_1.all(func(mesh: Mesh) -> bool: return mesh == null):
+		problems.append("FieldPlant '%s' has no mesh in mesh_level_1: its plants are not drawn near." % name)
+	for level: int in PartMeshes.LEVELS:
+		var parts: Array[Mesh] = _level(level)
+		var top: int = -1
+		for part: int in parts.size():
+			if parts[part] != null:
+				top = part
+		for part: int in top:
+			if parts[part] == null:
+				problems.append(
+					(
+						"FieldPlant '%s': mesh_level_%d's %s slot is empty below its %s, which floats over the gap."
+						% [name, level + 1, PartMeshes.PART_NAMES[part], PartMeshes.PART_NAMES[top]]
+					)
+				)
+	return problems
 
 
 ## The mesh the field's nodes draw a part with: [method mesh_drawn], its plain StandardMaterial3D
@@ -280,23 +323,19 @@ func drawn_whole() -> bool:
 ## a part mesh or its material shows once a part slot or the lengths change (set the part again).
 func whole_mesh(level: int) -> Mesh:
 	var parts: Array[Mesh] = _drawn_parts(level)
-	var source: Array = [parts, part_lengths]
+	var lengths: Vector3 = stacked_lengths()
+	var source: Array = [parts, lengths]
 	var made: Array = _whole_meshes.get(level, [])
 	if made.is_empty() or made[0] != source:
-		made = [source, WholePlantMesh.merge(parts, part_lengths)]
+		made = [source, WholePlantMesh.merge(parts, lengths)]
 		_whole_meshes[level] = made
 	return made[1]
 
 
-## The impostor texture drawn ("views" or "normals"): its own, else the built-in sunflower's when
-## this plant uses the sunflower's level-1 meshes, else none.
+## The impostor texture drawn ([constant IMPOSTOR_TEXTURES] or [constant EMISSION_TEXTURE]): the
+## plant's own; none until its impostors are baked.
 func texture_drawn(kind: String) -> Texture2D:
-	var own: Texture2D = get("impostor_" + kind)
-	if own or self == default_plant():
-		return own
-	return (
-		default_plant().get("impostor_" + kind) if mesh_level_1.all(func(m: Mesh) -> bool: return m == null) else null
-	)
+	return get("impostor_" + kind)
 
 
 ## The square every impostor view frames and the height of its centre above the root, model units:
@@ -312,7 +351,7 @@ func impostor_frame() -> Vector2:
 func layout_key() -> Array:
 	return [
 		height,
-		part_lengths,
+		stacked_lengths(),
 		height_units,
 		cull_radius_units,
 		stiffness,
@@ -349,7 +388,7 @@ func bake_impostors(host: Node, folder: String = "", base_name: String = "") -> 
 
 ## Hands the plant's form, height and variety to a native simulation, as [param species].
 func apply_to(simulation: NativeField, species: int = 0) -> void:
-	simulation.set_plant_form(species, part_lengths, middle_variation, height_units, cull_radius_units, stiffness)
+	simulation.set_plant_form(species, stacked_lengths(), middle_variation, height_units, cull_radius_units, stiffness)
 	simulation.set_plant_height(species, height)
 	simulation.set_plant_variation(species, yaw_range, scale_min, scale_max, brightness_variation, tint_variation)
 

@@ -231,7 +231,8 @@ static func _stage(plant: FieldPlant) -> SubViewport:
 	var world: WorldEnvironment = WorldEnvironment.new()
 	world.environment = environment
 	viewport.add_child(world)
-	var lengths: Array[float] = [plant.part_lengths.x, plant.part_lengths.y, plant.part_lengths.z]
+	var stacked: Vector3 = plant.stacked_lengths()
+	var lengths: Array[float] = [stacked.x, stacked.y, stacked.z]
 	for row: int in views.y:
 		for column: int in views.x:
 			# The view's basis maps image axes to the plant's; its inverse turns the plant to the camera.

@@ -41,13 +41,11 @@ func _init() -> void:
 func configure(plant: Resource) -> void:
 	for kind: String in FieldPlant.IMPOSTOR_TEXTURES:
 		set_texture(kind, plant.texture_drawn(kind))
-	var emission: Texture2D = plant.texture_drawn(FieldPlant.EMISSION_TEXTURE)
-	# The built-in plant's atlas (drawn for a plant without meshes of its own) has its own range.
-	var range_of: Resource = plant if emission == plant.impostor_emission else FieldPlant.default_plant()
-	set_emission(emission, range_of.impostor_emission_range)
+	set_emission(plant.texture_drawn(FieldPlant.EMISSION_TEXTURE), plant.impostor_emission_range)
 	_stiffness = plant.stiffness
 	# Model units of the bottom part, and of the middle and head above it (how the wind bends them).
-	_set_all("part_reach", Vector2(plant.part_lengths.x, plant.part_lengths.y + plant.part_lengths.z))
+	var lengths: Vector3 = plant.stacked_lengths()
+	_set_all("part_reach", Vector2(lengths.x, lengths.y + lengths.z))
 	var frame: Vector2 = plant.impostor_frame()
 	_set_all("frame_size", frame.x)
 	_set_all("frame_centre", frame.y)

@@ -98,6 +98,7 @@ const WIND_PROPERTIES: Dictionary = {
 				grown.changed.connect(_on_plant_changed)
 		_driver.configure_plants(_species_plants())
 		_queue_rebuild()
+		update_configuration_warnings()
 ## Refuse maps with more sunflowers than this (0: the core's limit of 16 million).
 @export_range(0, 100000000, 1) var max_plants: int = 4000000:
 	set(value):
@@ -670,8 +671,8 @@ func advance(delta: float) -> void:
 
 
 ## Replaces one part mesh, like the thesis' [code]setSunflower[/code]: [param lod] 0–2 (mesh level),
-## [param part] 0–2 (see [enum Part]). [code]null[/code] restores the default model. Parts are
-## modelled with their root at the origin and height 1 along +y.
+## [param part] 0–2 (see [enum Part]). [code]null[/code] empties the slot (it draws nothing). Parts
+## are modelled with their root at the origin, growing along +y.
 func set_part_mesh(lod: int, part: int, mesh: Mesh) -> void:
 	if PartMeshes.check(lod, part, "set_part_mesh"):
 		_own_plant().set_part_mesh(lod, part, mesh)
@@ -754,6 +755,8 @@ func _get_configuration_warnings() -> PackedStringArray:
 		warnings.append("No observer: set 'observer' or add a current Camera3D; the field keeps its last LOD.")
 	if not scale.is_equal_approx(Vector3.ONE):
 		warnings.append("Keep the field's scale at 1; size it with 'cell_size' and 'plant_height'.")
+	for grown: FieldPlant in _species_plants():
+		warnings.append_array(grown.stacking_problems())
 	return warnings
 
 
@@ -783,6 +786,7 @@ func _species_plants() -> Array:
 func _on_plant_changed() -> void:
 	if _driver.configure_plants(_species_plants()):
 		_queue_rebuild()
+	update_configuration_warnings()
 
 
 # Scenes saved before plant types set part meshes as "part_meshes/mesh_N/part"; they still load.
@@ -796,7 +800,7 @@ func _set(property: StringName, value: Variant) -> bool:
 	if slot.x < 0:
 		return false
 	if value != null and not (value is Mesh):
-		push_warning("SunflowerField.%s: %s is not a Mesh; using the default part" % [property, value])
+		push_warning("SunflowerField.%s: %s is not a Mesh; the slot is left empty" % [property, value])
 		value = null
 	set_part_mesh(slot.x, slot.y, value as Mesh)
 	return true

@@ -14,7 +14,8 @@ const WHOLE_SHADER: Shader = preload("shaders/plant_whole.gdshader")
 const KEPT: Array[int] = [Mesh.ARRAY_VERTEX, Mesh.ARRAY_NORMAL, Mesh.ARRAY_TANGENT, Mesh.ARRAY_COLOR, Mesh.ARRAY_TEX_UV]
 
 
-## Whether [param parts] (bottom, middle, head) can be merged: see the script's description.
+## Whether [param parts] (bottom, middle, head; null for an empty slot) can be merged: see the
+## script's description.
 static func can_merge(parts: Array[Mesh]) -> bool:
 	return _mergeable(parts)
 
@@ -27,6 +28,8 @@ static func merge(parts: Array[Mesh], part_lengths: Vector3) -> ArrayMesh:
 	# One group per distinct setting: the source material and the arrays merged so far.
 	var groups: Array[Dictionary] = []
 	for part: int in parts.size():
+		if parts[part] == null:
+			continue  # an empty slot
 		for surface: int in parts[part].get_surface_count():
 			var material: ShaderMaterial = parts[part].surface_get_material(surface) as ShaderMaterial
 			var group: Dictionary = {}
@@ -104,14 +107,16 @@ static func _merged_arrays(group: Dictionary) -> Array:
 	return out
 
 
-## Whether every surface of [param parts] has a plant material, is of triangles and has no blend
-## shapes.
+## Whether [param parts] has a surface and every surface has a plant material, is of triangles and
+## has no blend shapes (empty slots hold none).
 static func _mergeable(parts: Array[Mesh]) -> bool:
 	if parts.size() != 3:
 		return false
+	if parts.all(func(mesh: Mesh) -> bool: return mesh == null or mesh.get_surface_count() == 0):
+		return false
 	for mesh: Mesh in parts:
-		if mesh == null or mesh.get_surface_count() == 0:
-			return false
+		if mesh == null:
+			continue
 		for surface: int in mesh.get_surface_count():
 			var material: ShaderMaterial = mesh.surface_get_material(surface) as ShaderMaterial
 			if material == null or material.shader != PARTS_SHADER:

@@ -110,6 +110,15 @@ TEST_CASE("a plant type's form and variety: parts stack by their lengths, sizes 
 	shape.part_lengths = glm::vec3(NAN, -1.0f, 1.5f);
 	sim.set_shape(shape);
 	CHECK(sim.plants().get_shape().part_lengths == glm::vec3(before.x, before.y, 1.5f));
+	// A plant of one part: the empty slots above it have no length, and its height spans the one part.
+	shape.part_lengths = glm::vec3(4.0f, 0.0f, 0.0f);
+	sim.set_shape(shape);
+	CHECK(sim.plants().get_shape().part_lengths == glm::vec3(4.0f, 0.0f, 0.0f));
+	CHECK(sim.plants().shape_of_height(2.0f, 0).part_scale == doctest::Approx(0.5f));
+	// No length at all could not be scaled to a height: the lengths stay.
+	shape.part_lengths = glm::vec3(0.0f);
+	sim.set_shape(shape);
+	CHECK(sim.plants().get_shape().part_lengths == glm::vec3(4.0f, 0.0f, 0.0f));
 }
 
 TEST_CASE("colour variety: plants are white without it; with it, seeded brightness and tint within the ranges") {

@@ -75,6 +75,9 @@ bool FieldPlants::set_shape(const PlantShape &p_shape, uint32_t p_species) {
 	for (int i = 0; i < 3; ++i) {
 		shape.part_lengths[i] = sanitize(param::PLANT_PART_LENGTH, shape.part_lengths[i], current.part_lengths[i]);
 	}
+	if (!(shape.parts_height() > 0.0f)) {
+		shape.part_lengths = current.part_lengths; // a plant of no height could not be scaled to one
+	}
 	shape.middle_variation = sanitize(param::PLANT_MIDDLE_VARIATION, shape.middle_variation, current.middle_variation);
 	shape.stiffness = sanitize(param::PLANT_STIFFNESS, shape.stiffness, current.stiffness);
 	shape.height = sanitize(param::PLANT_HEIGHT_UNITS, shape.height, current.height);

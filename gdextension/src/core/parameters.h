@@ -60,9 +60,10 @@ inline constexpr ParameterSpec PLANT_SCALE_MAX{ "FieldPlant.scale_max", 1.0, 0.0
 // tints it warmer or cooler by up to ± tint (red up and blue down, or the other way).
 inline constexpr ParameterSpec PLANT_BRIGHTNESS_VARIATION{ "FieldPlant.brightness_variation", 0.0, 0.0, 1.0, ParameterSpec::CLAMP, 0.0 };
 inline constexpr ParameterSpec PLANT_TINT_VARIATION{ "FieldPlant.tint_variation", 0.0, 0.0, 1.0, ParameterSpec::CLAMP, 0.0 };
-// A plant type's form in model units (plant_shape.h): each part's length, the height the impostors
-// frame, the culling radius. Not positive or not finite: the current value stays.
-inline constexpr ParameterSpec PLANT_PART_LENGTH{ "FieldPlant.part_lengths", 1.0, 1e-4, NO_MAX, ParameterSpec::KEEP, 0.0 };
+// A plant type's form in model units (plant_shape.h): each part's length (0 for an empty slot above
+// the plant's top part; lengths of no height together keep the current ones), the height the
+// impostors frame, the culling radius. Out of range or not finite: the current value stays.
+inline constexpr ParameterSpec PLANT_PART_LENGTH{ "FieldPlant.part_lengths", 1.0, 0.0, NO_MAX, ParameterSpec::KEEP, 0.0 };
 inline constexpr ParameterSpec PLANT_HEIGHT_UNITS{ "FieldPlant.height_units", 3.2, 1e-4, NO_MAX, ParameterSpec::KEEP, 0.0 };
 inline constexpr ParameterSpec PLANT_CULL_RADIUS_UNITS{ "FieldPlant.cull_radius_units", 1.9, 1e-4, NO_MAX, ParameterSpec::KEEP, 0.0 };
 inline constexpr ParameterSpec PLANT_STIFFNESS{ "FieldPlant.stiffness", 1.0, 0.05, 20.0, ParameterSpec::CLAMP, 1.0 };

@@ -537,7 +537,12 @@ func test_part_meshes_can_be_swapped_at_run_time() -> void:
 	check(_node("Mesh1Head").multimesh.mesh == sphere, "the head multimesh draws the other new mesh")
 	field.set("part_meshes/mesh_1/head", null)
 	field.finish_build()
-	check(_node("Mesh1").multimesh.mesh.get_surface_count() == 1, "null restores the default, drawn whole")
+	check(field.get_part_mesh(0, SunflowerField.Part.HEAD) == null, "null empties the slot: no default part")
+	check(_node("Mesh1").multimesh.mesh.get_surface_count() == 1, "the bottom and middle are drawn whole")
+	check(
+		_node("Mesh1").multimesh.mesh.get_faces().size() < FieldPlant.default_plant().whole_mesh(0).get_faces().size(),
+		"without a head"
+	)
 	allow_error("out of range")
 	field.set_part_mesh(3, 0, box)
 	for level: int in 3:
@@ -548,4 +553,4 @@ func test_part_meshes_can_be_swapped_at_run_time() -> void:
 			)
 	allow_error("is not a Mesh")
 	field.set("part_meshes/mesh_2/bottom", Texture2D.new())
-	check(field.get_part_mesh(1, 0) is ArrayMesh, "a non-mesh resource falls back to the default part")
+	check(field.get_part_mesh(1, 0) == null, "a non-mesh resource leaves the slot empty (no default part)")

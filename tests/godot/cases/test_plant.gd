@@ -82,15 +82,25 @@ func test_the_built_in_sunflower_is_the_default_and_stays_shared_unchanged() -> 
 	check(_whole_mesh(second, 0) == default_plant.whole_mesh(0), "another field is unchanged")
 	check(first.get_part_mesh(0, 1) == default_plant.get_part_mesh(0, 1), "the other parts stay the sunflower's")
 	first.set_part_mesh(0, 2, null)
-	check(_whole_mesh(first, 0) != null, "null restores the default part, drawn whole again")
+	check(first.get_part_mesh(0, 2) == null, "null empties the slot: no default part takes it")
+	check(_whole_mesh(first, 0) != null, "the bottom and middle are drawn whole again")
 	# Scenes saved before plant types named part meshes "part_meshes/mesh_N/part".
 	second.set("part_meshes/mesh_2/middle", box)
 	check(_drawn_mesh(second, 1, 1) == box, "the old property name still sets a part")
 	check(second.get("part_meshes/mesh_2/middle") == box)
 
 
-func test_a_plants_form_and_height_shape_the_plants_drawn() -> void:
+## A new plant holding the built-in sunflower's meshes (and none of its impostor textures).
+func _plant_of_sunflower_parts() -> FieldPlant:
 	var plant: FieldPlant = FieldPlant.new()
+	for level: int in 3:
+		for part: int in 3:
+			plant.set_part_mesh(level, part, FieldPlant.default_plant().get_part_mesh(level, part))
+	return plant
+
+
+func test_a_plants_form_and_height_shape_the_plants_drawn() -> void:
+	var plant: FieldPlant = _plant_of_sunflower_parts()
 	plant.part_lengths = Vector3(2.0, 0.5, 1.0)
 	plant.middle_variation = 0.0
 	plant.height = 7.0  # 3.5 model units: 2 m each
@@ -106,19 +116,16 @@ func test_a_plants_form_and_height_shape_the_plants_drawn() -> void:
 	check_near((parts[1] as Transform3D).origin.y - root.y, 4.0, 0.01, "the middle starts 2 units (4 m) up")
 	check_near((parts[2] as Transform3D).origin.y - root.y, 5.0, 0.01, "the head 0.5 units (1 m) above it")
 	check((parts[0] as Transform3D).basis.z.is_equal_approx(Vector3(0, 0, 2)), "no yaw with a zero yaw range")
-	# Without meshes of its own, the plant is drawn with the sunflower's parts and impostors; with
-	# its own level-1 parts but no textures (not baked yet), its impostors are untextured, and it says so.
+	# Its parts drawn whole; without textures of its own (not baked yet) its impostors are
+	# untextured (never the sunflower's), and it says so.
 	check(_whole_mesh(field, 0) == plant.whole_mesh(0), "drawn whole")
 	check(plant.whole_mesh(0).get_faces().size() > 0, "of the sunflower's parts, merged")
-	check(field.impostor_views == FieldPlant.default_plant().impostor_views)
-	take_warnings()
-	plant.set_part_mesh(0, 1, BoxMesh.new())
-	check(field.impostor_views == null, "no sunflower texture on a plant of other parts")
+	check(field.impostor_views == null, "no sunflower texture on a plant of its own")
 	check(warned("drawn untextured"), "a plant of its own parts without textures warns")
 
 
 func test_a_plants_variety_spreads_sizes_and_yaws_within_its_ranges() -> void:
-	var plant: FieldPlant = FieldPlant.new()
+	var plant: FieldPlant = _plant_of_sunflower_parts()
 	plant.scale_min = 0.6
 	plant.scale_max = 1.4
 	plant.yaw_range = PI / 2.0
@@ -182,7 +189,7 @@ func test_a_plant_signals_a_change_only_when_a_value_changes() -> void:
 
 
 func test_changing_a_shared_plant_rebuilds_every_field_that_grows_it() -> void:
-	var plant: FieldPlant = FieldPlant.new()
+	var plant: FieldPlant = _plant_of_sunflower_parts()
 	var first: SunflowerField = _field(plant)
 	var second: SunflowerField = _field(plant)
 	var before: float = second.get_simulation().get_chunk_aabb(0).end.y
@@ -208,6 +215,65 @@ func test_changing_a_shared_plant_rebuilds_every_field_that_grows_it() -> void:
 	plant.set_part_mesh(2, 1, sphere)
 	check(not first.is_building(), "a mesh change drawn the same way needs no rebuild")
 	check(_drawn_mesh(first, 2, 1) == sphere and _drawn_mesh(second, 2, 1) == sphere, "and shows in both")
+	take_warnings()
+
+
+## An empty slot draws nothing: a new plant draws no plant near and says so; a plant of one mesh
+## draws it at all three levels with nothing above it, and its height spans that one part; a slot
+## left empty below a filled one is a configuration warning naming it. No sunflower part anywhere.
+func test_empty_slots_draw_nothing_and_a_plant_of_one_part_stands_its_height() -> void:
+	var plant: FieldPlant = FieldPlant.new()
+	var field: SunflowerField = _field(plant)
+	var sunflower_meshes: Array[Mesh] = []
+	for level: int in 3:
+		sunflower_meshes.append_array(FieldPlant.default_plant().get("mesh_level_%d" % (level + 1)))
+	for level: int in 3:
+		for part: int in 3:
+			check(field.get_part_mesh(level, part) == null, "a new plant's slots are empty (%d / %d)" % [level, part])
+	check(_whole_mesh(field, 0) == null and _drawn_mesh(field, 0, 0) == null, "and nothing is drawn near")
+	check(field.impostor_views == null, "nor the sunflower's impostors far")
+	check(
+		"\n".join(field._get_configuration_warnings()).contains("has no mesh in mesh_level_1"),
+		"a plant without meshes is a configuration warning"
+	)
+	take_warnings()
+	# One mesh: a 4-unit trunk in the bottom slot of level 1, nothing else.
+	var trunk: BoxMesh = BoxMesh.new()
+	trunk.size = Vector3(0.5, 4.0, 0.5)
+	plant.use_plant_material = false
+	plant.mesh_level_1 = [trunk, null, null]
+	plant.part_lengths = Vector3(4.0, 1.0, 1.0)  # the empty slots' lengths count 0
+	plant.height = 8.0
+	plant.middle_variation = 0.0
+	check_eq(plant.stacked_lengths(), Vector3(4.0, 0.0, 0.0), "the empty slots above the trunk have no length")
+	field.force_lod = SunflowerField.Lod.MESH_1
+	field.finish_build()
+	field.advance(0.0)
+	for level: int in 3:
+		check(_drawn_mesh(field, level, 0) == trunk, "the trunk is drawn at mesh level %d" % (level + 1))
+		for part: int in [1, 2]:
+			var drawn: Mesh = _drawn_mesh(field, level, part)
+			check(drawn == null, "slot %d of level %d draws nothing (%s)" % [part, level + 1, drawn])
+			check(not sunflower_meshes.has(drawn), "no sunflower part")
+	var bottom: Transform3D = field.get_plant_info(10)["parts"][0]
+	check_near(bottom.basis.y.length(), 2.0, 0.01, "8 m over the trunk's 4 units: 2 m a unit")
+	check(plant.stacking_problems().is_empty(), "a plant of one part stacks")
+	# A head with no middle below it floats over the gap: a warning names the slot.
+	plant.set_part_mesh(0, 2, trunk)
+	check(
+		"\n".join(field._get_configuration_warnings()).contains("mesh_level_1's middle slot is empty below its head"),
+		"a slot left empty below a filled one is a configuration warning naming it"
+	)
+	# Drawn whole: the merged mesh of a plant of the sunflower's bottom alone holds just that part.
+	var stem: FieldPlant = FieldPlant.new()
+	stem.mesh_level_1 = [FieldPlant.default_plant().get_part_mesh(0, 0), null, null]
+	check(stem.drawn_whole(), "a plant of one plant-material part is drawn whole")
+	check_eq(
+		stem.whole_mesh(0).get_faces().size(),
+		FieldPlant.default_plant().get_part_mesh(0, 0).get_faces().size(),
+		"its merged mesh is that part alone"
+	)
+	check(stem.whole_mesh(2) != null, "a level without meshes draws the level above's")
 	take_warnings()
 
 

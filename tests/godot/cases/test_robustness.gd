@@ -129,7 +129,7 @@ func test_bad_values_are_rejected_or_clamped_with_a_warning() -> void:
 	check(warned("needs 4 distances"), "too few distances warn")
 	field.set("part_meshes/mesh_1/head", Texture2D.new())
 	check(warned("is not a Mesh"), "a non-mesh part warns")
-	check(field.get_part_mesh(0, SunflowerField.Part.HEAD) is ArrayMesh, "the default part is used")
+	check(field.get_part_mesh(0, SunflowerField.Part.HEAD) == null, "the slot is left empty, no default part")
 	field.impostor_views = null
 	field.advance(0.016)
 	check(warned("no impostor views texture"), "a missing texture warns")
