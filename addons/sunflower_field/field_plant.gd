@@ -25,6 +25,7 @@ const PartMeshes: GDScript = preload("part_meshes.gd")
 const ImpostorBaker: GDScript = preload("impostor_baker.gd")
 const WholePlantMesh: GDScript = preload("whole_plant_mesh.gd")
 const PlantMaterial: GDScript = preload("plant_material.gd")
+const ScenePlant: GDScript = preload("scene_plant.gd")
 ## The impostor atlases' views: columns around the plant (the first from its front, +z, turning
 ## towards +x), rows of elevation from the side (0°, top row) to straight above (90°, bottom row).
 const ATLAS_VIEWS: Vector2i = Vector2i(12, 10)
@@ -234,6 +235,65 @@ static var _default: FieldPlant
 
 var _whole_meshes: Dictionary = {}  # level → [what it was merged from, the merged mesh]
 var _field_meshes: Dictionary = {}  # a part mesh → the mesh the field draws it with
+
+
+## A plant of one part made from [param scene] (a glTF, .blend or .tscn plant): its meshes with
+## their node transforms and material overrides merged per mesh level, its level-of-detail variants
+## ([code]_LOD0[/code], [code]_LOD1[/code] … node names) as mesh levels, or levels 2 and 3 simplified
+## from level 1 (see [code]scene_plant.gd[/code]); framed by [method fit_to_meshes], and as tall as
+## the scene models it (a unit a metre). Null, with an error, for a scene without a mesh to draw.
+## Bake its impostors next ([method bake_impostors]; the editor's plant inspector does it at once).
+static func from_scene(scene: PackedScene) -> FieldPlant:
+	var source: String = scene.resource_path if scene and scene.resource_path else "(unsaved scene)"
+	var made: Dictionary = ScenePlant.levels_of(scene)
+	for problem: String in made.problems:
+		push_warning("FieldPlant.from_scene: %s: %s" % [source, problem])
+	if made.levels[0] == null:
+		push_error("FieldPlant.from_scene: %s has no visible MeshInstance3D to make a plant of" % source)
+		return null
+	var plant: FieldPlant = FieldPlant.new()
+	plant.name = source.get_file().get_basename() if scene.resource_path else "Plant"
+	plant.mesh_level_1 = [made.levels[0], null, null]
+	plant.mesh_level_2 = [made.levels[1], null, null]
+	plant.mesh_level_3 = [made.levels[2], null, null]
+	plant.fit_to_meshes()
+	plant.height = plant.part_lengths.x
+	plant.middle_variation = 0.0  # a plant of one part has no middle to stretch
+	return plant
+
+
+## Frames the plant from its level-1 parts as they stack, upright: [member height_units] (the root
+## to the top), [member impostor_width] (twice the farthest reach from the stem) and
+## [member cull_radius_units] (the sphere about the middle that holds the plant tilted by the wind's
+## largest bend). A plant of one part also gets that part's top as [member part_lengths].x.
+func fit_to_meshes() -> void:
+	var lengths: Vector3 = stacked_lengths()
+	var points: PackedVector3Array = []
+	var base: float = 0.0
+	for part: int in 3:
+		var mesh: Mesh = mesh_level_1[part]
+		if mesh:
+			for point: Vector3 in mesh.get_faces():
+				points.append(point + Vector3(0.0, base, 0.0))
+		base += lengths[part]
+	if points.is_empty():
+		push_warning("FieldPlant.fit_to_meshes: '%s' has no level-1 mesh to fit to" % name)
+		return
+	var top: float = 0.0
+	var reach: float = 0.0
+	for point: Vector3 in points:
+		top = maxf(top, point.y)
+		reach = maxf(reach, Vector2(point.x, point.z).length())
+	top = maxf(top, 0.01)
+	var farthest: float = 0.0
+	for point: Vector3 in points:
+		farthest = maxf(farthest, point.distance_to(Vector3(0.0, top * 0.5, 0.0)))
+	if mesh_level_1[1] == null and mesh_level_1[2] == null:
+		part_lengths = Vector3(top, part_lengths.y, part_lengths.z)
+	height_units = top
+	impostor_width = maxf(2.0 * reach, 0.01)
+	# Tilted about the root by θ, the middle moves 2·(top/2)·sin(θ/2): the sphere grows by that.
+	cull_radius_units = farthest + top * sin(0.5 * (SunflowerWind.new() as SunflowerWind).max_bend)
 
 
 ## The built-in sunflower (shared: duplicate it before changing it).

@@ -1,0 +1,265 @@
+extends TestCase
+## A plant from a scene (FieldPlant.from_scene): a tree as an asset pack ships it (a trunk with a
+## material override, a crown node moved, turned and scaled holding alpha-cut leaves in a surface
+## override) becomes one mesh per level, placed and drawn as the scene shows it, framed from its
+## bounds; its level-of-detail variants are its mesh levels, or levels 2 and 3 are simplified; no
+## sunflower part in it; a lone plant at each mesh level looks like the scene drawn plainly.
+
+const Picture: GDScript = preload("res://runner/picture.gd")
+const Stage: GDScript = preload("res://runner/stage.gd")
+const ScenePlant: GDScript = preload("res://addons/sunflower_field/scene_plant.gd")
+const CROWN_PLACE: Vector3 = Vector3(0.5, 3.0, 0.0)
+const CROWN_SCALE: float = 1.5
+
+var stage: Node3D
+
+
+func after_each() -> void:
+	if stage:
+		stage.free()
+		stage = null
+
+
+## A tree scene: "Trunk" (a cylinder with a bark material override), "Crown" (moved, turned a quarter
+## about z, scaled 1.5) holding "Leaves" (a cone with an alpha-cut leaf material as its surface
+## override). With [param variants] the leaves come as Leaves_LOD0 / _LOD1 / _LOD2 of fewer sides.
+func _tree_scene(variants: bool = false) -> PackedScene:
+	var root: Node3D = Node3D.new()
+	root.name = "Tree"
+	var trunk: MeshInstance3D = MeshInstance3D.new()
+	trunk.name = "Trunk"
+	var cylinder: CylinderMesh = CylinderMesh.new()
+	cylinder.top_radius = 0.12
+	cylinder.bottom_radius = 0.18
+	cylinder.height = 3.0
+	trunk.mesh = cylinder
+	trunk.position = Vector3(0.0, 1.5, 0.0)
+	trunk.material_override = _bark()
+	root.add_child(trunk)
+	var crown: Node3D = Node3D.new()
+	crown.name = "Crown"
+	crown.position = CROWN_PLACE
+	crown.rotation_degrees = Vector3(0.0, 0.0, 90.0)
+	crown.scale = Vector3.ONE * CROWN_SCALE
+	root.add_child(crown)
+	var sides: Array[int] = [48]
+	if variants:
+		sides.append_array([12, 5])
+	for k: int in sides.size():
+		var leaves: MeshInstance3D = MeshInstance3D.new()
+		leaves.name = "Leaves_LOD%d" % k if variants else "Leaves"
+		var cone: CylinderMesh = CylinderMesh.new()
+		cone.top_radius = 0.0
+		cone.bottom_radius = 1.0
+		cone.height = 2.0
+		cone.radial_segments = sides[k]
+		cone.rings = 8 if k == 0 else 1
+		leaves.mesh = cone
+		leaves.set_surface_override_material(0, _leaves())
+		crown.add_child(leaves)
+	for node: Node in root.find_children("*", "", true, false):
+		node.owner = root
+	var packed: PackedScene = PackedScene.new()
+	packed.pack(root)
+	root.free()
+	return packed
+
+
+func _bark() -> StandardMaterial3D:
+	var bark: StandardMaterial3D = StandardMaterial3D.new()
+	bark.albedo_color = Color(0.35, 0.22, 0.12)
+	return bark
+
+
+## Green leaves cut by alpha: a texture of holes (every third square of 8 pixels clear).
+func _leaves() -> StandardMaterial3D:
+	var holes: Image = Image.create(64, 64, false, Image.FORMAT_RGBA8)
+	for y: int in 64:
+		for x: int in 64:
+			var clear: bool = (x / 8 + 2 * (y / 8)) % 3 == 0
+			holes.set_pixel(x, y, Color(0.25, 0.55, 0.18, 0.0 if clear else 1.0))
+	var leaves: StandardMaterial3D = StandardMaterial3D.new()
+	leaves.albedo_texture = ImageTexture.create_from_image(holes)
+	leaves.transparency = BaseMaterial3D.TRANSPARENCY_ALPHA_SCISSOR
+	leaves.alpha_scissor_threshold = 0.5
+	leaves.cull_mode = BaseMaterial3D.CULL_DISABLED
+	return leaves
+
+
+## The bounds the scene's meshes cover in the root's frame, as the engine places them.
+func _scene_bounds(packed: PackedScene) -> AABB:
+	var root: Node3D = packed.instantiate() as Node3D
+	var bounds: AABB = AABB()
+	var first: bool = true
+	for node: Node in root.find_children("*", "MeshInstance3D", true, false):
+		var instance: MeshInstance3D = node as MeshInstance3D
+		if instance.name.contains("LOD") and not instance.name.ends_with("0"):
+			continue
+		var to_root: Transform3D = Transform3D.IDENTITY
+		var walk: Node = instance
+		while walk != root:
+			to_root = (walk as Node3D).transform * to_root
+			walk = walk.get_parent()
+		var box: AABB = to_root * instance.mesh.get_aabb()
+		bounds = box if first else bounds.merge(box)
+		first = false
+	root.free()
+	return bounds
+
+
+func test_a_scene_of_several_meshes_becomes_a_plant_of_one_part_per_level() -> void:
+	var packed: PackedScene = _tree_scene()
+	var plant: FieldPlant = FieldPlant.from_scene(packed)
+	if not check(plant != null, "a plant is made of the scene"):
+		return
+	var level_1: Mesh = plant.get_part_mesh(0, 0)
+	check(level_1 != null and plant.get_part_mesh(0, 1) == null and plant.get_part_mesh(0, 2) == null, "one part")
+	# Placed by the node transforms: the merged mesh covers what the engine draws.
+	var expected: AABB = _scene_bounds(packed)
+	var merged: AABB = level_1.get_aabb()
+	check(
+		merged.position.is_equal_approx(expected.position) and merged.end.is_equal_approx(expected.end),
+		"the merged mesh covers the scene's bounds (%s against %s)" % [merged, expected]
+	)
+	# Drawn with what the nodes show: the bark override and the leaves' surface override, one surface each.
+	check_eq(level_1.get_surface_count(), 2, "a surface per material")
+	var bark: bool = false
+	var cut_leaves: bool = false
+	for surface: int in level_1.get_surface_count():
+		var material: StandardMaterial3D = level_1.surface_get_material(surface) as StandardMaterial3D
+		bark = bark or (material != null and material.albedo_color == Color(0.35, 0.22, 0.12))
+		cut_leaves = (
+			cut_leaves or (material != null and material.transparency == BaseMaterial3D.TRANSPARENCY_ALPHA_SCISSOR)
+		)
+	check(bark, "the trunk's material override")
+	check(cut_leaves, "the leaves' surface override, alpha-cut")
+	# Framed from its bounds, as tall as the scene models it.
+	check_near(plant.height, expected.end.y, 1e-3, "the plant is as tall as the scene")
+	check_near(plant.part_lengths.x, expected.end.y, 1e-3, "its one part spans it")
+	check_near(plant.height_units, expected.end.y, 1e-3, "the impostors frame its height")
+	var reach: float = maxf(maxf(-expected.position.x, expected.end.x), maxf(-expected.position.z, expected.end.z))
+	check(
+		plant.impostor_width >= 2.0 * reach - 1e-3 and plant.impostor_width <= 2.0 * reach * sqrt(2.0),
+		"and its reach (%.2f for %.2f)" % [plant.impostor_width, reach]
+	)
+	check(plant.cull_radius_units >= 0.5 * expected.end.y, "the culling sphere holds it")
+	check(plant.stacking_problems().is_empty(), "it stacks")
+	# No variants: levels 2 and 3 simplified from level 1.
+	var triangles: Array = [1, 2, 3].map(
+		func(level: int) -> int: return ScenePlant.triangle_count(plant.get("mesh_level_%d" % level)[0])
+	)
+	print("     tree from a scene: %d / %d / %d triangles at mesh 1 / 2 / 3 (2 and 3 simplified)" % triangles)
+	check(triangles[1] < triangles[0] and triangles[2] < triangles[1], "simplified levels have fewer triangles")
+	check(triangles[2] > 0, "and still draw the plant")
+	# Its variants, where the scene has them: Leaves_LOD1 at mesh 2 (with the trunk, which has none).
+	var variant_scene: PackedScene = _tree_scene(true)
+	var with_variants: FieldPlant = FieldPlant.from_scene(variant_scene)
+	var parts: Node = variant_scene.instantiate()
+	var trunk: int = ScenePlant.triangle_count(parts.get_node("Trunk").mesh)
+	for level: int in 3:
+		var variant: int = ScenePlant.triangle_count(parts.get_node("Crown/Leaves_LOD%d" % level).mesh)
+		check_eq(
+			ScenePlant.triangle_count(with_variants.get_part_mesh(level, 0)),
+			trunk + variant,
+			"mesh %d is the trunk and Leaves_LOD%d" % [level + 1, level]
+		)
+	parts.free()
+	check_eq(ScenePlant.level_of_name("Pine-lod2"), 2, "a '-lod2' suffix")
+	check_eq(ScenePlant.level_of_name("Pine"), -1, "no suffix")
+	# A field of it draws its meshes and nothing of the sunflower.
+	var field: SunflowerField = SunflowerField.new()
+	field.plant = plant
+	field.map = _one_plant_map()
+	tree.root.add_child(field)
+	field.finish_build()
+	var sunflower: Array = []
+	for level: int in 3:
+		sunflower.append(FieldPlant.default_plant().whole_mesh(level))
+		sunflower.append_array(FieldPlant.default_plant().get("mesh_level_%d" % (level + 1)))
+	var drawn: Array[Mesh] = []
+	for node: Node in field.find_children("*", "MultiMeshInstance3D", true, false):
+		var mesh: Mesh = (node as MultiMeshInstance3D).multimesh.mesh
+		if mesh:
+			drawn.append(mesh)
+	check(not drawn.is_empty(), "the field draws the plant")
+	check(drawn.all(func(m: Mesh) -> bool: return not sunflower.has(m)), "no sunflower mesh in any node")
+	field.free()
+
+
+func test_a_scene_with_nothing_to_draw_is_an_error_naming_it() -> void:
+	var empty: PackedScene = PackedScene.new()
+	var root: Node3D = Node3D.new()
+	empty.pack(root)
+	root.free()
+	allow_error("has no visible MeshInstance3D")
+	check(FieldPlant.from_scene(empty) == null, "no plant of a scene without meshes")
+
+
+## A lone tree from the scene at each mesh level against the same scene drawn plainly by the engine
+## (its full meshes), 14 m away in calm air, filling the picture's height: alike (SSIM), and nothing
+## of the sunflower's yellow.
+func test_a_lone_scene_plant_looks_like_its_scene_drawn_plainly() -> void:
+	stage = Stage.new(tree.root).root
+	var packed: PackedScene = _tree_scene()
+	var plant: FieldPlant = FieldPlant.from_scene(packed)
+	plant.yaw_range = 0.0
+	var field: SunflowerField = SunflowerField.new()
+	field.plant = plant
+	field.map = _one_plant_map()
+	field.wind_power = 0.0
+	field.lod_fade = 0.0
+	field.cheap_shadows = false  # each level casts its own shadow, as the plain scene does
+	stage.add_child(field)
+	field.finish_build()
+	field.set_process(false)
+	field.advance(1.0)
+	var root: Vector3 = field.get_plant_info(0)["position"]
+	var plain: Node3D = packed.instantiate() as Node3D
+	plain.position = root
+	stage.add_child(plain)
+	var camera: Camera3D = Camera3D.new()
+	stage.add_child(camera)
+	camera.fov = 22.0  # the tree fills the picture's height
+	camera.look_at_from_position(root + Vector3(3.0, 4.0, 13.0), root + Vector3(0.5, 2.3, 0.0))
+	camera.make_current()
+	var size: Vector2i = tree.root.get_viewport().get_texture().get_size()
+	var picture: Picture = Picture.new(size.x, size.y)
+	field.visible = false
+	await frames(4)
+	var plain_image: Image = tree.root.get_viewport().get_texture().get_image()
+	plain_image.save_png(artifact_path("scene_plant_plain.png"))
+	var plain_picture: PackedFloat32Array = picture.luminance(plain_image)
+	plain.visible = false
+	field.visible = true
+	var scores: PackedStringArray = []
+	for level: int in 3:
+		field.force_lod = level
+		field.advance(0.0)
+		await frames(4)
+		var image: Image = tree.root.get_viewport().get_texture().get_image()
+		image.save_png(artifact_path("scene_plant_mesh_%d.png" % (level + 1)))
+		var similarity: float = picture.ssim(picture.luminance(image), plain_picture)
+		scores.append("%.3f" % similarity)
+		check(similarity >= 0.95, "mesh %d looks like the scene drawn plainly (SSIM %.3f)" % [level + 1, similarity])
+		check_eq(_yellow_pixels(image), 0, "no sunflower yellow at mesh %d" % (level + 1))
+	print(
+		"     lone tree from a scene against the scene drawn plainly, SSIM at mesh 1 / 2 / 3: %s" % " / ".join(scores)
+	)
+
+
+func _one_plant_map() -> SunflowerFieldMap:
+	var one: SunflowerFieldMap = SunflowerFieldMap.new()
+	one.source_path = "user://one_scene_plant.field"
+	one.text = "1 1\n*\n".to_utf8_buffer()
+	return one
+
+
+## Pixels of petal yellow (bright red and green, little blue).
+func _yellow_pixels(image: Image) -> int:
+	var count: int = 0
+	for y: int in range(0, image.get_height(), 2):
+		for x: int in range(0, image.get_width(), 2):
+			var c: Color = image.get_pixel(x, y)
+			if c.r > 0.6 and c.g > 0.45 and c.b < 0.3:
+				count += 1
+	return count
