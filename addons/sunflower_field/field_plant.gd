@@ -128,6 +128,18 @@ static var _default: FieldPlant
 			impostor_width = accepted
 			emit_changed()
 
+## The plant's level-of-detail switch distances are the field's [member SunflowerField.lod_distances]
+## (set for the 2 m sunflower) times this. 0 (the default): its size over the sunflower's, the larger
+## of its [member height] and its width in metres ([method lod_scale_used]), so that a 5 m tree keeps
+## its meshes 2.5× as far and a 0.5 m grass clump turns into impostors at a quarter of the distance,
+## each where it covers as many pixels as the sunflower does at its switches.
+@export_range(0.0, 100.0, 0.01, "or_greater") var lod_scale: float = 0.0:
+	set(value):
+		var accepted: float = value if value >= 0.0 and is_finite(value) else lod_scale
+		if accepted != lod_scale:
+			lod_scale = accepted
+			emit_changed()
+
 ## How stiff the plant is against the wind's stiffnesses ([member SunflowerWind.stiffness_middle],
 ## [member SunflowerWind.stiffness_bottom]): 2 bends half as far as the sunflower, 0.5 twice as far.
 @export_range(0.05, 20.0, 0.01) var stiffness: float = 1.0:
@@ -398,6 +410,16 @@ func texture_drawn(kind: String) -> Texture2D:
 	return get("impostor_" + kind)
 
 
+## The scale of the field's switch distances for this plant: [member lod_scale], or when that is 0
+## the larger of [member height] and its width in metres over the default plant's height (2 m).
+func lod_scale_used() -> float:
+	if lod_scale > 0.0:
+		return lod_scale
+	var lengths: Vector3 = stacked_lengths()
+	var width: float = impostor_width * height / maxf(lengths.x + lengths.y + lengths.z, 1e-4)
+	return maxf(height, width) / float((FieldPlant as Script).get_property_default_value(&"height"))
+
+
 ## The square every impostor view frames and the height of its centre above the root, model units:
 ## the [member impostor_width] × [member height_units] cylinder fits it from every elevation
 ## (its outline seen at elevation e is w wide and h·cos e + w·sin e tall, at most √(h² + w²)).
@@ -423,6 +445,7 @@ func layout_key() -> Array:
 		tint_variation,
 		drawn_whole(),
 		use_plant_material,
+		lod_scale_used(),
 	]
 
 
@@ -451,6 +474,7 @@ func apply_to(simulation: NativeField, species: int = 0) -> void:
 	simulation.set_plant_form(species, stacked_lengths(), middle_variation, height_units, cull_radius_units, stiffness)
 	simulation.set_plant_height(species, height)
 	simulation.set_plant_variation(species, yaw_range, scale_min, scale_max, brightness_variation, tint_variation)
+	simulation.set_plant_lod_scale(species, lod_scale_used())
 
 
 func _drawn_parts(level: int) -> Array[Mesh]:

@@ -147,6 +147,11 @@ func set_plant_whole(species: int, whole: bool) -> void:
 	native.set_plant_whole(species, whole)
 
 
+## A species' switch distances are the field's times [param scale] (not positive: unchanged).
+func set_plant_lod_scale(species: int, scale: float) -> void:
+	native.set_plant_lod_scale(species, scale)
+
+
 ## A species' variety between its plants, all seeded.
 func set_plant_variation(
 	species: int, yaw_range: float, scale_min: float, scale_max: float, brightness: float, tint: float

@@ -2,8 +2,8 @@
 extends EditorPlugin
 ## Registers the importer that turns [code].field[/code] maps into [SunflowerFieldMap] resources,
 ## shows the progress of fields building in the background in the 3D editor's toolbar, adds the
-## "Bake impostors" button to the inspector of plants and fields, and paints the selected field's
-## map with the brush toolbar (field_painter.gd).
+## "Bake impostors" button to the inspector of plants and fields and "Plant from scene…" above a
+## field's plant, and paints the selected field's map with the brush toolbar (field_painter.gd).
 ## The [SunflowerField] node itself is registered by its [code]class_name[/code].
 
 const Native: GDScript = preload("native.gd")
@@ -13,6 +13,7 @@ var _progress: Control
 var _inspector: EditorInspectorPlugin
 var _painter: RefCounted
 var _map_inspector: EditorInspectorPlugin
+var _scene_plant_inspector: EditorInspectorPlugin
 
 
 func _enter_tree() -> void:
@@ -28,6 +29,8 @@ func _enter_tree() -> void:
 	add_control_to_container(CONTAINER_SPATIAL_EDITOR_MENU, _painter.toolbar)
 	_map_inspector = preload("map_inspector.gd").new(_painter)
 	add_inspector_plugin(_map_inspector)
+	_scene_plant_inspector = preload("scene_plant_inspector.gd").new(get_undo_redo())
+	add_inspector_plugin(_scene_plant_inspector)
 
 
 func _exit_tree() -> void:
@@ -40,6 +43,8 @@ func _exit_tree() -> void:
 	_inspector = null
 	remove_inspector_plugin(_map_inspector)
 	_map_inspector = null
+	remove_inspector_plugin(_scene_plant_inspector)
+	_scene_plant_inspector = null
 	remove_control_from_container(CONTAINER_SPATIAL_EDITOR_MENU, _painter.toolbar)
 	_painter.release()
 	_painter = null

@@ -17,6 +17,13 @@ const LEVEL_SHARES: Array[float] = [1.0, 0.5, 0.2]
 const KEPT: Array[int] = [
 	Mesh.ARRAY_VERTEX, Mesh.ARRAY_NORMAL, Mesh.ARRAY_TANGENT, Mesh.ARRAY_COLOR, Mesh.ARRAY_TEX_UV, Mesh.ARRAY_TEX_UV2
 ]
+## The least share of a surface's area a simplified level keeps (thin branches lose some as their
+## sides merge; a surface that would lose more keeps its triangles).
+const AREA_KEPT: float = 0.8
+## A surface of at most this many triangles per connected piece is of cards (leaves, blades): the
+## simplifier would drop whole cards, and a crown that lost its leaves no longer looks like the
+## plant, so such a surface keeps every card at every level.
+const CARD_TRIANGLES: float = 4.0
 ## The engine importer's defaults for the simplifier's normal angles, degrees.
 const NORMAL_MERGE_ANGLE: float = 60.0
 const NORMAL_SPLIT_ANGLE: float = 25.0
@@ -207,7 +214,8 @@ static func _append(merged: Dictionary, arrays: Array, transform: Transform3D) -
 
 
 ## Levels 2 and 3 of [param mesh]: its surfaces simplified to about [constant LEVEL_SHARES] of their
-## triangles (a surface the simplifier cannot reduce keeps its own).
+## triangles, keeping [constant AREA_KEPT] of their area; surfaces of cards, and those the simplifier
+## cannot reduce so, keep their own triangles.
 static func _simplified(mesh: ArrayMesh) -> Array:
 	if mesh == null:
 		return [null, null]
@@ -222,15 +230,52 @@ static func _simplified(mesh: ArrayMesh) -> Array:
 		var simpler: ArrayMesh = ArrayMesh.new()
 		for surface: int in importer.get_surface_count():
 			var arrays: Array = importer.get_surface_arrays(surface)
-			var full: int = (arrays[Mesh.ARRAY_INDEX] as PackedInt32Array).size()
-			var wanted: float = full * LEVEL_SHARES[level]
+			var positions: PackedVector3Array = arrays[Mesh.ARRAY_VERTEX]
 			var best: PackedInt32Array = arrays[Mesh.ARRAY_INDEX]
-			for lod: int in importer.get_surface_lod_count(surface):
+			var wanted: float = best.size() * LEVEL_SHARES[level]
+			var least_area: float = AREA_KEPT * _area(positions, best)
+			var cards: bool = best.size() / 3.0 <= CARD_TRIANGLES * _pieces(best, positions.size())
+			for lod: int in 0 if cards else importer.get_surface_lod_count(surface):
 				var indices: PackedInt32Array = importer.get_surface_lod_indices(surface, lod)
-				if absf(indices.size() - wanted) < absf(best.size() - wanted):
+				if (
+					absf(indices.size() - wanted) < absf(best.size() - wanted)
+					and _area(positions, indices) >= least_area
+				):
 					best = indices
 			arrays[Mesh.ARRAY_INDEX] = best
 			simpler.add_surface_from_arrays(Mesh.PRIMITIVE_TRIANGLES, arrays)
 			simpler.surface_set_material(surface, importer.get_surface_material(surface))
 		out.append(simpler)
 	return out
+
+
+## The area of the triangles [param indices] make of [param positions].
+static func _area(positions: PackedVector3Array, indices: PackedInt32Array) -> float:
+	var area: float = 0.0
+	for k: int in range(0, indices.size() - 2, 3):
+		var a: Vector3 = positions[indices[k]]
+		area += 0.5 * (positions[indices[k + 1]] - a).cross(positions[indices[k + 2]] - a).length()
+	return area
+
+
+## How many connected pieces the triangles [param indices] make of [param vertex_count] vertices.
+static func _pieces(indices: PackedInt32Array, vertex_count: int) -> int:
+	var parent: PackedInt32Array = range(vertex_count)
+	var pieces: int = vertex_count
+	for k: int in indices.size():
+		var a: int = _root_of(parent, indices[k - k % 3])
+		var b: int = _root_of(parent, indices[k])
+		if a != b:
+			parent[b] = a
+			pieces -= 1
+	var used: Dictionary = {}
+	for index: int in indices:
+		used[index] = true
+	return pieces - (vertex_count - used.size())  # vertices no triangle uses are no piece
+
+
+static func _root_of(parent: PackedInt32Array, vertex: int) -> int:
+	while parent[vertex] != vertex:
+		parent[vertex] = parent[parent[vertex]]
+		vertex = parent[vertex]
+	return vertex

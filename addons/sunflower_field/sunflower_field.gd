@@ -256,7 +256,9 @@ const WIND_PROPERTIES: Dictionary = {
 
 @export_group("Level of detail")
 ## Switch distances: mesh 1 → 2, mesh 2 → 3, mesh 3 → sprite, sprite → billboard (thesis:
-## 6, 10, 20, 25 m). Must increase.
+## 6, 10, 20, 25 m) for a plant of the sunflower's 2 m; each plant type switches at these times its
+## [method FieldPlant.lod_scale_used] (its size over 2 m unless its [member FieldPlant.lod_scale]
+## says otherwise). Must increase.
 @export var lod_distances: PackedFloat32Array = DEFAULT_LOD_DISTANCES:
 	set(value):
 		var problem: String = Native.check_lod_distances(value)

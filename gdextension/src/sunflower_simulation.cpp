@@ -43,6 +43,7 @@ void SunflowerSimulation::bind_methods() {
 	gdx::bind_method(CLASS, "set_plant_form", &SunflowerSimulation::set_plant_form,
 			{ "species", "part_lengths", "middle_variation", "height_units", "cull_radius_units", "stiffness" });
 	gdx::bind_method(CLASS, "set_plant_whole", &SunflowerSimulation::set_plant_whole, { "species", "whole" });
+	gdx::bind_method(CLASS, "set_plant_lod_scale", &SunflowerSimulation::set_plant_lod_scale, { "species", "scale" });
 	gdx::bind_method(CLASS, "set_plant_variation", &SunflowerSimulation::set_plant_variation,
 			{ "species", "yaw_range", "scale_min", "scale_max", "brightness", "tint" });
 	gdx::bind_method(CLASS, "set_wind", &SunflowerSimulation::set_wind,
@@ -238,6 +239,15 @@ void SunflowerSimulation::set_plant_form(int64_t p_species, gdx::Vector3 p_part_
 	shape.stiffness = float(p_stiffness);
 	_sim.set_shape(shape, species);
 	_sim.set_plant_height(metres, species);
+}
+
+void SunflowerSimulation::set_plant_lod_scale(int64_t p_species, double p_scale) {
+	if (!_is_species(p_species)) {
+		return;
+	}
+	PlantShape shape = _sim.plants().get_shape(uint32_t(p_species));
+	shape.lod_scale = float(p_scale); // not positive or not finite: set_shape keeps the current one
+	_sim.set_shape(shape, uint32_t(p_species));
 }
 
 void SunflowerSimulation::set_plant_whole(int64_t p_species, bool p_whole) {

@@ -49,6 +49,7 @@ public:
 	// mesh bucket (WHOLE_FLOATS_PER_INSTANCE floats, with custom data), their parts placed by the
 	// shader, instead of one per part.
 	void set_plant_whole(int64_t p_species, bool p_whole);
+	void set_plant_lod_scale(int64_t p_species, double p_scale);
 	void set_plant_variation(int64_t p_species, double p_yaw_range, double p_scale_min, double p_scale_max, double p_brightness,
 			double p_tint);
 	void set_wind(int64_t p_model, double p_power, gdx::Vector2 p_direction, double p_stiffness_middle, double p_stiffness_bottom,

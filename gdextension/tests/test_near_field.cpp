@@ -40,6 +40,48 @@ TEST_CASE("a plant's own LOD matches its distance outside the hysteresis bands")
 	}
 }
 
+TEST_CASE("a plant type's LOD scale moves its switches: twice the scale, twice the distances") {
+	for (const float scale : { 0.5f, 2.0f }) {
+		FieldSimulation sim;
+		load(sim, rect_map(120, 120));
+		PlantShape shape = sim.plants().get_shape();
+		shape.lod_scale = scale;
+		sim.set_shape(shape);
+		const glm::vec3 observer(30.0f, 1.0f, 30.0f);
+		sim.near().set_observer(observer);
+		sim.near().request_lod_update();
+		for (int i = 0; i < 20; ++i) { // chunks turn active over a few updates (ACTIVATION_BUDGET)
+			sim.update(0.016f);
+		}
+		LodSelector plain;
+		plain.configure(sim.near().get_lod().get_params());
+		const float margin = sim.near().get_lod().get_params().hysteresis * scale;
+		int checked = 0;
+		int moved = 0; // plants whose level differs from what the unscaled distances would give
+		for (uint32_t i = 0; i < sim.plants().get_plant_count(); ++i) {
+			const Plant &plant = sim.plants().get_layout().plants[i];
+			const glm::vec3 middle(plant.position.x, 0.5f * shape.height * sim.plants().get_shape().part_scale, plant.position.y);
+			const float distance = glm::length(observer - middle);
+			bool near_threshold = false;
+			for (float d : sim.near().get_lod().get_params().distances) {
+				near_threshold |= std::abs(distance - d * scale) < margin;
+			}
+			if (!near_threshold && distance < 20.0f * scale) {
+				const float seen = distance / scale;
+				CHECK(sim.near().get_plant_lod(i) == plain.select(seen * seen));
+				moved += sim.near().get_plant_lod(i) != plain.select(distance * distance) ? 1 : 0;
+				++checked;
+			}
+		}
+		CHECK(checked > 100);
+		CHECK(moved > 50);
+		// A scale that is not positive keeps the current one.
+		shape.lod_scale = -1.0f;
+		sim.set_shape(shape);
+		CHECK(sim.plants().get_shape().lod_scale == scale);
+	}
+}
+
 TEST_CASE("LOD is re-selected every interval, not every frame") {
 	FieldSimulation sim;
 	load(sim, rect_map(40, 30));

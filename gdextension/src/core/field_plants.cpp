@@ -83,6 +83,7 @@ bool FieldPlants::set_shape(const PlantShape &p_shape, uint32_t p_species) {
 	shape.height = sanitize(param::PLANT_HEIGHT_UNITS, shape.height, current.height);
 	shape.cull_radius = sanitize(param::PLANT_CULL_RADIUS_UNITS, shape.cull_radius, current.cull_radius);
 	shape.part_scale = shape.part_scale > 0.0f && std::isfinite(shape.part_scale) ? shape.part_scale : current.part_scale;
+	shape.lod_scale = shape.lod_scale > 0.0f && std::isfinite(shape.lod_scale) ? shape.lod_scale : current.lod_scale;
 	const bool drawn_otherwise = shape.whole != current.whole;
 	current = shape;
 	_chunk_signatures.clear(); // the impostors' scale may have changed

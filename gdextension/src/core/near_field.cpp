@@ -184,7 +184,9 @@ void NearField::_move_chunks(size_t p_first, size_t p_last, float p_delta, Bucke
 			}
 			// Mesh 3 near the sprite switch dithers into the impostor: both drawn, the impostor's
 			// share in its colour's alpha, the mesh's in the rest (complementary screen-door patterns).
-			const float share = lod == LOD_MESH_3 && fading ? _lod.impostor_share(_plants.plant_distance_sq(plant, _observer)) : 0.0f;
+			const float share = lod == LOD_MESH_3 && fading
+					? _lod.impostor_share(shape.lod_distance_sq(_plants.plant_distance_sq(plant, _observer)))
+					: 0.0f;
 			if (share > 0.0f) {
 				_plants.write_impostor(buckets[BUCKET_IMPOSTOR].push(), plant, share);
 				buckets[BUCKET_IMPOSTOR].include(middle, reach);
@@ -199,7 +201,9 @@ void NearField::_move_chunks(size_t p_first, size_t p_last, float p_delta, Bucke
 				// Drawn whole (by the addon's plant shader), mesh 1 and 2 near their switches dither into
 				// the next level the same way: the coarser mesh keeps the other pixels, which a negative
 				// alpha asks for (plant_surface.gdshaderinc).
-				const float coarser = lod < LOD_MESH_3 && fading ? _lod.fade_share(lod, _plants.plant_distance_sq(plant, _observer)) : 0.0f;
+				const float coarser = lod < LOD_MESH_3 && fading
+						? _lod.fade_share(lod, shape.lod_distance_sq(_plants.plant_distance_sq(plant, _observer)))
+						: 0.0f;
 				if (coarser > 0.0f) {
 					InstanceBuffer &next = buckets[mesh_bucket(lod + 1u, 0)];
 					write_whole_instance(next.push(), whole, glm::vec4(glm::vec3(color), coarser < 1.0f ? -coarser : 1.0f));

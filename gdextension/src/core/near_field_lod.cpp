@@ -18,9 +18,11 @@ float NearField::_chunk_distance_sq(uint32_t p_chunk) const {
 
 uint8_t NearField::_static_chunk_lod(uint32_t p_chunk) const {
 	// The engine's visibility-range rule: the sprite is shown while distance ≤ end (= the billboard
-	// distance), measured from the camera to the centre of the instance's bounding box.
+	// distance, scaled for the plant type), measured from the camera to the centre of the instance's
+	// bounding box.
 	const float distance = glm::length(_observer - _plants.get_chunk_bounds(p_chunk).center());
-	return distance <= get_billboard_distance() ? LOD_SPRITE : LOD_BILLBOARD;
+	const float scale = _plants.get_shape(_plants.get_layout().chunks[p_chunk].species).lod_scale;
+	return distance <= get_billboard_distance() * scale ? LOD_SPRITE : LOD_BILLBOARD;
 }
 
 void NearField::_select_lods() {
@@ -47,7 +49,11 @@ void NearField::_select_lods() {
 	for (uint32_t c : _previous_active) {
 		_select_chunk_lods(c, false, enter, leave);
 	}
-	const float reach = leave + _plants.get_plant_reach();
+	float largest_scale = 0.0f; // of the plant types' switch distances
+	for (uint32_t species = 0; species < _plants.get_species_count(); ++species) {
+		largest_scale = std::max(largest_scale, _plants.get_shape(species).lod_scale);
+	}
+	const float reach = leave * largest_scale + _plants.get_plant_reach();
 	const GridRange cells = _plants.grid_range(glm::vec2(_observer.x, _observer.z), reach);
 	// Chunks turning active are taken nearest first, at most ACTIVATION_BUDGET plants per update: after
 	// a jump of the observer the plants next to it are meshes at once, and the rest of the
@@ -61,7 +67,7 @@ void NearField::_select_lods() {
 				if (_visit_mark[c] == _lod_pass) {
 					continue;
 				}
-				const float distance_sq = _chunk_distance_sq(c);
+				const float distance_sq = _plants.get_shape(layout.chunks[c].species).lod_distance_sq(_chunk_distance_sq(c));
 				if (distance_sq < enter * enter) {
 					_activation.push_back({ distance_sq, c });
 				}
@@ -86,14 +92,16 @@ void NearField::_select_chunk_lods(uint32_t p_chunk, bool p_forced, float p_ente
 	const FieldLayout &layout = _plants.get_layout();
 	const LodParams &params = _lod.get_params();
 	_visit_mark[p_chunk] = _lod_pass;
-	const float distance_sq = p_forced ? 0.0f : _chunk_distance_sq(p_chunk);
+	const Chunk &chunk = layout.chunks[p_chunk];
+	const PlantShape &shape = _plants.get_shape(chunk.species);
+	// Distances as the field's switch distances see them for this plant type (PlantShape::lod_scale).
+	const float distance_sq = p_forced ? 0.0f : shape.lod_distance_sq(_chunk_distance_sq(p_chunk));
 	const bool was_active = _chunk_active[p_chunk] != 0;
 	const bool active = p_forced || (was_active ? distance_sq < p_leave * p_leave : distance_sq < p_enter * p_enter);
 	if (active != was_active) {
 		_chunk_active[p_chunk] = active ? 1 : 0;
 		++_changed_chunks;
 	}
-	const Chunk &chunk = layout.chunks[p_chunk];
 	std::vector<PlantWind> &winds = _chunk_wind[p_chunk];
 	if (!active) {
 		if (was_active) {
@@ -109,7 +117,7 @@ void NearField::_select_chunk_lods(uint32_t p_chunk, bool p_forced, float p_ente
 	}
 	for (uint32_t k = 0; k < chunk.count; ++k) {
 		const uint32_t index = layout.chunk_plants[chunk.first + k];
-		const float plant_sq = _plants.plant_distance_sq(layout.plants[index], _observer);
+		const float plant_sq = shape.lod_distance_sq(_plants.plant_distance_sq(layout.plants[index], _observer));
 		if (p_forced) {
 			if (!was_active || _plant_lod[index] != params.force_level) {
 				_wind.init_plant(winds[k], _plants.get_layout_params().seed, index, _time);

@@ -36,6 +36,13 @@ struct PlantShape {
 	// parts is drawn at plant_height / parts_height().
 	float part_scale = float(param::PLANT_HEIGHT.default_value) / (PART_LENGTHS.x + PART_LENGTHS.y + PART_LENGTHS.z);
 
+	// The plant type's level-of-detail switch distances are the field's (LodParams::distances, set
+	// for the 2 m sunflower) times this: a plant type of its own size switches where it looks the
+	// same (the addon passes its height over 2 m unless the plant says otherwise).
+	float lod_scale = 1.0f;
+	// The squared distances a LodSelector of the field's distances compares for this plant type.
+	float lod_distance_sq(float p_distance_sq) const { return p_distance_sq / (lod_scale * lod_scale); }
+
 	// Whether the near levels draw a plant as one instance (WholePlant: its parts in one mesh, placed
 	// by the shader) instead of one instance per part.
 	bool whole = false;
@@ -46,7 +53,7 @@ struct PlantShape {
 	bool operator==(const PlantShape &p_other) const {
 		return part_lengths == p_other.part_lengths && middle_variation == p_other.middle_variation &&
 				height == p_other.height && cull_radius == p_other.cull_radius && part_scale == p_other.part_scale &&
-				stiffness == p_other.stiffness && whole == p_other.whole;
+				stiffness == p_other.stiffness && lod_scale == p_other.lod_scale && whole == p_other.whole;
 	}
 };
 

@@ -10,6 +10,9 @@ const Stage: GDScript = preload("res://runner/stage.gd")
 const ScenePlant: GDScript = preload("res://addons/sunflower_field/scene_plant.gd")
 const CROWN_PLACE: Vector3 = Vector3(0.5, 3.0, 0.0)
 const CROWN_SCALE: float = 1.5
+## Plants made by Blender's Sapling Tree Gen (assets/test_plants/make_test_plants.py).
+const TEST_PLANT_FOLDER: String = "res://test_plants"
+const TEST_PLANTS: PackedStringArray = ["maple_tree.glb", "bottlebrush_bush.glb", "grass_clump.glb"]
 
 var stage: Node3D
 
@@ -186,6 +189,56 @@ func test_a_scene_of_several_meshes_becomes_a_plant_of_one_part_per_level() -> v
 	field.free()
 
 
+## Each plant type switches levels at the field's distances times its size over the sunflower's 2 m:
+## in a field of a row of Sapling maples (8.7 m), sunflowers and grass clumps (0.9 m), plants the same
+## distance away are at finer levels the larger their type; lod_scale overrides it.
+func test_lod_distances_follow_each_plant_types_size() -> void:
+	var maple: FieldPlant = FieldPlant.from_scene(load(TEST_PLANT_FOLDER.path_join("maple_tree.glb")))
+	var grass: FieldPlant = FieldPlant.from_scene(load(TEST_PLANT_FOLDER.path_join("grass_clump.glb")))
+	check_near(FieldPlant.default_plant().lod_scale_used(), 1.0, 1e-3, "the sunflower keeps the field's distances")
+	check(maple.lod_scale_used() > 4.0, "a maple's are over 4× as far (%.2f)" % maple.lod_scale_used())
+	check(grass.lod_scale_used() < 0.6, "a grass clump's under 0.6× (%.2f)" % grass.lod_scale_used())
+	var map: SunflowerFieldMap = SunflowerFieldMap.new()
+	map.source_path = "user://three_sizes.field"
+	map.text = ("80 3\n%s\n%s\n%s\n" % ["t".repeat(80), "*".repeat(80), "g".repeat(80)]).to_utf8_buffer()
+	var observer: Node3D = Node3D.new()
+	observer.name = "Observer"
+	observer.position = Vector3(0.0, 1.6, 0.75)
+	var field: SunflowerField = SunflowerField.new()
+	field.legend = {"t": maple, "g": grass}
+	tree.root.add_child(observer)
+	field.observer = NodePath("../Observer")
+	tree.root.add_child(field)
+	field.map = map
+	field.wind_power = 0.0
+	field.finish_build()
+	for i: int in 20:
+		field.advance(0.3)
+	var distances: PackedFloat32Array = field.lod_distances
+	var rows: Array[FieldPlant] = [maple, FieldPlant.default_plant(), grass]
+	var checked: int = 0
+	for i: int in field.get_plant_count():
+		var info: Dictionary = field.get_plant_info(i)
+		var position: Vector3 = info["position"]
+		var row: int = clampi(int(position.z / field.cell_size), 0, 2)
+		var scale: float = rows[row].lod_scale_used()
+		var distance: float = Vector2(position.x, position.z).distance_to(Vector2(0.0, 0.75)) / scale
+		var expected: int = distances.size()
+		for level: int in distances.size():
+			if distance < distances[level]:
+				expected = level
+				break
+		var near_switch: bool = Array(distances).any(func(d: float) -> bool: return absf(distance - d) < 1.5)
+		if not near_switch and expected <= SunflowerField.Lod.MESH_3:
+			checked += 1
+			check_eq(info["lod"], expected, "row %d, %.1f m scaled: level %d" % [row, distance, expected])
+	check(checked > 40, "plants of all three types checked (%d)" % checked)
+	maple.lod_scale = 1.0
+	check_near(maple.lod_scale_used(), 1.0, 1e-6, "lod_scale overrides the size")
+	field.free()
+	observer.free()
+
+
 func test_a_scene_with_nothing_to_draw_is_an_error_naming_it() -> void:
 	var empty: PackedScene = PackedScene.new()
 	var root: Node3D = Node3D.new()
@@ -195,13 +248,27 @@ func test_a_scene_with_nothing_to_draw_is_an_error_naming_it() -> void:
 	check(FieldPlant.from_scene(empty) == null, "no plant of a scene without meshes")
 
 
-## A lone tree from the scene at each mesh level against the same scene drawn plainly by the engine
-## (its full meshes), 14 m away in calm air, filling the picture's height: alike (SSIM), and nothing
-## of the sunflower's yellow.
+## Each test plant alone (the tree scene built here and the three Sapling plants of
+## assets/test_plants) at each mesh level against the same scene drawn plainly by the engine (its
+## full meshes), in calm air, seen 20° up through a 50° lens from as near as that level is drawn (mesh
+## 1 from half its first switch distance, mesh 2 from that switch, mesh 3 from the next, each
+## scaled by the plant's size): alike where the plant is (SSIM ≥ 0.95 over its box on screen), and
+## nothing of the sunflower's yellow.
 func test_a_lone_scene_plant_looks_like_its_scene_drawn_plainly() -> void:
-	stage = Stage.new(tree.root).root
-	var packed: PackedScene = _tree_scene()
+	var scenes: Dictionary = {"built": _tree_scene()}
+	for file: String in TEST_PLANTS:
+		scenes[file.get_basename()] = load(TEST_PLANT_FOLDER.path_join(file)) as PackedScene
+	for plant_name: String in scenes:
+		stage = Stage.new(tree.root).root
+		await _compare_lone_plant(plant_name, scenes[plant_name])
+		stage.free()
+		stage = null
+
+
+func _compare_lone_plant(plant_name: String, packed: PackedScene) -> void:
 	var plant: FieldPlant = FieldPlant.from_scene(packed)
+	if not check(plant != null, "%s: a plant is made of the scene" % plant_name):
+		return
 	plant.yaw_range = 0.0
 	var field: SunflowerField = SunflowerField.new()
 	field.plant = plant
@@ -219,32 +286,59 @@ func test_a_lone_scene_plant_looks_like_its_scene_drawn_plainly() -> void:
 	stage.add_child(plain)
 	var camera: Camera3D = Camera3D.new()
 	stage.add_child(camera)
-	camera.fov = 22.0  # the tree fills the picture's height
-	camera.look_at_from_position(root + Vector3(3.0, 4.0, 13.0), root + Vector3(0.5, 2.3, 0.0))
+	camera.fov = 50.0
 	camera.make_current()
-	var size: Vector2i = tree.root.get_viewport().get_texture().get_size()
-	var picture: Picture = Picture.new(size.x, size.y)
-	field.visible = false
-	await frames(4)
-	var plain_image: Image = tree.root.get_viewport().get_texture().get_image()
-	plain_image.save_png(artifact_path("scene_plant_plain.png"))
-	var plain_picture: PackedFloat32Array = picture.luminance(plain_image)
-	plain.visible = false
-	field.visible = true
+	var middle: Vector3 = root + Vector3(0.0, plant.height * 0.5, 0.0)
+	var nearest: Array[float] = [0.5 * field.lod_distances[0], field.lod_distances[0], field.lod_distances[1]]
 	var scores: PackedStringArray = []
 	for level: int in 3:
-		field.force_lod = level
-		field.advance(0.0)
-		await frames(4)
-		var image: Image = tree.root.get_viewport().get_texture().get_image()
-		image.save_png(artifact_path("scene_plant_mesh_%d.png" % (level + 1)))
-		var similarity: float = picture.ssim(picture.luminance(image), plain_picture)
+		var distance: float = nearest[level] * plant.lod_scale_used()
+		camera.look_at_from_position(middle + Vector3(0.3, 0.36, 0.9).normalized() * distance, middle)
+		var box: Rect2i = _box_on_screen(camera, root, plant)
+		var picture: Picture = Picture.new(box.size.x, box.size.y)
+		var pictures: Array[PackedFloat32Array] = []
+		for drawn: Node3D in [plain, field]:
+			plain.visible = drawn == plain
+			field.visible = drawn == field
+			field.force_lod = level
+			field.advance(0.0)
+			await frames(4)
+			var image: Image = tree.root.get_viewport().get_texture().get_image()
+			var way: String = "plain" if drawn == plain else "field"
+			image.save_png(artifact_path("scene_plant_%s_mesh_%d_%s.png" % [plant_name, level + 1, way]))
+			pictures.append(picture.luminance(image.get_region(box)))
+			if drawn == field:
+				check_eq(_yellow_pixels(image), 0, "%s: no sunflower yellow at mesh %d" % [plant_name, level + 1])
+		var similarity: float = picture.ssim(pictures[1], pictures[0])
 		scores.append("%.3f" % similarity)
-		check(similarity >= 0.95, "mesh %d looks like the scene drawn plainly (SSIM %.3f)" % [level + 1, similarity])
-		check_eq(_yellow_pixels(image), 0, "no sunflower yellow at mesh %d" % (level + 1))
-	print(
-		"     lone tree from a scene against the scene drawn plainly, SSIM at mesh 1 / 2 / 3: %s" % " / ".join(scores)
+		check(
+			similarity >= 0.95,
+			"%s: mesh %d looks like the scene drawn plainly (SSIM %.3f)" % [plant_name, level + 1, similarity]
+		)
+	var triangles: Array = [1, 2, 3].map(
+		func(level: int) -> int: return ScenePlant.triangle_count(plant.get("mesh_level_%d" % level)[0])
 	)
+	print(
+		(
+			"     %s (%.2f m, %d / %d / %d triangles) against its scene drawn plainly, SSIM at mesh 1 / 2 / 3: %s"
+			% ([plant_name, plant.height] + triangles + [" / ".join(scores)])
+		)
+	)
+
+
+## The rectangle of the screen that holds [param plant] standing at [param root], a tenth more each
+## way, within the viewport.
+func _box_on_screen(camera: Camera3D, root: Vector3, plant: FieldPlant) -> Rect2i:
+	var half: float = 0.5 * plant.impostor_width * plant.height / plant.height_units
+	var box: Rect2 = Rect2(camera.unproject_position(root), Vector2.ZERO)
+	for corner: int in 8:
+		var offset: Vector3 = Vector3(
+			half if corner & 1 else -half, plant.height if corner & 2 else 0.0, half if corner & 4 else -half
+		)
+		box = box.expand(camera.unproject_position(root + offset))
+	box = box.grow(0.1 * maxf(box.size.x, box.size.y))
+	var screen: Rect2i = Rect2i(Vector2i.ZERO, tree.root.get_viewport().get_texture().get_size())
+	return Rect2i(box.position.floor(), box.size.ceil()).intersection(screen)
 
 
 func _one_plant_map() -> SunflowerFieldMap:
