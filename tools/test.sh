@@ -368,20 +368,22 @@ if runs editor; then
     record 0 1 "editor: paint, erase, undo, redo, write-back, a missing file, a new field"
   fi
   rm -rf "$paintproj"
-  echo "== editor (Xvfb, Vulkan): a plant selected in the inspector, its 'Bake impostors' button pressed"
+  echo "== editor (Xvfb, Vulkan): a plant selected in the inspector, its 'Bake impostors' button pressed; three glTF"
+  echo "   plants dropped on a field's 'Plant from scene…'"
   bakeproj=$(mktemp -d)
   new_project "$bakeproj"
   cp -r "$repo/tests/editor_bake/bake_probe" "$bakeproj/addons/"
   cp "$repo/tests/editor_bake/"{project.godot,my_plant.tres,own_plant_terrain.tscn,check_own_plant.gd} "$repo/fields/demo.field" \
-    "$bakeproj/"
+    "$repo/assets/test_plants/"*.glb "$bakeproj/"
   if "$repo/tools/import_project.sh" "$bakeproj" >"$artifacts/editor_bake.log" 2>&1 &&
     RUN_PROBE=1 PROBE_SHOT="$artifacts/editor_bake.png" timeout 300 xvfb-run -a -s "-screen 0 1600x900x24" "$godot" --editor \
       --audio-driver Dummy --path "$bakeproj" >>"$artifacts/editor_bake.log" 2>&1 &&
     grep -q '^probe: ok$' "$artifacts/editor_bake.log"; then
-    record 1 0 "editor: Bake impostors writes, imports and saves the plant's textures"
+    grep '^probe:' "$artifacts/editor_bake.log" | head -n 3
+    record 1 0 "editor: Bake impostors writes, imports and saves the plant's textures; glTF plants dropped on a field"
   else
     grep -E '^probe:|ERROR' "$artifacts/editor_bake.log" | head -n 10
-    record 0 1 "editor: Bake impostors writes, imports and saves the plant's textures"
+    record 0 1 "editor: Bake impostors writes, imports and saves the plant's textures; glTF plants dropped on a field"
   fi
   # Then the game: a scene without code grows that plant, with its baked impostors, on a collider terrain.
   if timeout 300 "${xvfb[@]}" "$godot" --audio-driver Dummy --path "$bakeproj" \

@@ -227,6 +227,7 @@ static func _simplified(mesh: ArrayMesh) -> Array:
 	importer.generate_lods(NORMAL_MERGE_ANGLE, NORMAL_SPLIT_ANGLE, [])
 	var out: Array = []
 	for level: int in [1, 2]:
+		var simplified: bool = false
 		var simpler: ArrayMesh = ArrayMesh.new()
 		for surface: int in importer.get_surface_count():
 			var arrays: Array = importer.get_surface_arrays(surface)
@@ -242,10 +243,11 @@ static func _simplified(mesh: ArrayMesh) -> Array:
 					and _area(positions, indices) >= least_area
 				):
 					best = indices
+			simplified = simplified or best != arrays[Mesh.ARRAY_INDEX]
 			arrays[Mesh.ARRAY_INDEX] = best
 			simpler.add_surface_from_arrays(Mesh.PRIMITIVE_TRIANGLES, arrays)
 			simpler.surface_set_material(surface, importer.get_surface_material(surface))
-		out.append(simpler)
+		out.append(simpler if simplified else (out[-1] if level == 2 and out[-1] != mesh else mesh))
 	return out
 
 

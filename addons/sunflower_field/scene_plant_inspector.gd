@@ -89,19 +89,23 @@ static func _free_base(base: String) -> String:
 	return candidate
 
 
-## Saves [param plant]'s meshes as [param base]_meshN.res and the plant as [param base].tres.
+## Saves [param plant]'s meshes as [param base]_meshN.res (a level that is the one above's is saved
+## once) and the plant, naming them, as [param base].tres; each takes its file's path.
 static func _save(plant: FieldPlant, base: String) -> Error:
 	var saved: Array[Mesh] = []
 	for level: int in 3:
 		var mesh: Mesh = plant.get_part_mesh(level, 0)
 		if mesh and not saved.has(mesh):
-			var error: Error = ResourceSaver.save(
-				mesh, "%s_mesh%d.res" % [base, level + 1], ResourceSaver.FLAG_CHANGE_PATH | ResourceSaver.FLAG_COMPRESS
-			)
+			var path: String = "%s_mesh%d.res" % [base, level + 1]
+			var error: Error = ResourceSaver.save(mesh, path, ResourceSaver.FLAG_COMPRESS)
 			if error != OK:
 				return error
+			mesh.take_over_path(path)
 			saved.append(mesh)
-	return ResourceSaver.save(plant, base + ".tres", ResourceSaver.FLAG_CHANGE_PATH)
+	var result: Error = ResourceSaver.save(plant, base + ".tres")
+	if result == OK:
+		plant.take_over_path(base + ".tres")
+	return result
 
 
 ## Shows step [param step] of [constant STEPS] on the button and bar; -1: done, both as before.

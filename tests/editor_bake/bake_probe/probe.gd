@@ -2,9 +2,16 @@
 extends EditorPlugin
 ## Selects res://my_plant.tres in the inspector as a user would, saves a picture of the editor,
 ## presses the inspector's "Bake impostors" button and checks that the textures were written,
-## imported and saved into the plant. Prints "probe: ok" or what failed, then quits the editor.
+## imported and saved into the plant. Then opens own_plant_terrain.tscn, selects its field and drops
+## each glTF test plant (made by Blender's Sapling) on the field's "Plant from scene…": each becomes
+## the field's plant, saved beside the scene with its impostors baked, with undo and redo; a picture
+## of the editor each time. Prints "probe: ok" or what failed, then quits the editor.
 
 const PLANT_PATH: String = "res://my_plant.tres"
+const SceneDropButton: GDScript = preload("res://addons/sunflower_field/scene_drop_button.gd")
+## The test plants dropped (PROBE_PLANTS, comma-separated, or the grass clump alone: baking a tree or
+## a bush in the software-rendered editor takes minutes).
+const TEST_PLANTS: PackedStringArray = ["maple_tree", "bottlebrush_bush", "grass_clump"]
 
 
 func _enter_tree() -> void:
@@ -50,6 +57,7 @@ func _run() -> void:
 			problems.append("the views atlas is empty or has no transparent background")
 		elif not image.has_mipmaps():
 			problems.append("the views atlas was imported without mipmaps")
+	problems.append_array(await _plants_from_scenes(tree, shot))
 	print("probe: " + ("ok" if problems.is_empty() else "; ".join(problems)))
 	await tree.create_timer(3.0).timeout  # no pipeline left compiling at exit (godot#117064 deadlocks it)
 	tree.quit(0 if problems.is_empty() else 1)
@@ -63,3 +71,72 @@ func _find_button(node: Node, text: String) -> Button:
 		if found:
 			return found
 	return null
+
+
+## Drops each test plant's .glb on the selected field's "Plant from scene…" (as the FileSystem dock
+## does: the button's drop handler with the dock's drag data) and checks the field's new plant.
+func _plants_from_scenes(tree: SceneTree, shot: String) -> PackedStringArray:
+	var problems: PackedStringArray = []
+	EditorInterface.open_scene_from_path("res://own_plant_terrain.tscn")
+	for i: int in 30:
+		await tree.process_frame
+	var field: SunflowerField = EditorInterface.get_edited_scene_root().get_node_or_null("SunflowerField")
+	if field == null:
+		return PackedStringArray(["own_plant_terrain.tscn has no SunflowerField"])
+	EditorInterface.edit_node(field)
+	for i: int in 30:
+		await tree.process_frame
+	var button: Button = _find_button(EditorInterface.get_inspector(), SceneDropButton.TEXT)
+	if button == null:
+		return PackedStringArray(["no 'Plant from scene…' in the field's inspector"])
+	var chosen: String = OS.get_environment("PROBE_PLANTS")
+	for plant_name: String in chosen.split(",") if not chosen.is_empty() else PackedStringArray(["grass_clump"]):
+		if not TEST_PLANTS.has(plant_name):
+			problems.append("PROBE_PLANTS names no test plant: %s" % plant_name)
+			continue
+		var scene_path: String = "res://%s.glb" % plant_name
+		var before: FieldPlant = field.plant
+		var drag: Dictionary = {"type": "files", "files": PackedStringArray([scene_path])}
+		if not button._can_drop_data(Vector2.ZERO, drag):
+			problems.append("%s: the button refuses the drop" % scene_path)
+			continue
+		button._drop_data(Vector2.ZERO, drag)
+		for i: int in 900:
+			await tree.process_frame
+			if field.plant != before and button.text == SceneDropButton.TEXT:
+				break
+		var plant: FieldPlant = field.plant
+		var saved: String = "res://%s_plant.tres" % plant_name
+		if plant == before or plant == null or plant.resource_path != saved:
+			problems.append("%s: the field's plant is not %s (%s)" % [scene_path, saved, plant])
+			continue
+		if plant.impostor_views == null or not FileAccess.file_exists("res://%s_plant_views.png" % plant_name):
+			problems.append("%s: its impostors were not baked" % saved)
+		var sunflower: Array = FieldPlant.default_plant().mesh_level_1 + FieldPlant.default_plant().mesh_level_3
+		for level: int in 3:
+			var mesh: Mesh = plant.get_part_mesh(level, 0)
+			if mesh == null or sunflower.has(mesh) or plant.get_part_mesh(level, 1) or plant.get_part_mesh(level, 2):
+				problems.append("%s: mesh level %d is not the scene's one part" % [saved, level + 1])
+		for i: int in 60:
+			await tree.process_frame
+		if not shot.is_empty():
+			var picture: String = shot.get_basename() + "_%s.png" % plant_name
+			EditorInterface.get_base_control().get_viewport().get_texture().get_image().save_png(picture)
+		(
+			EditorInterface
+			. get_editor_undo_redo()
+			. get_history_undo_redo(EditorInterface.get_editor_undo_redo().get_object_history_id(field))
+			. undo()
+		)
+		if field.plant != before:
+			problems.append("%s: undo does not give the field its plant back" % saved)
+		(
+			EditorInterface
+			. get_editor_undo_redo()
+			. get_history_undo_redo(EditorInterface.get_editor_undo_redo().get_object_history_id(field))
+			. redo()
+		)
+		if field.plant != plant:
+			problems.append("%s: redo does not set it again" % saved)
+		print("probe: %s is the field's plant, %.2f m tall, baked" % [saved, plant.height])
+	return problems
