@@ -341,6 +341,78 @@ func _box_on_screen(camera: Camera3D, root: Vector3, plant: FieldPlant) -> Rect2
 	return Rect2i(box.position.floor(), box.size.ceil()).intersection(screen)
 
 
+## A plant of one part bends in the wind instead of leaning like a post: a 10 m red pole from a scene,
+## seen from the side (an orthographic view across a strong wind), moves at its top and stands at its
+## base. A rigid lean about the root would move a point at a tenth of its height a tenth as far as
+## the top; the bend moves it under a twentieth as far.
+func test_a_plant_of_one_part_bends_in_the_wind_and_its_base_stands() -> void:
+	stage = Stage.new(tree.root).root
+	var pole: Node3D = Node3D.new()
+	var body: MeshInstance3D = MeshInstance3D.new()
+	var box: BoxMesh = BoxMesh.new()
+	box.size = Vector3(0.3, 10.0, 0.3)
+	box.subdivide_height = 40  # vertices all the way up, as a trunk has
+	var red: StandardMaterial3D = StandardMaterial3D.new()
+	red.albedo_color = Color(1.0, 0.02, 0.02)
+	box.material = red
+	body.mesh = box
+	body.position.y = 5.0
+	pole.add_child(body)
+	body.owner = pole
+	var packed: PackedScene = PackedScene.new()
+	packed.pack(pole)
+	pole.free()
+	var plant: FieldPlant = FieldPlant.from_scene(packed)
+	plant.yaw_range = 0.0
+	check(plant.drawn_whole(), "the pole is drawn whole (its shader bends it)")
+	var field: SunflowerField = SunflowerField.new()
+	field.plant = plant
+	field.map = _one_plant_map()
+	field.wind_direction = Vector2(1.0, 0.0)
+	field.lod_fade = 0.0
+	field.force_lod = SunflowerField.Lod.MESH_1
+	stage.add_child(field)
+	field.finish_build()
+	field.set_process(false)
+	var root: Vector3 = field.get_plant_info(0)["position"]
+	var camera: Camera3D = Camera3D.new()
+	stage.add_child(camera)
+	camera.projection = Camera3D.PROJECTION_ORTHOGONAL
+	camera.size = 12.0
+	camera.look_at_from_position(root + Vector3(0.0, 5.5, 30.0), root + Vector3(0.0, 5.5, 0.0))
+	camera.make_current()
+	var centres: Array[PackedFloat32Array] = []
+	for power: float in [0.0, 6.0]:
+		field.wind_power = power
+		for step: int in 90:
+			field.advance(1.0 / 30.0)
+		await frames(4)
+		var image: Image = tree.root.get_viewport().get_texture().get_image()
+		image.save_png(artifact_path("scene_plant_pole_wind_%d.png" % int(power)))
+		var metres: float = image.get_height() / camera.size
+		var row_of: Callable = func(height: float) -> int:
+			return int(image.get_height() * 0.5 - (height - 5.5) * metres)
+		centres.append(PackedFloat32Array([_red_centre(image, row_of.call(1.0)), _red_centre(image, row_of.call(9.5))]))
+	var metres_per_pixel: float = camera.size / tree.root.get_viewport().get_texture().get_size().y
+	var low: float = (centres[1][0] - centres[0][0]) * metres_per_pixel
+	var top: float = (centres[1][1] - centres[0][1]) * metres_per_pixel
+	print("     a 10 m pole in wind 6: its top moves %.2f m, a point 1 m up %.3f m" % [top, low])
+	check(top > 0.3, "the top sways with the wind (%.2f m)" % top)
+	check(absf(low) < 0.05 * absf(top), "the base stands: 1 m up moves under a twentieth of the top (%.3f m)" % low)
+
+
+## The mean column of the pole's red pixels in [param row] (-1 when none).
+func _red_centre(image: Image, row: int) -> float:
+	var sum: float = 0.0
+	var count: int = 0
+	for x: int in image.get_width():
+		var c: Color = image.get_pixel(x, clampi(row, 0, image.get_height() - 1))
+		if c.r > 0.3 and c.r > 3.0 * c.g and c.r > 3.0 * c.b:
+			sum += x
+			count += 1
+	return sum / count if count > 0 else -1.0
+
+
 func _one_plant_map() -> SunflowerFieldMap:
 	var one: SunflowerFieldMap = SunflowerFieldMap.new()
 	one.source_path = "user://one_scene_plant.field"
