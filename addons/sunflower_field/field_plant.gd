@@ -411,13 +411,17 @@ func texture_drawn(kind: String) -> Texture2D:
 
 
 ## The scale of the field's switch distances for this plant: [member lod_scale], or when that is 0
-## the larger of [member height] and its width in metres over the default plant's height (2 m).
+## the larger of [member height] and [method width_metres] over the default plant's height (2 m).
 func lod_scale_used() -> float:
 	if lod_scale > 0.0:
 		return lod_scale
+	return maxf(height, width_metres()) / float((FieldPlant as Script).get_property_default_value(&"height"))
+
+
+## The plant's width in metres at its size factor 1: [member impostor_width] at [member height].
+func width_metres() -> float:
 	var lengths: Vector3 = stacked_lengths()
-	var width: float = impostor_width * height / maxf(lengths.x + lengths.y + lengths.z, 1e-4)
-	return maxf(height, width) / float((FieldPlant as Script).get_property_default_value(&"height"))
+	return impostor_width * height / maxf(lengths.x + lengths.y + lengths.z, 1e-4)
 
 
 ## The square every impostor view frames and the height of its centre above the root, model units:

@@ -4,7 +4,8 @@ extends EditorInspectorPlugin
 ## dropped on it from the FileSystem dock or chosen in a dialog. The scene becomes a [FieldPlant]
 ## ([method FieldPlant.from_scene]) saved beside it ([code]<scene>_plant.tres[/code] and its meshes
 ## as [code]<scene>_plant_mesh1.res[/code] …), its impostors are baked at once (a progress bar shows
-## the steps), and it becomes the field's plant in one undoable action.
+## the steps), and it becomes the field's plant in one undoable action, which also widens the field's
+## cells to the plant's width when they are narrower (trees 0.5 m apart would stand in each other).
 
 const SceneDropButton: GDScript = preload("scene_drop_button.gd")
 const ScenePlant: GDScript = preload("scene_plant.gd")
@@ -71,9 +72,20 @@ func make_plant(path: String, field: SunflowerField, button: Button = null, bar:
 			% ([base, path, plant.height] + triangles)
 		)
 	)
+	# Plants wider than the field's cells would stand inside each other: the cells widen to the plant.
+	var spacing: float = snappedf(plant.width_metres() + 0.049, 0.05)
 	_undo.create_action("Plant from scene", UndoRedo.MERGE_DISABLE, field)
 	_undo.add_do_property(field, &"plant", plant)
 	_undo.add_undo_property(field, &"plant", field.plant)
+	if spacing > field.cell_size:
+		print(
+			(
+				"Plant from scene: the field's cell_size goes from %.2f to %.2f m, the plant's width"
+				% [field.cell_size, spacing]
+			)
+		)
+		_undo.add_do_property(field, &"cell_size", spacing)
+		_undo.add_undo_property(field, &"cell_size", field.cell_size)
 	_undo.commit_action()
 	_show_step(-1, button, bar)
 	return plant

@@ -96,6 +96,7 @@ func _plants_from_scenes(tree: SceneTree, shot: String) -> PackedStringArray:
 			continue
 		var scene_path: String = "res://%s.glb" % plant_name
 		var before: FieldPlant = field.plant
+		var cells_before: float = field.cell_size
 		var drag: Dictionary = {"type": "files", "files": PackedStringArray([scene_path])}
 		if not button._can_drop_data(Vector2.ZERO, drag):
 			problems.append("%s: the button refuses the drop" % scene_path)
@@ -128,8 +129,8 @@ func _plants_from_scenes(tree: SceneTree, shot: String) -> PackedStringArray:
 			. get_history_undo_redo(EditorInterface.get_editor_undo_redo().get_object_history_id(field))
 			. undo()
 		)
-		if field.plant != before:
-			problems.append("%s: undo does not give the field its plant back" % saved)
+		if field.plant != before or field.cell_size != cells_before:
+			problems.append("%s: undo does not give the field its plant and cells back" % saved)
 		(
 			EditorInterface
 			. get_editor_undo_redo()
@@ -138,5 +139,12 @@ func _plants_from_scenes(tree: SceneTree, shot: String) -> PackedStringArray:
 		)
 		if field.plant != plant:
 			problems.append("%s: redo does not set it again" % saved)
+		if field.cell_size < plant.width_metres():
+			problems.append(
+				(
+					"%s: cells of %.2f m are narrower than the plant (%.2f m)"
+					% [saved, field.cell_size, plant.width_metres()]
+				)
+			)
 		print("probe: %s is the field's plant, %.2f m tall, baked" % [saved, plant.height])
 	return problems

@@ -8,6 +8,7 @@ extends TestCase
 const Picture: GDScript = preload("res://runner/picture.gd")
 const Stage: GDScript = preload("res://runner/stage.gd")
 const ScenePlant: GDScript = preload("res://addons/sunflower_field/scene_plant.gd")
+const ImpostorBaker: GDScript = preload("res://addons/sunflower_field/impostor_baker.gd")
 const CROWN_PLACE: Vector3 = Vector3(0.5, 3.0, 0.0)
 const CROWN_SCALE: float = 1.5
 ## Plants made by Blender's Sapling Tree Gen (assets/test_plants/make_test_plants.py).
@@ -411,6 +412,34 @@ func _red_centre(image: Image, row: int) -> float:
 			sum += x
 			count += 1
 	return sum / count if count > 0 else -1.0
+
+
+## Each Sapling test plant's impostors, baked: every one of the atlas' views holds its plant and
+## touches no neighbour (its square's edge is clear all round: the frame from its bounds holds it from
+## every side and elevation), and no view shows the sunflower's yellow.
+func test_each_test_plants_impostor_views_are_framed() -> void:
+	var cell: int = ImpostorBaker.CELL_PIXELS
+	for file: String in TEST_PLANTS:
+		var plant: FieldPlant = FieldPlant.from_scene(load(TEST_PLANT_FOLDER.path_join(file)) as PackedScene)
+		var result: Error = await plant.bake_impostors(tree.root, "user://scene_plants", file.get_basename())
+		if not check(result == OK and plant.impostor_views != null, "%s: baked" % file):
+			continue
+		var views: Image = plant.impostor_views.get_image()
+		views.clear_mipmaps()
+		views.convert(Image.FORMAT_RGBA8)
+		views.save_png(artifact_path("scene_plant_%s_views.png" % file.get_basename()))
+		var touching: PackedStringArray = []
+		var empty: int = 0
+		for row: int in FieldPlant.ATLAS_VIEWS.y:
+			for column: int in FieldPlant.ATLAS_VIEWS.x:
+				var square: Image = views.get_region(Rect2i(column * cell, row * cell, cell, cell))
+				if square.get_used_rect().size == Vector2i.ZERO:
+					empty += 1
+				elif not Rect2i(1, 1, cell - 2, cell - 2).encloses(square.get_used_rect()):
+					touching.append("%d,%d" % [column, row])
+		check(touching.is_empty(), "%s: views touching their square's edge: %s" % [file, ", ".join(touching)])
+		check_eq(empty, 0, "%s: every view shows the plant" % file)
+		check_eq(_yellow_pixels(views), 0, "%s: no sunflower yellow in its views" % file)
 
 
 func _one_plant_map() -> SunflowerFieldMap:
