@@ -277,16 +277,22 @@ static func _give_textures(
 			textures.append(ResourceLoader.load(path, "Texture2D", ResourceLoader.CACHE_MODE_REPLACE) as Texture2D)
 	else:
 		for image: Image in images:
-			image.premultiply_alpha()
-			image.generate_mipmaps()
-			var texture: ImageTexture = ImageTexture.create_from_image(image)
-			texture.resource_name = plant.name
-			textures.append(texture)
+			textures.append(atlas_texture(image, plant.name))
 	plant.impostor_emission = null
 	for i: int in textures.size():
 		plant.set("impostor_" + kinds[i], textures[i])
 	if in_project and plant.resource_path.begins_with("res://") and not plant.resource_path.contains("::"):
 		ResourceSaver.save(plant)
+
+
+## An atlas [param image] as baked (or read back from a baked file) as the texture the impostors
+## draw outside the editor: premultiplied by coverage, with mipmaps, as the import makes it.
+static func atlas_texture(image: Image, texture_name: String) -> ImageTexture:
+	image.premultiply_alpha()
+	image.generate_mipmaps()
+	var texture: ImageTexture = ImageTexture.create_from_image(image)
+	texture.resource_name = texture_name
+	return texture
 
 
 ## The atlases import losslessly, premultiplied by coverage and with mipmaps (the shader divides the

@@ -22,11 +22,18 @@ extends Node3D
 ##   --no-hud                 hide the heads-up display (pictures for measurements)
 
 const MAP_NAMES: PackedStringArray = [
-	"Demo field (40 x 30)", "Large field (400 x 300)", "Hills (240 x 240, on a terrain)"
+	"Demo field (40 x 30)",
+	"Large field (400 x 300)",
+	"Hills (240 x 240, on a terrain)",
+	"Plants (maples, bushes, grass from Blender's Sapling, on the hills)",
 ]
-const MAP_PATHS: PackedStringArray = ["res://fields/demo.field", "res://fields/large.field", "res://fields/hills.field"]
-## The map that stands on the demo's hills (ground source Colliders); the others lie on the plane.
-const HILLS_MAP: String = "hills.field"
+const MAP_PATHS: PackedStringArray = [
+	"res://fields/demo.field", "res://fields/large.field", "res://fields/hills.field", "res://fields/plants.field"
+]
+## The maps that stand on the demo's hills (ground source Colliders); the others lie on the plane.
+const HILLS_MAPS: PackedStringArray = ["hills.field", "plants.field"]
+## The map whose legend grows the test plants (DemoPlants).
+const PLANTS_MAP: String = "plants.field"
 const INCREMENTS: PackedFloat32Array = [0.1, 10.0]
 const TRIANGLES_SPRITE: int = 4
 const TRIANGLES_BILLBOARD: int = 2
@@ -113,7 +120,7 @@ func _ready() -> void:
 			RenderingServer.RENDERING_INFO_BUFFER_MEM_USED
 		)
 	var build_start: int = Time.get_ticks_usec()
-	load_map(_map_path)
+	await load_map(_map_path)
 	while _field.is_building():  # a large map builds in the background; the HUD shows its progress
 		await get_tree().process_frame
 	if stats_wanted:
@@ -141,7 +148,12 @@ func _ready() -> void:
 ## A large map builds in the background while the current field stays (see [member
 ## SunflowerField.background_build]).
 func load_map(path: String) -> void:
-	var hilly: bool = path.get_file() == HILLS_MAP
+	if path.get_file() == PLANTS_MAP and not _field.legend.has("t"):
+		_hud.show_message("making the plants of the Plants map (their impostors bake on first use)…")
+		var legend: Dictionary = _field.legend.duplicate()
+		legend.merge(await DemoPlants.legend(self))
+		_field.legend = legend
+	var hilly: bool = HILLS_MAPS.has(path.get_file())
 	_hills.set_enabled(hilly)
 	_ground.visible = not hilly
 	_field.ground_source = SunflowerField.GroundSource.COLLIDERS if hilly else SunflowerField.GroundSource.FLAT
