@@ -342,11 +342,20 @@ func _set_bucket_mesh(species: int, bucket_in_species: int, mesh: Mesh, shadow_m
 	if slot < 0:
 		return
 	var node: MultiMeshInstance3D = _dynamic_nodes[slot]
+	var bucket: int = _dynamic_buckets[slot]
 	if node.multimesh.mesh != mesh:
 		node.multimesh.mesh = mesh
+		simulation.set_bucket_multimesh(bucket, _filled_rid(node.multimesh))
 	var twin: MultiMeshInstance3D = node.get_node_or_null(NodePath(CASTER_NAME))
 	if twin and twin.multimesh.mesh != shadow_mesh:
 		twin.multimesh.mesh = shadow_mesh
+		simulation.set_bucket_shadow_multimesh(bucket, _filled_rid(twin.multimesh))
+
+
+## The RID the library fills for [param multimesh]: none (an invalid RID) while it has no mesh (an
+## empty part slot: the renderer refuses instances of nothing).
+static func _filled_rid(multimesh: MultiMesh) -> RID:
+	return multimesh.get_rid() if multimesh.mesh else RID()
 
 
 ## Adds every node of this field to [param nodes] (as keys), to tell them from foreign children.
@@ -373,7 +382,7 @@ func free_nodes() -> void:
 ## draws the bucket only in the passes its plants reach (the field's box until the first update).
 func _add_dynamic(node: MultiMeshInstance3D, bucket: int) -> void:
 	node.custom_aabb = AABB()
-	simulation.set_bucket_multimesh(bucket, node.multimesh.get_rid())
+	simulation.set_bucket_multimesh(bucket, _filled_rid(node.multimesh))
 	_dynamic_nodes.append(node)
 	_dynamic_buckets.append(bucket)
 
@@ -388,7 +397,7 @@ func _add_shadow_twin(node: MultiMeshInstance3D, bucket: int, mesh: Mesh) -> voi
 	twin.multimesh.mesh = mesh
 	twin.cast_shadow = GeometryInstance3D.SHADOW_CASTING_SETTING_SHADOWS_ONLY
 	node.add_child(twin, false, Node.INTERNAL_MODE_BACK)
-	simulation.set_bucket_shadow_multimesh(bucket, twin.multimesh.get_rid())
+	simulation.set_bucket_shadow_multimesh(bucket, _filled_rid(twin.multimesh))
 
 
 ## A MultiMesh node for the native buffers. The library allocates each MultiMesh's data in the

@@ -27,6 +27,7 @@ const CARD_TRIANGLES: float = 4.0
 ## The engine importer's defaults for the simplifier's normal angles, degrees.
 const NORMAL_MERGE_ANGLE: float = 60.0
 const NORMAL_SPLIT_ANGLE: float = 25.0
+const WholePlantMesh: GDScript = preload("whole_plant_mesh.gd")
 
 static var _suffix: RegEx
 
@@ -125,7 +126,7 @@ static func _merge(pieces: Array[Dictionary], problems: PackedStringArray) -> Ar
 				if candidate.material == material and candidate.format == format:
 					group = candidate
 			if group.is_empty():
-				group = {"material": material, "format": format, "arrays": _empty_arrays()}
+				group = {"material": material, "format": format, "arrays": WholePlantMesh.empty_arrays()}
 				groups.append(group)
 			_append(group.arrays, arrays, piece.transform)
 	if groups.is_empty():
@@ -149,18 +150,6 @@ static func _material_shown(instance: MeshInstance3D, surface: int) -> Material:
 		return instance.material_override
 	var override: Material = instance.get_surface_override_material(surface)
 	return override if override else instance.mesh.surface_get_material(surface)
-
-
-static func _empty_arrays() -> Dictionary:
-	return {
-		Mesh.ARRAY_VERTEX: PackedVector3Array(),
-		Mesh.ARRAY_NORMAL: PackedVector3Array(),
-		Mesh.ARRAY_TANGENT: PackedFloat32Array(),
-		Mesh.ARRAY_COLOR: PackedColorArray(),
-		Mesh.ARRAY_TEX_UV: PackedVector2Array(),
-		Mesh.ARRAY_TEX_UV2: PackedVector2Array(),
-		Mesh.ARRAY_INDEX: PackedInt32Array(),
-	}
 
 
 ## Appends a surface's [param arrays] to [param merged], its positions, normals and tangents moved

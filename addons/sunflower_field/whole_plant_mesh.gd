@@ -38,7 +38,7 @@ static func merge(parts: Array[Mesh], part_lengths: Vector3) -> ArrayMesh:
 					group = candidate
 					break
 			if group.is_empty():
-				group = {"material": material, "arrays": _empty_arrays(), "present": []}
+				group = {"material": material, "arrays": empty_arrays(), "present": []}
 				groups.append(group)
 			if not _append(group, parts[part].surface_get_arrays(surface), part):
 				return null
@@ -54,7 +54,8 @@ static func merge(parts: Array[Mesh], part_lengths: Vector3) -> ArrayMesh:
 	return mesh
 
 
-static func _empty_arrays() -> Dictionary:
+## Empty vertex arrays by kind (position, normal, tangent, colour, UV, UV2, index), to append surfaces to.
+static func empty_arrays() -> Dictionary:
 	return {
 		Mesh.ARRAY_VERTEX: PackedVector3Array(),
 		Mesh.ARRAY_NORMAL: PackedVector3Array(),

@@ -368,9 +368,7 @@ func _impostors_alone(eye: Vector3, target: Vector3, name: String) -> PackedFloa
 	black.cull_mode = BaseMaterial3D.CULL_DISABLED
 	Dressing.dress_parts(field, func(_level: int, _part: int) -> Material: return black)
 	var mask: PackedFloat32Array = await _field_alone(eye, target, -1, name)
-	for level: int in SunflowerSimulation.MESH_LEVEL_COUNT:
-		for part: int in SunflowerSimulation.PART_COUNT:
-			field.set_part_mesh(level, part, null)
+	field.plant = null  # the built-in sunflower again
 	return mask
 
 

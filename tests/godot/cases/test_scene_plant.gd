@@ -442,6 +442,44 @@ func test_each_test_plants_impostor_views_are_framed() -> void:
 		check_eq(_yellow_pixels(views), 0, "%s: no sunflower yellow in its views" % file)
 
 
+## A plant drawn part by part with empty slots: the empty slots' near buckets are not filled (the
+## renderer refuses instances of no mesh, an engine error this runner fails on), and the part there
+## is drawn.
+func test_empty_slots_of_a_plant_drawn_part_by_part_fill_no_instances() -> void:
+	stage = Stage.new(tree.root).root
+	var plant: FieldPlant = FieldPlant.new()
+	var trunk: BoxMesh = BoxMesh.new()
+	trunk.size = Vector3(0.4, 3.0, 0.4)
+	plant.mesh_level_1 = [trunk, null, null]
+	plant.use_plant_material = false  # drawn part by part: a node per slot
+	plant.part_lengths = Vector3(3.0, 0.0, 0.0)
+	var field: SunflowerField = SunflowerField.new()
+	field.plant = plant
+	field.map = _one_plant_map()
+	field.force_lod = SunflowerField.Lod.MESH_1
+	stage.add_child(field)
+	field.finish_build()
+	var camera: Camera3D = Camera3D.new()
+	stage.add_child(camera)
+	camera.look_at_from_position(Vector3(0.25, 1.5, 8.0), Vector3(0.25, 1.5, 0.0))
+	camera.make_current()
+	for i: int in 3:
+		field.advance(1.0 / 30.0)
+		await frames(1)
+	check(not plant.drawn_whole(), "drawn part by part")
+	var drawn: int = 0
+	for node: Node in field.find_children("Mesh1*", "MultiMeshInstance3D", true, false):
+		var multimesh: MultiMesh = (node as MultiMeshInstance3D).multimesh
+		if multimesh.mesh == null:
+			check_eq(
+				RenderingServer.multimesh_get_instance_count(multimesh.get_rid()), 0, "%s: no instances" % node.name
+			)
+		else:
+			drawn += RenderingServer.multimesh_get_instance_count(multimesh.get_rid())
+	check(drawn >= 1, "the trunk's bucket holds the plant")
+	take_warnings()  # the plant has no impostor textures: it warns
+
+
 func _one_plant_map() -> SunflowerFieldMap:
 	var one: SunflowerFieldMap = SunflowerFieldMap.new()
 	one.source_path = "user://one_scene_plant.field"
