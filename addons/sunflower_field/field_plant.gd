@@ -136,6 +136,8 @@ static var _default: FieldPlant
 @export_range(0.0, 100.0, 0.01, "or_greater") var lod_scale: float = 0.0:
 	set(value):
 		var accepted: float = value if value >= 0.0 and is_finite(value) else lod_scale
+		if accepted != value:
+			push_warning("FieldPlant.lod_scale: %s is not a scale (0 or more); keeping %s" % [value, lod_scale])
 		if accepted != lod_scale:
 			lod_scale = accepted
 			emit_changed()

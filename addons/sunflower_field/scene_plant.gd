@@ -9,7 +9,8 @@ extends RefCounted
 ## [code]_lod_2[/code], any case) are the variants of that level (0, 1 and 2 are mesh levels 1, 2
 ## and 3; a node without a suffix belongs to every level). A scene without variants gets levels 2
 ## and 3 simplified from level 1 by the engine's mesh simplifier ([method ImporterMesh.generate_lods]),
-## to about [constant LEVEL_SHARES] of its triangles.
+## to about [constant LEVEL_SHARES] of its triangles where a surface keeps [constant AREA_KEPT] of its
+## area; surfaces of cards ([constant CARD_TRIANGLES]) keep every card.
 
 ## The share of level 1's triangles each mesh level is simplified to when the scene has no variants.
 const LEVEL_SHARES: Array[float] = [1.0, 0.5, 0.2]

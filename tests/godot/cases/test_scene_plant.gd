@@ -236,6 +236,9 @@ func test_lod_distances_follow_each_plant_types_size() -> void:
 	check(checked > 40, "plants of all three types checked (%d)" % checked)
 	maple.lod_scale = 1.0
 	check_near(maple.lod_scale_used(), 1.0, 1e-6, "lod_scale overrides the size")
+	maple.lod_scale = NAN
+	check_eq(maple.lod_scale, 1.0, "a NaN scale is refused")
+	check(warned("FieldPlant.lod_scale: nan"), "with a warning naming the property")
 	field.free()
 	observer.free()
 
