@@ -307,7 +307,8 @@ func fit_to_meshes() -> void:
 	height_units = top
 	impostor_width = maxf(2.0 * reach, 0.01)
 	# Tilted about the root by θ, the middle moves 2·(top/2)·sin(θ/2): the sphere grows by that.
-	cull_radius_units = farthest + top * sin(0.5 * (SunflowerWind.new() as SunflowerWind).max_bend)
+	var largest_bend: float = (SunflowerWind as Script).get_property_default_value(&"max_bend")
+	cull_radius_units = farthest + top * sin(0.5 * largest_bend)
 
 
 ## The built-in sunflower (shared: duplicate it before changing it).
