@@ -113,13 +113,13 @@ static func _merge(pieces: Array[Dictionary], problems: PackedStringArray) -> Ar
 		var instance: MeshInstance3D = piece.node
 		var mesh: Mesh = instance.mesh
 		for surface: int in mesh.get_surface_count():
-			var arrays: Array = mesh.surface_get_arrays(surface)
 			if (
 				mesh is ArrayMesh
 				and (mesh as ArrayMesh).surface_get_primitive_type(surface) != Mesh.PRIMITIVE_TRIANGLES
 			):
 				problems.append("%s: surface %d is not made of triangles; left out" % [instance.name, surface])
 				continue
+			var arrays: Array = mesh.surface_get_arrays(surface)
 			var material: Material = _material_shown(instance, surface)
 			var format: Array = KEPT.map(func(kind: int) -> bool: return arrays[kind] != null)
 			var group: Dictionary = {}
