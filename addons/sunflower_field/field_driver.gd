@@ -12,14 +12,18 @@ signal build_progress(progress: float)
 signal built(plant_count: int)
 ## A map could not be used; the field drawn stays.
 signal map_error(message: String)
+## The frame budget moved the quality (see FieldBudget).
+signal quality_changed(quality: float)
 
 const Native: GDScript = preload("native.gd")
 const NativeField: GDScript = preload("native_field.gd")
+const FieldBudget: GDScript = preload("field_budget.gd")
 const FieldBuild: GDScript = preload("field_build.gd")
 const FieldInteraction: GDScript = preload("field_interaction.gd")
 const FieldNodes: GDScript = preload("field_nodes.gd")
 const FieldObserver: GDScript = preload("field_observer.gd")
 const ImpostorSet: GDScript = preload("impostor_set.gd")
+const PartMeshes: GDScript = preload("part_meshes.gd")
 ## Maps of at least this many bytes (about as many cells) build in the background when the field's
 ## background_build is on; smaller ones take a few milliseconds and build at once.
 const BACKGROUND_BUILD_MIN_BYTES: int = 65536
@@ -53,6 +57,8 @@ var interaction: FieldInteraction
 var frame: FrameSettings = FrameSettings.new()
 ## The far levels' look per species, shared by the field drawn and one being built.
 var impostor_sets: Array[ImpostorSet] = []
+## The frame budget the fields drawn are held to, and the quality it chose.
+var budget: FieldBudget = FieldBudget.new()
 ## The plant types drawn (FieldPlant): species 0 the node's plant ('*'), then the legend's.
 var plants: Array = []
 var _layout_key: Array = []
@@ -62,6 +68,9 @@ var _lod: Array = []  # set_lod's arguments
 var _push: Array = []  # set_push_params' arguments
 var _threads: int = 0
 var _draw_distance: float = 0.0  # SunflowerField.max_draw_distance (0: none)
+var _thinning_start: float = 0.0  # SunflowerField.thinning_distance (0: no thinning)
+var _triangles: Array[PackedInt32Array] = []  # per species, a plant's triangles at each mesh level
+var _measuring_viewport: RID  # the viewport whose GPU time is measured for the budget
 var _field: Node3D
 
 
@@ -195,6 +204,9 @@ func update_field(delta: float) -> void:
 	drawn.show_filled_buckets()
 	drawn.update_masks()
 	drawn.follow_sun()
+	if not Engine.is_editor_hint() and budget.step(delta, near_primitives(), _gpu_ms()):
+		_apply_quality()
+		quality_changed.emit(budget.quality)
 	var wind_state: PackedFloat32Array = native_simulation.get_wind_state()
 	for impostors: ImpostorSet in impostor_sets:
 		impostors.sway(wind_state, _wind, _field.global_transform)
@@ -217,8 +229,13 @@ func configure_plants(species_plants: Array) -> bool:
 			impostors.set_shared(parameter, _shared[parameter])
 		impostor_sets.append(impostors)
 	var key: Array = []
+	_triangles.clear()
 	for species: int in plants.size():
 		impostor_sets[species].configure(plants[species])
+		var levels: PackedInt32Array = []
+		for level: int in PartMeshes.LEVELS:
+			levels.append(plants[species].triangle_count(level))
+		_triangles.append(levels)
 		key.append(plants[species].layout_key())
 		if drawn:
 			drawn.set_plant_meshes(species, plants[species])
@@ -242,11 +259,12 @@ func set_wind(wind: SunflowerWind) -> void:
 		_wind.apply_to(drawn.simulation)
 
 
-## The levels of detail of the fields drawn (SunflowerField's lod_* and force_lod).
+## The levels of detail of the fields drawn (SunflowerField's lod_* and force_lod); the distances
+## and the fade are drawn at the budget's quality.
 func set_lod(distances: PackedFloat32Array, hysteresis: float, fade: float, interval: float, force: int) -> void:
 	_lod = [distances, hysteresis, fade, interval, force]
 	if drawn:
-		drawn.simulation.set_lod(distances, hysteresis, fade, interval, force)
+		_send_lod()
 
 
 ## How the plants of the fields drawn are pushed (SunflowerField's push_strength and
@@ -269,21 +287,81 @@ func _configure_drawn() -> void:
 	if _wind:
 		_wind.apply_to(drawn.simulation)
 	if not _lod.is_empty():
-		drawn.simulation.set_lod(_lod[0], _lod[1], _lod[2], _lod[3], _lod[4])
+		_send_lod()
 	if not _push.is_empty():
 		drawn.simulation.set_push_params(_push[0], _push[1])
 	drawn.simulation.set_worker_threads(_threads)
 
 
-## Sets the draw distance: the impostors' per-plant fade, and the chunks' visibility ranges on the
-## field drawn and one being built.
+func _send_lod() -> void:
+	var distances: PackedFloat32Array = _lod[0].duplicate()
+	for i: int in distances.size():
+		distances[i] *= budget.quality
+	drawn.simulation.set_lod(distances, _lod[1], _lod[2] * budget.quality, _lod[3], _lod[4])
+
+
+## Sets the draw distance (0: none), drawn at the budget's quality: the impostors' per-plant fade,
+## and the chunks' visibility ranges on the field drawn and one being built.
 func set_draw_distance(max_draw_distance: float) -> void:
 	_draw_distance = max_draw_distance
-	set_impostor_shared(&"draw_distance", max_draw_distance)
-	set_impostor_shared(&"draw_fade", maxf(2.0, 0.1 * max_draw_distance))
+	var distance: float = max_draw_distance * budget.quality
+	set_impostor_shared(&"draw_distance", distance)
+	set_impostor_shared(&"draw_fade", maxf(2.0, 0.1 * distance))
 	for nodes: FieldNodes in [drawn, build.nodes if build else null]:
 		if nodes:
-			nodes.apply_ranges(max_draw_distance)
+			nodes.apply_ranges(distance)
+
+
+## Sets where thinning starts (0: no thinning), drawn at the budget's quality.
+func set_thinning_start(distance: float) -> void:
+	_thinning_start = distance
+	set_impostor_shared(&"thinning_start", distance * budget.quality)
+
+
+## Sets the budget's targets (0: none) and least quality; with no target the quality goes back to 1.
+func set_budget(max_primitives: int, gpu_ms: float, min_quality: float) -> void:
+	budget.max_primitives = max_primitives
+	budget.gpu_ms = gpu_ms
+	budget.min_quality = min_quality
+	if budget.quality < min_quality or not budget.is_active():
+		budget.quality = min_quality if budget.is_active() else 1.0
+		_apply_quality()
+		quality_changed.emit(budget.quality)
+
+
+## The triangles of the near meshes written this frame: plants at each mesh level, after culling,
+## times a plant's triangles there (the main view's; each shadow pass draws its own).
+func near_primitives() -> int:
+	if drawn == null:
+		return 0
+	var per_species: int = Native.constant(&"BUCKET_COUNT")
+	var total: int = 0
+	for species: int in _triangles.size():
+		for level: int in PartMeshes.LEVELS:
+			var bucket: int = species * per_species + Native.mesh_bucket(level, 0)
+			total += drawn.simulation.get_bucket_instance_count(bucket) * _triangles[species][level]
+	return total
+
+
+## The field's viewport's GPU time last frame in milliseconds, measured only with a GPU target.
+func _gpu_ms() -> float:
+	if budget.gpu_ms <= 0.0 or not _field.is_inside_tree():
+		return 0.0
+	var viewport: RID = _field.get_viewport().get_viewport_rid()
+	if viewport != _measuring_viewport:
+		_measuring_viewport = viewport
+		RenderingServer.viewport_set_measure_render_time(viewport, true)
+		return 0.0
+	return RenderingServer.viewport_get_measured_render_time_gpu(viewport)
+
+
+## Draws at the budget's quality: distances, thinning and draw distance.
+func _apply_quality() -> void:
+	if drawn and not _lod.is_empty():
+		_send_lod()
+	set_thinning_start(_thinning_start)
+	if _draw_distance > 0.0:
+		set_draw_distance(_draw_distance)
 
 
 ## Frees internal children that belong to no field of this node: copies that duplicate() made of

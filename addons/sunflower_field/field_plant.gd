@@ -334,6 +334,16 @@ func mesh_drawn(level: int, part: int) -> Mesh:
 	return null
 
 
+## The triangles of one plant at mesh [param level] (0–2), its parts as drawn ([method mesh_drawn]).
+func triangle_count(level: int) -> int:
+	var triangles: int = 0
+	for part: int in PartMeshes.PART_NAMES.size():
+		var mesh: Mesh = mesh_drawn(level, part)
+		if mesh:
+			triangles += mesh.get_faces().size() / 3
+	return triangles
+
+
 ## [member part_lengths] as the parts stack: the slots above the top level-1 part are empty, and
 ## their lengths count 0, so that [member height] spans the parts there are.
 func stacked_lengths() -> Vector3:

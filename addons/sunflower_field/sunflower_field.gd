@@ -22,6 +22,8 @@ signal field_built(plant_count: int)
 signal map_error(message: String)
 ## Emitted every frame while a field builds in the background; [param progress] runs from 0 to 1.
 signal build_progress(progress: float)
+## Emitted when the frame budget moves the quality (see [member budget_primitives]).
+signal quality_changed(quality: float)
 
 ## The three parts of a plant, bottom to top (the native core's part indices).
 enum Part { BOTTOM, MIDDLE, HEAD }
@@ -315,7 +317,7 @@ const WIND_PROPERTIES: Dictionary = {
 @export_range(0.0, 1000.0, 1.0, "or_greater", "suffix:m") var thinning_distance: float = 0.0:
 	set(value):
 		thinning_distance = Native.accept("SunflowerField.thinning_distance", value, thinning_distance)
-		_driver.set_impostor_shared(&"thinning_start", thinning_distance)
+		_driver.set_thinning_start(thinning_distance)
 ## The least share of impostors drawn far away, with thinning on.
 @export_range(0.01, 1.0, 0.01) var thinning_min_density: float = 0.25:
 	set(value):
@@ -405,6 +407,32 @@ const WIND_PROPERTIES: Dictionary = {
 			worker_threads = value
 			_driver.set_threads(worker_threads)
 
+@export_group("Budget")
+## A frame budget the field holds by itself: the most triangles its near meshes may hold in a frame
+## (the main view's; each shadow pass draws its own), 0: no cap. Over it, the field lowers its
+## quality, one scalar that scales [member lod_distances], [member lod_fade],
+## [member thinning_distance] and [member max_draw_distance] together, in steps of at most 30 % four
+## times a second; it gives quality back in steps of at most 10 % after a second with 30 % headroom,
+## never straight back to a quality that went over in the last 10 s, so it settles instead of
+## pumping. Off in the editor. See [method get_quality].
+@export_range(0, 100000000, 1000, "or_greater") var budget_primitives: int = 0:
+	set(value):
+		budget_primitives = Native.accept_int("SunflowerField.budget_primitives", value, budget_primitives)
+		_tell_budget()
+## The frame budget in GPU time: the milliseconds the field's viewport may take on the GPU a frame
+## (the engine's own measurement, smoothed over about 0.15 s), 0: no target. It includes what
+## else the viewport draws; the field moves only its own quality. With both targets, the tighter
+## one leads.
+@export_range(0.0, 100.0, 0.1, "or_greater", "suffix:ms") var budget_gpu_ms: float = 0.0:
+	set(value):
+		budget_gpu_ms = Native.accept("SunflowerField.budget_gpu_ms", value, budget_gpu_ms)
+		_tell_budget()
+## The least quality the budget goes down to (a share of the distances).
+@export_range(0.05, 1.0, 0.01) var budget_min_quality: float = 0.25:
+	set(value):
+		budget_min_quality = Native.accept("SunflowerField.budget_min_quality", value, budget_min_quality)
+		_tell_budget()
+
 @export_group("Observer")
 ## The node distances are measured from. Empty: the viewport's active camera (in the editor, the
 ## editor camera). A [Camera3D] also culls plants outside its view.
@@ -452,6 +480,7 @@ func _init() -> void:
 	_driver.build_progress.connect(build_progress.emit)
 	_driver.built.connect(_on_built)
 	_driver.map_error.connect(_on_map_error)
+	_driver.quality_changed.connect(quality_changed.emit)
 	wind.changed.connect(_tell_wind)
 	_tell_wind()
 	_tell_lod()
@@ -460,7 +489,7 @@ func _init() -> void:
 	_driver.set_threads(worker_threads)
 	_driver.configure_plants(_species_plants())
 	_driver.set_impostor_shared(&"alpha_scissor", alpha_scissor)
-	_driver.set_impostor_shared(&"thinning_start", thinning_distance)
+	_driver.set_thinning_start(thinning_distance)
 	_driver.set_impostor_shared(&"thinning_min_density", thinning_min_density)
 	set_notify_transform(true)  # the far impostors are placed through the field's transform
 
@@ -472,6 +501,10 @@ func _tell_wind() -> void:
 
 func _tell_lod() -> void:
 	_driver.set_lod(lod_distances, lod_hysteresis, lod_fade, lod_interval, force_lod)
+
+
+func _tell_budget() -> void:
+	_driver.set_budget(budget_primitives, budget_gpu_ms, budget_min_quality)
 
 
 func _tell_push() -> void:
@@ -610,16 +643,32 @@ func get_lod_counts() -> PackedInt32Array:
 	return _driver.simulation().get_lod_counts()
 
 
+## The share of its distances the field draws with now: 1 unless a frame budget
+## ([member budget_primitives], [member budget_gpu_ms]) lowered it.
+func get_quality() -> float:
+	return _driver.budget.quality
+
+
 ## What the field drawn costs now, for a HUD or a benchmark: [code]update_ms[/code] (the native
-## update of the last frame), [code]memory_bytes[/code] (CPU memory the native field holds) and
+## update of the last frame), [code]memory_bytes[/code] (CPU memory the native field holds),
 ## [code]near_meshes[/code] (plants written at each mesh level last frame, after culling: three
-## counts, every plant type together). Zeros before a field is drawn.
+## counts, every plant type together), [code]near_primitives[/code] (their triangles, what
+## [member budget_primitives] caps), [code]gpu_ms[/code] (the smoothed GPU time the budget saw, 0
+## without [member budget_gpu_ms]) and [code]quality[/code] ([method get_quality]). Zeros before a
+## field is drawn.
 func get_frame_stats() -> Dictionary:
 	var near: PackedInt32Array = PackedInt32Array()
 	near.resize(Lod.SPRITE)
 	var simulation: NativeField = _driver.simulation()
 	if simulation == null:
-		return {"update_ms": 0.0, "memory_bytes": 0, "near_meshes": near}
+		return {
+			"update_ms": 0.0,
+			"memory_bytes": 0,
+			"near_meshes": near,
+			"near_primitives": 0,
+			"gpu_ms": 0.0,
+			"quality": get_quality()
+		}
 	var per_species: int = Native.constant(&"BUCKET_COUNT")
 	for species: int in _species_plants().size():
 		for level: int in Lod.SPRITE:
@@ -628,6 +677,9 @@ func get_frame_stats() -> Dictionary:
 		"update_ms": simulation.get_last_update_usec() / 1000.0,
 		"memory_bytes": simulation.get_memory_bytes(),
 		"near_meshes": near,
+		"near_primitives": _driver.near_primitives(),
+		"gpu_ms": _driver.budget.smoothed_gpu_ms,
+		"quality": get_quality(),
 	}
 
 

@@ -19,6 +19,8 @@ extends Node3D
 ##   --wind P                 the wind power (0: calm)
 ##   --whole off              draw the near plants part by part (FieldPlant.draw_whole off)
 ##   --cheap-shadows off      near plants cast shadows from the mesh they are drawn with
+##   --budget-primitives N    hold the near meshes to N triangles a frame (SunflowerField.budget_primitives)
+##   --budget-gpu-ms MS       hold the frame's GPU time to MS milliseconds (SunflowerField.budget_gpu_ms)
 ##   --no-hud                 hide the heads-up display (pictures for measurements)
 
 const MAP_NAMES: PackedStringArray = [
@@ -43,7 +45,6 @@ const PUSHER_HEIGHT: float = 2.5
 const PUSHER_RADIUS: float = 1.1
 
 var _map_path: String = MAP_PATHS[0]
-var _triangles_per_plant: PackedInt32Array = [0, 0, 0]
 var _stats_timer: float = 0.0
 var _draw_distance: float = NativeBaseline.CUT_OFF
 ## The recording mode (the benchmark harness), configured from the command line.
@@ -103,6 +104,10 @@ func _ready() -> void:
 				_field.wind_power = value.to_float()
 			"--cheap-shadows":
 				_field.cheap_shadows = value != "off"
+			"--budget-primitives":
+				_field.budget_primitives = value.to_int()
+			"--budget-gpu-ms":
+				_field.budget_gpu_ms = value.to_float()
 			"--no-hud":
 				_hud.visible = false
 				i -= 1
@@ -182,7 +187,6 @@ func load_part(lod: int, part: int, path: String) -> String:
 		_hud.show_message("cannot use the part: " + loaded["error"])
 		return loaded["error"]
 	_field.set_part_mesh(lod, part, loaded["mesh"])
-	_count_triangles()
 	var message: String = loaded.get(
 		"warning", "mesh %d %s replaced by %s" % [lod + 1, SunflowerField.Part.keys()[part].to_lower(), path.get_file()]
 	)
@@ -271,31 +275,13 @@ func _on_field_built(_plants: int) -> void:
 	eye.y += _camera.ground_below(eye)
 	target.y += _camera.ground_below(target)
 	_camera.set_start(eye, target)
-	_count_triangles()
-
-
-func _count_triangles() -> void:
-	for lod: int in SunflowerField.Lod.SPRITE:  # the mesh levels
-		var total: int = 0
-		for part: int in SunflowerField.Part.size():
-			var mesh: Mesh = _field.get_part_mesh(lod, part)
-			for surface: int in mesh.get_surface_count() if mesh else 0:
-				var arrays: Array = mesh.surface_get_arrays(surface)
-				var indices: PackedInt32Array = arrays[Mesh.ARRAY_INDEX]
-				total += (
-					(indices.size() if indices.size() > 0 else (arrays[Mesh.ARRAY_VERTEX] as PackedVector3Array).size())
-					/ 3
-				)
-		_triangles_per_plant[lod] = total
 
 
 func _stats_text() -> String:
 	var counts: PackedInt32Array = _field.get_lod_counts()
 	var costs: Dictionary = _field.get_frame_stats()
-	var triangles: int = counts[3] * TRIANGLES_SPRITE + counts[4] * TRIANGLES_BILLBOARD
-	for lod: int in SunflowerField.Lod.SPRITE:
-		# Near meshes: the plants actually written (frustum-culled), times the model's size.
-		triangles += costs["near_meshes"][lod] * _triangles_per_plant[lod]
+	# Near meshes: the plants written this frame (frustum-culled), times their triangles.
+	var triangles: int = costs["near_primitives"] + counts[3] * TRIANGLES_SPRITE + counts[4] * TRIANGLES_BILLBOARD
 	var fps: float = Engine.get_frames_per_second()
 	return (
 		(
@@ -303,7 +289,8 @@ func _stats_text() -> String:
 			+ "%d plants: mesh 1 %d, mesh 2 %d, mesh 3 %d, sprite %d, billboard %d\n"
 			+ "triangles drawn ~%.2f M\n"
 			+ "wind %.1f m/s towards (%.2f, %.2f), increment %.1f, %s model (F9)\n"
-			+ "%s, %d plants pushed"
+			+ "%s, %d plants pushed\n"
+			+ "%s"
 		)
 		% [
 			fps,
@@ -323,8 +310,23 @@ func _stats_text() -> String:
 			_wind_model_name(),
 			"walking (F8)" if _camera.walking else "flying (F8 walks)",
 			_field.get_pushed_count(),
+			_budget_text(costs),
 		]
 	)
+
+
+## The frame budget's line: its targets, what it saw and the quality it chose.
+func _budget_text(costs: Dictionary) -> String:
+	if _field.budget_primitives <= 0 and _field.budget_gpu_ms <= 0.0:
+		return "no frame budget (--budget-primitives N, --budget-gpu-ms MS)"
+	var targets: PackedStringArray = []
+	if _field.budget_primitives > 0:
+		targets.append(
+			"%.2f M / %.2f M near triangles" % [costs["near_primitives"] / 1.0e6, _field.budget_primitives / 1.0e6]
+		)
+	if _field.budget_gpu_ms > 0.0:
+		targets.append("GPU %.1f / %.1f ms" % [costs["gpu_ms"], _field.budget_gpu_ms])
+	return "budget: %s, quality %.2f" % [", ".join(targets), costs["quality"]]
 
 
 func _wind_model_name() -> String:

@@ -103,6 +103,11 @@ inline constexpr ParameterSpec BUILD_BUDGET_MS{ "SunflowerField.build_budget_ms"
 constexpr uint32_t MAX_AUTO_THREADS = 4;
 constexpr uint32_t MAX_THREADS = 16;
 inline constexpr ParameterSpec WORKER_THREADS{ "SunflowerField.worker_threads", 0.0, 0.0, MAX_THREADS, ParameterSpec::CLAMP, 0.0 };
+// A frame budget (field_budget.gd): a cap on the near meshes' triangles a frame and a target for the
+// viewport's GPU time (0: none), and the least share of its distances the field goes down to.
+inline constexpr ParameterSpec BUDGET_PRIMITIVES{ "SunflowerField.budget_primitives", 0.0, 0.0, 2e9, ParameterSpec::CLAMP, 0.0 };
+inline constexpr ParameterSpec BUDGET_GPU_MS{ "SunflowerField.budget_gpu_ms", 0.0, 0.0, 10000.0, ParameterSpec::CLAMP, 0.0 };
+inline constexpr ParameterSpec BUDGET_MIN_QUALITY{ "SunflowerField.budget_min_quality", 0.25, 0.05, 1.0, ParameterSpec::CLAMP, 0.25 };
 
 // Plants that part around bodies: the largest push (as a bend, radians of tilt at the bottom part
 // times its stiffness: the same unit as the wind's), and the seconds a plant takes to spring back.
@@ -118,11 +123,11 @@ inline constexpr ParameterSpec GROUND_TILT{ "SunflowerField.ground_tilt", 0.0, 0
 inline constexpr ParameterSpec GROUND_RAY_ABOVE{ "SunflowerField.ground_ray_above", 100.0, 0.0, NO_MAX, ParameterSpec::CLAMP, 100.0 };
 inline constexpr ParameterSpec GROUND_RAY_BELOW{ "SunflowerField.ground_ray_below", 100.0, 0.0, NO_MAX, ParameterSpec::CLAMP, 100.0 };
 
-inline constexpr std::array<const ParameterSpec *, 45> ALL{ { &WIND_MODEL, &WIND_POWER, &WIND_INCREMENT, &WIND_STIFFNESS_MIDDLE,
+inline constexpr std::array<const ParameterSpec *, 48> ALL{ { &WIND_MODEL, &WIND_POWER, &WIND_INCREMENT, &WIND_STIFFNESS_MIDDLE,
 		&WIND_STIFFNESS_BOTTOM, &WIND_BEND_PER_POWER, &WIND_MAX_BEND, &WIND_FLIP_INTERVAL, &WIND_FLIP_CHANCE,
 		&WIND_GUST_SPEED, &WIND_GUST_SHARE, &CELL_SIZE, &PLANT_HEIGHT, &CHUNK_SIZE, &MAX_PLANTS, &LOD_HYSTERESIS,
 		&LOD_INTERVAL, &LOD_FADE, &FORCE_LOD, &ALPHA_SCISSOR, &THINNING_DISTANCE, &THINNING_MIN_DENSITY, &TILE_MERGE_DISTANCE, &MAX_DRAW_DISTANCE,
-		&BUILD_BUDGET_MS, &WORKER_THREADS, &PUSH_STRENGTH, &PUSH_RECOVERY, &PUSHER_RADIUS,
+		&BUILD_BUDGET_MS, &WORKER_THREADS, &BUDGET_PRIMITIVES, &BUDGET_GPU_MS, &BUDGET_MIN_QUALITY, &PUSH_STRENGTH, &PUSH_RECOVERY, &PUSHER_RADIUS,
 		&COLLISION_REACH, &GROUND_TILT, &GROUND_RAY_ABOVE, &GROUND_RAY_BELOW, &PLANT_YAW_RANGE, &PLANT_SCALE_MIN, &PLANT_SCALE_MAX,
 		&PLANT_MIDDLE_VARIATION, &PLANT_BRIGHTNESS_VARIATION, &PLANT_TINT_VARIATION, &PLANT_STIFFNESS,
 		&PLANT_IMPOSTOR_SHADOW_SHIFT, &PLANT_IMPOSTOR_EMISSION_RANGE, &PLANT_PART_LENGTH, &PLANT_HEIGHT_UNITS,

@@ -1,0 +1,203 @@
+extends TestCase
+## The frame budget: the controller alone against a cost model, and a field at head height held to a
+## cap on its near meshes' triangles in simulated frames (a 60th of a second each, headless).
+
+const FieldBudget: GDScript = preload("res://addons/sunflower_field/field_budget.gd")
+const Maps: GDScript = preload("res://runner/maps.gd")
+const Stage: GDScript = preload("res://runner/stage.gd")
+const FRAME: float = 1.0 / 60.0
+
+var field: SunflowerField
+var camera: Camera3D
+
+
+func before_each() -> void:
+	camera = Camera3D.new()
+	camera.name = "Eye"
+	field = field_in_tree(camera, Maps.filled(120, 120, "user://budget.field"))
+	field.wind_power = 0.0
+	field.set_process(false)  # the test advances it
+	camera.look_at_from_position(Vector3(30.0, 1.7, 45.0), Vector3(30.0, 1.4, 20.0))
+
+
+func after_each() -> void:
+	if is_instance_valid(field):
+		field.free()
+	if is_instance_valid(camera):
+		camera.free()
+
+
+## Advances the field [param seconds] in frames; the quality and the near triangles of each frame.
+func _run(seconds: float) -> Array[PackedFloat32Array]:
+	var qualities: PackedFloat32Array = []
+	var costs: PackedFloat32Array = []
+	for frame: int in roundi(seconds / FRAME):
+		field.advance(FRAME)
+		qualities.append(field.get_quality())
+		costs.append(field.get_frame_stats()["near_primitives"])
+	return [qualities, costs]
+
+
+func test_a_plants_triangles_are_counted_per_mesh_level() -> void:
+	var plant: FieldPlant = field.get_plant_types()[0]
+	var counts: PackedInt32Array = [plant.triangle_count(0), plant.triangle_count(1), plant.triangle_count(2)]
+	print("     the sunflower's triangles at mesh 1 / 2 / 3: %s" % counts)
+	check(counts[0] > counts[1] and counts[1] > counts[2] and counts[2] > 0, "fewer at each level: %s" % counts)
+	var box: BoxMesh = BoxMesh.new()
+	var one: FieldPlant = FieldPlant.new()
+	one.mesh_level_1 = [box, null, null]
+	check_eq(one.triangle_count(0), 12, "a box is 12 triangles")
+	check_eq(one.triangle_count(2), 12, "drawn at every level when only level 1 is set")
+
+
+func test_the_field_holds_a_cap_on_its_triangles_and_settles() -> void:
+	_run(1.0)
+	var free_cost: int = field.get_frame_stats()["near_primitives"]
+	check(free_cost > 1000000, "at head height the near meshes hold over a million triangles (%d)" % free_cost)
+	check_eq(field.get_quality(), 1.0, "no budget: full quality")
+	var cap: int = free_cost / 3
+	field.budget_primitives = cap
+	var changes: Array[float] = []
+	field.quality_changed.connect(func(quality: float) -> void: changes.append(quality))
+	var reaching: Array[PackedFloat32Array] = _run(3.0)
+	var last_cost: float = reaching[1][reaching[1].size() - 1]
+	print(
+		(
+			"     cap %d (a third of %d): after 3 s quality %.3f, %d triangles, %d steps"
+			% [cap, free_cost, field.get_quality(), last_cost, changes.size()]
+		)
+	)
+	check(last_cost <= cap, "within the cap after 3 s: %d ≤ %d" % [last_cost, cap])
+	check(field.get_quality() < 1.0 and field.get_quality() >= field.budget_min_quality, "the quality went down")
+	check(not changes.is_empty() and changes[-1] == field.get_quality(), "quality_changed told each step")
+	var settled: Array[PackedFloat32Array] = _run(10.0)
+	var low: float = Array(settled[0]).min()
+	var high: float = Array(settled[0]).max()
+	print("     the next 10 s: quality %.3f–%.3f, triangles at most %d" % [low, high, Array(settled[1]).max()])
+	check(
+		(high - low) / high < 0.05, "settled: the quality varies %.1f %% (under 5 %%)" % (100.0 * (high - low) / high)
+	)
+	check(Array(settled[1]).max() <= cap, "within the cap all the while")
+	field.budget_primitives = free_cost * 4
+	var freed: Array[PackedFloat32Array] = _run(12.0)
+	print("     the cap raised to 4×: quality %.3f after 12 s" % field.get_quality())
+	check_eq(field.get_quality(), 1.0, "quality given back under a generous cap")
+	var rise: PackedFloat32Array = freed[0]
+	var largest: float = 0.0
+	for i: int in range(1, rise.size()):
+		largest = maxf(largest, rise[i] / rise[i - 1])
+	check(largest <= 1.0 + FieldBudget.MAX_STEP_UP + 1e-4, "given back in small steps (largest ×%.3f)" % largest)
+	field.budget_primitives = cap
+	_run(2.0)
+	field.budget_primitives = 0
+	check_eq(field.get_quality(), 1.0, "no target: full quality at once")
+
+
+func test_the_quality_scales_the_distances_the_plants_switch_at() -> void:
+	_run(0.5)
+	var full: PackedInt32Array = field.get_lod_counts()
+	field.budget_primitives = 1  # far below anything: down to the least quality
+	field.budget_min_quality = 0.5
+	_run(3.0)
+	check_eq(field.get_quality(), 0.5, "at the least quality")
+	var halved: PackedInt32Array = field.get_lod_counts()
+	print("     plants per level at quality 1: %s, at 0.5: %s" % [full, halved])
+	check(halved[0] < full[0] and halved[0] > 0, "fewer plants at mesh 1")
+	check(halved[0] + halved[1] + halved[2] < (full[0] + full[1] + full[2]) / 2, "under half as many meshes")
+	field.budget_min_quality = 0.8
+	check_eq(field.get_quality(), 0.8, "raising the least quality lifts it at once")
+
+
+## The controller alone, against a cost that grows with the square of the quality (the near
+## meshes') and a fixed part, in steps of a 60th of a second: it reaches the target from 4× over
+## within 3 s and then holds one quality; the GPU target works the same way.
+func test_the_controller_reaches_a_target_and_holds_it() -> void:
+	for target: String in ["primitives", "gpu"]:
+		var budget: RefCounted = FieldBudget.new()
+		if target == "primitives":
+			budget.max_primitives = 1000000
+		else:
+			budget.gpu_ms = 4.0
+		var full_cost: float = 4.0  # times the target, at quality 1
+		var qualities: PackedFloat32Array = []
+		var share: float = 0.0
+		for frame: int in 600:
+			var q: float = budget.quality
+			share = 0.2 + (full_cost - 0.2) * q * q
+			budget.step(FRAME, int(share * 1000000.0), share * 4.0)
+			qualities.append(budget.quality)
+			if frame == 179:
+				check(
+					budget.load_share() <= 1.0, "%s: within the target after 3 s (%.2f)" % [target, budget.load_share()]
+				)
+		var tail: Array = Array(qualities.slice(300))
+		print(
+			(
+				"     %s: quality %.3f, load %.2f; the last 5 s %.3f–%.3f"
+				% [target, budget.quality, share, tail.min(), tail.max()]
+			)
+		)
+		check(tail.min() == tail.max(), "%s: one quality once settled" % target)
+		check(share > 0.5, "%s: not far below the target (%.2f)" % [target, share])
+
+
+## The GPU-time target under lavapipe (its "GPU" is the CPU, so only convergence and stability are
+## checked): real frames at head height, the sun's shadows off (so that the near meshes are most of
+## the frame), the target 70 % of the field's GPU time at full quality.
+func test_the_field_holds_a_gpu_time_target_on_the_software_renderer() -> void:
+	field.free()
+	camera.free()
+	var stage: RefCounted = Stage.new(tree.root, 400.0, Vector3(30.0, 0.0, 30.0))
+	for sun: Node in stage.root.find_children("*", "DirectionalLight3D", true, false):
+		(sun as DirectionalLight3D).shadow_enabled = false
+	field = SunflowerField.new()
+	stage.root.add_child(field)
+	field.map = Maps.filled(120, 120, "user://budget.field")
+	field.wind_power = 0.0
+	field.finish_build()
+	camera = Camera3D.new()
+	stage.root.add_child(camera)
+	camera.make_current()
+	camera.look_at_from_position(Vector3(30.0, 1.7, 45.0), Vector3(30.0, 1.4, 20.0))
+	field.budget_gpu_ms = 9000.0  # measured, never reached
+	await frames(4)  # the first frames compile shaders
+	var measured: Array = []
+	for frame: int in 4:
+		await frames(1)
+		measured.append(field.get_frame_stats()["gpu_ms"])
+	measured.sort()
+	var full_ms: float = (measured[1] + measured[2]) * 0.5
+	if not check(full_ms > 0.0, "the engine measures the viewport's GPU time (%.2f ms)" % full_ms):
+		stage.root.free()
+		return
+	field.budget_gpu_ms = full_ms * 0.7
+	var qualities: PackedFloat32Array = []
+	var times: PackedFloat32Array = []
+	for frame: int in 12:
+		await frames(1)
+		qualities.append(field.get_quality())
+		times.append(field.get_frame_stats()["gpu_ms"])
+	var last: Array = Array(qualities.slice(-6))
+	var last_times: Array = Array(times.slice(-6))
+	print(
+		(
+			"     GPU time at full quality %.1f ms, target %.1f ms: after %d frames quality %.3f"
+			+ (
+				" (last 6: %.3f–%.3f), %.1f–%.1f ms"
+				% [
+					full_ms,
+					field.budget_gpu_ms,
+					qualities.size(),
+					field.get_quality(),
+					last.min(),
+					last.max(),
+					last_times.min(),
+					last_times.max()
+				]
+			)
+		)
+	)
+	check(field.get_quality() < 1.0, "the quality went down")
+	check((last.max() - last.min()) / last.max() < 0.05, "settled over the last 6 frames")
+	check(last_times.min() < full_ms * 0.8, "the GPU time fell (%.1f of %.1f ms)" % [last_times.min(), full_ms])
+	stage.root.free()
