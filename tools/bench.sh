@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Benchmarks (numbers, not pass/fail). Prints ten tables:
+# Benchmarks (numbers, not pass/fail). Prints eleven tables:
 #   1. the C++ core alone: per-frame time and memory, 1M vs 4M plants;
 #   2. the engine: the demo's recording mode on the demo, large and million-plant fields;
 #   3. the thesis' experiment (Tables 3-5): a 1 500-plant field at distances 5 and 40 m, every plant
@@ -15,6 +15,8 @@
 #      (headless, and rendering with Vulkan lavapipe under Xvfb), against the editor alone.
 #  10. A million-plant build while the scene is drawn (Vulkan lavapipe under Xvfb): the load call,
 #      the build's wall time, frames and steps, then the first frames that draw the field.
+#  11. The frame budget (tools/measure_budget.sh): quality, primitives, draw calls and software frame
+#      time at head height in the large field, without a budget and under caps on the near triangles.
 # Results (JSON per run) go to build/bench/; BENCH_FRAMES and BENCH_RESOLUTION change the runs.
 set -euo pipefail
 repo=$(cd "$(dirname "$0")/.." && pwd)
@@ -144,3 +146,6 @@ echo "## 10. A million-plant map loaded in the background while the scene is dra
 timeout 600 xvfb-run -a -s "-screen 0 1280x720x24" "$godot" --rendering-driver vulkan --audio-driver Dummy \
   --resolution "$resolution" --path "$repo/tests/godot" --script res://bench/build_bench.gd 2>&1 | grep '^|' ||
   echo "bench: the build benchmark failed" >&2
+echo
+echo "## 11. The frame budget (tools/measure_budget.sh)"
+"$repo/tools/measure_budget.sh" || echo "bench: the budget measurement failed" >&2

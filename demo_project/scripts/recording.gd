@@ -172,6 +172,8 @@ func _write_stats() -> void:
 		"draw_calls": _summary(PackedFloat32Array(_rendering["draw_calls"])),
 		"objects": _summary(PackedFloat32Array(_rendering["objects"])),
 		"primitives": _summary(PackedFloat32Array(_rendering["primitives"])),
+		"primitives_per_frame": _rendering["primitives"],
+		"draw_calls_per_frame": _rendering["draw_calls"],
 		"buffer_memory_bytes": buffer_memory,
 		"baseline_chunks": baseline_node.get_child_count() if baseline_node else 0,
 		"lod_counts_mean": mean_counts,

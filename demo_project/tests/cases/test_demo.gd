@@ -36,6 +36,21 @@ func test_the_demo_scene_builds_the_demo_field() -> void:
 	check(counts[0] + counts[1] + counts[2] > 0, "meshes near the start position: %s" % counts)
 
 
+func test_the_hud_shows_the_frame_budget_and_the_quality_it_chose() -> void:
+	await frames(3)
+	var line: String = demo.call("_stats_text")
+	check(line.contains("no frame budget"), "without a budget the HUD says so")
+	field.budget_primitives = 1  # below anything: the quality goes down
+	field.set_process(false)
+	for frame: int in 60:
+		field.advance(1.0 / 60.0)
+	line = demo.call("_stats_text")
+	print("     " + line.get_slice("\n", line.count("\n")))
+	check(line.contains("budget: ") and line.contains("/ 0.00 M near triangles"), "the cap in the HUD")
+	check(field.get_quality() < 1.0, "the quality went down (%.2f)" % field.get_quality())
+	check(line.contains("quality %.2f" % field.get_quality()), "the HUD shows the quality")
+
+
 func test_the_keys_change_the_wind_as_the_thesis_says() -> void:
 	await frames(2)
 	var power: float = field.wind_power

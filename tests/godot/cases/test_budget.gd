@@ -179,24 +179,10 @@ func test_the_field_holds_a_gpu_time_target_on_the_software_renderer() -> void:
 		times.append(field.get_frame_stats()["gpu_ms"])
 	var last: Array = Array(qualities.slice(-6))
 	var last_times: Array = Array(times.slice(-6))
-	print(
-		(
-			"     GPU time at full quality %.1f ms, target %.1f ms: after %d frames quality %.3f"
-			+ (
-				" (last 6: %.3f–%.3f), %.1f–%.1f ms"
-				% [
-					full_ms,
-					field.budget_gpu_ms,
-					qualities.size(),
-					field.get_quality(),
-					last.min(),
-					last.max(),
-					last_times.min(),
-					last_times.max()
-				]
-			)
-		)
-	)
+	var figures: Array = [full_ms, field.budget_gpu_ms, qualities.size(), field.get_quality()]
+	figures.append_array([last.min(), last.max(), last_times.min(), last_times.max()])
+	var line: String = "     GPU time at full quality %.1f ms, target %.1f ms: after %d frames quality %.3f"
+	print((line + " (last 6: %.3f–%.3f), %.1f–%.1f ms") % figures)
 	check(field.get_quality() < 1.0, "the quality went down")
 	check((last.max() - last.min()) / last.max() < 0.05, "settled over the last 6 frames")
 	check(last_times.min() < full_ms * 0.8, "the GPU time fell (%.1f of %.1f ms)" % [last_times.min(), full_ms])
