@@ -27,6 +27,9 @@ const PartMeshes: GDScript = preload("part_meshes.gd")
 ## Maps of at least this many bytes (about as many cells) build in the background when the field's
 ## background_build is on; smaller ones take a few milliseconds and build at once.
 const BACKGROUND_BUILD_MIN_BYTES: int = 65536
+## Near plants cast from their impostors from this far inside their switch to the level that does
+## (less the hysteresis): an observer walking in between two LOD passes finds no plant without one.
+const NEAR_SHADOW_MARGIN: float = 1.0
 
 
 ## What each frame's update follows, as the node told it (its properties of the same names).
@@ -239,6 +242,7 @@ func configure_plants(species_plants: Array) -> bool:
 		key.append(plants[species].layout_key())
 		if drawn:
 			drawn.set_plant_meshes(species, plants[species])
+	_send_near_shadows()
 	var changed: bool = key != _layout_key and not _layout_key.is_empty()
 	_layout_key = key
 	return changed
@@ -263,6 +267,7 @@ func set_wind(wind: SunflowerWind) -> void:
 ## and the fade are drawn at the budget's quality.
 func set_lod(distances: PackedFloat32Array, hysteresis: float, fade: float, interval: float, force: int) -> void:
 	_lod = [distances, hysteresis, fade, interval, force]
+	_send_near_shadows()
 	if drawn:
 		_send_lod()
 
@@ -298,6 +303,24 @@ func _send_lod() -> void:
 	for i: int in distances.size():
 		distances[i] *= budget.quality
 	drawn.simulation.set_lod(distances, _lod[1], _lod[2] * budget.quality, _lod[3], _lod[4])
+
+
+## Tells each plant type's far tiles from where they cast the near plants' shadows
+## (SunflowerField.impostor_shadows_from: the switch to that level at the type's scale and the
+## budget's quality, less the hysteresis and NEAR_SHADOW_MARGIN; −1: never).
+func _send_near_shadows() -> void:
+	if _lod.is_empty():
+		return
+	var level: int = _field.impostor_shadows_from
+	var force: int = _lod[4]
+	for species: int in mini(impostor_sets.size(), plants.size()):
+		var from: float = -1.0
+		if force >= 0:
+			from = 0.0 if force >= level else -1.0
+		elif level < PartMeshes.LEVELS:
+			var switch: float = (_lod[0][level - 1] - _lod[1]) * plants[species].lod_scale_used() * budget.quality
+			from = maxf(0.0, switch - NEAR_SHADOW_MARGIN)
+		impostor_sets[species].set_shared(&"near_shadow_from", from)
 
 
 ## Sets the draw distance (0: none), drawn at the budget's quality: the impostors' per-plant fade,
@@ -357,6 +380,7 @@ func _gpu_ms() -> float:
 
 ## Draws at the budget's quality: distances, thinning and draw distance.
 func _apply_quality() -> void:
+	_send_near_shadows()
 	if drawn and not _lod.is_empty():
 		_send_lod()
 	set_thinning_start(_thinning_start)

@@ -32,6 +32,9 @@ var tiles: FarTileTable
 ## Near plants drawn at mesh level 1 or 2 cast their shadows from their level-3 mesh (set before
 ## [method finish]; see SunflowerField.cheap_shadows).
 var cheap_shadows: bool = true
+## Near plants drawn at this mesh level (0–2) or coarser cast no shadows from their meshes: their
+## tile's impostor casts for them (see SunflowerField.impostor_shadows_from); 3: every mesh level casts.
+var impostor_shadows_from: int = 3
 ## Tile nodes made, and taken over from the previous field, by this field's build.
 var tiles_made: int = 0
 var tiles_kept: int = 0
@@ -241,7 +244,9 @@ func finish(species_plants: Array, legend: Dictionary, cell_size: float, sway_ma
 				)
 				var whole_bucket: int = first + Native.mesh_bucket(level, 0)
 				_add_dynamic(whole, whole_bucket)
-				if cheap_shadows and level < levels - 1:
+				if level >= impostor_shadows_from:
+					whole.cast_shadow = GeometryInstance3D.SHADOW_CASTING_SETTING_OFF
+				elif cheap_shadows and level < levels - 1:
 					_add_shadow_twin(whole, whole_bucket, plant.whole_mesh(levels - 1))
 				continue
 			for part: int in PART_NAMES.size():
@@ -249,7 +254,9 @@ func finish(species_plants: Array, legend: Dictionary, cell_size: float, sway_ma
 				var node: MultiMeshInstance3D = _make_node(node_name, plant.mesh_for_field(level, part), aabb)
 				var bucket: int = first + Native.mesh_bucket(level, part)
 				_add_dynamic(node, bucket)
-				if cheap_shadows and level < levels - 1:
+				if level >= impostor_shadows_from:
+					node.cast_shadow = GeometryInstance3D.SHADOW_CASTING_SETTING_OFF
+				elif cheap_shadows and level < levels - 1:
 					_add_shadow_twin(node, bucket, plant.mesh_for_field(levels - 1, part))
 		# The near sprites and billboards: one multi-view impostor draws both.
 		var impostors: MultiMeshInstance3D = _make_node(prefix + "Impostors", _impostors[species].mesh(), aabb)
@@ -276,9 +283,11 @@ func update_masks() -> void:
 		return
 	_mask_version = version
 	var drawn: PackedByteArray = simulation.get_tiles_drawn()
+	# A tile whose chunks are all drawn near is hidden, unless its caster casts for near plants.
+	var casting: bool = impostor_shadows_from < PartMeshes.LEVELS
 	for tile: int in mini(_tile_nodes.size(), drawn.size()):
 		if _tile_nodes[tile]:
-			_tile_nodes[tile].visible = drawn[tile] != 0
+			_tile_nodes[tile].visible = drawn[tile] != 0 or casting
 	var grid: PackedInt32Array = simulation.get_chunk_grid()
 	if grid[0] * grid[1] == 0:
 		return  # no field laid out

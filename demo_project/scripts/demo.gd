@@ -18,7 +18,8 @@ extends Node3D
 ##   --baseline native        draw the field the Godot-native way instead (benchmark baseline)
 ##   --wind P                 the wind power (0: calm)
 ##   --whole off              draw the near plants part by part (FieldPlant.draw_whole off)
-##   --cheap-shadows off      near plants cast shadows from the mesh they are drawn with
+##   --cheap-shadows off      near plants at mesh 1 and 2 cast shadows from the mesh they are drawn with
+##   --impostor-shadows FROM  near plants at this level on cast from impostors: mesh2, mesh3 (default), never
 ##   --budget-primitives N    hold the near meshes to N triangles a frame (SunflowerField.budget_primitives)
 ##   --budget-gpu-ms MS       hold the frame's GPU time to MS milliseconds (SunflowerField.budget_gpu_ms)
 ##   --no-hud                 hide the heads-up display (pictures for measurements)
@@ -104,6 +105,9 @@ func _ready() -> void:
 				_field.wind_power = value.to_float()
 			"--cheap-shadows":
 				_field.cheap_shadows = value != "off"
+			"--impostor-shadows":
+				var levels: Dictionary = {"mesh2": SunflowerField.Lod.MESH_2, "mesh3": SunflowerField.Lod.MESH_3}
+				_field.impostor_shadows_from = levels.get(value, SunflowerField.Lod.SPRITE)
 			"--budget-primitives":
 				_field.budget_primitives = value.to_int()
 			"--budget-gpu-ms":

@@ -83,6 +83,7 @@ func test_lod_counts_follow_the_observer() -> void:
 ## shadow-only child the library fills with the same instances, drawing the level-3 mesh. With
 ## cheap_shadows off, every level casts from its own mesh.
 func test_near_plants_cast_shadows_from_mesh_3() -> void:
+	field.impostor_shadows_from = SunflowerField.Lod.SPRITE  # every mesh level casts from a mesh
 	observer.position = Vector3(10.0, 1.7, 7.5)
 	field.advance(0.3)
 	var last: MultiMeshInstance3D = _node("Mesh3")
@@ -111,6 +112,39 @@ func test_near_plants_cast_shadows_from_mesh_3() -> void:
 		var node: MultiMeshInstance3D = _node("Mesh%d" % (level + 1))
 		check_eq(node.cast_shadow, GeometryInstance3D.SHADOW_CASTING_SETTING_ON, "full: " + node.name)
 		check_eq(node.get_child_count(true), 0, "full: no twin under " + node.name)
+
+
+## With impostor_shadows_from at mesh 3, mesh-3 plants cast no mesh shadows, the nearer levels keep
+## their twins, and the far tiles' casters draw the near plants from the switch to mesh 3 (less the
+## hysteresis and a metre) on, at the plant type's scale; Never turns that off.
+func test_near_plants_cast_shadows_from_their_impostors_from_a_level_on() -> void:
+	check_eq(field.impostor_shadows_from, SunflowerField.Lod.MESH_3, "from mesh 3 by default")
+	observer.position = Vector3(10.0, 1.7, 7.5)
+	field.advance(0.3)
+	var last: MultiMeshInstance3D = _node("Mesh3")
+	check_eq(last.cast_shadow, GeometryInstance3D.SHADOW_CASTING_SETTING_OFF, "mesh 3 casts no mesh shadow")
+	check_eq(last.get_child_count(true), 0, "and has no twin")
+	for level: int in 2:
+		check_eq(_node("Mesh%d" % (level + 1)).get_child_count(true), 1, "mesh %d keeps its twin" % (level + 1))
+	var expected: float = (
+		(field.lod_distances[1] - field.lod_hysteresis) * field.get_plant_types()[0].lod_scale_used() - 1.0
+	)
+	var casters: int = 0
+	for node: MultiMeshInstance3D in _field_nodes():
+		if not node.name.begins_with("FarTile"):
+			continue
+		var caster: MultiMeshInstance3D = node.get_child(0, true) as MultiMeshInstance3D
+		var material: ShaderMaterial = caster.material_override as ShaderMaterial
+		check_near(material.get_shader_parameter("near_shadow_from"), expected, 1e-4, node.name + "'s caster")
+		casters += 1
+	check(casters > 0, "far tiles' casters checked (%d)" % casters)
+	field.impostor_shadows_from = SunflowerField.Lod.SPRITE
+	field.advance(0.1)
+	check_eq(_node("Mesh3").cast_shadow, GeometryInstance3D.SHADOW_CASTING_SETTING_ON, "Never: mesh 3 casts")
+	for node: MultiMeshInstance3D in _field_nodes():
+		if node.name.begins_with("FarTile"):
+			var material: ShaderMaterial = (node.get_child(0, true) as MultiMeshInstance3D).material_override
+			check_eq(material.get_shader_parameter("near_shadow_from"), -1.0, "Never: " + node.name)
 
 
 func test_buffers_reach_the_rendering_server() -> void:

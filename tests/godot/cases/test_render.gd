@@ -6,6 +6,7 @@ const FarTileTable: GDScript = preload("res://addons/sunflower_field/far_tile_ta
 const NativeField: GDScript = preload("res://addons/sunflower_field/native_field.gd")
 const Picture: GDScript = preload("res://runner/picture.gd")
 const Stage: GDScript = preload("res://runner/stage.gd")
+const Maps: GDScript = preload("res://runner/maps.gd")
 const Dressing: GDScript = preload("res://runner/dressing.gd")
 const SHOT: String = "render_demo_field.png"
 ## A part shader of a user's own: flat red; FADE; marks where the cross-fade's one line goes.
@@ -565,6 +566,58 @@ func _mean_green_luminance(image: Image) -> float:
 				sum += c.get_luminance()
 				count += 1
 	return sum / maxf(count, 1.0)
+
+
+## Near plants at mesh 3 casting from their impostors (impostor_shadows_from) shade the field as
+## their meshes did: a 15 × 15 m field seen through a 30° lens from 6 m up beyond its south edge
+## (plants 12–28 m away, mesh 3 and sprites), drawn with mesh-3 casters, with impostor casters, and
+## with mesh 3 casting nothing (what a caster that skipped the near plants would draw): the
+## impostors' picture is nearer the meshes' than the bare one is, and as bright within 3 %.
+func test_near_plants_cast_shadows_from_their_impostors() -> void:
+	var pictures: Array[PackedFloat32Array] = []
+	var picture: RefCounted
+	for way: String in ["meshes", "impostors", "none"]:
+		var field: SunflowerField = SunflowerField.new()
+		field.impostor_shadows_from = SunflowerField.Lod.MESH_3 if way == "impostors" else SunflowerField.Lod.SPRITE
+		scene.add_child(field)
+		field.map = Maps.filled(30, 30, "user://shadow_field.field")
+		field.wind_power = 0.0
+		field.finish_build()
+		field.set_process(false)
+		var camera: Camera3D = Camera3D.new()
+		scene.add_child(camera)
+		camera.fov = 30.0  # the field fills the picture
+		camera.look_at_from_position(Vector3(7.5, 6.0, 27.0), Vector3(7.5, 0.0, 7.5))
+		camera.make_current()
+		_run_field(field, 10)
+		if way == "none":
+			for node: Node in field.find_children("Mesh3*", "MultiMeshInstance3D", true, false):
+				(node as MultiMeshInstance3D).cast_shadow = GeometryInstance3D.SHADOW_CASTING_SETTING_OFF
+		check(field.get_lod_counts()[SunflowerField.Lod.MESH_3] > 100, "%s: plants at mesh 3" % way)
+		await frames(2)
+		var image: Image = tree.root.get_viewport().get_texture().get_image()
+		image.save_png(artifact_path("shadows_%s.png" % way))
+		picture = Picture.new(image.get_width(), image.get_height())
+		pictures.append(picture.luminance(image))
+		field.free()
+		camera.free()
+	var brightness: Array[float] = []
+	for each: PackedFloat32Array in pictures:
+		var total: float = 0.0
+		for value: float in each:
+			total += value
+		brightness.append(total / each.size())
+	var to_impostors: float = picture.ssim(pictures[0], pictures[1])
+	var to_none: float = picture.ssim(pictures[0], pictures[2])
+	print(
+		(
+			"     impostor shadows against mesh 3's: SSIM %.4f, brightness %.3f×; no mesh-3 shadows: SSIM %.4f, %.3f×"
+			% [to_impostors, brightness[1] / brightness[0], to_none, brightness[2] / brightness[0]]
+		)
+	)
+	check(to_impostors > to_none, "the impostors' shadows are nearer the meshes' than none")
+	check(absf(brightness[1] / brightness[0] - 1.0) < 0.03, "as bright within 3 %")
+	check(brightness[2] / brightness[0] > 1.02, "the test sees shadows: without mesh 3's the field is brighter")
 
 
 ## One sunflower in calm air, built, its field stopped (drawn as [member SunflowerField.force_lod] says

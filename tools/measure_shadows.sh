@@ -1,0 +1,51 @@
+#!/usr/bin/env bash
+# What the near plants' shadows cost and look like (docs/performance.md, "Shadows"): the demo's
+# recording mode at head height in the million-plant field, calm, 4 frames at 480 × 270 under Xvfb
+# (Vulkan lavapipe), once per way of casting: every mesh level from its own mesh, from mesh 3
+# (cheap_shadows), and from the impostors from mesh 3 (the default) and from mesh 2 on
+# (impostor_shadows_from).
+# Prints the renderer's primitives and draw calls for the whole frame (medians) and each picture's
+# SSIM and brightness against the full-shadow one.
+set -euo pipefail
+repo=$(cd "$(dirname "$0")/.." && pwd)
+"$repo/tools/build.sh" >/dev/null
+godot=$("$repo/tools/find_godot.sh")
+out="$repo/build/bench/shadows"
+mkdir -p "$out" "$repo/build/bench/fields"
+field="$repo/build/bench/fields/million.field"
+[[ -s "$field" ]] || "$repo/tools/make_field.py" 1000 1000 "$field" >/dev/null
+ways=("full|--cheap-shadows off --impostor-shadows never" "mesh 3 (cheap_shadows)|--impostor-shadows never"
+  "impostors from mesh 3 (the default)|" "impostors from mesh 2|--impostor-shadows mesh2")
+for i in "${!ways[@]}"; do
+  read -r -a flags <<<"${ways[$i]#*|}"
+  log="$out/way_$i.log"
+  rm -f "$out/way_$i.json"
+  timeout 900 xvfb-run -a -s "-screen 0 1280x720x24" "$godot" --audio-driver Dummy --resolution 480x270 \
+    --path "$repo/demo_project" -- --map "$field" --view inside --wind 0 --no-hud --frames 4 \
+    --stats "$out/way_$i.json" --screenshot "$out/way_$i.png" "${flags[@]}" >"$log" 2>&1 &
+  job=$!
+  waited=0 # the engine's exit now and then hangs under lavapipe (see tools/bench.sh): stopped 20 s after the stats
+  while kill -0 "$job" 2>/dev/null; do
+    grep -q '^demo: stats' "$log" 2>/dev/null && waited=$((waited + 1))
+    ((waited > 10)) && pkill -f -- "--stats $out/way_$i.json"
+    sleep 2
+  done
+  wait "$job" || [[ -s "$out/way_$i.json" ]] || { echo "measure_shadows: the run '${ways[$i]%%|*}' failed; see $log" >&2; exit 1; }
+  printf '.' >&2
+done
+echo >&2
+echo "Million-plant field, head height inside, calm, 4 frames at 480 × 270 (medians)"
+echo
+echo "| shadows cast | primitives | against full | draw calls | picture against full |"
+echo "|---|---|---|---|---|"
+full=$(python3 -c "import json,sys; print(json.load(open(sys.argv[1]))['primitives']['median'])" "$out/way_0.json")
+for i in "${!ways[@]}"; do
+  read -r primitives calls < <(python3 -c "import json,sys; s=json.load(open(sys.argv[1])); print(s['primitives']['median'], s['draw_calls']['median'])" "$out/way_$i.json")
+  picture="—"
+  if ((i > 0)); then
+    picture=$("$godot" --headless --path "$repo/tests/godot" --script "$repo/tools/compare_pictures.gd" -- \
+      "$out/way_0.png" "$out/way_$i.png" 2>/dev/null | sed -n 's/^compare_pictures: //p')
+  fi
+  python3 -c "import sys; p,f,c=float(sys.argv[2]),float(sys.argv[3]),float(sys.argv[4]); print(f'| {sys.argv[1]} | {p/1e6:.2f} M | {p/f:.2f}× | {c:.0f} | {sys.argv[5]} |')" \
+    "${ways[$i]%%|*}" "$primitives" "$full" "$calls" "$picture"
+done
