@@ -395,7 +395,12 @@ const WIND_PROPERTIES: Dictionary = {
 ## drawn with.
 @export_enum("Mesh 2:1", "Mesh 3:2", "Never:3") var impostor_shadows_from: int = 2:
 	set(value):
-		value = clampi(value, SunflowerField.Lod.MESH_2, SunflowerField.Lod.SPRITE)
+		var used: int = clampi(value, SunflowerField.Lod.MESH_2, SunflowerField.Lod.SPRITE)
+		if used != value:
+			push_warning(
+				"SunflowerField.impostor_shadows_from: %d is not 1–3 (Mesh 2, Mesh 3, Never); using %d" % [value, used]
+			)
+			value = used
 		if value != impostor_shadows_from:
 			impostor_shadows_from = value
 			_tell_lod()

@@ -108,6 +108,15 @@ func test_bad_values_are_rejected_or_clamped_with_a_warning() -> void:
 	check(warned("SunflowerField.cell_size"), "zero cell size warns")
 	field.cell_size = -1.0
 	check_eq(field.cell_size, 0.5, "negative cell size is rejected")
+	field.impostor_shadows_from = 7
+	check_eq(field.impostor_shadows_from, SunflowerField.Lod.SPRITE, "a level past Never is Never")
+	check(warned("SunflowerField.impostor_shadows_from: 7"), "and warns")
+	field.budget_gpu_ms = NAN
+	check_eq(field.budget_gpu_ms, 0.0, "a NaN GPU budget keeps none")
+	check(warned("SunflowerField.budget_gpu_ms: nan"), "and warns")
+	field.budget_primitives = -5
+	check_eq(field.budget_primitives, 0, "a negative cap is none")
+	check(warned("SunflowerField.budget_primitives"), "and warns")
 	field.plant_height = NAN
 	check_eq(field.plant_height, 2.0, "NaN plant height is rejected")
 	check(warned("FieldPlant.height"), "bad height warns")
