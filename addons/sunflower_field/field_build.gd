@@ -30,7 +30,6 @@ class Job:
 	var scenes: Dictionary
 	var max_plants: int
 	var cheap_shadows: bool = true
-	var impostor_shadows_from: int = 2
 	var cell_size: float
 	var seed: int
 	var independent_jitter: bool
@@ -54,7 +53,6 @@ class Job:
 		job.scenes = field.legend.duplicate()
 		job.max_plants = field.max_plants
 		job.cheap_shadows = field.cheap_shadows
-		job.impostor_shadows_from = field.impostor_shadows_from
 		job.cell_size = field.cell_size
 		job.seed = field.seed
 		job.independent_jitter = field.independent_jitter
@@ -118,7 +116,6 @@ func _init(
 	_field = field
 	nodes = FieldNodes.new(field, job.simulation, impostors)
 	nodes.cheap_shadows = job.cheap_shadows
-	nodes.impostor_shadows_from = job.impostor_shadows_from
 	_previous = previous
 	if background:
 		_task = WorkerThreadPool.add_task(job.run, true, "SunflowerField: " + job.source.get_file())

@@ -293,6 +293,7 @@ func _configure_drawn() -> void:
 		_wind.apply_to(drawn.simulation)
 	if not _lod.is_empty():
 		_send_lod()
+		_send_near_shadows()
 	if not _push.is_empty():
 		drawn.simulation.set_push_params(_push[0], _push[1])
 	drawn.simulation.set_worker_threads(_threads)
@@ -307,20 +308,20 @@ func _send_lod() -> void:
 
 ## Tells each plant type's far tiles from where they cast the near plants' shadows
 ## (SunflowerField.impostor_shadows_from: the switch to that level at the type's scale and the
-## budget's quality, less the hysteresis and NEAR_SHADOW_MARGIN; −1: never).
+## budget's quality, less the hysteresis and NEAR_SHADOW_MARGIN; −1: never), and the field drawn
+## which mesh levels cast from meshes. With force_lod every plant casts from what it is drawn with.
 func _send_near_shadows() -> void:
 	if _lod.is_empty():
 		return
-	var level: int = _field.impostor_shadows_from
-	var force: int = _lod[4]
+	var level: int = _field.impostor_shadows_from if _lod[4] < 0 else PartMeshes.LEVELS
 	for species: int in mini(impostor_sets.size(), plants.size()):
 		var from: float = -1.0
-		if force >= 0:
-			from = 0.0 if force >= level else -1.0
-		elif level < PartMeshes.LEVELS:
+		if level < PartMeshes.LEVELS:
 			var switch: float = (_lod[0][level - 1] - _lod[1]) * plants[species].lod_scale_used() * budget.quality
 			from = maxf(0.0, switch - NEAR_SHADOW_MARGIN)
 		impostor_sets[species].set_shared(&"near_shadow_from", from)
+	if drawn:
+		drawn.set_impostor_shadows_from(level)
 
 
 ## Sets the draw distance (0: none), drawn at the budget's quality: the impostors' per-plant fade,

@@ -33,7 +33,8 @@ var tiles: FarTileTable
 ## [method finish]; see SunflowerField.cheap_shadows).
 var cheap_shadows: bool = true
 ## Near plants drawn at this mesh level (0–2) or coarser cast no shadows from their meshes: their
-## tile's impostor casts for them (see SunflowerField.impostor_shadows_from); 3: every mesh level casts.
+## tile's impostor casts for them (see SunflowerField.impostor_shadows_from); 3: every mesh level
+## casts. Set by [method set_impostor_shadows_from].
 var impostor_shadows_from: int = 3
 ## Tile nodes made, and taken over from the previous field, by this field's build.
 var tiles_made: int = 0
@@ -45,6 +46,8 @@ var _dynamic_nodes: Array[MultiMeshInstance3D] = []
 var _dynamic_buckets: PackedInt32Array = []  # the native bucket each dynamic node draws
 var _shown_buckets: PackedByteArray = []  # the filled buckets the nodes' visibility follows
 var _object_nodes: Array[Node] = []
+var _mesh_nodes: Array[MultiMeshInstance3D] = []  # the near mesh levels' nodes, and each one's level
+var _mesh_node_levels: PackedInt32Array = []
 var _whole: Array[bool] = []  # per species: its near plants drawn whole (one node per level)
 var _masks: Array[ImageTexture] = []  # per species: which chunk cells the near buckets draw
 var _mask_version: int = -1  # the simulation's mask version the textures show
@@ -244,9 +247,9 @@ func finish(species_plants: Array, legend: Dictionary, cell_size: float, sway_ma
 				)
 				var whole_bucket: int = first + Native.mesh_bucket(level, 0)
 				_add_dynamic(whole, whole_bucket)
-				if level >= impostor_shadows_from:
-					whole.cast_shadow = GeometryInstance3D.SHADOW_CASTING_SETTING_OFF
-				elif cheap_shadows and level < levels - 1:
+				_mesh_nodes.append(whole)
+				_mesh_node_levels.append(level)
+				if cheap_shadows and level < levels - 1:
 					_add_shadow_twin(whole, whole_bucket, plant.whole_mesh(levels - 1))
 				continue
 			for part: int in PART_NAMES.size():
@@ -254,14 +257,15 @@ func finish(species_plants: Array, legend: Dictionary, cell_size: float, sway_ma
 				var node: MultiMeshInstance3D = _make_node(node_name, plant.mesh_for_field(level, part), aabb)
 				var bucket: int = first + Native.mesh_bucket(level, part)
 				_add_dynamic(node, bucket)
-				if level >= impostor_shadows_from:
-					node.cast_shadow = GeometryInstance3D.SHADOW_CASTING_SETTING_OFF
-				elif cheap_shadows and level < levels - 1:
+				_mesh_nodes.append(node)
+				_mesh_node_levels.append(level)
+				if cheap_shadows and level < levels - 1:
 					_add_shadow_twin(node, bucket, plant.mesh_for_field(levels - 1, part))
 		# The near sprites and billboards: one multi-view impostor draws both.
 		var impostors: MultiMeshInstance3D = _make_node(prefix + "Impostors", _impostors[species].mesh(), aabb)
 		_add_dynamic(impostors, first + Native.constant(&"BUCKET_IMPOSTOR"))
 		_add_caster(impostors, _impostors[species].caster())
+	set_impostor_shadows_from(impostor_shadows_from)
 	_place_objects(legend, cell_size)
 	for tile: int in _tile_nodes.size():
 		var node: MultiMeshInstance3D = _tile_nodes[tile]
@@ -302,6 +306,23 @@ func update_masks() -> void:
 		else:
 			_masks[species].update(image)
 		_impostors[species].set_active_chunks(_masks[species], grid[0])
+
+
+## Near plants from mesh [param level] on cast no mesh shadows (the far tiles' casters cast for
+## them: SunflowerField.impostor_shadows_from); nearer levels cast from their meshes or their
+## shadow twins. 3: every mesh level casts.
+func set_impostor_shadows_from(level: int) -> void:
+	impostor_shadows_from = level
+	for i: int in _mesh_nodes.size():
+		var node: MultiMeshInstance3D = _mesh_nodes[i]
+		var casts: bool = _mesh_node_levels[i] < level
+		if node.get_child_count(true) > 0:
+			(node.get_child(0, true) as Node3D).visible = casts  # the twin; the node itself casts none
+		else:
+			node.cast_shadow = (
+				GeometryInstance3D.SHADOW_CASTING_SETTING_ON if casts else GeometryInstance3D.SHADOW_CASTING_SETTING_OFF
+			)
+	_mask_version = -1  # tiles whose chunks are all near stay drawn for their casters, or not
 
 
 ## Shows only the near buckets that hold plants after the simulation's last update: an empty

@@ -404,7 +404,6 @@ const WIND_PROPERTIES: Dictionary = {
 		if value != impostor_shadows_from:
 			impostor_shadows_from = value
 			_tell_lod()
-			_queue_rebuild()
 ## Build large maps without stalling: the map is read and laid out on a worker thread, then the
 ## field's nodes are made a few at a time, at most [member build_budget_ms] per frame. The previous
 ## field stays drawn until the new one is complete ([signal build_progress] reports, the editor shows
