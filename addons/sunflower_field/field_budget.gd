@@ -59,6 +59,13 @@ func reset() -> bool:
 	return changed
 
 
+## Forgets what the old targets taught (the ceiling, the time under them): a new target is judged
+## afresh.
+func retarget() -> void:
+	_ceiling = INF
+	_under_for = 0.0
+
+
 ## One frame of [param delta] seconds whose near meshes held [param frame_primitives] triangles and
 ## whose viewport took [param frame_gpu_ms] on the GPU (0: not measured). True when the quality
 ## changed.

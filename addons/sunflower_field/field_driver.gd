@@ -299,6 +299,7 @@ func _configure_drawn() -> void:
 	drawn.simulation.set_worker_threads(_threads)
 
 
+## Sends the LOD settings to the field drawn, its distances and fade at the budget's quality.
 func _send_lod() -> void:
 	var distances: PackedFloat32Array = _lod[0].duplicate()
 	for i: int in distances.size():
@@ -344,6 +345,8 @@ func set_thinning_start(distance: float) -> void:
 
 ## Sets the budget's targets (0: none) and least quality; with no target the quality goes back to 1.
 func set_budget(max_primitives: int, gpu_ms: float, min_quality: float) -> void:
+	if max_primitives != budget.max_primitives or gpu_ms != budget.gpu_ms:
+		budget.retarget()
 	budget.max_primitives = max_primitives
 	budget.gpu_ms = gpu_ms
 	budget.min_quality = min_quality

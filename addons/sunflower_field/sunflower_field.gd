@@ -431,8 +431,8 @@ const WIND_PROPERTIES: Dictionary = {
 ## quality, one scalar that scales [member lod_distances], [member lod_fade],
 ## [member thinning_distance] and [member max_draw_distance] together, in steps of at most 30 % four
 ## times a second; it gives quality back in steps of at most 10 % after a second with 30 % headroom,
-## never straight back to a quality that went over in the last 10 s, so it settles instead of
-## pumping. Off in the editor. See [method get_quality].
+## never straight back to a quality that went over in the last 10 s (unless a target changed), so it
+## settles instead of pumping. Off in the editor. See [method get_quality].
 @export_range(0, 100000000, 1000, "or_greater") var budget_primitives: int = 0:
 	set(value):
 		budget_primitives = Native.accept_int("SunflowerField.budget_primitives", value, budget_primitives)
