@@ -293,8 +293,7 @@ func _stats_text() -> String:
 			+ "%d plants: mesh 1 %d, mesh 2 %d, mesh 3 %d, sprite %d, billboard %d\n"
 			+ "triangles drawn ~%.2f M\n"
 			+ "wind %.1f m/s towards (%.2f, %.2f), increment %.1f, %s model (F9)\n"
-			+ "%s, %d plants pushed\n"
-			+ "%s"
+			+ "%s, %d plants pushed%s"
 		)
 		% [
 			fps,
@@ -319,10 +318,11 @@ func _stats_text() -> String:
 	)
 
 
-## The frame budget's line: its targets, what it saw and the quality it chose.
+## The frame budget's line (its targets, what it saw and the quality it chose) on a line of its own;
+## nothing without a budget.
 func _budget_text(costs: Dictionary) -> String:
 	if _field.budget_primitives <= 0 and _field.budget_gpu_ms <= 0.0:
-		return "no frame budget (--budget-primitives N, --budget-gpu-ms MS)"
+		return ""
 	var targets: PackedStringArray = []
 	if _field.budget_primitives > 0:
 		targets.append(
@@ -330,7 +330,7 @@ func _budget_text(costs: Dictionary) -> String:
 		)
 	if _field.budget_gpu_ms > 0.0:
 		targets.append("GPU %.1f / %.1f ms" % [costs["gpu_ms"], _field.budget_gpu_ms])
-	return "budget: %s, quality %.2f" % [", ".join(targets), costs["quality"]]
+	return "\nbudget: %s, quality %.2f" % [", ".join(targets), costs["quality"]]
 
 
 func _wind_model_name() -> String:

@@ -39,7 +39,7 @@ func test_the_demo_scene_builds_the_demo_field() -> void:
 func test_the_hud_shows_the_frame_budget_and_the_quality_it_chose() -> void:
 	await frames(3)
 	var line: String = demo.call("_stats_text")
-	check(line.contains("no frame budget"), "without a budget the HUD says so")
+	check(not line.contains("budget"), "without a budget the HUD has no budget line")
 	field.budget_primitives = 1  # below anything: the quality goes down
 	field.set_process(false)
 	for frame: int in 60:
