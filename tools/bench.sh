@@ -40,22 +40,10 @@ printf '12.5 1.7 20 12.5 1.0 7.5\n12.5 1.7 20 12.5 1.0 7.5\n' >"$out/fields/view
 printf '12.5 1.7 55 12.5 1.0 7.5\n12.5 1.7 55 12.5 1.0 7.5\n' >"$out/fields/view40.path"
 
 run() { # $1 = name, rest = demo arguments
-  local name=$1; shift
-  local log="$out/runs/$name.log" waited=0
-  timeout 1800 xvfb-run -a -s "-screen 0 1280x720x24" "$godot" --audio-driver Dummy --resolution "$resolution" \
-    --path "$repo/demo_project" -- --frames "$frames" --stats "$out/runs/$name.json" "$@" >"$log" 2>&1 &
-  local job=$!
-  # The demo writes its stats, then quits. Under lavapipe the frame after the quit now and then never
-  # ends (the engine's main thread waits on a condition; no frame of the addon's on any thread's
-  # stack): 60 s after the stats, the run is stopped.
-  while kill -0 "$job" 2>/dev/null; do
-    if grep -q '^demo: stats' "$log" 2>/dev/null; then
-      waited=$((waited + 1))
-      ((waited > 30)) && pkill -f -- "--stats $out/runs/$name.json" && echo "bench: run $name stopped after its stats" >&2
-    fi
-    sleep 2
-  done
-  wait "$job" || [[ -s "$out/runs/$name.json" ]] || echo "bench: run $name failed; see $log" >&2
+  local name=$1
+  shift
+  RESOLUTION=$resolution "$repo/tools/demo_recording.sh" "$out/runs/$name.log" "$out/runs/$name.json" \
+    --frames "$frames" "$@" || echo "bench: run $name failed; see $out/runs/$name.log" >&2
   printf '.' >&2
 }
 

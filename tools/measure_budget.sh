@@ -9,7 +9,6 @@
 set -euo pipefail
 repo=$(cd "$(dirname "$0")/.." && pwd)
 "$repo/tools/build.sh" >/dev/null
-godot=$("$repo/tools/find_godot.sh")
 out="$repo/build/bench/budget"
 mkdir -p "$out"
 frames=${BENCH_FRAMES:-16}
@@ -20,19 +19,9 @@ caps=("$@")
 for cap in 0 "${caps[@]}"; do
   budget=()
   ((cap > 0)) && budget=(--budget-primitives "$cap")
-  rm -f "$out/cap_$cap.json"
-  log="$out/cap_$cap.log"
-  timeout 900 xvfb-run -a -s "-screen 0 1280x720x24" "$godot" --audio-driver Dummy --resolution "$resolution" \
-    --path "$repo/demo_project" -- --map res://fields/large.field --view inside --wind 0 --no-hud \
-    --frames "$frames" --stats "$out/cap_$cap.json" "${budget[@]}" >"$log" 2>&1 &
-  job=$!
-  waited=0 # the engine's exit now and then hangs under lavapipe (see tools/bench.sh): stopped 20 s after the stats
-  while kill -0 "$job" 2>/dev/null; do
-    grep -q '^demo: stats' "$log" 2>/dev/null && waited=$((waited + 1))
-    ((waited > 10)) && pkill -f -- "--stats $out/cap_$cap.json"
-    sleep 2
-  done
-  wait "$job" || [[ -s "$out/cap_$cap.json" ]] || { echo "measure_budget: the run with cap $cap failed; see $log" >&2; exit 1; }
+  RESOLUTION=$resolution "$repo/tools/demo_recording.sh" "$out/cap_$cap.log" "$out/cap_$cap.json" \
+    --map res://fields/large.field --view inside --wind 0 --no-hud --frames "$frames" "${budget[@]}" ||
+    { echo "measure_budget: the run with cap $cap failed; see $out/cap_$cap.log" >&2; exit 1; }
   printf '.' >&2
 done
 echo >&2

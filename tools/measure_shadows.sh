@@ -18,19 +18,9 @@ ways=("full|--cheap-shadows off --impostor-shadows never" "mesh 3 (cheap_shadows
   "impostors from mesh 3 (the default)|" "impostors from mesh 2|--impostor-shadows mesh2")
 for i in "${!ways[@]}"; do
   read -r -a flags <<<"${ways[$i]#*|}"
-  log="$out/way_$i.log"
-  rm -f "$out/way_$i.json"
-  timeout 900 xvfb-run -a -s "-screen 0 1280x720x24" "$godot" --audio-driver Dummy --resolution 480x270 \
-    --path "$repo/demo_project" -- --map "$field" --view inside --wind 0 --no-hud --frames 4 \
-    --stats "$out/way_$i.json" --screenshot "$out/way_$i.png" "${flags[@]}" >"$log" 2>&1 &
-  job=$!
-  waited=0 # the engine's exit now and then hangs under lavapipe (see tools/bench.sh): stopped 20 s after the stats
-  while kill -0 "$job" 2>/dev/null; do
-    grep -q '^demo: stats' "$log" 2>/dev/null && waited=$((waited + 1))
-    ((waited > 10)) && pkill -f -- "--stats $out/way_$i.json"
-    sleep 2
-  done
-  wait "$job" || [[ -s "$out/way_$i.json" ]] || { echo "measure_shadows: the run '${ways[$i]%%|*}' failed; see $log" >&2; exit 1; }
+  RESOLUTION=480x270 "$repo/tools/demo_recording.sh" "$out/way_$i.log" "$out/way_$i.json" --map "$field" \
+    --view inside --wind 0 --no-hud --frames 4 --screenshot "$out/way_$i.png" "${flags[@]}" ||
+    { echo "measure_shadows: the run '${ways[$i]%%|*}' failed; see $out/way_$i.log" >&2; exit 1; }
   printf '.' >&2
 done
 echo >&2
