@@ -49,16 +49,6 @@ func is_active() -> bool:
 	return max_primitives > 0 or gpu_ms > 0.0
 
 
-## Gives all quality back (a target was turned off or the field rebuilt); true when it changed.
-func reset() -> bool:
-	var changed: bool = quality != 1.0
-	quality = 1.0
-	_since_step = 0.0
-	_under_for = 0.0
-	_ceiling = INF
-	return changed
-
-
 ## Forgets what the old targets taught (the ceiling, the time under them): a new target is judged
 ## afresh.
 func retarget() -> void:
@@ -67,15 +57,13 @@ func retarget() -> void:
 
 
 ## One frame of [param delta] seconds whose near meshes held [param frame_primitives] triangles and
-## whose viewport took [param frame_gpu_ms] on the GPU (0: not measured). True when the quality
-## changed.
+## whose viewport took [param frame_gpu_ms] on the GPU (0: not measured), with a target set (the
+## field gives all quality back itself when the targets go). True when the quality changed.
 func step(delta: float, frame_primitives: int, frame_gpu_ms: float) -> bool:
 	primitives = frame_primitives
 	if frame_gpu_ms > 0.0:
 		var weight: float = 1.0 if smoothed_gpu_ms == 0.0 else 1.0 - exp(-delta / GPU_SMOOTHING_SECONDS)
 		smoothed_gpu_ms = lerpf(smoothed_gpu_ms, frame_gpu_ms, weight)
-	if not is_active():
-		return reset()
 	_since_step += delta
 	_ceiling_age += delta
 	if _ceiling_age > CEILING_SECONDS:

@@ -74,12 +74,17 @@ var _draw_distance: float = 0.0  # SunflowerField.max_draw_distance (0: none)
 var _thinning_start: float = 0.0  # SunflowerField.thinning_distance (0: no thinning)
 var _triangles: Array[PackedInt32Array] = []  # per species, a plant's triangles at each mesh level
 var _measuring_viewport: RID  # the viewport whose GPU time is measured for the budget
+var _bucket_count: int  # the library's near buckets per species, and each mesh level's first
+var _level_buckets: PackedInt32Array = []
 var _field: Node3D
 
 
 func _init(field: Node3D) -> void:
 	_field = field
 	interaction = FieldInteraction.new(field)
+	_bucket_count = Native.constant(&"BUCKET_COUNT")
+	for level: int in PartMeshes.LEVELS:
+		_level_buckets.append(Native.mesh_bucket(level, 0))
 
 
 ## The native simulation drawn now, or null.
@@ -207,7 +212,7 @@ func update_field(delta: float) -> void:
 	drawn.show_filled_buckets()
 	drawn.update_masks()
 	drawn.follow_sun()
-	if not Engine.is_editor_hint() and budget.step(delta, near_primitives(), _gpu_ms()):
+	if budget.is_active() and not Engine.is_editor_hint() and budget.step(delta, near_primitives(), _gpu_ms()):
 		_apply_quality()
 		quality_changed.emit(budget.quality)
 	var wind_state: PackedFloat32Array = native_simulation.get_wind_state()
@@ -359,15 +364,17 @@ func set_budget(max_primitives: int, gpu_ms: float, min_quality: float) -> void:
 ## The triangles of the near meshes written this frame: plants at each mesh level, after culling,
 ## times a plant's triangles there (the main view's; each shadow pass draws its own).
 func near_primitives() -> int:
-	if drawn == null:
-		return 0
-	var per_species: int = Native.constant(&"BUCKET_COUNT")
 	var total: int = 0
 	for species: int in _triangles.size():
 		for level: int in PartMeshes.LEVELS:
-			var bucket: int = species * per_species + Native.mesh_bucket(level, 0)
-			total += drawn.simulation.get_bucket_instance_count(bucket) * _triangles[species][level]
+			total += near_count(species, level) * _triangles[species][level]
 	return total
+
+
+## Plants of [param species] written at mesh [param level] (0–2) last frame, after culling; 0 with
+## no field drawn.
+func near_count(species: int, level: int) -> int:
+	return drawn.simulation.get_bucket_instance_count(species * _bucket_count + _level_buckets[level]) if drawn else 0
 
 
 ## The field's viewport's GPU time last frame in milliseconds, measured only with a GPU target.

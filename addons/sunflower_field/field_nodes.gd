@@ -312,6 +312,8 @@ func update_masks() -> void:
 ## them: SunflowerField.impostor_shadows_from); nearer levels cast from their meshes or their
 ## shadow twins. 3: every mesh level casts.
 func set_impostor_shadows_from(level: int) -> void:
+	if level != impostor_shadows_from:
+		_mask_version = -1  # tiles whose chunks are all near stay drawn for their casters, or not
 	impostor_shadows_from = level
 	for i: int in _mesh_nodes.size():
 		var node: MultiMeshInstance3D = _mesh_nodes[i]
@@ -322,7 +324,6 @@ func set_impostor_shadows_from(level: int) -> void:
 			node.cast_shadow = (
 				GeometryInstance3D.SHADOW_CASTING_SETTING_ON if casts else GeometryInstance3D.SHADOW_CASTING_SETTING_OFF
 			)
-	_mask_version = -1  # tiles whose chunks are all near stay drawn for their casters, or not
 
 
 ## Shows only the near buckets that hold plants after the simulation's last update: an empty

@@ -687,10 +687,9 @@ func get_frame_stats() -> Dictionary:
 			"gpu_ms": 0.0,
 			"quality": get_quality()
 		}
-	var per_species: int = Native.constant(&"BUCKET_COUNT")
 	for species: int in _species_plants().size():
 		for level: int in Lod.SPRITE:
-			near[level] += simulation.get_bucket_instance_count(species * per_species + Native.mesh_bucket(level, 0))
+			near[level] += _driver.near_count(species, level)
 	return {
 		"update_ms": simulation.get_last_update_usec() / 1000.0,
 		"memory_bytes": simulation.get_memory_bytes(),
