@@ -1,15 +1,16 @@
 #!/usr/bin/env bash
-# Benchmarks (numbers, not pass/fail). Prints eleven tables:
+# Benchmarks (numbers, not pass/fail). Prints twelve tables:
 #   1. the C++ core alone: per-frame time and memory, 1M vs 4M plants;
 #   2. the engine: the demo's recording mode on the demo, large and million-plant fields;
 #   3. the thesis' experiment (Tables 3-5): a 1 500-plant field at distances 5 and 40 m, every plant
 #      as one representation, then LOD off / on / on + culling, ratios beside the thesis' ratios;
-#   4. baselines on one field and path: naive (every plant as the level-1 mesh) and Godot-native.
+#   4. baselines on one field and path: naive (every plant as the level-1 mesh) and Godot-native
+#      (whole plants everywhere, the demo's --baseline native-whole).
 #   5. ground placement: a million plants on a height map and on colliders (the build's figures).
 #   6. painting: a brush stroke on a million-plant field, main-thread time per frame, chunks rebuilt.
 #   7. GPU memory: the render buffers a million far plants take (the renderer's own count).
 #   8. The GPU side: draw calls, objects, primitives and render-buffer memory per view, against the
-#      Godot-native way, on the demo, large, million and 4-million-plant fields; then without a
+#      Godot-native way (whole plants everywhere), on the demo, large, million and 4-million-plant fields; then without a
 #      cut-off, far tiles merged with distance and not, a million and 4 million plants.
 #   9. The editor: its frame times while a scene with a million-plant field opens and builds
 #      (headless, and rendering with Vulkan lavapipe under Xvfb), against the editor alone.
@@ -17,6 +18,8 @@
 #      the build's wall time, frames and steps, then the first frames that draw the field.
 #  11. The frame budget (tools/measure_budget.sh): quality, primitives, draw calls and software frame
 #      time at head height in the large field, without a budget and under caps on the near triangles.
+#  12. Far plants against the native way (tools/measure_far_cost.sh): primitives, draw calls and software
+#      frame time from 40 m outside and 25 m up at 45°, against whole plants near and front-view quads far.
 # Results (JSON per run) go to build/bench/; BENCH_FRAMES and BENCH_RESOLUTION change the runs.
 set -euo pipefail
 repo=$(cd "$(dirname "$0")/.." && pwd)
@@ -67,7 +70,7 @@ for view in 5 40; do
 done
 run baseline_ours --map res://fields/demo.field
 run baseline_naive --map res://fields/demo.field --force-lod 0 --culling off
-run baseline_native --map res://fields/demo.field --baseline native
+run baseline_native --map res://fields/demo.field --baseline native-whole
 # The GPU side: still views of four fields, drawn by the addon and the Godot-native way, both cut
 # off at 100 m (the native way's visibility range).
 "$repo/tools/make_field.py" 2000 2000 "$out/fields/4m.field" >/dev/null
@@ -76,7 +79,7 @@ for field in demo:res://fields/demo.field large:res://fields/large.field million
     # Still views: 3 frames are enough for the counts. (At 160 x 90 lavapipe under Xvfb sometimes hangs
     # in the frame after quit; 480 x 270 has not.)
     frames=3 run "gpu_${field%%:*}_${view}_ours" --map "${field#*:}" --view "$view" --draw-distance 100 --no-hud
-    frames=3 run "gpu_${field%%:*}_${view}_native" --map "${field#*:}" --view "$view" --draw-distance 100 --baseline native --no-hud
+    frames=3 run "gpu_${field%%:*}_${view}_native" --map "${field#*:}" --view "$view" --draw-distance 100 --baseline native-whole --no-hud
   done
 done
 # Without a cut-off: far tiles merged with distance (the default) and never merged, on the million and
@@ -137,3 +140,6 @@ timeout 600 xvfb-run -a -s "-screen 0 1280x720x24" "$godot" --rendering-driver v
 echo
 echo "## 11. The frame budget (tools/measure_budget.sh)"
 "$repo/tools/measure_budget.sh" || echo "bench: the budget measurement failed" >&2
+echo
+echo "## 12. Far plants against the native way (tools/measure_far_cost.sh)"
+"$repo/tools/measure_far_cost.sh" || echo "bench: the far-plant measurement failed" >&2

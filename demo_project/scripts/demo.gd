@@ -15,11 +15,13 @@ extends Node3D
 ##   --stats PATH             write frame times, LOD counts and the renderer as JSON
 ##   --force-lod N            draw every plant as one representation (0-2 meshes, 3 sprite, 4 billboard)
 ##   --culling off            do not skip plants outside the camera's view
-##   --baseline native        draw the field the Godot-native way instead (benchmark baseline)
+##   --baseline native        draw the field the Godot-native way instead (benchmark baseline): whole
+##                            plants near, front-view quads far; native-whole: whole plants everywhere
 ##   --wind P                 the wind power (0: calm)
 ##   --whole off              draw the near plants part by part (FieldPlant.draw_whole off)
 ##   --cheap-shadows off      near plants at mesh 1 and 2 cast shadows from the mesh they are drawn with
 ##   --impostor-shadows FROM  near plants at this level on cast from impostors: mesh2, mesh3 (default), never
+##   --shadows off            the sun casts no shadows (the fragment cost alone, for the far-plant benchmark)
 ##   --budget-primitives N    hold the near meshes to N triangles a frame (SunflowerField.budget_primitives)
 ##   --budget-gpu-ms MS       hold the frame's GPU time to MS milliseconds (SunflowerField.budget_gpu_ms)
 ##   --no-hud                 hide the heads-up display (pictures for measurements)
@@ -108,6 +110,8 @@ func _ready() -> void:
 			"--impostor-shadows":
 				var levels: Dictionary = {"mesh2": SunflowerField.Lod.MESH_2, "mesh3": SunflowerField.Lod.MESH_3}
 				_field.impostor_shadows_from = levels.get(value, SunflowerField.Lod.SPRITE)
+			"--shadows":
+				($Sun as DirectionalLight3D).shadow_enabled = value != "off"
 			"--budget-primitives":
 				_field.budget_primitives = value.to_int()
 			"--budget-gpu-ms":
@@ -137,7 +141,7 @@ func _ready() -> void:
 		_recording.buffer_memory["field"] = RenderingServer.get_rendering_info(
 			RenderingServer.RENDERING_INFO_BUFFER_MEM_USED
 		)
-	if _recording.baseline == "native":
+	if _recording.baseline.begins_with("native"):
 		_build_native_baseline()
 		if stats_wanted:
 			await get_tree().process_frame
@@ -362,10 +366,12 @@ func _build_native_baseline() -> void:
 	baseline.name = "NativeBaseline"
 	add_child(baseline)
 	_recording.baseline_node = baseline
-	var plants: int = baseline.build(_field.map, _field, _draw_distance)
+	var plants: int = baseline.build(_field.map, _field, _draw_distance, _recording.baseline != "native-whole")
 	_field.visible = false
 	_field.process_mode = Node.PROCESS_MODE_DISABLED
-	_hud.show_message("baseline: %d plants as Godot-native chunked MultiMeshes with automatic mesh LOD" % plants)
+	_hud.show_message(
+		"baseline: %d plants as Godot-native chunked MultiMeshes: mesh LOD near, front-view quads far" % plants
+	)
 
 
 ## Shows a problem on the HUD; in recording mode it also goes to the log and the run exits with 1.

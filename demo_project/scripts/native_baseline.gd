@@ -1,9 +1,14 @@
 class_name NativeBaseline
 extends Node3D
-## A benchmark baseline: the field drawn the Godot-native way, without the addon's LOD and wind.
-## Whole plants (the three level-1 parts merged into one mesh, with the engine's automatic mesh
-## LODs generated) in one MultiMeshInstance3D per square chunk, each with a visibility-range
-## cut-off. Plant positions come from the addon's layout, so both draw the same field.
+## A benchmark baseline: the field drawn the Godot-native way, without the addon's LOD and wind, as a
+## Godot user would build it by hand. Per square chunk two MultiMeshInstance3D nodes swapped by
+## visibility ranges: near, whole plants (the three level-1 parts merged into one mesh, with the
+## engine's automatic mesh LODs generated); far, from the field's switch to impostors
+## (lod_distances[2]) to the cut-off, one camera-facing quad a plant (a Y billboard of
+## StandardMaterial3D, alpha scissor) showing one picture: the plant's front view from its baked
+## impostor atlas. Plant positions come from the addon's layout, so both draw the same field.
+## Built with [code]far_quads[/code] false (the demo's [code]--baseline native-whole[/code]), whole
+## plants are drawn at every distance (the baseline of the draw-call tables).
 
 ## Side of the chunks, metres.
 const CHUNK_SIZE: float = 16.0
@@ -12,8 +17,10 @@ const CUT_OFF: float = 100.0
 
 
 ## Builds the baseline for [param field_map]; chunks are not drawn past [param cut_off] metres (0:
-## always drawn). Returns the number of plants.
-func build(field_map: SunflowerFieldMap, field: SunflowerField, cut_off: float = CUT_OFF) -> int:
+## always drawn); with [param far_quads] false every chunk is whole plants. Returns the number of plants.
+func build(
+	field_map: SunflowerFieldMap, field: SunflowerField, cut_off: float = CUT_OFF, far_quads: bool = true
+) -> int:
 	var simulation: SunflowerSimulation = SunflowerSimulation.new()
 	var error: String = simulation.load_map(field_map.text, field_map.source_path, "", "", 0)
 	if not error.is_empty():
@@ -21,6 +28,8 @@ func build(field_map: SunflowerFieldMap, field: SunflowerField, cut_off: float =
 		return 0
 	simulation.set_layout(field.cell_size, field.seed, field.independent_jitter, CHUNK_SIZE)
 	var mesh: ArrayMesh = _whole_plant_mesh(field)
+	var far_mesh: QuadMesh = _front_view_quad(field) if far_quads else null
+	var far_from: float = field.lod_distances[2] if far_quads else cut_off
 	# Parts are one model unit each, stacked three high.
 	var scale_factor: float = field.plant_height / SunflowerSimulation.PART_COUNT
 	var chunks: Dictionary = {}
@@ -32,18 +41,60 @@ func build(field_map: SunflowerFieldMap, field: SunflowerField, cut_off: float =
 		(chunks[key] as Array).append(position)
 	for key: Vector2i in chunks:
 		var positions: Array = chunks[key]
-		var multimesh: MultiMesh = MultiMesh.new()
-		multimesh.transform_format = MultiMesh.TRANSFORM_3D
-		multimesh.mesh = mesh
-		multimesh.instance_count = positions.size()
-		for k: int in positions.size():
-			var origin: Vector3 = positions[k]
-			multimesh.set_instance_transform(k, Transform3D(Basis.from_scale(Vector3.ONE * scale_factor), origin))
-		var node: MultiMeshInstance3D = MultiMeshInstance3D.new()
-		node.multimesh = multimesh
-		node.visibility_range_end = cut_off
-		add_child(node)
+		var near: MultiMeshInstance3D = _chunk(positions, mesh, scale_factor)
+		near.visibility_range_end = minf(far_from, cut_off) if cut_off > 0.0 else far_from
+		add_child(near)
+		if far_quads and (cut_off <= 0.0 or cut_off > far_from):
+			var far: MultiMeshInstance3D = _chunk(positions, far_mesh, scale_factor)
+			far.visibility_range_begin = far_from
+			far.visibility_range_end = cut_off
+			add_child(far)
 	return simulation.get_plant_count()
+
+
+func _chunk(positions: Array, mesh: Mesh, scale_factor: float) -> MultiMeshInstance3D:
+	var multimesh: MultiMesh = MultiMesh.new()
+	multimesh.transform_format = MultiMesh.TRANSFORM_3D
+	multimesh.mesh = mesh
+	multimesh.instance_count = positions.size()
+	for k: int in positions.size():
+		var origin: Vector3 = positions[k]
+		multimesh.set_instance_transform(k, Transform3D(Basis.from_scale(Vector3.ONE * scale_factor), origin))
+	var node: MultiMeshInstance3D = MultiMeshInstance3D.new()
+	node.multimesh = multimesh
+	return node
+
+
+## A quad the size of the impostor's square (model units), its centre where the views' is, showing
+## the front view (column 0, elevation 0 of the atlas), colours made straight from premultiplied.
+func _front_view_quad(field: SunflowerField) -> QuadMesh:
+	var plant: FieldPlant = field.plant if field.plant != null else FieldPlant.default_plant()
+	var atlas: Image = plant.impostor_views.get_image()
+	if atlas.is_compressed():
+		atlas.decompress()
+	atlas.convert(Image.FORMAT_RGBA8)
+	var cell: Vector2i = Vector2i(
+		atlas.get_width() / FieldPlant.ATLAS_VIEWS.x, atlas.get_height() / FieldPlant.ATLAS_VIEWS.y
+	)
+	var front: Image = atlas.get_region(Rect2i(Vector2i.ZERO, cell))
+	for y: int in cell.y:
+		for x: int in cell.x:
+			var colour: Color = front.get_pixel(x, y)
+			if colour.a > 0.0:
+				front.set_pixel(x, y, Color(colour.r / colour.a, colour.g / colour.a, colour.b / colour.a, colour.a))
+	front.generate_mipmaps()
+	var material: StandardMaterial3D = StandardMaterial3D.new()
+	material.albedo_texture = ImageTexture.create_from_image(front)
+	material.transparency = BaseMaterial3D.TRANSPARENCY_ALPHA_SCISSOR
+	material.billboard_mode = BaseMaterial3D.BILLBOARD_FIXED_Y
+	material.billboard_keep_scale = true
+	material.cull_mode = BaseMaterial3D.CULL_DISABLED
+	var frame: Vector2 = plant.impostor_frame()
+	var quad: QuadMesh = QuadMesh.new()
+	quad.size = Vector2(frame.x, frame.x)
+	quad.center_offset = Vector3(0.0, frame.y, 0.0)
+	quad.material = material
+	return quad
 
 
 func _whole_plant_mesh(field: SunflowerField) -> ArrayMesh:

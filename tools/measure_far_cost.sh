@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# What far plants cost against the Godot-native way (docs/performance.md, "Far plants against the
+# native way"): the demo's recording mode from 40 m outside and from 25 m up at 45° over the large
+# field (113 000 plants), calm, no draw distance, the sun's shadows off (the pixels' work alone), at
+# 480 × 270 under Xvfb (Vulkan lavapipe, which shades on the CPU), drawn by the addon and by the
+# native baseline (demo_project/scripts/native_baseline.gd: whole plants near, one Y-billboard quad
+# with the front view far). Prints primitives, draw calls and the software frame time (medians of
+# the last 5 of 9 frames) of both, and their ratio.
+#   tools/measure_far_cost.sh [MAP]     (default res://fields/large.field)
+set -euo pipefail
+repo=$(cd "$(dirname "$0")/.." && pwd)
+"$repo/tools/build.sh" >/dev/null
+out="$repo/build/bench/far_cost"
+mkdir -p "$out"
+map=${1:-res://fields/large.field}
+frames=9
+for view in outside40 above45; do
+  for way in ours native; do
+    baseline=()
+    [[ $way == native ]] && baseline=(--baseline native)
+    RESOLUTION=480x270 "$repo/tools/demo_recording.sh" "$out/${view}_$way.log" "$out/${view}_$way.json" --map "$map" \
+      --view "$view" --wind 0 --no-hud --frames "$frames" --draw-distance 0 --shadows off \
+      --screenshot "$out/${view}_$way.png" "${baseline[@]}" ||
+      { echo "measure_far_cost: the run $view/$way failed; see $out/${view}_$way.log" >&2; exit 1; }
+    printf '.' >&2
+  done
+done
+echo >&2
+python3 - "$out" "$map" <<'PY'
+import json, statistics, sys
+out, map_path = sys.argv[1], sys.argv[2]
+print(f"{map_path}, calm, no draw distance, no shadows, 480 × 270; medians of the last 5 frames")
+print()
+print("| view | primitives ours / native | draw calls ours / native | software frame ours / native | ratio |")
+print("|---|---|---|---|---|")
+for view, name in (("outside40", "40 m outside"), ("above45", "45° from 25 m")):
+    runs = [json.load(open(f"{out}/{view}_{way}.json")) for way in ("ours", "native")]
+    p = [s["primitives"]["median"] for s in runs]
+    d = [s["draw_calls"]["median"] for s in runs]
+    t = [statistics.median(s["frame_times_ms"][-5:]) for s in runs]
+    print(f"| {name} | {p[0] / 1e3:.0f} k / {p[1] / 1e3:.0f} k | {d[0]:.0f} / {d[1]:.0f} "
+          f"| {t[0]:.0f} / {t[1]:.0f} ms | {t[0] / t[1]:.2f}× |")
+PY
