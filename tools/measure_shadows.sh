@@ -6,6 +6,10 @@
 # (impostor_shadows_from).
 # Prints the renderer's primitives and draw calls for the whole frame (medians) and each picture's
 # SSIM and brightness against the full-shadow one.
+#   tools/measure_shadows.sh            the table above (about 15 minutes)
+#   tools/measure_shadows.sh --views    instead: full shadows against the default's, primitives and
+#                                       draw calls, on the demo, large, million and 4-million-plant
+#                                       fields from the four still views, 3 frames each (about 30 minutes)
 set -euo pipefail
 repo=$(cd "$(dirname "$0")/.." && pwd)
 "$repo/tools/build.sh" >/dev/null
@@ -14,6 +18,35 @@ out="$repo/build/bench/shadows"
 mkdir -p "$out" "$repo/build/bench/fields"
 field="$repo/build/bench/fields/million.field"
 [[ -s "$field" ]] || "$repo/tools/make_field.py" 1000 1000 "$field" >/dev/null
+if [[ ${1:-} == --views ]]; then
+  four="$repo/build/bench/fields/4m.field"
+  [[ -s "$four" ]] || "$repo/tools/make_field.py" 2000 2000 "$four" >/dev/null
+  fields=("demo|res://fields/demo.field" "large|res://fields/large.field" "million|$field" "4 million|$four")
+  echo "Shadows per view: full (every mesh level from its own mesh) against the default (impostors from"
+  echo "mesh 3), calm, 3 frames at 480 × 270 (medians; the renderer's counts for the whole frame)"
+  echo
+  echo "| field | view | primitives full / default | against full | draw calls full / default |"
+  echo "|---|---|---|---|---|"
+  for entry in "${fields[@]}"; do
+    for view in inside outside40 above45 down60; do
+      for way in full default; do
+        flags=()
+        [[ $way == full ]] && flags=(--cheap-shadows off --impostor-shadows never)
+        RESOLUTION=480x270 "$repo/tools/demo_recording.sh" "$out/view_$way.log" "$out/view_$way.json" \
+          --map "${entry#*|}" --view "$view" --wind 0 --no-hud --frames 3 "${flags[@]}" ||
+          { echo "measure_shadows: the run ${entry%%|*} $view $way failed; see $out/view_$way.log" >&2; exit 1; }
+      done
+      python3 - "${entry%%|*}" "$view" "$out/view_full.json" "$out/view_default.json" <<'PY'
+import json, sys
+name, view, full, default = sys.argv[1], sys.argv[2], json.load(open(sys.argv[3])), json.load(open(sys.argv[4]))
+p = [s["primitives"]["median"] for s in (full, default)]
+d = [s["draw_calls"]["median"] for s in (full, default)]
+print(f"| {name} | {view} | {p[0] / 1e6:.2f} M / {p[1] / 1e6:.2f} M | {p[1] / max(p[0], 1):.2f}× | {d[0]:.0f} / {d[1]:.0f} |")
+PY
+    done
+  done
+  exit 0
+fi
 ways=("full|--cheap-shadows off --impostor-shadows never" "mesh 3 (cheap_shadows)|--impostor-shadows never"
   "impostors from mesh 3 (the default)|" "impostors from mesh 2|--impostor-shadows mesh2")
 for i in "${!ways[@]}"; do
