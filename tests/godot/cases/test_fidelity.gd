@@ -106,7 +106,7 @@ func test_far_levels_look_like_the_full_mesh_picture() -> void:
 
 ## The aerial views anti-aliased: drawn with the window 4 times as wide and high (16 samples a
 ## pixel) and box-filtered back to its size, automatic LOD against every plant as mesh 1. This is
-## where 0.85 from above is met (0.877 at 45°, 0.931 straight down, docs/fidelity.md); at one
+## where 0.85 from above is met (0.870 at 45°, 0.931 straight down, docs/fidelity.md); at one
 ## sample a pixel the meshes' own aliasing bounds what any impostor can score (see below).
 func _check_anti_aliased() -> void:
 	var large: Vector2i = await _enlarge_window(4)
@@ -125,8 +125,8 @@ func _check_anti_aliased() -> void:
 ## What SSIM at one sample a pixel makes of two equally right pictures: the full-mesh picture
 ## against itself with the camera moved a quarter and half a pixel sideways (at the target's
 ## distance). An impostor cannot keep the meshes' aliasing to the pixel; a figure near these is as
-## close as the meshes stay to themselves after a step of a few centimetres (0.779 and 0.631 at
-## 45°, 0.824 and 0.761 straight down, docs/fidelity.md).
+## close as the meshes stay to themselves after a step of a few centimetres (0.780 and 0.632 at
+## 45°, 0.826 and 0.763 straight down, docs/fidelity.md).
 func _print_pixel_noise(eye: Vector3, target: Vector3, mesh_1: PackedFloat32Array, view: String) -> void:
 	var pixel: float = 2.0 * tan(deg_to_rad(0.5 * camera.fov)) / picture.height * eye.distance_to(target)
 	var figures: PackedStringArray = []
