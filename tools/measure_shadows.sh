@@ -9,7 +9,7 @@
 #   tools/measure_shadows.sh            the table above (about 15 minutes)
 #   tools/measure_shadows.sh --views    instead: full shadows against the default's, primitives and
 #                                       draw calls, on the demo, large, million and 4-million-plant
-#                                       fields from the four still views, 3 frames each (about 30 minutes)
+#                                       fields from the four still views, 3 frames each (about 35 minutes)
 set -euo pipefail
 repo=$(cd "$(dirname "$0")/.." && pwd)
 "$repo/tools/build.sh" >/dev/null
