@@ -366,12 +366,15 @@ func _build_native_baseline() -> void:
 	baseline.name = "NativeBaseline"
 	add_child(baseline)
 	_recording.baseline_node = baseline
-	var plants: int = baseline.build(_field.map, _field, _draw_distance, _recording.baseline != "native-whole")
+	var far_quads: bool = _recording.baseline != "native-whole"
+	var plants: int = baseline.build(_field.map, _field, _draw_distance, far_quads)
+	if plants == 0:
+		_fail("the native baseline was not built (its error is in the log)")
+		return
 	_field.visible = false
 	_field.process_mode = Node.PROCESS_MODE_DISABLED
-	_hud.show_message(
-		"baseline: %d plants as Godot-native chunked MultiMeshes: mesh LOD near, front-view quads far" % plants
-	)
+	var drawn: String = "mesh LOD near, front-view quads far" if far_quads else "whole plants with mesh LOD"
+	_hud.show_message("baseline: %d plants as Godot-native chunked MultiMeshes: %s" % [plants, drawn])
 
 
 ## Shows a problem on the HUD; in recording mode it also goes to the log and the run exits with 1.

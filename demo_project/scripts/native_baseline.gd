@@ -17,7 +17,8 @@ const CUT_OFF: float = 100.0
 
 
 ## Builds the baseline for [param field_map]; chunks are not drawn past [param cut_off] metres (0:
-## always drawn); with [param far_quads] false every chunk is whole plants. Returns the number of plants.
+## always drawn); with [param far_quads] false every chunk is whole plants. Returns the number of plants
+## (0 after an error, which it reports).
 func build(
 	field_map: SunflowerFieldMap, field: SunflowerField, cut_off: float = CUT_OFF, far_quads: bool = true
 ) -> int:
@@ -28,7 +29,11 @@ func build(
 		return 0
 	simulation.set_layout(field.cell_size, field.seed, field.independent_jitter, CHUNK_SIZE)
 	var mesh: ArrayMesh = _whole_plant_mesh(field)
-	var far_mesh: QuadMesh = _front_view_quad(field) if far_quads else null
+	var plant: FieldPlant = field.plant if field.plant != null else FieldPlant.default_plant()
+	if far_quads and plant.impostor_views == null:
+		push_error("NativeBaseline: the plant '%s' has no baked impostor views for its far quads" % plant.name)
+		return 0
+	var far_mesh: QuadMesh = _front_view_quad(plant) if far_quads else null
 	var far_from: float = field.lod_distances[2] if far_quads else cut_off
 	# Parts are one model unit each, stacked three high.
 	var scale_factor: float = field.plant_height / SunflowerSimulation.PART_COUNT
@@ -65,10 +70,9 @@ func _chunk(positions: Array, mesh: Mesh, scale_factor: float) -> MultiMeshInsta
 	return node
 
 
-## A quad the size of the impostor's square (model units), its centre where the views' is, showing
-## the front view (column 0, elevation 0 of the atlas), colours made straight from premultiplied.
-func _front_view_quad(field: SunflowerField) -> QuadMesh:
-	var plant: FieldPlant = field.plant if field.plant != null else FieldPlant.default_plant()
+## A quad the size of [param plant]'s impostor square (model units), its centre where the views' is,
+## showing the front view (column 0, elevation 0 of the atlas), colours made straight from premultiplied.
+func _front_view_quad(plant: FieldPlant) -> QuadMesh:
 	var atlas: Image = plant.impostor_views.get_image()
 	if atlas.is_compressed():
 		atlas.decompress()
