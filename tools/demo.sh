@@ -34,10 +34,11 @@ setsid timeout 900 xvfb-run -a -s "-screen 0 1280x720x24" "$godot" --audio-drive
   --path "$repo/demo_project" -- "${args[@]}" >"$log" 2>&1 &
 engine=$! # its own process group: the engine, Xvfb and the wrappers stop together
 # A demo that cannot run (a script that does not load, no library) would never finish its recording:
-# once the engine reports an error it gets two seconds more to say the rest, then it is stopped.
+# once the engine reports an error it gets five seconds more to say the rest (two were too few for
+# the missing library's message on a busy machine), then it is stopped.
 while kill -0 "$engine" 2>/dev/null; do
   if [[ -n "$(errors_in_log)" ]]; then
-    sleep 2
+    sleep 5
     kill -TERM -- -"$engine" 2>/dev/null
     break
   fi
