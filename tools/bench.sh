@@ -10,8 +10,9 @@
 #   6. painting: a brush stroke on a million-plant field, main-thread time per frame, chunks rebuilt.
 #   7. GPU memory: the render buffers a million far plants take (the renderer's own count).
 #   8. The GPU side: draw calls, objects, primitives and render-buffer memory per view, against the
-#      Godot-native way (whole plants everywhere), on the demo, large, million and 4-million-plant fields; then without a
-#      cut-off, far tiles merged with distance and not, a million and 4 million plants.
+#      Godot-native way (whole plants everywhere), on the demo, large, million and 4-million-plant
+#      fields; then without a cut-off, far tiles merged with distance and not, a million and 4 million
+#      plants.
 #   9. The editor: its frame times while a scene with a million-plant field opens and builds
 #      (headless, and rendering with Vulkan lavapipe under Xvfb), against the editor alone.
 #  10. A million-plant build while the scene is drawn (Vulkan lavapipe under Xvfb): the load call,
