@@ -167,7 +167,11 @@ void SunflowerSimulation::_upload_tile(uint32_t p_tile) {
 	_sim.tiles().write_tile_instances(p_tile, buffer.data());
 	if (_tiles[p_tile].is_valid()) {
 		gdx::RenderingServer::multimesh_allocate_data(_tiles[p_tile], count, gdx::RenderingServer::COMPACT);
-		gdx::RenderingServer::multimesh_set_buffer(_tiles[p_tile], buffer);
+		// A merged tile keeps a quarter of its plants a level: one of a few large plants may keep
+		// none, and Vulkan refuses an empty buffer with an engine error.
+		if (count > 0) {
+			gdx::RenderingServer::multimesh_set_buffer(_tiles[p_tile], buffer);
+		}
 	}
 }
 

