@@ -150,6 +150,17 @@ static var _default: FieldPlant
 		if accepted != stiffness:
 			stiffness = accepted
 			emit_changed()
+## Leaves in the wind, for a plant of one part drawn whole (a tree, a bush, a grass clump): its upper
+## part moves back and forth about its bent place, a few times a second, each place of the crown in
+## its own phase, by up to this share of the bend's sway at the top (growing with the square of the
+## height, so the trunk stands). 0 keeps it still; a sunflower's three parts ignore it. The far
+## impostors do not flutter (their sway follows the bend).
+@export_range(0.0, 1.0, 0.01) var flutter: float = 0.0:
+	set(value):
+		var accepted: float = Native.accept("FieldPlant.flutter", value, flutter)
+		if accepted != flutter:
+			flutter = accepted
+			emit_changed()
 
 @export_group("Variety")
 ## The middle part is stretched to (1 + α × this) of its length, α ∈ [0, 0.5) per plant (the
@@ -404,15 +415,15 @@ func drawn_whole() -> bool:
 
 
 ## The mesh a plant drawn whole is drawn with at [param level] (its parts as drawn, merged), or null
-## when they cannot be merged. Made once per set of parts and [member part_lengths]: an edit inside
+## when they cannot be merged. Made once per set of parts, [member part_lengths] and [member flutter]: an edit inside
 ## a part mesh or its material shows once a part slot or the lengths change (set the part again).
 func whole_mesh(level: int) -> Mesh:
 	var parts: Array[Mesh] = _drawn_parts(level)
 	var lengths: Vector3 = stacked_lengths()
-	var source: Array = [parts, lengths]
+	var source: Array = [parts, lengths, flutter]
 	var made: Array = _whole_meshes.get(level, [])
 	if made.is_empty() or made[0] != source:
-		made = [source, WholePlantMesh.merge(parts, lengths)]
+		made = [source, WholePlantMesh.merge(parts, lengths, flutter)]
 		_whole_meshes[level] = made
 	return made[1]
 

@@ -21,8 +21,9 @@ static func can_merge(parts: Array[Mesh]) -> bool:
 
 
 ## The merged mesh of [param parts] (bottom, middle, head) for a plant whose parts' roots lie
-## [param part_lengths] model units apart, or null when they cannot be merged ([method can_merge]).
-static func merge(parts: Array[Mesh], part_lengths: Vector3) -> ArrayMesh:
+## [param part_lengths] model units apart and whose leaves [param flutter] ([member FieldPlant.flutter]),
+## or null when they cannot be merged ([method can_merge]).
+static func merge(parts: Array[Mesh], part_lengths: Vector3, flutter: float = 0.0) -> ArrayMesh:
 	if not _mergeable(parts):
 		return null
 	# One group per distinct setting: the source material and the arrays merged so far.
@@ -50,6 +51,7 @@ static func merge(parts: Array[Mesh], part_lengths: Vector3) -> ArrayMesh:
 		for uniform: Dictionary in PARTS_SHADER.get_shader_uniform_list():
 			whole.set_shader_parameter(uniform.name, group.material.get_shader_parameter(uniform.name))
 		whole.set_shader_parameter(&"part_lengths", part_lengths)
+		whole.set_shader_parameter(&"flutter", flutter)
 		mesh.surface_set_material(mesh.get_surface_count() - 1, whole)
 	return mesh
 

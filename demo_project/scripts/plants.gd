@@ -12,6 +12,8 @@ const SCENES: Dictionary = {
 	"g": "res://test_plants/grass_clump.glb",
 }
 const FOLDER: String = "user://demo_plants"
+## Their leaves' flutter in the wind ([member FieldPlant.flutter]).
+const FLUTTER: float = 0.2
 const ImpostorBaker: GDScript = preload("res://addons/sunflower_field/impostor_baker.gd")
 
 
@@ -25,6 +27,7 @@ static func legend(host: Node) -> Dictionary:
 		if plant == null:
 			push_error("demo: cannot make a plant of %s" % SCENES[symbol])
 			continue
+		plant.flutter = FLUTTER
 		if not _load_baked(plant) and await plant.bake_impostors(host, FOLDER, plant.name) != OK:
 			push_error("demo: the impostors of %s were not baked" % SCENES[symbol])
 		entries[symbol] = plant

@@ -67,6 +67,9 @@ inline constexpr ParameterSpec PLANT_PART_LENGTH{ "FieldPlant.part_lengths", 1.0
 inline constexpr ParameterSpec PLANT_HEIGHT_UNITS{ "FieldPlant.height_units", 3.2, 1e-4, NO_MAX, ParameterSpec::KEEP, 0.0 };
 inline constexpr ParameterSpec PLANT_CULL_RADIUS_UNITS{ "FieldPlant.cull_radius_units", 1.9, 1e-4, NO_MAX, ParameterSpec::KEEP, 0.0 };
 inline constexpr ParameterSpec PLANT_STIFFNESS{ "FieldPlant.stiffness", 1.0, 0.05, 20.0, ParameterSpec::CLAMP, 1.0 };
+// A plant of one part's leaves in the wind (shaders/plant_whole.gdshader): its upper part moves about
+// its bent place by up to this share of the bend's own sway at the top (0: still, the sunflower's).
+inline constexpr ParameterSpec PLANT_FLUTTER{ "FieldPlant.flutter", 0.0, 0.0, 1.0, ParameterSpec::CLAMP, 0.0 };
 // A plant type's far shadows: in the shadow pass its impostor casts from the depth the plant has at
 // each pixel, moved this share of its frame towards the light (0.03 suits the sunflower: a field of
 // its impostors is then about as bright as its meshes, tools/measure_lod.sh).
@@ -123,13 +126,13 @@ inline constexpr ParameterSpec GROUND_TILT{ "SunflowerField.ground_tilt", 0.0, 0
 inline constexpr ParameterSpec GROUND_RAY_ABOVE{ "SunflowerField.ground_ray_above", 100.0, 0.0, NO_MAX, ParameterSpec::CLAMP, 100.0 };
 inline constexpr ParameterSpec GROUND_RAY_BELOW{ "SunflowerField.ground_ray_below", 100.0, 0.0, NO_MAX, ParameterSpec::CLAMP, 100.0 };
 
-inline constexpr std::array<const ParameterSpec *, 48> ALL{ { &WIND_MODEL, &WIND_POWER, &WIND_INCREMENT, &WIND_STIFFNESS_MIDDLE,
+inline constexpr std::array<const ParameterSpec *, 49> ALL{ { &WIND_MODEL, &WIND_POWER, &WIND_INCREMENT, &WIND_STIFFNESS_MIDDLE,
 		&WIND_STIFFNESS_BOTTOM, &WIND_BEND_PER_POWER, &WIND_MAX_BEND, &WIND_FLIP_INTERVAL, &WIND_FLIP_CHANCE,
 		&WIND_GUST_SPEED, &WIND_GUST_SHARE, &CELL_SIZE, &PLANT_HEIGHT, &CHUNK_SIZE, &MAX_PLANTS, &LOD_HYSTERESIS,
 		&LOD_INTERVAL, &LOD_FADE, &FORCE_LOD, &ALPHA_SCISSOR, &THINNING_DISTANCE, &THINNING_MIN_DENSITY, &TILE_MERGE_DISTANCE, &MAX_DRAW_DISTANCE,
 		&BUILD_BUDGET_MS, &WORKER_THREADS, &BUDGET_PRIMITIVES, &BUDGET_GPU_MS, &BUDGET_MIN_QUALITY, &PUSH_STRENGTH, &PUSH_RECOVERY, &PUSHER_RADIUS,
 		&COLLISION_REACH, &GROUND_TILT, &GROUND_RAY_ABOVE, &GROUND_RAY_BELOW, &PLANT_YAW_RANGE, &PLANT_SCALE_MIN, &PLANT_SCALE_MAX,
-		&PLANT_MIDDLE_VARIATION, &PLANT_BRIGHTNESS_VARIATION, &PLANT_TINT_VARIATION, &PLANT_STIFFNESS,
+		&PLANT_MIDDLE_VARIATION, &PLANT_BRIGHTNESS_VARIATION, &PLANT_TINT_VARIATION, &PLANT_STIFFNESS, &PLANT_FLUTTER,
 		&PLANT_IMPOSTOR_SHADOW_SHIFT, &PLANT_IMPOSTOR_EMISSION_RANGE, &PLANT_PART_LENGTH, &PLANT_HEIGHT_UNITS,
 		&PLANT_CULL_RADIUS_UNITS } };
 

@@ -357,6 +357,61 @@ func _box_on_screen(camera: Camera3D, root: Vector3, plant: FieldPlant) -> Rect2
 ## base. A rigid lean about the root would move a point at a tenth of its height a tenth as far as
 ## the top; the bend moves it under a twentieth as far.
 func test_a_plant_of_one_part_bends_in_the_wind_and_its_base_stands() -> void:
+	var pole: Dictionary = _pole_field()
+	var field: SunflowerField = pole.field
+	var centres: Array[PackedFloat32Array] = []
+	for power: float in [0.0, 6.0]:
+		field.wind_power = power
+		for step: int in 90:
+			field.advance(1.0 / 30.0)
+		await frames(4)
+		var image: Image = tree.root.get_viewport().get_texture().get_image()
+		image.save_png(artifact_path("scene_plant_pole_wind_%d.png" % int(power)))
+		centres.append(PackedFloat32Array([_pole_centre(pole, image, 1.0), _pole_centre(pole, image, 9.5)]))
+	var low: float = centres[1][0] - centres[0][0]
+	var top: float = centres[1][1] - centres[0][1]
+	print("     a 10 m pole in wind 6: its top moves %.2f m, a point 1 m up %.3f m" % [top, low])
+	check(top > 0.3, "the top sways with the wind (%.2f m)" % top)
+	check(absf(low) < 0.05 * absf(top), "the base stands: 1 m up moves under a twentieth of the top (%.3f m)" % low)
+
+
+## Leaves flutter ([member FieldPlant.flutter]): the pole bent by wind 6, the field held still (no
+## updates, so its bend stays), drawn over eight frames. With flutter its top moves from frame to
+## frame and a point a tenth of its height up under a tenth as far; without, the top stays.
+func test_a_plant_of_one_part_flutters_at_its_top() -> void:
+	var pole: Dictionary = _pole_field()
+	var field: SunflowerField = pole.field
+	field.wind_power = 6.0
+	for step: int in 90:
+		field.advance(1.0 / 30.0)
+	var spreads: Array[Vector2] = []
+	for flutter: float in [0.0, 1.0]:
+		(pole.plant as FieldPlant).flutter = flutter
+		await frames(2)
+		var tops: PackedFloat32Array = []
+		var lows: PackedFloat32Array = []
+		for frame: int in 8:
+			await frames(1)
+			var image: Image = tree.root.get_viewport().get_texture().get_image()
+			if frame == 0:
+				image.save_png(artifact_path("scene_plant_pole_flutter_%d.png" % int(flutter)))
+			tops.append(_pole_centre(pole, image, 9.5))
+			lows.append(_pole_centre(pole, image, 1.0))
+		spreads.append(Vector2(_spread(lows), _spread(tops)))
+	print(
+		(
+			"     the pole in wind 6 over 8 frames, its top / 1 m up moving: still %.3f / %.3f m, fluttering %.3f / %.3f m"
+			% [spreads[0].y, spreads[0].x, spreads[1].y, spreads[1].x]
+		)
+	)
+	check(spreads[0].y < 0.02, "without flutter the held field's top stays (%.3f m)" % spreads[0].y)
+	check(spreads[1].y > 0.2, "with flutter the top moves (%.3f m)" % spreads[1].y)
+	check(spreads[1].x < 0.1 * spreads[1].y, "the base hardly flutters (%.3f m)" % spreads[1].x)
+
+
+## A field of one 10 m red pole from a scene (a plant of one part drawn whole), wind from −x, seen
+## from the side through an orthographic camera 12 m high: field, plant, camera and the pole's root.
+func _pole_field() -> Dictionary:
 	stage = Stage.new(tree.root).root
 	var pole: Node3D = Node3D.new()
 	var body: MeshInstance3D = MeshInstance3D.new()
@@ -392,24 +447,25 @@ func test_a_plant_of_one_part_bends_in_the_wind_and_its_base_stands() -> void:
 	camera.size = 12.0
 	camera.look_at_from_position(root + Vector3(0.0, 5.5, 30.0), root + Vector3(0.0, 5.5, 0.0))
 	camera.make_current()
-	var centres: Array[PackedFloat32Array] = []
-	for power: float in [0.0, 6.0]:
-		field.wind_power = power
-		for step: int in 90:
-			field.advance(1.0 / 30.0)
-		await frames(4)
-		var image: Image = tree.root.get_viewport().get_texture().get_image()
-		image.save_png(artifact_path("scene_plant_pole_wind_%d.png" % int(power)))
-		var metres: float = image.get_height() / camera.size
-		var row_of: Callable = func(height: float) -> int:
-			return int(image.get_height() * 0.5 - (height - 5.5) * metres)
-		centres.append(PackedFloat32Array([_red_centre(image, row_of.call(1.0)), _red_centre(image, row_of.call(9.5))]))
-	var metres_per_pixel: float = camera.size / tree.root.get_viewport().get_texture().get_size().y
-	var low: float = (centres[1][0] - centres[0][0]) * metres_per_pixel
-	var top: float = (centres[1][1] - centres[0][1]) * metres_per_pixel
-	print("     a 10 m pole in wind 6: its top moves %.2f m, a point 1 m up %.3f m" % [top, low])
-	check(top > 0.3, "the top sways with the wind (%.2f m)" % top)
-	check(absf(low) < 0.05 * absf(top), "the base stands: 1 m up moves under a twentieth of the top (%.3f m)" % low)
+	return {"field": field, "plant": plant, "camera": camera, "root": root}
+
+
+## Where the pole of [method _pole_field] is across [param image] at [param height] metres above its
+## root, in metres from the picture's left edge (negative when it is not in that row).
+func _pole_centre(pole: Dictionary, image: Image, height: float) -> float:
+	var camera: Camera3D = pole.camera
+	var pixels_per_metre: float = image.get_height() / camera.size
+	var row: int = int(image.get_height() * 0.5 - (height - 5.5) * pixels_per_metre)
+	return _red_centre(image, row) / pixels_per_metre
+
+
+static func _spread(values: PackedFloat32Array) -> float:
+	var low: float = INF
+	var high: float = -INF
+	for value: float in values:
+		low = minf(low, value)
+		high = maxf(high, value)
+	return high - low
 
 
 ## The mean column of the pole's red pixels in [param row] (-1 when none).
