@@ -313,21 +313,25 @@ func _send_lod() -> void:
 
 
 ## Tells each plant type's far tiles from where they cast the near plants' shadows
-## (SunflowerField.impostor_shadows_from: the switch to that level at the type's scale and the
-## budget's quality, less the hysteresis and NEAR_SHADOW_MARGIN; −1: never), and the field drawn
+## (SunflowerField.impostor_shadows_from, for a type whose FieldPlant.impostor_shadows is on: the
+## switch to that level at the type's scale and the budget's quality, less the hysteresis and
+## NEAR_SHADOW_MARGIN; −1: never), and the field drawn
 ## which mesh levels cast from meshes. With force_lod every plant casts from what it is drawn with.
 func _send_near_shadows() -> void:
 	if _lod.is_empty():
 		return
-	var level: int = _field.impostor_shadows_from if _lod[4] < 0 else PartMeshes.LEVELS
+	var field_level: int = _field.impostor_shadows_from if _lod[4] < 0 else PartMeshes.LEVELS
+	var levels: PackedInt32Array = []
 	for species: int in mini(impostor_sets.size(), plants.size()):
+		var level: int = field_level if plants[species].impostor_shadows else PartMeshes.LEVELS
+		levels.append(level)
 		var from: float = -1.0
 		if level < PartMeshes.LEVELS:
 			var switch: float = (_lod[0][level - 1] - _lod[1]) * plants[species].lod_scale_used() * budget.quality
 			from = maxf(0.0, switch - NEAR_SHADOW_MARGIN)
 		impostor_sets[species].set_shared(&"near_shadow_from", from)
 	if drawn:
-		drawn.set_impostor_shadows_from(level)
+		drawn.set_impostor_shadows_from(levels)
 
 
 ## Sets the draw distance (0: none), drawn at the budget's quality: the impostors' per-plant fade,

@@ -32,10 +32,11 @@ var tiles: FarTileTable
 ## Near plants drawn at mesh level 1 or 2 cast their shadows from their level-3 mesh (set before
 ## [method finish]; see SunflowerField.cheap_shadows).
 var cheap_shadows: bool = true
-## Near plants drawn at this mesh level (0–2) or coarser cast no shadows from their meshes: their
-## tile's impostor casts for them (see SunflowerField.impostor_shadows_from); 3: every mesh level
-## casts. Set by [method set_impostor_shadows_from].
-var impostor_shadows_from: int = 3
+## Per species: near plants drawn at this mesh level (0–2) or coarser cast no shadows from their
+## meshes, their tile's impostor casts for them (see SunflowerField.impostor_shadows_from and
+## FieldPlant.impostor_shadows); 3, or no entry: every mesh level casts. Set by
+## [method set_impostor_shadows_from].
+var impostor_shadows_from: PackedInt32Array = []
 ## Tile nodes made, and taken over from the previous field, by this field's build.
 var tiles_made: int = 0
 var tiles_kept: int = 0
@@ -48,6 +49,7 @@ var _shown_buckets: PackedByteArray = []  # the filled buckets the nodes' visibi
 var _object_nodes: Array[Node] = []
 var _mesh_nodes: Array[MultiMeshInstance3D] = []  # the near mesh levels' nodes, and each one's level
 var _mesh_node_levels: PackedInt32Array = []
+var _mesh_node_species: PackedInt32Array = []
 var _whole: Array[bool] = []  # per species: its near plants drawn whole (one node per level)
 var _masks: Array[ImageTexture] = []  # per species: which chunk cells the near buckets draw
 var _mask_version: int = -1  # the simulation's mask version the textures show
@@ -249,6 +251,7 @@ func finish(species_plants: Array, legend: Dictionary, cell_size: float, sway_ma
 				_add_dynamic(whole, whole_bucket)
 				_mesh_nodes.append(whole)
 				_mesh_node_levels.append(level)
+				_mesh_node_species.append(species)
 				if cheap_shadows and level < levels - 1:
 					_add_shadow_twin(whole, whole_bucket, plant.whole_mesh(levels - 1))
 				continue
@@ -259,6 +262,7 @@ func finish(species_plants: Array, legend: Dictionary, cell_size: float, sway_ma
 				_add_dynamic(node, bucket)
 				_mesh_nodes.append(node)
 				_mesh_node_levels.append(level)
+				_mesh_node_species.append(species)
 				if cheap_shadows and level < levels - 1:
 					_add_shadow_twin(node, bucket, plant.mesh_for_field(levels - 1, part))
 		# The near sprites and billboards: one multi-view impostor draws both.
@@ -288,10 +292,9 @@ func update_masks() -> void:
 	_mask_version = version
 	var drawn: PackedByteArray = simulation.get_tiles_drawn()
 	# A tile whose chunks are all drawn near is hidden, unless its caster casts for near plants.
-	var casting: bool = impostor_shadows_from < PartMeshes.LEVELS
 	for tile: int in mini(_tile_nodes.size(), drawn.size()):
 		if _tile_nodes[tile]:
-			_tile_nodes[tile].visible = drawn[tile] != 0 or casting
+			_tile_nodes[tile].visible = drawn[tile] != 0 or _casts_from(tile_table().species(tile)) < PartMeshes.LEVELS
 	var grid: PackedInt32Array = simulation.get_chunk_grid()
 	if grid[0] * grid[1] == 0:
 		return  # no field laid out
@@ -308,22 +311,27 @@ func update_masks() -> void:
 		_impostors[species].set_active_chunks(_masks[species], grid[0])
 
 
-## Near plants from mesh [param level] on cast no mesh shadows (the far tiles' casters cast for
-## them: SunflowerField.impostor_shadows_from); nearer levels cast from their meshes or their
-## shadow twins. 3: every mesh level casts.
-func set_impostor_shadows_from(level: int) -> void:
-	if level != impostor_shadows_from:
+## Near plants of species s from mesh [code]levels[s][/code] on cast no mesh shadows (the far tiles'
+## casters cast for them: SunflowerField.impostor_shadows_from, FieldPlant.impostor_shadows); nearer
+## levels cast from their meshes or their shadow twins. 3: every mesh level casts.
+func set_impostor_shadows_from(levels: PackedInt32Array) -> void:
+	if levels != impostor_shadows_from:
 		_mask_version = -1  # tiles whose chunks are all near stay drawn for their casters, or not
-	impostor_shadows_from = level
+	impostor_shadows_from = levels
 	for i: int in _mesh_nodes.size():
 		var node: MultiMeshInstance3D = _mesh_nodes[i]
-		var casts: bool = _mesh_node_levels[i] < level
+		var casts: bool = _mesh_node_levels[i] < _casts_from(_mesh_node_species[i])
 		if node.get_child_count(true) > 0:
 			(node.get_child(0, true) as Node3D).visible = casts  # the twin; the node itself casts none
 		else:
 			node.cast_shadow = (
 				GeometryInstance3D.SHADOW_CASTING_SETTING_ON if casts else GeometryInstance3D.SHADOW_CASTING_SETTING_OFF
 			)
+
+
+## The mesh level from which near plants of [param species] cast from their impostors (3: never).
+func _casts_from(species: int) -> int:
+	return impostor_shadows_from[species] if species < impostor_shadows_from.size() else PartMeshes.LEVELS
 
 
 ## Shows only the near buckets that hold plants after the simulation's last update: an empty

@@ -248,6 +248,16 @@ static var _default: FieldPlant
 			impostor_emission_range = accepted
 			emit_changed()
 
+## Near plants of this type cast their shadows from its far impostors from the field's
+## [member SunflowerField.impostor_shadows_from] on (fewer primitives). Off: they cast from their
+## meshes at every mesh level, for a plant whose impostor shadows are lighter than its meshes' (a
+## tree's thin branches and small leaves: the Sapling maple's field 25 m up at 45° scores SSIM 0.868
+## against its all-mesh-1 picture with it off, 0.799 on; docs/plants.md).
+@export var impostor_shadows: bool = true:
+	set(value):
+		if value != impostor_shadows:
+			impostor_shadows = value
+			emit_changed()
 ## How far the far levels' shadow casters stand out towards the light, as a share of the impostor's
 ## frame, beyond the depth the plant has at each pixel: a little shades a field of it as its meshes
 ## shade each other (0.03 suits the sunflower; more shades a lone plant's own leaves with specks).

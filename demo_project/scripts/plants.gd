@@ -28,6 +28,9 @@ static func legend(host: Node) -> Dictionary:
 			push_error("demo: cannot make a plant of %s" % SCENES[symbol])
 			continue
 		plant.flutter = FLUTTER
+		# The maple's impostor shadows are lighter than its branches' (docs/plants.md): its near
+		# plants cast from their meshes.
+		plant.impostor_shadows = symbol != "t"
 		if not _load_baked(plant) and await plant.bake_impostors(host, FOLDER, plant.name) != OK:
 			push_error("demo: the impostors of %s were not baked" % SCENES[symbol])
 		entries[symbol] = plant

@@ -116,7 +116,8 @@ func test_near_plants_cast_shadows_from_mesh_3() -> void:
 
 ## With impostor_shadows_from at mesh 3, mesh-3 plants cast no mesh shadows, the nearer levels keep
 ## their twins, and the far tiles' casters draw the near plants from the switch to mesh 3 (less the
-## hysteresis and a metre) on, at the plant type's scale; Never turns that off.
+## hysteresis and a metre) on, at the plant type's scale; a plant type with impostor_shadows off and
+## Never turn that off.
 func test_near_plants_cast_shadows_from_their_impostors_from_a_level_on() -> void:
 	check_eq(field.impostor_shadows_from, SunflowerField.Lod.MESH_3, "from mesh 3 by default")
 	observer.position = Vector3(10.0, 1.7, 7.5)
@@ -138,6 +139,21 @@ func test_near_plants_cast_shadows_from_their_impostors_from_a_level_on() -> voi
 		check_near(material.get_shader_parameter("near_shadow_from"), expected, 1e-4, node.name + "'s caster")
 		casters += 1
 	check(casters > 0, "far tiles' casters checked (%d)" % casters)
+	# A plant type with its impostor shadows off casts from its meshes at every level, the field's
+	# setting kept.
+	var own: FieldPlant = FieldPlant.default_plant().duplicate() as FieldPlant
+	own.impostor_shadows = false
+	field.plant = own
+	field.advance(0.1)
+	check_eq(field.impostor_shadows_from, SunflowerField.Lod.MESH_3, "the field's setting stays")
+	check_eq(_node("Mesh3").cast_shadow, GeometryInstance3D.SHADOW_CASTING_SETTING_ON, "its mesh 3 casts")
+	for node: MultiMeshInstance3D in _field_nodes():
+		if node.name.begins_with("FarTile"):
+			var material: ShaderMaterial = (node.get_child(0, true) as MultiMeshInstance3D).material_override
+			check_eq(material.get_shader_parameter("near_shadow_from"), -1.0, "its casters cast for no near plant")
+	own.impostor_shadows = true
+	field.advance(0.1)
+	check_eq(_node("Mesh3").cast_shadow, GeometryInstance3D.SHADOW_CASTING_SETTING_OFF, "on again: from impostors")
 	field.impostor_shadows_from = SunflowerField.Lod.SPRITE
 	field.advance(0.1)
 	check_eq(_node("Mesh3").cast_shadow, GeometryInstance3D.SHADOW_CASTING_SETTING_ON, "Never: mesh 3 casts")

@@ -15,10 +15,10 @@ const CROWN_SCALE: float = 1.5
 ## Plants made by Blender's Sapling Tree Gen (assets/test_plants/make_test_plants.py).
 const TEST_PLANT_FOLDER: String = "res://test_plants"
 const TEST_PLANTS: PackedStringArray = ["maple_tree.glb", "bottlebrush_bush.glb", "grass_clump.glb"]
-## The anti-aliased SSIM of a test plant's field 25 m up at 45° against its all-mesh-1 picture is
-## at least 0.85, except for the maple's (0.799: its far impostors keep fewer of the leaves the
-## meshes' far leaf cards show; docs/plants.md), which is checked at what it reaches.
-const LEAST_FIELD_SSIM_45: Dictionary = {"maple_tree": 0.78}
+## The test plants whose near plants cast from their meshes at every level (FieldPlant.impostor_shadows
+## off, as docs/plants.md advises for trees): the maple's impostor shadows are lighter than its
+## branches' and leaves' (its field 25 m up at 45° scores SSIM 0.799 with them, 0.868 without).
+const MESH_SHADOWS: PackedStringArray = ["maple_tree"]
 ## The test plants made and baked once a run ([method _baked_test_plant]), by file.
 static var baked_plants: Dictionary = {}
 
@@ -575,11 +575,11 @@ func _baked_test_plant(file: String) -> FieldPlant:
 
 ## A field of each test plant, as the editor's Plant from scene… makes it (cells as wide as the
 ## plant, levels of detail by its size, the field at least three times as deep as the plant's
-## impostors begin), calm, from head height in it, from 40 m outside and from 25 m up at 45°,
-## against the same view with every plant at mesh 1 (what a player compares the far levels with):
-## the pictures' SSIM, anti-aliased (drawn at twice the window's width and height, box-filtered
-## back), and the impostors' brightness where they are drawn (found with every mesh drawn black)
-## against the meshes' there.
+## impostors begin; the maple with its impostor shadows off, MESH_SHADOWS), calm, from head height
+## in it, from 40 m outside and from 25 m up at 45°, against the same view with every plant at
+## mesh 1 (what a player compares the far levels with): the pictures' SSIM, anti-aliased (drawn at
+## twice the window's width and height, box-filtered back), and the impostors' brightness where
+## they are drawn (found with every mesh drawn black) against the meshes' there.
 func test_a_field_of_each_test_plant_looks_like_its_meshes() -> void:
 	var window: Vector2i = tree.root.size
 	tree.root.size = window * 2
@@ -597,6 +597,7 @@ func _compare_field(plant_name: String, plant: FieldPlant) -> void:
 	var side: float = cells * cell
 	var staged: Stage = Stage.new(tree.root, side * 4.0, Vector3(side * 0.5, 0.0, side * 0.5))
 	stage = staged.root
+	plant.impostor_shadows = not plant_name in MESH_SHADOWS
 	var field: SunflowerField = SunflowerField.new()
 	field.plant = plant
 	field.cell_size = cell
@@ -649,10 +650,9 @@ func _compare_field(plant_name: String, plant: FieldPlant) -> void:
 		figures["inside"][0] >= 0.95,
 		"%s field at head height: SSIM %.3f, at least 0.95" % [plant_name, figures["inside"][0]]
 	)
-	var least: float = LEAST_FIELD_SSIM_45.get(plant_name, 0.85)
 	check(
-		figures["above45"][0] >= least,
-		"%s field 25 m up at 45°, anti-aliased: SSIM %.3f, at least %.2f" % [plant_name, figures["above45"][0], least]
+		figures["above45"][0] >= 0.85,
+		"%s field 25 m up at 45°, anti-aliased: SSIM %.3f, at least 0.85" % [plant_name, figures["above45"][0]]
 	)
 	var parts: PackedStringArray = []
 	for view: String in figures:
