@@ -425,8 +425,9 @@ func drawn_whole() -> bool:
 
 
 ## The mesh a plant drawn whole is drawn with at [param level] (its parts as drawn, merged), or null
-## when they cannot be merged. Made once per set of parts, [member part_lengths] and [member flutter]: an edit inside
-## a part mesh or its material shows once a part slot or the lengths change (set the part again).
+## when they cannot be merged. Made once per set of parts, [member part_lengths] and
+## [member flutter]: an edit inside a part mesh or its material shows once a part slot, the lengths
+## or the flutter change (set the part again).
 func whole_mesh(level: int) -> Mesh:
 	var parts: Array[Mesh] = _drawn_parts(level)
 	var lengths: Vector3 = stacked_lengths()

@@ -21,7 +21,7 @@ const SETTLE_FRAMES: int = 3
 ## larger than the plant is where its impostors are shown, so unbiased they read a leaf texture's
 ## fine detail, which the meshes there average away: a grass clump's blades (a dark midrib down a
 ## card 3 texels wide) baked with the midrib in a third of their texels, and the grass field 25 m up
-## at 45° drew at 0.88 of its meshes' brightness (0.97 with 2; 1 gave 0.93). Geometry is not
+## at 45° drew at 0.88 of its meshes' brightness (0.97 with 2: test_scene_plant). Geometry is not
 ## blurred by it, and a plant whose parts are untextured (the built-in sunflower) bakes the same.
 const TEXTURE_MIP_BIAS: float = 2.0
 ## The emission pass is rendered again with a range this many times wider while a pixel saturates,
