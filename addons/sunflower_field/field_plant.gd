@@ -459,6 +459,12 @@ func width_metres() -> float:
 	return impostor_width * height / maxf(lengths.x + lengths.y + lengths.z, 1e-4)
 
 
+## The cell size a field of this plant needs for neighbours not to stand in each other: its width
+## ([method width_metres]) rounded up to 5 cm.
+func spacing_metres() -> float:
+	return snappedf(width_metres() + 0.049, 0.05)
+
+
 ## The square every impostor view frames and the height of its centre above the root, model units:
 ## the [member impostor_width] × [member height_units] cylinder fits it from every elevation
 ## (its outline seen at elevation e is w wide and h·cos e + w·sin e tall, at most √(h² + w²)).

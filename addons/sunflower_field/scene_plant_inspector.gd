@@ -73,7 +73,7 @@ func make_plant(path: String, field: SunflowerField, button: Button = null, bar:
 		)
 	)
 	# Plants wider than the field's cells would stand inside each other: the cells widen to the plant.
-	var spacing: float = snappedf(plant.width_metres() + 0.049, 0.05)
+	var spacing: float = plant.spacing_metres()
 	_undo.create_action("Plant from scene", UndoRedo.MERGE_DISABLE, field)
 	_undo.add_do_property(field, &"plant", plant)
 	_undo.add_undo_property(field, &"plant", field.plant)

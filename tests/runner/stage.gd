@@ -35,3 +35,11 @@ func _init(parent: Node, size: float = 200.0, centre: Vector3 = Vector3(10.0, 0.
 	ground.mesh = plane
 	ground.position = centre
 	root.add_child(ground)
+
+
+## Shows the ground and the sky, or (false) hides the ground and makes the sky black, so that only
+## what is drawn in front stands out.
+func show_scenery(shown: bool) -> void:
+	ground.visible = shown
+	environment.background_mode = Environment.BG_SKY if shown else Environment.BG_COLOR
+	environment.background_color = Color.BLACK

@@ -239,12 +239,9 @@ func _seen_from(inside: PackedByteArray, size: Vector2i, lowest: float, highest:
 
 ## The field alone on black (no ground, no sky) drawn at [param force] (-1: automatic levels).
 func _field_alone(eye: Vector3, target: Vector3, force: int, name: String) -> PackedFloat32Array:
-	stage.ground.visible = false
-	stage.environment.background_mode = Environment.BG_COLOR
-	stage.environment.background_color = Color.BLACK
+	stage.show_scenery(false)
 	var alone: PackedFloat32Array = await _render(eye, target, force, name)
-	stage.ground.visible = true
-	stage.environment.background_mode = Environment.BG_SKY
+	stage.show_scenery(true)
 	return alone
 
 
@@ -362,10 +359,7 @@ func _render_image(eye: Vector3, target: Vector3, force: int, name: String, upda
 ## The view with every mesh part black and unshaded, no ground and a black sky: what is not black
 ## is impostor.
 func _impostors_alone(eye: Vector3, target: Vector3, name: String) -> PackedFloat32Array:
-	var black: StandardMaterial3D = StandardMaterial3D.new()
-	black.shading_mode = BaseMaterial3D.SHADING_MODE_UNSHADED
-	black.albedo_color = Color.BLACK
-	black.cull_mode = BaseMaterial3D.CULL_DISABLED
+	var black: StandardMaterial3D = Dressing.unlit_black()
 	Dressing.dress_parts(field, func(_level: int, _part: int) -> Material: return black)
 	var mask: PackedFloat32Array = await _field_alone(eye, target, -1, name)
 	field.plant = null  # the built-in sunflower again

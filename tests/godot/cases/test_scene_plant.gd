@@ -8,6 +8,7 @@ extends TestCase
 const Picture: GDScript = preload("res://runner/picture.gd")
 const Stage: GDScript = preload("res://runner/stage.gd")
 const Maps: GDScript = preload("res://runner/maps.gd")
+const Dressing: GDScript = preload("res://runner/dressing.gd")
 const ScenePlant: GDScript = preload("res://addons/sunflower_field/scene_plant.gd")
 const ImpostorBaker: GDScript = preload("res://addons/sunflower_field/impostor_baker.gd")
 const CROWN_PLACE: Vector3 = Vector3(0.5, 3.0, 0.0)
@@ -592,8 +593,9 @@ func test_a_field_of_each_test_plant_looks_like_its_meshes() -> void:
 
 
 func _compare_field(plant_name: String, plant: FieldPlant) -> void:
-	var cell: float = maxf(0.5, snappedf(plant.width_metres() + 0.049, 0.05))
-	var cells: int = ceili(maxf(60.0, 3.0 * plant.lod_scale_used() * 20.0) / cell)
+	var cell: float = maxf(0.5, plant.spacing_metres())
+	var impostors_from: float = SunflowerField.DEFAULT_LOD_DISTANCES[2]
+	var cells: int = ceili(maxf(60.0, 3.0 * plant.lod_scale_used() * impostors_from) / cell)
 	var side: float = cells * cell
 	var staged: Stage = Stage.new(tree.root, side * 4.0, Vector3(side * 0.5, 0.0, side * 0.5))
 	stage = staged.root
@@ -682,25 +684,12 @@ func _field_picture(field: SunflowerField, force: int, name: String) -> Image:
 ## The picture of [param field] with every mesh level of [param plant] drawn black and unshaded, no
 ## ground and a black sky: what is not black is impostor. The plant's meshes are put back.
 func _impostors_alone(staged: Stage, field: SunflowerField, plant: FieldPlant, name: String) -> Image:
-	var black: StandardMaterial3D = StandardMaterial3D.new()
-	black.shading_mode = BaseMaterial3D.SHADING_MODE_UNSHADED
-	black.albedo_color = Color.BLACK
-	black.cull_mode = BaseMaterial3D.CULL_DISABLED
+	var black: StandardMaterial3D = Dressing.unlit_black()
 	var kept: Array = [plant.mesh_level_1, plant.mesh_level_2, plant.mesh_level_3]
-	for level: int in 3:
-		for part: int in 3:
-			var mesh: Mesh = plant.get("mesh_level_%d" % (level + 1))[part]
-			if mesh:
-				var dressed: ArrayMesh = mesh.duplicate() as ArrayMesh
-				for surface: int in dressed.get_surface_count():
-					dressed.surface_set_material(surface, black)
-				plant.set_part_mesh(level, part, dressed)
-	staged.ground.visible = false
-	staged.environment.background_mode = Environment.BG_COLOR
-	staged.environment.background_color = Color.BLACK
+	Dressing.dress_parts(plant, func(_level: int, _part: int) -> Material: return black)
+	staged.show_scenery(false)
 	var image: Image = await _field_picture(field, -1, name)
-	staged.ground.visible = true
-	staged.environment.background_mode = Environment.BG_SKY
+	staged.show_scenery(true)
 	plant.mesh_level_1 = kept[0]
 	plant.mesh_level_2 = kept[1]
 	plant.mesh_level_3 = kept[2]
