@@ -10,8 +10,9 @@ extends Resource
 ## units up it). The whole plant is [member height] metres from the root to the top of its parts.
 ## The far levels draw a multi-view impostor: the level-1 parts rendered from [constant ATLAS_VIEWS]
 ## directions (around the plant, and from the side up to straight above) into [member impostor_views],
-## [member impostor_normals], [member impostor_depths] and, for a plant that glows,
-## [member impostor_emission] (the editor's "Bake impostors"); each view frames the cylinder
+## [member impostor_normals], [member impostor_depths] and, for a plant that glows or lets light
+## through its leaves, [member impostor_emission] and [member impostor_backlight] (the editor's
+## "Bake impostors"); each view frames the cylinder
 ## [member impostor_width] wide and [member height_units] tall that holds the plant.
 ## An empty part slot draws nothing: a plant of one or two parts leaves the slots above them empty
 ## (their [member part_lengths] then count 0), and a mesh level with no parts at all draws the level
@@ -33,6 +34,8 @@ const ATLAS_VIEWS: Vector2i = Vector2i(12, 10)
 const IMPOSTOR_TEXTURES: PackedStringArray = ["views", "normals", "depths"]
 ## The optional impostor texture of the light a plant's parts give off (see [member impostor_emission]).
 const EMISSION_TEXTURE: String = "emission"
+## The optional impostor texture of the light a plant's leaves let through (see [member impostor_backlight]).
+const BACKLIGHT_TEXTURE: String = "backlight"
 
 static var _default: FieldPlant
 
@@ -238,6 +241,13 @@ static var _default: FieldPlant
 	set(value):
 		impostor_emission = value
 		emit_changed()  # always: the same array or texture may hold new contents
+## The light the plant's parts let through from behind (their materials' back-light) in the same
+## views, so that the far levels glow against the sun as the meshes' leaves do; none
+## ([code]null[/code]) when no part lets light through. Baked with the others, only for such a plant.
+@export var impostor_backlight: Texture2D:
+	set(value):
+		impostor_backlight = value
+		emit_changed()  # always: the same array or texture may hold new contents
 ## What [member impostor_emission] was divided by: 8-bit colours keep energies up to it. The baker sets
 ## it, the smallest of 8, 64, 512 … in which no pixel of the atlas saturates (a brighter light would
 ## make the far levels glow less than the meshes); set it yourself for an atlas made elsewhere.
@@ -439,8 +449,8 @@ func whole_mesh(level: int) -> Mesh:
 	return made[1]
 
 
-## The impostor texture drawn ([constant IMPOSTOR_TEXTURES] or [constant EMISSION_TEXTURE]): the
-## plant's own; none until its impostors are baked.
+## The impostor texture drawn ([constant IMPOSTOR_TEXTURES], [constant EMISSION_TEXTURE] or
+## [constant BACKLIGHT_TEXTURE]): the plant's own; none until its impostors are baked.
 func texture_drawn(kind: String) -> Texture2D:
 	return get("impostor_" + kind)
 

@@ -6,10 +6,12 @@ extends RefCounted
 ## [method FieldPlant.impostor_frame] about the plant's middle, into atlases: the colours
 ## (materials drawn unshaded, albedo only: the field's lights shade the impostors once, like the
 ## meshes), the normals in the plant's own frame, the depths along the view and, when any part
-## gives off light, the light given off (the parts' own materials lit by nothing). All views render
-## at once: one copy of the plant per view, turned so that a single camera sees it from that view's
-## direction. Needs a renderer (not [code]--headless[/code]); the work takes a few frames, so
-## [method bake] is awaited.
+## gives off light, the light given off (the parts' own materials lit by nothing), and when any lets
+## light through from behind, that light (their back-light). All views render at once: one copy of
+## the plant per view, turned so that a single camera sees it from that view's direction. Needs a
+## renderer (not [code]--headless[/code]); the work takes a few frames, so [method bake] is awaited.
+
+const PlantMaterial: GDScript = preload("plant_material.gd")
 
 ## Pixels per view square.
 const CELL_PIXELS: int = 128
@@ -68,9 +70,10 @@ class Glow:
 ## Renders [param plant]'s impostor atlases in a viewport under [param host] (any node in a tree
 ## that draws: the editor's base control, the field), saves them as
 ## [code]<folder>/<base_name>_views.png[/code], [code]_normals.png[/code], [code]_depths.png[/code]
-## and, for a plant that glows, [code]_emission.png[/code] (default: beside the plant's resource
-## file, named after it), and gives them to the plant (reimported in the editor;
-## loaded from the files elsewhere). Returns OK, or an error after pushing what went wrong.
+## and, for a plant that glows or lets light through, [code]_emission.png[/code] and
+## [code]_backlight.png[/code] (default: beside the plant's resource file, named after it), and gives
+## them to the plant (reimported in the editor; loaded from the files elsewhere). Returns OK, or an
+## error after pushing what went wrong.
 static func bake(plant: FieldPlant, host: Node, folder: String = "", base_name: String = "") -> Error:
 	# The editor draws a frame only when something on screen changed; the bake waits for drawn frames
 	# of its own viewport, so frames are drawn continuously while it runs.
@@ -119,11 +122,15 @@ static func _bake(plant: FieldPlant, host: Node, folder: String, base_name: Stri
 			push_error("Bake impostors: the %s rendered nothing (no renderer?)" % kind)
 			return ERR_CANT_CREATE
 		images.append(image)
+	var through: Image = await _backlight(viewport)
 	var glow: Glow = await _emission(viewport, plant)
 	viewport.queue_free()
 	if glow.image:
 		kinds.append(FieldPlant.EMISSION_TEXTURE)
 		images.append(glow.image)
+	if through:
+		kinds.append(FieldPlant.BACKLIGHT_TEXTURE)
+		images.append(through)
 	var paths: PackedStringArray = []
 	for i: int in images.size():
 		var path: String = folder.path_join("%s_%s.png" % [base_name, kinds[i]])
@@ -135,6 +142,70 @@ static func _bake(plant: FieldPlant, host: Node, folder: String, base_name: Stri
 	plant.impostor_emission_range = glow.energy_range
 	_give_textures(plant, kinds, paths, images)
 	return OK
+
+
+## The light the parts let through from behind (their back-light), drawn as their colour, unshaded:
+## each part's material as the plant material draws it ([code]plant_material.gd[/code]), with its
+## back-light as the colour; a part the plant material cannot draw is black where it covers (a
+## StandardMaterial3D keeps its alpha cut; another material is drawn whole). No image when no part
+## lets light through.
+static func _backlight(viewport: SubViewport) -> Image:
+	var copies: Dictionary = {}  # material → the one drawn in this pass
+	var lets_through: bool = false
+	var instances: Array[Node] = viewport.find_children("*", "MeshInstance3D", true, false)
+	for node: Node in instances:
+		var mesh: Mesh = (node as MeshInstance3D).mesh
+		for surface: int in mesh.get_surface_count() if mesh else 0:
+			var material: Material = mesh.surface_get_material(surface)
+			if not copies.has(material):
+				var through: ShaderMaterial = _through_material(material)
+				lets_through = lets_through or through != null and _has_backlight(through)
+				copies[material] = through if through else _black_material(material)
+	if not lets_through:
+		return null
+	for node: Node in instances:
+		var instance: MeshInstance3D = node as MeshInstance3D
+		instance.material_override = null
+		for surface: int in instance.mesh.get_surface_count() if instance.mesh else 0:
+			instance.set_surface_override_material(surface, copies[instance.mesh.surface_get_material(surface)])
+	var image: Image = await _read_pass(viewport)
+	for node: Node in instances:
+		var instance: MeshInstance3D = node as MeshInstance3D
+		for surface: int in instance.mesh.get_surface_count() if instance.mesh else 0:
+			instance.set_surface_override_material(surface, null)
+	return image
+
+
+## [param material] drawn by the plant material showing its back-light as its colour, or null when
+## the plant material cannot draw it. (Vertex colours do not matter: the pass does not read them.)
+static func _through_material(material: Material) -> ShaderMaterial:
+	var through: ShaderMaterial = material as ShaderMaterial
+	if through and through.shader == PlantMaterial.PARTS_SHADER:
+		through = through.duplicate() as ShaderMaterial
+	else:
+		through = PlantMaterial.adopt(material, false)
+	if through:
+		through.set_shader_parameter(&"backlight_as_albedo", true)
+	return through
+
+
+## Whether the plant material [param material] has a back-light (a colour or a texture).
+static func _has_backlight(material: ShaderMaterial) -> bool:
+	var colour: Variant = material.get_shader_parameter(&"backlight_colour")  # null: never set
+	return material.get_shader_parameter(&"use_backlight_texture") == true or colour is Color and colour != Color.BLACK
+
+
+## [param material] drawn black where it covers (a BaseMaterial3D keeps its alpha cut).
+static func _black_material(material: Material) -> BaseMaterial3D:
+	var black: BaseMaterial3D = (
+		(material as BaseMaterial3D).duplicate() as BaseMaterial3D
+		if material is BaseMaterial3D
+		else StandardMaterial3D.new()
+	)
+	black.albedo_color = Color(0.0, 0.0, 0.0, black.albedo_color.a)
+	black.vertex_color_use_as_albedo = false
+	black.emission_enabled = false
+	return black
 
 
 ## The light the parts give off, from the stage of [method _stage] with the parts' own materials,
@@ -270,9 +341,9 @@ static func _stage(plant: FieldPlant) -> SubViewport:
 	return viewport
 
 
-## Hands the textures of [param kinds] to the plant (and no emission texture when they hold none): in
-## the editor reimported from the files (and the plant saved when it is a file), elsewhere made from
-## the images.
+## Hands the textures of [param kinds] to the plant (and no emission or back-light texture when they
+## hold none): in the editor reimported from the files (and the plant saved when it is a file),
+## elsewhere made from the images.
 static func _give_textures(
 	plant: FieldPlant, kinds: PackedStringArray, paths: PackedStringArray, images: Array[Image]
 ) -> void:
@@ -290,6 +361,7 @@ static func _give_textures(
 		for image: Image in images:
 			textures.append(atlas_texture(image, plant.name))
 	plant.impostor_emission = null
+	plant.impostor_backlight = null
 	for i: int in textures.size():
 		plant.set("impostor_" + kinds[i], textures[i])
 	if in_project and plant.resource_path.begins_with("res://") and not plant.resource_path.contains("::"):

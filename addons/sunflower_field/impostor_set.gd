@@ -42,6 +42,7 @@ func configure(plant: Resource) -> void:
 	for kind: String in FieldPlant.IMPOSTOR_TEXTURES:
 		set_texture(kind, plant.texture_drawn(kind))
 	set_emission(plant.texture_drawn(FieldPlant.EMISSION_TEXTURE), plant.impostor_emission_range)
+	set_backlight(plant.texture_drawn(FieldPlant.BACKLIGHT_TEXTURE))
 	_stiffness = plant.stiffness
 	# Model units of the bottom part, and of the middle and head above it (how the wind bends them).
 	var lengths: Vector3 = plant.stacked_lengths()
@@ -86,6 +87,13 @@ func set_texture(kind: String, texture: Texture2D) -> void:
 func set_emission(texture: Texture2D, energy_range: float) -> void:
 	_set_all("emission_atlas", texture)
 	_set_all("emission_range", energy_range if texture else 0.0)
+
+
+## Lets light through the impostors from behind as [param texture] says
+## ([member FieldPlant.impostor_backlight]); null: none.
+func set_backlight(texture: Texture2D) -> void:
+	_set_all("backlight_atlas", texture)
+	_set_all("has_backlight", texture != null)
 
 
 ## The views across and down the atlas [param texture]: [constant FieldPlant.ATLAS_VIEWS]'s columns,

@@ -5,13 +5,14 @@ extends RefCounted
 ## screen door) and the plant can be drawn whole ([code]whole_plant_mesh.gd[/code]). A plain
 ## [StandardMaterial3D] is carried over: albedo colour and texture, UV1 scale and offset (x, y),
 ## roughness and metallic (and their textures and channels), specular, a normal map and its scale,
-## emission (colour, energy multiplier, texture and operator; not with physical light units), ambient
-## occlusion (texture, channel, light affect), alpha scissor, vertex colours as albedo and their
+## emission (colour, energy multiplier, texture and operator; not with physical light units), back-light
+## (colour and texture: light let through a leaf from behind), ambient occlusion (texture, channel,
+## light affect), alpha scissor, vertex colours as albedo and their
 ## encoding, back faces culled or not (the plant material draws both). A material with anything else
 ## set (other textures, anything read from UV2, transparency other than alpha scissor, another
 ## shading mode, a next pass...) is kept as it is: that part is drawn by its own material, without
-## fades, and its plant part by part. (The far impostors are baked from the albedo: they do not
-## glow.)
+## fades, and its plant part by part. (The far impostors are baked from the albedo, the light given off
+## and the back-light of the parts drawn through the plant material.)
 
 const PARTS_SHADER: Shader = preload("shaders/plant_parts.gdshader")
 ## The StandardMaterial3D properties carried over (or, for cull_mode, allowed either way).
@@ -35,6 +36,9 @@ const CARRIED: PackedStringArray = [
 	"emission_energy_multiplier",
 	"emission_operator",
 	"emission_texture",
+	"backlight_enabled",
+	"backlight",
+	"backlight_texture",
 	"ao_enabled",
 	"ao_texture",
 	"ao_texture_channel",
@@ -119,6 +123,10 @@ static func adopt(material: Material, has_vertex_colours: bool) -> ShaderMateria
 			&"emission_multiply", standard.emission_operator == BaseMaterial3D.EMISSION_OP_MULTIPLY
 		)
 		adopted.set_shader_parameter(&"emission_texture", standard.emission_texture)
+	if standard.backlight_enabled:
+		adopted.set_shader_parameter(&"backlight_colour", standard.backlight)
+		adopted.set_shader_parameter(&"use_backlight_texture", standard.backlight_texture != null)
+		adopted.set_shader_parameter(&"backlight_texture", standard.backlight_texture)
 	if standard.ao_enabled and standard.ao_texture != null:
 		adopted.set_shader_parameter(&"use_ao_texture", true)
 		adopted.set_shader_parameter(&"ao_texture", standard.ao_texture)

@@ -8,6 +8,7 @@ const FOLDER: String = "user://bake_test"
 const RED: Color = Color(0.85, 0.1, 0.1)
 const GREEN: Color = Color(0.1, 0.6, 0.15)
 const GLOW: Color = Color(1.0, 0.55, 0.0)
+const BACKLIGHT: Color = Color(0.8, 0.9, 0.3)
 const Stage: GDScript = preload("res://runner/stage.gd")
 const Picture: GDScript = preload("res://runner/picture.gd")
 const Maps: GDScript = preload("res://runner/maps.gd")
@@ -105,6 +106,8 @@ func test_a_gltf_plant_gets_impostors_in_its_own_colours() -> void:
 		check(FileAccess.file_exists(FOLDER.path_join("red_plant_%s.png" % kind)), "%s atlas written" % kind)
 	check(plant.impostor_emission == null, "a plant that gives off no light gets no emission atlas")
 	check(not FileAccess.file_exists(FOLDER.path_join("red_plant_emission.png")), "and no emission file")
+	check(plant.impostor_backlight == null, "a plant that lets no light through gets no back-light atlas")
+	check(not FileAccess.file_exists(FOLDER.path_join("red_plant_backlight.png")), "and no back-light file")
 	if not check(
 		plant.impostor_views != null and plant.impostor_normals != null and plant.impostor_depths != null,
 		"the plant has its atlases"
@@ -259,11 +262,7 @@ func test_a_glowing_plant_glows_as_far_impostors() -> void:
 		await RenderingServer.frame_post_draw
 		var image: Image = tree.root.get_viewport().get_texture().get_image()
 		image.save_png(artifact_path("glowing_%s.png" % ["impostors", "meshes", "no_emission"][step]))
-		var pixels: PackedFloat32Array = Picture.new(image.get_width(), image.get_height()).luminance(image)
-		var sum: float = 0.0
-		for value: float in pixels:
-			sum += value
-		brightness.append(sum / pixels.size())
+		brightness.append(_mean_luminance(image))
 	stage.root.free()
 	var ratio: float = brightness[0] / maxf(brightness[1], 1e-6)
 	var without: float = brightness[2] / maxf(brightness[1], 1e-6)
@@ -276,6 +275,102 @@ func test_a_glowing_plant_glows_as_far_impostors() -> void:
 	check(brightness[1] > 0.005, "the meshes glow: mean brightness %.4f" % brightness[1])
 	check(ratio > 0.8 and ratio < 1.25, "the impostors glow as the meshes do: %.3f of their brightness" % ratio)
 	check(without < 0.2, "without the atlas they would stay dark: %.3f" % without)
+
+
+## A plant of one thin leaf that lets light through (a StandardMaterial3D's back-light) gets a
+## back-light atlas holding that colour where the leaf stands and nothing beside it; a field of it
+## seen against the sun (no shadows, no ambient light, a black background), all impostors, is as
+## bright as the same field drawn with every plant as mesh 1, and would be dark without the atlas
+## (what the far levels did before).
+func test_a_backlit_plant_lets_the_sun_through_as_far_impostors() -> void:
+	DirAccess.make_dir_recursive_absolute(FOLDER)
+	var leaf: Mesh = _gltf_part(Color(0.1, 0.3, 0.05), Vector3(0.9, 1.0, 0.02), "leaf.gltf")
+	if not check(leaf != null, "the glTF leaf loads"):
+		return
+	var backlit: StandardMaterial3D = (
+		(leaf.surface_get_material(0) as StandardMaterial3D).duplicate() as StandardMaterial3D
+	)
+	backlit.backlight_enabled = true
+	backlit.backlight = BACKLIGHT
+	leaf.surface_set_material(0, backlit)
+	var plant: FieldPlant = FieldPlant.new()
+	plant.name = "Backlit plant"
+	plant.mesh_level_1 = [leaf, null, null]
+	plant.height_units = 1.0
+	check_eq(await plant.bake_impostors(tree.root, FOLDER, "backlit_plant"), OK, "baked")
+	check(FileAccess.file_exists(FOLDER.path_join("backlit_plant_backlight.png")), "back-light atlas written")
+	if not check(plant.impostor_backlight != null, "the plant has a back-light atlas"):
+		return
+	# Straight at either face of the leaf (view 0 and the one half a turn round): its middle, and a
+	# point beside it.
+	var through: Image = plant.impostor_backlight.get_image()
+	through.clear_mipmaps()
+	var cell: int = ImpostorBaker.CELL_PIXELS
+	var pixels_per_unit: float = cell / plant.impostor_frame().x
+	var expected: Color = BACKLIGHT.srgb_to_linear()
+	for column: int in [0, FieldPlant.ATLAS_VIEWS.x / 2]:
+		var side: Image = _view(through, column, 0)
+		var lit: Color = side.get_pixel(cell / 2, cell / 2).srgb_to_linear()
+		var beside: Color = side.get_pixel(mini(cell - 1, roundi(cell / 2 + 0.6 * pixels_per_unit)), cell / 2)
+		check(
+			absf(lit.r - expected.r) < 0.03 and absf(lit.g - expected.g) < 0.03 and absf(lit.b - expected.b) < 0.03,
+			"view %d: the leaf's back-light, %s, is the material's, %s" % [column, lit, expected]
+		)
+		check(beside.a < 0.5, "view %d: nothing beside the leaf: %s" % [column, beside])
+	# The field against the sun: the camera north of it, looking south, the sun ahead and above.
+	var stage: RefCounted = Stage.new(tree.root, 200.0, Vector3(5.0, 0.0, 5.0))
+	stage.show_scenery(false)
+	stage.environment.ambient_light_source = Environment.AMBIENT_SOURCE_COLOR
+	stage.environment.ambient_light_color = Color.BLACK
+	stage.environment.reflected_light_source = Environment.REFLECTION_SOURCE_DISABLED
+	for sun: Node in stage.root.find_children("*", "DirectionalLight3D", false, false):
+		(sun as DirectionalLight3D).shadow_enabled = false  # each leaf's far face lit through, not shaded by it
+	var field: SunflowerField = SunflowerField.new()
+	field.plant = plant
+	stage.root.add_child(field)
+	field.map = Maps.filled(20, 20, "user://backlit.field")
+	field.wind_power = 0.0
+	field.finish_build()
+	var camera: Camera3D = Camera3D.new()
+	stage.root.add_child(camera)
+	camera.make_current()
+	camera.fov = 15.0  # the field's 10 m fill the picture
+	camera.look_at_from_position(Vector3(5.0, 3.0, -45.0), Vector3(5.0, 1.0, 5.0))
+	var brightness: Array[float] = []
+	for step: int in 3:  # impostors with the atlas, every plant as mesh 1, impostors without it
+		field.force_lod = 0 if step == 1 else -1
+		if step == 2:
+			plant.impostor_backlight = null
+		for i: int in 5:
+			field.advance(1.0 / 60.0)
+		await RenderingServer.frame_post_draw
+		await RenderingServer.frame_post_draw
+		var image: Image = tree.root.get_viewport().get_texture().get_image()
+		image.save_png(artifact_path("backlit_%s.png" % ["impostors", "meshes", "no_backlight"][step]))
+		brightness.append(_mean_luminance(image))
+	stage.root.free()
+	var ratio: float = brightness[0] / maxf(brightness[1], 1e-6)
+	var without: float = brightness[2] / maxf(brightness[1], 1e-6)
+	print(
+		(
+			"     backlit far plants against the sun: %.3f of the meshes' brightness (%.3f without the back-light atlas)"
+			% [ratio, without]
+		)
+	)
+	check(brightness[1] > 0.005, "the meshes let the sun through: mean brightness %.4f" % brightness[1])
+	check(
+		ratio > 0.85 and ratio < 1.15, "the impostors let it through as the meshes do: %.3f of their brightness" % ratio
+	)
+	check(without < 0.7, "without the atlas they would be darker: %.3f" % without)
+
+
+## The mean luminance of [param image].
+func _mean_luminance(image: Image) -> float:
+	var pixels: PackedFloat32Array = Picture.new(image.get_width(), image.get_height()).luminance(image)
+	var sum: float = 0.0
+	for value: float in pixels:
+		sum += value
+	return sum / maxf(pixels.size(), 1.0)
 
 
 ## A light brighter than the first range (energy 24 against 8, which clipped it to a third) is

@@ -386,7 +386,7 @@ func test_plain_standard_materials_are_taken_over_and_others_kept() -> void:
 		check_eq(taken.get_shader_parameter("roughness_channel"), Vector4(0, 1, 0, 0), "roughness from green")
 		check_eq(taken.get_shader_parameter("use_metallic_texture"), true, "the metallic texture is used")
 		check_eq(taken.get_shader_parameter("metallic_channel"), Vector4(0, 0, 1, 0), "metallic from blue")
-	# Emission and ambient occlusion carry over.
+	# Emission, ambient occlusion and back-light carry over.
 	var glowing: StandardMaterial3D = leaf.duplicate()
 	glowing.emission_enabled = true
 	glowing.emission = Color(0.5, 0.25, 0.0)
@@ -397,8 +397,11 @@ func test_plain_standard_materials_are_taken_over_and_others_kept() -> void:
 	glowing.ao_texture = texture
 	glowing.ao_texture_channel = BaseMaterial3D.TEXTURE_CHANNEL_ALPHA
 	glowing.ao_light_affect = 0.6
+	glowing.backlight_enabled = true
+	glowing.backlight = Color(0.4, 0.5, 0.1)
+	glowing.backlight_texture = texture
 	var lit_up: ShaderMaterial = PlantMaterialScript.adopt(glowing, false)
-	if check(lit_up != null, "emission and ambient occlusion are taken over"):
+	if check(lit_up != null, "emission, ambient occlusion and back-light are taken over"):
 		check_eq(lit_up.get_shader_parameter("emission_colour"), glowing.emission, "emission colour")
 		check(is_equal_approx(lit_up.get_shader_parameter("emission_energy"), 2.5), "emission energy")
 		check_eq(lit_up.get_shader_parameter("emission_multiply"), true, "emission times its texture")
@@ -407,9 +410,13 @@ func test_plain_standard_materials_are_taken_over_and_others_kept() -> void:
 		check_eq(lit_up.get_shader_parameter("ao_texture"), texture, "occlusion texture")
 		check_eq(lit_up.get_shader_parameter("ao_channel"), Vector4(0, 0, 0, 1), "occlusion from alpha")
 		check(is_equal_approx(lit_up.get_shader_parameter("ao_light_affect"), 0.6), "occlusion's light affect")
+		check_eq(lit_up.get_shader_parameter("backlight_colour"), glowing.backlight, "back-light colour")
+		check_eq(lit_up.get_shader_parameter("use_backlight_texture"), true, "the back-light texture is used")
+		check_eq(lit_up.get_shader_parameter("backlight_texture"), texture, "back-light texture")
 	if taken:
 		check(not taken.get_shader_parameter("emission_energy"), "no emission unless enabled")
 		check(not taken.get_shader_parameter("use_ao_texture"), "no occlusion unless enabled")
+		check(not taken.get_shader_parameter("backlight_colour"), "no back-light unless enabled")
 	# What the plant material cannot draw is kept: the part is drawn by its own material.
 	var second_uv: StandardMaterial3D = glowing.duplicate()
 	second_uv.ao_on_uv2 = true
