@@ -83,8 +83,9 @@ static var _default: FieldPlant
 			emit_changed()
 ## Draw the parts' plain StandardMaterial3D surfaces with the addon's plant material of the same
 ## settings ([code]plant_material.gd[/code] says which settings carry over), so that the near levels
-## cross-fade into each other and the impostors and the plant can be drawn whole. Off: every part
-## keeps its own material.
+## cross-fade into each other and the impostors and the plant can be drawn whole, and the parts'
+## spatial ShaderMaterials of your own with a copy of their shader that fades too (the plant material's
+## one line added at the start of its [code]fragment()[/code]). Off: every part keeps its own material.
 @export var use_plant_material: bool = true:
 	set(value):
 		var accepted: bool = value
@@ -410,8 +411,9 @@ func stacking_problems() -> PackedStringArray:
 
 
 ## The mesh the field's nodes draw a part with: [method mesh_drawn], its plain StandardMaterial3D
-## surfaces drawn with the plant material when [member use_plant_material] (a copy made once per
-## mesh: an edit inside the mesh or its materials shows once the part slot is set again).
+## surfaces drawn with the plant material and its own ShaderMaterials made to fade when
+## [member use_plant_material] (a copy made once per mesh: an edit inside the mesh or its materials
+## shows once the part slot is set again).
 func mesh_for_field(level: int, part: int) -> Mesh:
 	var mesh: Mesh = mesh_drawn(level, part)
 	if not use_plant_material or mesh == null:

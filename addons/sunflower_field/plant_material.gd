@@ -5,14 +5,15 @@ extends RefCounted
 ## screen door) and the plant can be drawn whole ([code]whole_plant_mesh.gd[/code]). A plain
 ## [StandardMaterial3D] is carried over: albedo colour and texture, UV1 scale and offset (x, y),
 ## roughness and metallic (and their textures and channels), specular, a normal map and its scale,
-## emission (colour, energy multiplier, texture and operator; not with physical light units), back-light
-## (colour and texture: light let through a leaf from behind), ambient occlusion (texture, channel,
-## light affect), alpha scissor, vertex colours as albedo and their
-## encoding, back faces culled or not (the plant material draws both). A material with anything else
-## set (other textures, anything read from UV2, transparency other than alpha scissor, another
-## shading mode, a next pass...) is kept as it is: that part is drawn by its own material, without
-## fades, and its plant part by part. (The far impostors are baked from the albedo, the light given off
-## and the back-light of the parts drawn through the plant material.)
+## emission (colour, energy multiplier, texture and operator; not with physical light units),
+## back-light (colour and texture: light let through a leaf from behind), ambient occlusion (texture,
+## channel, light affect), alpha scissor, vertex colours as albedo and their encoding, back faces
+## culled or not (the plant material draws both). A material with anything else set (other textures,
+## anything read from UV2, transparency other than alpha scissor, another shading mode, a next
+## pass...) is kept as it is: that part is drawn by its own material, without fades, and its plant
+## part by part. A spatial ShaderMaterial of your own is kept too, drawn by a copy whose shader fades
+## ([method fading]). (The far impostors are baked from the albedo, the light given off and the
+## back-light of the parts drawn through the plant material.)
 
 const PARTS_SHADER: Shader = preload("shaders/plant_parts.gdshader")
 ## The StandardMaterial3D properties carried over (or, for cull_mode, allowed either way).
@@ -62,19 +63,35 @@ const CHANNELS: Array[Vector4] = [
 ## The project setting under which a material's emission energy also depends on emission_intensity.
 const PHYSICAL_LIGHT_UNITS: String = "rendering/lights_and_shadows/use_physical_light_units"
 
+## The line that gives a shader of your own the fades ([method fading]), and the call that makes its
+## fragment() keep only its level's share of the pixels in a cross-fade (COLOR.a: the field's share).
+const FADE_INCLUDE_PATH: String = "res://addons/sunflower_field/shaders/screen_door.gdshaderinc"
+const FADE_INCLUDE: String = '#include "' + FADE_INCLUDE_PATH + '"'
+const FADE_CALL: String = "if (plant_fade_discards(FRAGCOORD.xy, COLOR.a)) { discard; }"
+const SHADER_TYPE_PATTERN: String = "(?m)^\\s*shader_type\\s+(\\w+)\\s*;"
+const RENDER_MODE_PATTERN: String = "(?m)^\\s*render_mode\\s[^;]*;"
+const INCLUDE_PATTERN: String = '(?m)^\\s*#include\\s+"([^"]*)"'
+const FRAGMENT_PATTERN: String = "void\\s+fragment\\s*\\(\\s*\\)\\s*\\{"
+
 static var _plain: StandardMaterial3D
+static var _faded_shaders: Dictionary = {}  # your shader → [its code, the fading copy or null]
+static var _patterns: Dictionary = {}  # pattern → RegEx
 
 
 ## [param mesh] with every surface whose material can be carried over drawn with the plant material
-## of the same settings (a copy; [param mesh] itself when no surface changes, or when it is not an
-## [ArrayMesh]).
+## of the same settings, and every surface with a spatial ShaderMaterial of its own drawn with it
+## fading as the plant material does ([method fading]) (a copy; [param mesh] itself when no surface
+## changes, or when it is not an [ArrayMesh]).
 static func adopt_mesh(mesh: Mesh) -> Mesh:
 	if not mesh is ArrayMesh:
 		return mesh
 	var copy: ArrayMesh = null
 	for surface: int in mesh.get_surface_count():
 		var has_colours: bool = mesh.surface_get_format(surface) & Mesh.ARRAY_FORMAT_COLOR != 0
-		var adopted: ShaderMaterial = adopt(mesh.surface_get_material(surface), has_colours)
+		var material: Material = mesh.surface_get_material(surface)
+		var adopted: ShaderMaterial = adopt(material, has_colours)
+		if adopted == null:
+			adopted = fading(material)
 		if adopted == null:
 			continue
 		if copy == null:
@@ -136,6 +153,70 @@ static func adopt(material: Material, has_vertex_colours: bool) -> ShaderMateria
 	adopted.set_shader_parameter(&"alpha_scissor", standard.alpha_scissor_threshold if scissor else 0.0)
 	adopted.set_shader_parameter(&"vertex_colour_is_srgb", standard.vertex_color_is_srgb)
 	return adopted
+
+
+## A copy of [param material], a ShaderMaterial of your own, whose shader fades as the plant
+## material does (the level-of-detail cross-fades), or null when it needs no copy or cannot be made
+## to: the copy's shader is yours with [constant FADE_INCLUDE] after its [code]shader_type[/code] and
+## [code]render_mode[/code] lines and [constant FADE_CALL] first in its [code]fragment()[/code] (see
+## [method fading_code]). Made once per shader and code.
+static func fading(material: Material) -> ShaderMaterial:
+	var own: ShaderMaterial = material as ShaderMaterial
+	if own == null or own.shader == null or own.shader == PARTS_SHADER:
+		return null
+	var made: Array = _faded_shaders.get(own.shader, [])
+	if made.is_empty() or made[0] != own.shader.code:
+		var code: String = fading_code(own.shader.code)
+		var shader: Shader = null
+		if not code.is_empty():
+			shader = Shader.new()
+			shader.code = code
+			shader.resource_name = own.shader.resource_name
+		made = [own.shader.code, shader]
+		_faded_shaders[own.shader] = made
+	if made[1] == null:
+		return null
+	var copy: ShaderMaterial = ShaderMaterial.new()
+	copy.resource_name = own.resource_name
+	copy.shader = made[1]
+	copy.render_priority = own.render_priority
+	copy.next_pass = own.next_pass
+	for uniform: Dictionary in own.shader.get_shader_uniform_list():
+		copy.set_shader_parameter(uniform.name, own.get_shader_parameter(uniform.name))
+	return copy
+
+
+## [param code], a shader's, with the plant material's fade added (see [method fading]); empty when it
+## is not a spatial shader, already calls [code]plant_fade_discards[/code], or includes a file by a
+## relative path (a copy of the code has no folder to find it from).
+static func fading_code(code: String) -> String:
+	if code.contains("plant_fade_discards"):
+		return ""
+	var head: RegExMatch = _regex(SHADER_TYPE_PATTERN).search(code)
+	if head == null or head.get_string(1) != "spatial":
+		return ""
+	for include: RegExMatch in _regex(INCLUDE_PATTERN).search_all(code):
+		if not include.get_string(1).begins_with("res://"):
+			return ""
+	var out: String = code
+	var fragment: RegExMatch = _regex(FRAGMENT_PATTERN).search(out)
+	if fragment:
+		out = out.insert(fragment.get_end(), "\n\t" + FADE_CALL + "\n")
+	else:
+		out += "\nvoid fragment() {\n\t" + FADE_CALL + "\n}\n"
+	if not out.contains(FADE_INCLUDE_PATH):
+		var after: int = head.get_end()
+		var modes: RegExMatch = _regex(RENDER_MODE_PATTERN).search(out, after)
+		if modes and out.substr(after, modes.get_start() - after).strip_edges().is_empty():
+			after = modes.get_end()
+		out = out.insert(after, "\n" + FADE_INCLUDE + "\n")
+	return out
+
+
+static func _regex(pattern: String) -> RegEx:
+	if not _patterns.has(pattern):
+		_patterns[pattern] = RegEx.create_from_string(pattern)
+	return _patterns[pattern]
 
 
 ## Whether every stored property of [param material] other than [constant CARRIED] is as a new

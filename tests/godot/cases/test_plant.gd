@@ -350,6 +350,58 @@ func test_an_atlas_is_read_with_the_rows_it_was_baked_with() -> void:
 	)
 
 
+## A spatial ShaderMaterial of your own is drawn by a copy whose shader fades: the plant material's
+## include after its shader_type and render_mode lines and its one line first in fragment() (or a
+## fragment() of that line when it has none). A shader that fades already, one that is not spatial
+## and one that includes a file by a relative path are left as they are; the include is not added
+## twice; your material and shader are not changed; one copy of the shader serves every material.
+func test_a_shader_of_your_own_is_made_to_fade() -> void:
+	var code: String = "shader_type spatial;\nrender_mode unshaded;\nuniform vec4 tint;\n"
+	code += "void fragment() {\n\tALBEDO = tint.rgb;\n}\n"
+	var faded: String = PlantMaterialScript.fading_code(code)
+	var include_at: int = faded.find(PlantMaterialScript.FADE_INCLUDE)
+	var call_at: int = faded.find(PlantMaterialScript.FADE_CALL)
+	check(include_at > faded.find("render_mode unshaded;"), "the include follows the render_mode line:\n" + faded)
+	check(include_at < faded.find("uniform vec4 tint;"), "and comes before your declarations")
+	check(call_at > faded.find("void fragment() {"), "the call is in fragment()")
+	check(call_at < faded.find("ALBEDO = tint.rgb;"), "before anything else there")
+	var bare: String = PlantMaterialScript.fading_code("shader_type spatial;\nvoid vertex() {\n}\n")
+	check(bare.contains("void fragment() {\n\t" + PlantMaterialScript.FADE_CALL), "a fragment() of the call is added")
+	var included: String = PlantMaterialScript.fading_code(
+		code.replace("uniform", PlantMaterialScript.FADE_INCLUDE + "\nuniform")
+	)
+	check_eq(included.count(PlantMaterialScript.FADE_INCLUDE_PATH), 1, "an include already there is not added twice")
+	check_eq(PlantMaterialScript.fading_code(faded), "", "a shader that fades already is left as it is")
+	check_eq(PlantMaterialScript.fading_code("shader_type canvas_item;\nvoid fragment() {\n}\n"), "", "not spatial")
+	check_eq(
+		PlantMaterialScript.fading_code(code.replace("uniform", '#include "mine.gdshaderinc"\nuniform')),
+		"",
+		"relative include"
+	)
+	var shader: Shader = Shader.new()
+	shader.code = code
+	var first: ShaderMaterial = ShaderMaterial.new()
+	first.shader = shader
+	var second: ShaderMaterial = first.duplicate() as ShaderMaterial
+	var copy: ShaderMaterial = PlantMaterialScript.fading(first)
+	if check(copy != null, "your ShaderMaterial gets a fading copy"):
+		check_eq(copy.shader.code, faded, "drawn with the fading code")
+		check(PlantMaterialScript.fading(second).shader == copy.shader, "one fading shader for every material of yours")
+	check(first.shader == shader and shader.code == code, "your material and shader stay as they were")
+	check(PlantMaterialScript.fading(StandardMaterial3D.new()) == null, "only ShaderMaterials")
+	# Through a plant: the field's mesh draws the copy, the plant's own mesh keeps yours.
+	var plant: FieldPlant = FieldPlant.default_plant().duplicate()
+	Dressing.dress_parts(plant, func(_level: int, _part: int) -> Material: return first)
+	var drawn: Material = plant.mesh_for_field(0, 0).surface_get_material(0)
+	check(
+		drawn is ShaderMaterial and (drawn as ShaderMaterial).shader == copy.shader, "the field draws the fading copy"
+	)
+	check_eq(plant.mesh_drawn(0, 0).surface_get_material(0), first, "the plant's own mesh keeps your material")
+	check(not plant.drawn_whole(), "and the plant is drawn part by part")
+	plant.use_plant_material = false
+	check_eq(plant.mesh_for_field(0, 0).surface_get_material(0), first, "use_plant_material off: yours as it is")
+
+
 func test_plain_standard_materials_are_taken_over_and_others_kept() -> void:
 	var texture: ImageTexture = ImageTexture.create_from_image(Image.create(4, 4, false, Image.FORMAT_RGBA8))
 	var leaf: StandardMaterial3D = StandardMaterial3D.new()

@@ -19,6 +19,14 @@ void fragment() {
 }
 """
 const FADE_CALL: String = "if (plant_fade_discards(FRAGCOORD.xy, COLOR.a)) { discard; }"
+## A shader of your own that knows nothing of the field: its colour from a uniform.
+const PLAIN_SHADER: String = """shader_type spatial;
+render_mode unshaded, cull_disabled;
+uniform vec4 colour : source_color;
+void fragment() {
+	ALBEDO = colour.rgb;
+}
+"""
 
 var scene: Node3D
 
@@ -350,20 +358,26 @@ func test_plain_standard_materials_are_drawn_as_the_plant_material() -> void:
 		print("     (not the same look on the Compatibility renderer: SSIM %.4f, not checked there)" % as_own)
 
 
-func test_a_shader_of_your_own_fades_with_one_line() -> void:
+func test_a_shader_of_your_own_fades() -> void:
 	# One plant whose parts draw with a ShaderMaterial of their own (flat red, unshaded), seen from
 	# 12 m (mesh 3) and from 18 m, the middle of the mesh 3 → impostor fade (16.5–19.5 m): with the
 	# call to plant_fade_discards the mesh keeps about half its pixels there, the impostor the rest;
-	# without it the mesh keeps them all (so the check fails when the call does nothing).
+	# the same when the shader knows nothing of the field (its red from a uniform) and the field
+	# draws it with the call added (use_plant_material); without the call (use_plant_material off)
+	# the mesh keeps them all (so the checks fail when the call does nothing).
 	var one: SunflowerFieldMap = _one_plant_map()
 	var red: Dictionary = {}
-	for way: String in ["fading", "not fading"]:
+	for way: String in ["fading", "made to fade", "not fading"]:
 		var shader: Shader = Shader.new()
 		shader.code = OWN_SHADER.replace("FADE;", FADE_CALL if way == "fading" else "")
 		var material: ShaderMaterial = ShaderMaterial.new()
 		material.shader = shader
+		if way == "made to fade":
+			shader.code = PLAIN_SHADER
+			material.set_shader_parameter("colour", Color(1.0, 0.0, 0.0))
 		var own: FieldPlant = FieldPlant.default_plant().duplicate()
 		Dressing.dress_parts(own, func(_level: int, _part: int) -> Material: return material)
+		own.use_plant_material = way != "not fading"
 		var field: SunflowerField = SunflowerField.new()
 		scene.add_child(field)
 		field.plant = own
@@ -389,10 +403,14 @@ func test_a_shader_of_your_own_fades_with_one_line() -> void:
 	# The share of the mesh's pixels kept mid-fade: the two ways' red at 18 m (without the call the mesh
 	# keeps all of them, less the few its impostor's share draws over).
 	var kept: float = red["fading 18"] / maxf(red["not fading 18"], 1.0)
+	var made_kept: float = red["made to fade 18"] / maxf(red["not fading 18"], 1.0)
 	print(
 		(
-			"     your own shader mid-fade keeps %.2f of the mesh's pixels with the call (%d red at 12 m, %d at 18 m without)"
-			% [kept, red["fading 12"], red["not fading 18"]]
+			(
+				"     your own shader mid-fade keeps %.2f of the mesh's pixels with the call, %.2f with it added"
+				% [kept, made_kept]
+			)
+			+ " (%d red at 12 m, %d at 18 m without)" % [red["fading 12"], red["not fading 18"]]
 		)
 	)
 	check(red["fading 12"] > 2000.0, "the red mesh is seen from 12 m (%d pixels)" % red["fading 12"])
@@ -401,6 +419,14 @@ func test_a_shader_of_your_own_fades_with_one_line() -> void:
 		"outside the fade the call changes nothing (%d against %d)" % [red["fading 12"], red["not fading 12"]]
 	)
 	check(kept > 0.3 and kept < 0.7, "mid-fade the mesh keeps about half its pixels (%.2f)" % kept)
+	check(
+		absf(red["made to fade 12"] - red["not fading 12"]) < 0.02 * red["fading 12"],
+		(
+			"made to fade, your shader draws as it did (%d red pixels against %d)"
+			% [red["made to fade 12"], red["not fading 12"]]
+		)
+	)
+	check(made_kept > 0.3 and made_kept < 0.7, "made to fade, mid-fade it keeps about half (%.2f)" % made_kept)
 
 
 ## Pixels of the flat red of [constant OWN_SHADER].
