@@ -192,3 +192,17 @@ func test_the_hills_map_stands_the_field_on_the_terrain() -> void:
 	await frames_until(func() -> bool: return field.get_plant_count() == 1103 and not field.is_building(), 600)
 	check_eq(field.ground_source, SunflowerField.GroundSource.FLAT, "the demo field lies flat again")
 	check(not (demo.get_node("Hills") as Node3D).visible and (demo.get_node("Ground") as Node3D).visible)
+
+
+## The Plants map's baked impostors are kept under a name that follows what the bake depends on:
+## each test plant's is its own and the same from run to run, and a name nothing was baked under
+## loads nothing (so a changed scene or baker is baked again, not drawn from old atlases).
+func test_the_plants_maps_bakes_are_named_by_what_they_depend_on() -> void:
+	await frames(3)  # the demo's start (its field's build) done before it is freed
+	var names: Dictionary = {}
+	for symbol: String in DemoPlants.SCENES:
+		var code: String = DemoPlants._fingerprint(DemoPlants.SCENES[symbol])
+		check_eq(DemoPlants._fingerprint(DemoPlants.SCENES[symbol]), code, "%s: the same code twice" % symbol)
+		names[code] = symbol
+	check_eq(names.size(), DemoPlants.SCENES.size(), "each plant's code is its own")
+	check(not DemoPlants._load_baked(FieldPlant.new(), "never_baked_000000000000"), "nothing baked: nothing loaded")
