@@ -232,47 +232,18 @@ func test_a_glowing_plant_glows_as_far_impostors() -> void:
 	check_eq(plant.impostor_emission_range, 8.0, "the light fits the first range")
 	_check_glow(plant, 2.0)
 	# The field in the dark: no sun, no sky light, a black background.
-	var stage: RefCounted = Stage.new(tree.root, 200.0, Vector3(5.0, 0.0, 5.0))
-	stage.environment.background_mode = Environment.BG_COLOR
-	stage.environment.background_color = Color.BLACK
-	stage.environment.ambient_light_source = Environment.AMBIENT_SOURCE_COLOR
-	stage.environment.ambient_light_color = Color.BLACK
-	stage.environment.reflected_light_source = Environment.REFLECTION_SOURCE_DISABLED
-	for sun: Node in stage.root.find_children("*", "DirectionalLight3D", false, false):
-		(sun as DirectionalLight3D).visible = false
-	var field: SunflowerField = SunflowerField.new()
-	field.plant = plant
-	stage.root.add_child(field)
-	field.map = Maps.filled(20, 20, "user://glowing.field")
-	field.wind_power = 0.0
-	field.finish_build()
-	var camera: Camera3D = Camera3D.new()
-	stage.root.add_child(camera)
-	camera.make_current()
-	camera.fov = 15.0  # the field's 10 m fill the picture
-	camera.look_at_from_position(Vector3(5.0, 3.0, 55.0), Vector3(5.0, 1.0, 5.0))
-	var brightness: Array[float] = []
-	for step: int in 3:  # impostors with the atlas, every plant as mesh 1, impostors without it
-		field.force_lod = 0 if step == 1 else -1
-		if step == 2:
-			plant.impostor_emission = null
-		for i: int in 5:
-			field.advance(1.0 / 60.0)
-		await RenderingServer.frame_post_draw
-		await RenderingServer.frame_post_draw
-		var image: Image = tree.root.get_viewport().get_texture().get_image()
-		image.save_png(artifact_path("glowing_%s.png" % ["impostors", "meshes", "no_emission"][step]))
-		brightness.append(_mean_luminance(image))
-	stage.root.free()
-	var ratio: float = brightness[0] / maxf(brightness[1], 1e-6)
-	var without: float = brightness[2] / maxf(brightness[1], 1e-6)
+	var seen: Vector3 = await _field_in_the_dark(
+		plant, Vector3(5.0, 3.0, 55.0), FieldPlant.EMISSION_TEXTURE, false, "glowing"
+	)
+	var ratio: float = seen.y
+	var without: float = seen.z
 	print(
 		(
 			"     glowing far plants in the dark: %.3f of the meshes' brightness (%.3f without the emission atlas)"
 			% [ratio, without]
 		)
 	)
-	check(brightness[1] > 0.005, "the meshes glow: mean brightness %.4f" % brightness[1])
+	check(seen.x > 0.005, "the meshes glow: mean brightness %.4f" % seen.x)
 	check(ratio > 0.8 and ratio < 1.25, "the impostors glow as the meshes do: %.3f of their brightness" % ratio)
 	check(without < 0.2, "without the atlas they would stay dark: %.3f" % without)
 
@@ -318,50 +289,65 @@ func test_a_backlit_plant_lets_the_sun_through_as_far_impostors() -> void:
 		)
 		check(beside.a < 0.5, "view %d: nothing beside the leaf: %s" % [column, beside])
 	# The field against the sun: the camera north of it, looking south, the sun ahead and above.
-	var stage: RefCounted = Stage.new(tree.root, 200.0, Vector3(5.0, 0.0, 5.0))
-	stage.show_scenery(false)
-	stage.environment.ambient_light_source = Environment.AMBIENT_SOURCE_COLOR
-	stage.environment.ambient_light_color = Color.BLACK
-	stage.environment.reflected_light_source = Environment.REFLECTION_SOURCE_DISABLED
-	for sun: Node in stage.root.find_children("*", "DirectionalLight3D", false, false):
-		(sun as DirectionalLight3D).shadow_enabled = false  # each leaf's far face lit through, not shaded by it
-	var field: SunflowerField = SunflowerField.new()
-	field.plant = plant
-	stage.root.add_child(field)
-	field.map = Maps.filled(20, 20, "user://backlit.field")
-	field.wind_power = 0.0
-	field.finish_build()
-	var camera: Camera3D = Camera3D.new()
-	stage.root.add_child(camera)
-	camera.make_current()
-	camera.fov = 15.0  # the field's 10 m fill the picture
-	camera.look_at_from_position(Vector3(5.0, 3.0, -45.0), Vector3(5.0, 1.0, 5.0))
-	var brightness: Array[float] = []
-	for step: int in 3:  # impostors with the atlas, every plant as mesh 1, impostors without it
-		field.force_lod = 0 if step == 1 else -1
-		if step == 2:
-			plant.impostor_backlight = null
-		for i: int in 5:
-			field.advance(1.0 / 60.0)
-		await RenderingServer.frame_post_draw
-		await RenderingServer.frame_post_draw
-		var image: Image = tree.root.get_viewport().get_texture().get_image()
-		image.save_png(artifact_path("backlit_%s.png" % ["impostors", "meshes", "no_backlight"][step]))
-		brightness.append(_mean_luminance(image))
-	stage.root.free()
-	var ratio: float = brightness[0] / maxf(brightness[1], 1e-6)
-	var without: float = brightness[2] / maxf(brightness[1], 1e-6)
+	var seen: Vector3 = await _field_in_the_dark(
+		plant, Vector3(5.0, 3.0, -45.0), FieldPlant.BACKLIGHT_TEXTURE, true, "backlit"
+	)
+	var ratio: float = seen.y
+	var without: float = seen.z
 	print(
 		(
 			"     backlit far plants against the sun: %.3f of the meshes' brightness (%.3f without the back-light atlas)"
 			% [ratio, without]
 		)
 	)
-	check(brightness[1] > 0.005, "the meshes let the sun through: mean brightness %.4f" % brightness[1])
+	check(seen.x > 0.005, "the meshes let the sun through: mean brightness %.4f" % seen.x)
 	check(
 		ratio > 0.85 and ratio < 1.15, "the impostors let it through as the meshes do: %.3f of their brightness" % ratio
 	)
 	check(without < 0.7, "without the atlas they would be darker: %.3f" % without)
+
+
+## A 20 × 20 field of [param plant] (10 m square) in a stage with no ambient light and a black
+## background, seen from [param eye] with a 15° view (the field fills the picture): all impostors,
+## every plant as mesh 1, and all impostors with the plant's [param atlas] taken away (saved as
+## [param name]_impostors, _meshes and _no_<atlas>.png). The sun shines, without shadows (a leaf's
+## far face is lit through, not shaded by the leaf), when [param sun]; else it is off. Returns the
+## meshes' mean brightness, and the impostors' with and without the atlas relative to it.
+func _field_in_the_dark(plant: FieldPlant, eye: Vector3, atlas: String, sun: bool, name: String) -> Vector3:
+	var stage: RefCounted = Stage.new(tree.root, 200.0, Vector3(5.0, 0.0, 5.0))
+	stage.show_scenery(false)
+	stage.environment.ambient_light_source = Environment.AMBIENT_SOURCE_COLOR
+	stage.environment.ambient_light_color = Color.BLACK
+	stage.environment.reflected_light_source = Environment.REFLECTION_SOURCE_DISABLED
+	for light: Node in stage.root.find_children("*", "DirectionalLight3D", false, false):
+		(light as DirectionalLight3D).visible = sun
+		(light as DirectionalLight3D).shadow_enabled = false
+	var field: SunflowerField = SunflowerField.new()
+	field.plant = plant
+	stage.root.add_child(field)
+	field.map = Maps.filled(20, 20, "user://%s.field" % name)
+	field.wind_power = 0.0
+	field.finish_build()
+	var camera: Camera3D = Camera3D.new()
+	stage.root.add_child(camera)
+	camera.make_current()
+	camera.fov = 15.0
+	camera.look_at_from_position(eye, Vector3(5.0, 1.0, 5.0))
+	var brightness: Array[float] = []
+	for step: int in 3:
+		field.force_lod = 0 if step == 1 else -1
+		if step == 2:
+			plant.set("impostor_" + atlas, null)
+		for i: int in 5:
+			field.advance(1.0 / 60.0)
+		await RenderingServer.frame_post_draw
+		await RenderingServer.frame_post_draw
+		var image: Image = tree.root.get_viewport().get_texture().get_image()
+		image.save_png(artifact_path("%s_%s.png" % [name, ["impostors", "meshes", "no_" + atlas][step]]))
+		brightness.append(_mean_luminance(image))
+	stage.root.free()
+	var meshes: float = maxf(brightness[1], 1e-6)
+	return Vector3(brightness[1], brightness[0] / meshes, brightness[2] / meshes)
 
 
 ## The mean luminance of [param image].
