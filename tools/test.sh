@@ -36,8 +36,9 @@ HEADLESS_TESTS=(test_addon test_budget '!test_budget.test_the_field_holds_a_gpu_
   '!test_field.test_buffers_reach_the_rendering_server' '!test_field.test_near_plants_cast_*'
   '!test_field.test_every_plant_is_drawn_exactly_once_*'
   '!test_field.test_merged_far_tiles_draw_each_place_once_*' '!test_species.test_a_hilly_field_*')
-# The render tests the "opengl" suite repeats: those whose result depends on the renderer.
-OPENGL_TESTS=(test_render)
+# The render tests the "opengl" suite repeats: those whose result depends on the renderer (and the
+# back-light bake's, whose far leaves are lit by the renderer's own back-light term).
+OPENGL_TESTS=(test_render 'test_bake.test_a_backlit_*')
 
 usage() { sed -n '2,12p' "$0" | sed 's/^# \{0,1\}//'; }
 list() { local s; for s in "${SUITES[@]}"; do printf '  %-10s %s\n' "${s%%|*}" "${s#*|}"; done; }
