@@ -16,7 +16,6 @@ const FOLDER: String = "user://demo_plants"
 ## Their leaves' flutter in the wind ([member FieldPlant.flutter]).
 const FLUTTER: float = 0.2
 const ImpostorBaker: GDScript = preload("res://addons/sunflower_field/impostor_baker.gd")
-const PLANT_MATERIAL_PATH: String = "res://addons/sunflower_field/plant_material.gd"
 const PLANT_SURFACE_PATH: String = "res://addons/sunflower_field/shaders/plant_surface.gdshaderinc"
 
 
@@ -47,7 +46,9 @@ static func legend(host: Node) -> Dictionary:
 ## baker's and plant material's contents.
 static func _fingerprint(scene_path: String) -> String:
 	var sources: String = ""
-	for path: String in [scene_path, ImpostorBaker.resource_path, PLANT_MATERIAL_PATH, PLANT_SURFACE_PATH]:
+	for path: String in [
+		scene_path, ImpostorBaker.resource_path, ImpostorBaker.PlantMaterial.resource_path, PLANT_SURFACE_PATH
+	]:
 		sources += FileAccess.get_md5(path)
 	return sources.md5_text().left(12)
 
