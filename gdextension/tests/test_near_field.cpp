@@ -336,6 +336,44 @@ TEST_CASE("a forced representation draws every plant in it, and memory per plant
 	CHECK(per_plant <= 40.0); // #15: ≤ 40 B a plant (a 28 B layout, no wind state for far plants)
 }
 
+TEST_CASE("a near impostor is its plant's static record, and takes a new plant size at once") {
+	FieldSimulation sim;
+	load(sim, rect_map(60, 60)); // 30 × 30 m around an observer in the middle: impostors beyond 20 m
+	sim.near().set_observer({ 15.0f, 1.7f, 15.0f });
+	std::map<std::pair<float, float>, uint32_t> by_root;
+	for (uint32_t i = 0; i < sim.plants().get_plant_count(); ++i) {
+		const Plant &plant = sim.plants().get_layout().plants[i];
+		by_root[{ plant.position.x, plant.position.y }] = i;
+	}
+	// Every near impostor against the record its plant has as a static one, at the plant size now.
+	auto check_records = [&](float p_part_scale) {
+		const InstanceBuffer &sprites = sim.near().get_bucket(BUCKET_IMPOSTOR);
+		REQUIRE(sprites.get_count() > 100);
+		for (uint32_t k = 0; k < sprites.get_count(); ++k) {
+			const FarInstance drawn = read_far_instance(sprites.get_data() + size_t(k) * FAR_FLOATS_PER_INSTANCE);
+			const auto found = by_root.find({ drawn.root.x, drawn.root.z });
+			REQUIRE(found != by_root.end());
+			const Plant &plant = sim.plants().get_layout().plants[found->second];
+			const FarInstance expected = sim.plants().far_instance(plant, 0);
+			CHECK(drawn.scale == doctest::Approx(p_part_scale * plant.scale).epsilon(1e-5));
+			CHECK(drawn.scale == doctest::Approx(expected.scale).epsilon(1e-5));
+			CHECK(std::abs(std::remainder(drawn.yaw - expected.yaw, TAU)) < 1e-4f);
+			CHECK(glm::length(drawn.tone - expected.tone) < 0.01f);
+			CHECK(glm::length(drawn.lean - expected.lean) < 0.01f);
+			CHECK(drawn.root.y == expected.root.y);
+		}
+	};
+	for (int i = 0; i < 4; ++i) { // chunks turn active a budget's worth per update
+		sim.update(0.016f);
+	}
+	check_records(sim.plants().get_shape().part_scale);
+	PlantShape larger = sim.plants().get_shape();
+	larger.part_scale *= 2.0f; // the plant type made taller in the inspector, say
+	sim.set_shape(larger);
+	sim.update(0.016f);
+	check_records(larger.part_scale);
+}
+
 TEST_CASE("mesh 3 dithers into its impostor over the fade metres before the sprite switch, the same whichever level a plant is at") {
 	FieldSimulation sim;
 	load(sim, rect_map(120, 120)); // 60 × 60 m

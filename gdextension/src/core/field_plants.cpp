@@ -186,11 +186,6 @@ FarInstance FieldPlants::far_instance(const Plant &p_plant, uint32_t p_species) 
 	return instance;
 }
 
-void FieldPlants::write_impostor(float *r_out, const Plant &p_plant, float p_share) const {
-	write_far_instance(r_out, far_instance(p_plant, species_of(p_plant)));
-	r_out[FAR_CELL_OR_SHARE] = p_share;
-}
-
 void FieldPlants::write_records(uint32_t p_chunk, const uint32_t *p_plants, uint32_t p_count, float *r_out,
 		uint32_t p_levels_above) const {
 	const uint32_t species = _layout.chunks[p_chunk].species;

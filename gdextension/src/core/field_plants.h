@@ -89,9 +89,6 @@ public:
 
 	// A plant's compact impostor record (its cell left 0).
 	FarInstance far_instance(const Plant &p_plant, uint32_t p_species) const;
-	// The near impostor bucket's record: p_share is how much of the plant the impostor draws (below 1
-	// in a cross-fade), in place of the cell.
-	void write_impostor(float *r_out, const Plant &p_plant, float p_share = 1.0f) const;
 	// The static records of p_count plants of chunk p_chunk (p_plants: their indices), each with the
 	// chunk's cell and p_levels_above (FarInstance::levels_above: the plants are all of one level).
 	void write_records(uint32_t p_chunk, const uint32_t *p_plants, uint32_t p_count, float *r_out, uint32_t p_levels_above = 0) const;

@@ -55,6 +55,7 @@ void FieldSimulation::set_shape(const PlantShape &p_shape, uint32_t p_species) {
 	if (_plants.set_shape(p_shape, p_species)) {
 		_near.make_buckets();
 	}
+	_near.reshape();
 	_near.request_lod_update();
 }
 

@@ -21,6 +21,8 @@ void NearField::rebuild() {
 	_plant_lod.assign(_plants.get_plant_count(), LOD_BILLBOARD);
 	_chunk_wind.clear(); // the old field's states go with their memory
 	_chunk_wind.resize(chunks);
+	_chunk_records.clear();
+	_chunk_records.resize(chunks);
 	_pushes.clear(); // the slots pointed at the old field's plants
 	_chunk_active.assign(chunks, 0);
 	_visit_mark.assign(chunks, 0);
@@ -31,6 +33,18 @@ void NearField::rebuild() {
 	_active_plants = 0;
 	make_buckets();
 	_lod_due = true;
+}
+
+void NearField::reshape() {
+	for (uint32_t c : _active_chunks) {
+		_write_records(c);
+	}
+}
+
+void NearField::_write_records(uint32_t p_chunk) {
+	std::vector<float> &records = _chunk_records[p_chunk];
+	records.resize(size_t(_plants.get_layout().chunks[p_chunk].count) * FAR_FLOATS_PER_INSTANCE);
+	_plants.write_chunk_instances(p_chunk, records.data());
 }
 
 void NearField::set_lod(const LodParams &p_params) {
@@ -79,6 +93,18 @@ void NearField::make_buckets() {
 		set = buckets;
 	}
 }
+
+namespace {
+
+// A near impostor: the plant's static record, p_share (how much of the plant the impostor draws, below
+// 1 in a cross-fade) in place of the cell.
+void write_impostor(InstanceBuffer &r_bucket, const float *p_record, float p_share) {
+	float *out = r_bucket.push();
+	std::copy_n(p_record, FAR_FLOATS_PER_INSTANCE, out);
+	out[FAR_CELL_OR_SHARE] = p_share;
+}
+
+} // namespace
 
 bool NearField::update(float p_delta) {
 	const float delta = std::isfinite(p_delta) ? std::clamp(p_delta, 0.0f, 1.0f) : 0.0f;
@@ -137,6 +163,7 @@ void NearField::_move_chunks(size_t p_first, size_t p_last, float p_delta, Bucke
 	for (size_t a = p_first; a < p_last; ++a) {
 		const Chunk &chunk = layout.chunks[_active_chunks[a]];
 		PlantWind *winds = _chunk_wind[_active_chunks[a]].data();
+		const float *records = _chunk_records[_active_chunks[a]].data();
 		const PlantShape &shape = _plants.get_shape(chunk.species);
 		const PlantVariety &variety = _plants.get_layout_params().varieties[chunk.species];
 		InstanceBuffer *buckets = r_buckets.data() + size_t(chunk.species) * BUCKET_COUNT;
@@ -168,9 +195,10 @@ void NearField::_move_chunks(size_t p_first, size_t p_last, float p_delta, Bucke
 			const glm::vec3 middle = plant.root() + glm::vec3(0.0f, mid_height * plant.scale, 0.0f);
 			const float reach = radius * plant.scale; // the culling sphere's radius
 			const bool visible = overlap == Frustum::INSIDE || crossing.intersects_sphere(middle, reach);
+			const float *record = records + size_t(k) * FAR_FLOATS_PER_INSTANCE;
 			if (lod >= LOD_SPRITE) {
 				if (visible) {
-					_plants.write_impostor(buckets[BUCKET_IMPOSTOR].push(), plant);
+					write_impostor(buckets[BUCKET_IMPOSTOR], record, 1.0f);
 					buckets[BUCKET_IMPOSTOR].include(middle, reach);
 				}
 				continue;
@@ -184,11 +212,12 @@ void NearField::_move_chunks(size_t p_first, size_t p_last, float p_delta, Bucke
 			}
 			// Mesh 3 near the sprite switch dithers into the impostor: both drawn, the impostor's
 			// share in its colour's alpha, the mesh's in the rest (complementary screen-door patterns).
-			const float share = lod == LOD_MESH_3 && fading
-					? _lod.impostor_share(shape.lod_distance_sq(_plants.plant_distance_sq(plant, _observer)))
-					: 0.0f;
+			// The plant's distance as FieldPlants::plant_distance_sq measures it: to its middle.
+			const glm::vec3 to_eye = _observer - middle;
+			const float distance_sq = fading ? shape.lod_distance_sq(glm::dot(to_eye, to_eye)) : 0.0f;
+			const float share = lod == LOD_MESH_3 && fading ? _lod.impostor_share(distance_sq) : 0.0f;
 			if (share > 0.0f) {
-				_plants.write_impostor(buckets[BUCKET_IMPOSTOR].push(), plant, share);
+				write_impostor(buckets[BUCKET_IMPOSTOR], record, share);
 				buckets[BUCKET_IMPOSTOR].include(middle, reach);
 				if (share >= 1.0f) {
 					continue;
@@ -201,9 +230,7 @@ void NearField::_move_chunks(size_t p_first, size_t p_last, float p_delta, Bucke
 				// Drawn whole (by the addon's plant shader), mesh 1 and 2 near their switches dither into
 				// the next level the same way: the coarser mesh keeps the other pixels, which a negative
 				// alpha asks for (plant_surface.gdshaderinc).
-				const float coarser = lod < LOD_MESH_3 && fading
-						? _lod.fade_share(lod, shape.lod_distance_sq(_plants.plant_distance_sq(plant, _observer)))
-						: 0.0f;
+				const float coarser = lod < LOD_MESH_3 && fading ? _lod.fade_share(lod, distance_sq) : 0.0f;
 				if (coarser > 0.0f) {
 					InstanceBuffer &next = buckets[mesh_bucket(lod + 1u, 0)];
 					write_whole_instance(next.push(), whole, glm::vec4(glm::vec3(color), coarser < 1.0f ? -coarser : 1.0f));
@@ -268,6 +295,10 @@ size_t NearField::get_memory_bytes() const {
 	size_t bytes = _plant_lod.capacity() + _chunk_wind.capacity() * sizeof(_chunk_wind[0]);
 	for (const std::vector<PlantWind> &winds : _chunk_wind) {
 		bytes += winds.capacity() * sizeof(PlantWind);
+	}
+	bytes += _chunk_records.capacity() * sizeof(_chunk_records[0]);
+	for (const std::vector<float> &records : _chunk_records) {
+		bytes += records.capacity() * sizeof(float);
 	}
 	bytes += _chunk_active.capacity() + _visit_mark.capacity() * sizeof(uint32_t);
 	bytes += (_active_chunks.capacity() + _previous_active.capacity()) * sizeof(uint32_t);

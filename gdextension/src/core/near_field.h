@@ -70,6 +70,8 @@ public:
 	bool update(float p_delta);
 	// Makes the next update re-select LODs regardless of the interval.
 	void request_lod_update() { _lod_due = true; }
+	// A plant type's shape changed (its impostors' size): the active chunks' impostor records anew.
+	void reshape();
 	// An observer that moved farther than this since the last LOD pass gets one at the next update,
 	// whatever the interval (a teleport; at 0.25 s intervals normal walking and flying stay below).
 	static constexpr float JUMP_DISTANCE = 4.0f;
@@ -121,6 +123,8 @@ private:
 	// Moves the plants of active chunks [p_first, p_last) and writes the visible ones into r_buckets.
 	void _move_chunks(size_t p_first, size_t p_last, float p_delta, BucketSet &r_buckets);
 	glm::vec2 _plant_bend(const PlantWind &p_wind, const Plant &p_plant, bool p_moving) const;
+	// Fills an active chunk's impostor records.
+	void _write_records(uint32_t p_chunk);
 	// The wind state of a plant of an active chunk (nullptr for any other plant).
 	const PlantWind *_wind_of(uint32_t p_plant) const;
 	PlantWind *_wind_of(uint32_t p_plant) { return const_cast<PlantWind *>(static_cast<const NearField *>(this)->_wind_of(p_plant)); }
@@ -137,6 +141,10 @@ private:
 	// The wind state of the plants of active chunks (only they are drawn as meshes), per chunk in
 	// chunk_plants order; empty for a chunk that is not active, so it costs only what is near.
 	std::vector<std::vector<PlantWind>> _chunk_wind;
+	// Their plants' impostor records as the static chunks have them (FieldPlants::write_chunk_instances),
+	// alike per chunk: a near impostor is a copy with its share in place of the cell, not a yaw's sine
+	// and cosine, a tone's hash and their steps each frame.
+	std::vector<std::vector<float>> _chunk_records;
 	std::vector<uint8_t> _chunk_active;
 	std::vector<uint32_t> _active_chunks;
 	std::vector<uint32_t> _previous_active;

@@ -107,6 +107,7 @@ void NearField::_select_chunk_lods(uint32_t p_chunk, bool p_forced, float p_ente
 		if (was_active) {
 			_pushes.drop_chunk(p_chunk, _plants.get_layout(), _wind_lookup);
 			std::vector<PlantWind>().swap(winds); // its memory back: only active chunks hold wind state
+			std::vector<float>().swap(_chunk_records[p_chunk]);
 		}
 		return;
 	}
@@ -114,6 +115,7 @@ void NearField::_select_chunk_lods(uint32_t p_chunk, bool p_forced, float p_ente
 	_active_plants += chunk.count;
 	if (!was_active) {
 		winds.assign(chunk.count, PlantWind{});
+		_write_records(p_chunk);
 	}
 	for (uint32_t k = 0; k < chunk.count; ++k) {
 		const uint32_t index = layout.chunk_plants[chunk.first + k];
