@@ -71,10 +71,12 @@ static var _default: FieldPlant
 		mesh_level_3 = _three(value)
 		emit_changed()  # always: the same array or texture may hold new contents
 ## Draw each near plant as one instance, its parts merged into one mesh per level and placed by the
-## shader, instead of one instance per part: a third of the draw calls and less per-frame work. Only
-## parts drawn with the addon's plant material ([code]shaders/plant_parts.gdshader[/code], as the
-## built-in plants' are, or a plain StandardMaterial3D it takes over: [member use_plant_material])
-## can be merged; any other plant is drawn part by part whatever this says ([method drawn_whole]).
+## shader, instead of one instance per part: a third of the draw calls and less per-frame work, and
+## a plant of one part bends with its height instead of leaning whole. Only parts drawn with the
+## addon's plant material ([code]shaders/plant_parts.gdshader[/code], as the built-in plants' are, or
+## a plain StandardMaterial3D it takes over: [member use_plant_material]) or with a ShaderMaterial of
+## your own made to fade by it (drawn by a copy that bends too) can be merged; any other plant is
+## drawn part by part whatever this says ([method drawn_whole]).
 @export var draw_whole: bool = true:
 	set(value):
 		var accepted: bool = value
@@ -85,7 +87,9 @@ static var _default: FieldPlant
 ## settings ([code]plant_material.gd[/code] says which settings carry over), so that the near levels
 ## cross-fade into each other and the impostors and the plant can be drawn whole, and the parts'
 ## spatial ShaderMaterials of your own with a copy of their shader that fades too (the plant material's
-## one line added at the start of its [code]fragment()[/code]). Off: every part keeps its own material.
+## one line added at the start of its [code]fragment()[/code]) and, drawn whole, bends (one call added
+## at the start of its [code]vertex()[/code]: [method PlantMaterial.bending]). Off: every part keeps
+## its own material.
 @export var use_plant_material: bool = true:
 	set(value):
 		var accepted: bool = value
@@ -431,7 +435,7 @@ func drawn_whole() -> bool:
 	if not draw_whole:
 		return false
 	for level: int in PartMeshes.LEVELS:
-		if not WholePlantMesh.can_merge(_drawn_parts(level)):
+		if not WholePlantMesh.can_merge(_drawn_parts(level), use_plant_material):
 			return false
 	return true
 
@@ -443,10 +447,10 @@ func drawn_whole() -> bool:
 func whole_mesh(level: int) -> Mesh:
 	var parts: Array[Mesh] = _drawn_parts(level)
 	var lengths: Vector3 = stacked_lengths()
-	var source: Array = [parts, lengths, flutter]
+	var source: Array = [parts, lengths, flutter, use_plant_material]
 	var made: Array = _whole_meshes.get(level, [])
 	if made.is_empty() or made[0] != source:
-		made = [source, WholePlantMesh.merge(parts, lengths, flutter)]
+		made = [source, WholePlantMesh.merge(parts, lengths, flutter, use_plant_material)]
 		_whole_meshes[level] = made
 	return made[1]
 

@@ -12,8 +12,9 @@ extends RefCounted
 ## anything read from UV2, transparency other than alpha scissor, another shading mode, a next
 ## pass...) is kept as it is: that part is drawn by its own material, without fades, and its plant
 ## part by part. A spatial ShaderMaterial of your own is kept too, drawn by a copy whose shader fades
-## ([method fading]). (The far impostors are baked from the albedo, the light given off and the
-## back-light of the parts drawn through the plant material.)
+## ([method fading]) and, when its plant is drawn whole, bends ([method bending]). (The far impostors
+## are baked from the albedo, the light given off and the back-light of the parts drawn through the
+## plant material.)
 
 const PARTS_SHADER: Shader = preload("shaders/plant_parts.gdshader")
 ## The StandardMaterial3D properties carried over (or, for cull_mode, allowed either way).
@@ -72,9 +73,19 @@ const SHADER_TYPE_PATTERN: String = "(?m)^\\s*shader_type\\s+(\\w+)\\s*;"
 const RENDER_MODE_PATTERN: String = "(?m)^\\s*render_mode\\s[^;]*;"
 const INCLUDE_PATTERN: String = '(?m)^\\s*#include\\s+"([^"]*)"'
 const FRAGMENT_PATTERN: String = "void\\s+fragment\\s*\\(\\s*\\)\\s*\\{"
+## The line that lets a shader of your own bend as a plant drawn whole ([method bending]), the call
+## that places each vertex first in its [code]vertex()[/code], and what keeps a shader from it: UV2
+## (which the merged mesh's vertices hold their part in), world-space vertices, a call of its own.
+const BEND_INCLUDE_PATH: String = "res://addons/sunflower_field/shaders/plant_bend.gdshaderinc"
+const BEND_INCLUDE: String = '#include "' + BEND_INCLUDE_PATH + '"'
+const BEND_ARGUMENTS: String = "VERTEX, NORMAL, TANGENT, BINORMAL, INSTANCE_CUSTOM, UV2.x, MODEL_MATRIX[3].xz, TIME"
+const BEND_CALL: String = "plant_place(" + BEND_ARGUMENTS + ");"
+const VERTEX_PATTERN: String = "void\\s+vertex\\s*\\(\\s*\\)\\s*\\{"
+const NOT_BENDING_PATTERN: String = "\\b(UV2|world_vertex_coords|plant_place)\\b"
 
 static var _plain: StandardMaterial3D
 static var _faded_shaders: Dictionary = {}  # your shader → [its code, the fading copy or null]
+static var _bent_shaders: Dictionary = {}  # a fading shader → [its code, the bending copy or null]
 static var _patterns: Dictionary = {}  # pattern → RegEx
 
 
@@ -164,21 +175,99 @@ static func fading(material: Material) -> ShaderMaterial:
 	var own: ShaderMaterial = material as ShaderMaterial
 	if own == null or own.shader == null or own.shader == PARTS_SHADER:
 		return null
-	var made: Array = _faded_shaders.get(own.shader, [])
-	if made.is_empty() or made[0] != own.shader.code:
-		var code: String = fading_code(own.shader.code)
-		var shader: Shader = null
-		if not code.is_empty():
-			shader = Shader.new()
-			shader.code = code
-			shader.resource_name = own.shader.resource_name
-		made = [own.shader.code, shader]
-		_faded_shaders[own.shader] = made
-	if made[1] == null:
+	return _copy(own, _faded_shaders, false)
+
+
+## [param code], a shader's, with the plant material's fade added (see [method fading]); empty when it
+## is not a spatial shader, already calls [code]plant_fade_discards[/code], or includes a file by a
+## relative path (a copy of the code has no folder to find it from).
+static func fading_code(code: String) -> String:
+	if code.contains("plant_fade_discards") or not _copyable(code):
+		return ""
+	var out: String = code
+	var fragment: RegExMatch = _regex(FRAGMENT_PATTERN).search(out)
+	if fragment:
+		out = out.insert(fragment.get_end(), "\n\t" + FADE_CALL + "\n")
+	else:
+		out += "\nvoid fragment() {\n\t" + FADE_CALL + "\n}\n"
+	return _with_include(out, FADE_INCLUDE_PATH, FADE_INCLUDE)
+
+
+## Whether a part drawn with [param material], a ShaderMaterial that fades ([method fading]'s copy
+## or one of your own with the fade line), can be bent as a plant drawn whole ([method bending]).
+static func can_bend(material: Material) -> bool:
+	var own: ShaderMaterial = material as ShaderMaterial
+	if own == null or own.shader == null or not own.shader.code.contains("plant_fade_discards"):
+		return false
+	return _bent_shader(own.shader) != null
+
+
+## A copy of [param material] ([method can_bend]) whose shader bends the plant drawn whole as the
+## field's own plant shader does: [constant BEND_INCLUDE] after its [code]shader_type[/code] and
+## [code]render_mode[/code] lines and [constant BEND_CALL] first in its [code]vertex()[/code] (see
+## [method bending_code]); null when it cannot. Made once per shader and code. The caller sets the
+## include's [code]plant_part_lengths[/code] and [code]plant_flutter[/code].
+static func bending(material: Material) -> ShaderMaterial:
+	if not can_bend(material):
+		return null
+	return _copy(material as ShaderMaterial, _bent_shaders, true)
+
+
+## [param code], a spatial shader's, with each vertex bent and stacked as a plant drawn whole (see
+## [method bending]); empty when it is not a spatial shader, reads UV2, has world-space vertices,
+## places the plant already, or includes a file by a relative path. Wind of your own in
+## [code]vertex()[/code] comes on top of the field's unless it stands inside
+## [code]#ifndef PLANT_BENT_BY_FIELD[/code] … [code]#endif[/code] (the include defines it).
+static func bending_code(code: String) -> String:
+	if _regex(NOT_BENDING_PATTERN).search(code) != null or not _copyable(code):
+		return ""
+	var out: String = code
+	var vertex: RegExMatch = _regex(VERTEX_PATTERN).search(out)
+	if vertex:
+		out = out.insert(vertex.get_end(), "\n\t" + BEND_CALL + "\n")
+	else:
+		out += "\nvoid vertex() {\n\t" + BEND_CALL + "\n}\n"
+	return _with_include(out, BEND_INCLUDE_PATH, BEND_INCLUDE)
+
+
+## Whether [param code] is a spatial shader whose includes a copy can still find (by res:// paths).
+static func _copyable(code: String) -> bool:
+	var head: RegExMatch = _regex(SHADER_TYPE_PATTERN).search(code)
+	if head == null or head.get_string(1) != "spatial":
+		return false
+	for include: RegExMatch in _regex(INCLUDE_PATTERN).search_all(code):
+		if not include.get_string(1).begins_with("res://"):
+			return false
+	return true
+
+
+## [param code] with [param line], the include of [param path], after its [code]shader_type[/code]
+## line and the [code]render_mode[/code] line right after it (unless it includes the file already).
+static func _with_include(code: String, path: String, line: String) -> String:
+	if code.contains(path):
+		return code
+	var head: RegExMatch = _regex(SHADER_TYPE_PATTERN).search(code)
+	var after: int = head.get_end()
+	var modes: RegExMatch = _regex(RENDER_MODE_PATTERN).search(code, after)
+	if modes and code.substr(after, modes.get_start() - after).strip_edges().is_empty():
+		after = modes.get_end()
+	return code.insert(after, "\n" + line + "\n")
+
+
+## The shader made from [param shader] by [method bending_code], or null; made once per code.
+static func _bent_shader(shader: Shader) -> Shader:
+	return _made_shader(shader, _bent_shaders, true)
+
+
+## The copy of [param own] drawn with its shader made fading ([param bend] false) or bending, kept in
+## [param made_shaders] per shader; null when that shader cannot be made.
+static func _copy(own: ShaderMaterial, made_shaders: Dictionary, bend: bool) -> ShaderMaterial:
+	var shader: Shader = _made_shader(own.shader, made_shaders, bend)
+	if shader == null:
 		return null
 	var copy: ShaderMaterial = ShaderMaterial.new()
 	copy.resource_name = own.resource_name
-	copy.shader = made[1]
+	copy.shader = shader
 	copy.render_priority = own.render_priority
 	copy.next_pass = own.next_pass
 	for uniform: Dictionary in own.shader.get_shader_uniform_list():
@@ -186,31 +275,18 @@ static func fading(material: Material) -> ShaderMaterial:
 	return copy
 
 
-## [param code], a shader's, with the plant material's fade added (see [method fading]); empty when it
-## is not a spatial shader, already calls [code]plant_fade_discards[/code], or includes a file by a
-## relative path (a copy of the code has no folder to find it from).
-static func fading_code(code: String) -> String:
-	if code.contains("plant_fade_discards"):
-		return ""
-	var head: RegExMatch = _regex(SHADER_TYPE_PATTERN).search(code)
-	if head == null or head.get_string(1) != "spatial":
-		return ""
-	for include: RegExMatch in _regex(INCLUDE_PATTERN).search_all(code):
-		if not include.get_string(1).begins_with("res://"):
-			return ""
-	var out: String = code
-	var fragment: RegExMatch = _regex(FRAGMENT_PATTERN).search(out)
-	if fragment:
-		out = out.insert(fragment.get_end(), "\n\t" + FADE_CALL + "\n")
-	else:
-		out += "\nvoid fragment() {\n\t" + FADE_CALL + "\n}\n"
-	if not out.contains(FADE_INCLUDE_PATH):
-		var after: int = head.get_end()
-		var modes: RegExMatch = _regex(RENDER_MODE_PATTERN).search(out, after)
-		if modes and out.substr(after, modes.get_start() - after).strip_edges().is_empty():
-			after = modes.get_end()
-		out = out.insert(after, "\n" + FADE_INCLUDE + "\n")
-	return out
+static func _made_shader(shader: Shader, made_shaders: Dictionary, bend: bool) -> Shader:
+	var made: Array = made_shaders.get(shader, [])
+	if made.is_empty() or made[0] != shader.code:
+		var code: String = bending_code(shader.code) if bend else fading_code(shader.code)
+		var copy: Shader = null
+		if not code.is_empty():
+			copy = Shader.new()
+			copy.code = code
+			copy.resource_name = shader.resource_name
+		made = [shader.code, copy]
+		made_shaders[shader] = made
+	return made[1]
 
 
 static func _regex(pattern: String) -> RegEx:

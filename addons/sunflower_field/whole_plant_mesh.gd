@@ -4,27 +4,32 @@ extends RefCounted
 ## ([code]shaders/plant_whole.gdshader[/code] bends and stacks the parts; each vertex holds its
 ## part's index in UV2.x). Only parts drawn with the addon's plant material merge: surfaces of
 ## triangles, every one with a [code]shaders/plant_parts.gdshader[/code] material (a plain
-## StandardMaterial3D becomes one: [code]plant_material.gd[/code]). Surfaces of equal settings become
-## one surface of the merged mesh, so a plant of one material is one draw call per level. A mesh with
-## another material could not place its parts, so such a plant is drawn part by part.
+## StandardMaterial3D becomes one: [code]plant_material.gd[/code]) or, when asked for, a
+## ShaderMaterial of your own that fades, which is drawn by a copy whose shader bends the same way
+## ([method PlantMaterial.bending]). Surfaces of equal settings become one surface of the merged mesh,
+## so a plant of one material is one draw call per level. A mesh with another material could not
+## place its parts, so such a plant is drawn part by part.
 
 const PARTS_SHADER: Shader = preload("shaders/plant_parts.gdshader")
 const WHOLE_SHADER: Shader = preload("shaders/plant_whole.gdshader")
+const PlantMaterial: GDScript = preload("plant_material.gd")
 ## The vertex arrays a merged surface keeps (the surfaces merged into it must all have the same).
 const KEPT: Array[int] = [Mesh.ARRAY_VERTEX, Mesh.ARRAY_NORMAL, Mesh.ARRAY_TANGENT, Mesh.ARRAY_COLOR, Mesh.ARRAY_TEX_UV]
 
 
 ## Whether [param parts] (bottom, middle, head; null for an empty slot) can be merged: see the
-## script's description.
-static func can_merge(parts: Array[Mesh]) -> bool:
-	return _mergeable(parts)
+## script's description ([param own_shaders]: whether ShaderMaterials of your own that fade may be).
+static func can_merge(parts: Array[Mesh], own_shaders: bool = false) -> bool:
+	return _mergeable(parts, own_shaders)
 
 
 ## The merged mesh of [param parts] (bottom, middle, head) for a plant whose parts' roots lie
 ## [param part_lengths] model units apart and whose leaves [param flutter] ([member FieldPlant.flutter]),
-## or null when they cannot be merged ([method can_merge]).
-static func merge(parts: Array[Mesh], part_lengths: Vector3, flutter: float = 0.0) -> ArrayMesh:
-	if not _mergeable(parts):
+## or null when they cannot be merged ([method can_merge] with [param own_shaders]).
+static func merge(
+	parts: Array[Mesh], part_lengths: Vector3, flutter: float = 0.0, own_shaders: bool = false
+) -> ArrayMesh:
+	if not _mergeable(parts, own_shaders):
 		return null
 	# One group per distinct setting: the source material and the arrays merged so far.
 	var groups: Array[Dictionary] = []
@@ -46,12 +51,16 @@ static func merge(parts: Array[Mesh], part_lengths: Vector3, flutter: float = 0.
 	var mesh: ArrayMesh = ArrayMesh.new()
 	for group: Dictionary in groups:
 		mesh.add_surface_from_arrays(Mesh.PRIMITIVE_TRIANGLES, _merged_arrays(group))
-		var whole: ShaderMaterial = ShaderMaterial.new()
-		whole.shader = WHOLE_SHADER
-		for uniform: Dictionary in PARTS_SHADER.get_shader_uniform_list():
-			whole.set_shader_parameter(uniform.name, group.material.get_shader_parameter(uniform.name))
-		whole.set_shader_parameter(&"part_lengths", part_lengths)
-		whole.set_shader_parameter(&"flutter", flutter)
+		var whole: ShaderMaterial = null
+		if group.material.shader == PARTS_SHADER:
+			whole = ShaderMaterial.new()
+			whole.shader = WHOLE_SHADER
+			for uniform: Dictionary in PARTS_SHADER.get_shader_uniform_list():
+				whole.set_shader_parameter(uniform.name, group.material.get_shader_parameter(uniform.name))
+		else:
+			whole = PlantMaterial.bending(group.material)
+		whole.set_shader_parameter(&"plant_part_lengths", part_lengths)
+		whole.set_shader_parameter(&"plant_flutter", flutter)
 		mesh.surface_set_material(mesh.get_surface_count() - 1, whole)
 	return mesh
 
@@ -110,9 +119,10 @@ static func _merged_arrays(group: Dictionary) -> Array:
 	return out
 
 
-## Whether [param parts] has a surface and every surface has a plant material, is of triangles and
-## has no blend shapes (empty slots hold none).
-static func _mergeable(parts: Array[Mesh]) -> bool:
+## Whether [param parts] has a surface and every surface has a plant material (or, with
+## [param own_shaders], one that [method PlantMaterial.can_bend]), is of triangles and has no blend
+## shapes (empty slots hold none).
+static func _mergeable(parts: Array[Mesh], own_shaders: bool) -> bool:
 	if parts.size() != 3:
 		return false
 	if parts.all(func(mesh: Mesh) -> bool: return mesh == null or mesh.get_surface_count() == 0):
@@ -122,7 +132,9 @@ static func _mergeable(parts: Array[Mesh]) -> bool:
 			continue
 		for surface: int in mesh.get_surface_count():
 			var material: ShaderMaterial = mesh.surface_get_material(surface) as ShaderMaterial
-			if material == null or material.shader != PARTS_SHADER:
+			if material == null:
+				return false
+			if material.shader != PARTS_SHADER and not (own_shaders and PlantMaterial.can_bend(material)):
 				return false
 			if (
 				mesh is ArrayMesh
@@ -135,7 +147,9 @@ static func _mergeable(parts: Array[Mesh]) -> bool:
 
 
 static func _same_settings(a: ShaderMaterial, b: ShaderMaterial) -> bool:
-	for uniform: Dictionary in PARTS_SHADER.get_shader_uniform_list():
+	if a.shader != b.shader:
+		return false
+	for uniform: Dictionary in a.shader.get_shader_uniform_list():
 		if a.get_shader_parameter(uniform.name) != b.get_shader_parameter(uniform.name):
 			return false
 	return true

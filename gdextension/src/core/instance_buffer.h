@@ -39,7 +39,7 @@ inline void write_instance(float *r_out, const glm::mat3 &p_basis, const glm::ve
 }
 
 // A near plant drawn whole: one instance whose mesh holds all three parts (a part's index in each
-// vertex's UV2.x), placed by the shader (shaders/plant_whole.gdshader: keep the two in step). The
+// vertex's UV2.x), placed by the shader (shaders/plant_bend.gdshaderinc: keep the two in step). The
 // transform is the plant's own frame (standing on its ground, turned by its yaw, at its size) and
 // the custom data what bends the parts in that frame:
 //   16, 17: the bottom part's tilt, a vector (x, z) whose length is the angle in radians, about

@@ -67,7 +67,7 @@ inline constexpr ParameterSpec PLANT_PART_LENGTH{ "FieldPlant.part_lengths", 1.0
 inline constexpr ParameterSpec PLANT_HEIGHT_UNITS{ "FieldPlant.height_units", 3.2, 1e-4, NO_MAX, ParameterSpec::KEEP, 0.0 };
 inline constexpr ParameterSpec PLANT_CULL_RADIUS_UNITS{ "FieldPlant.cull_radius_units", 1.9, 1e-4, NO_MAX, ParameterSpec::KEEP, 0.0 };
 inline constexpr ParameterSpec PLANT_STIFFNESS{ "FieldPlant.stiffness", 1.0, 0.05, 20.0, ParameterSpec::CLAMP, 1.0 };
-// A plant of one part's leaves in the wind (shaders/plant_whole.gdshader): its upper part moves about
+// A plant of one part's leaves in the wind (shaders/plant_bend.gdshaderinc): its upper part moves about
 // its bent place by up to this share of the bend's own sway at the top (0: still, the sunflower's).
 inline constexpr ParameterSpec PLANT_FLUTTER{ "FieldPlant.flutter", 0.0, 0.0, 1.0, ParameterSpec::CLAMP, 0.0 };
 // A plant type's far shadows: in the shadow pass its impostor casts from the depth the plant has at

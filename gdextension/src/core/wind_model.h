@@ -75,7 +75,7 @@ struct PartTransforms {
 };
 
 // The three part transforms a whole-plant record stands for, as the whole-plant shader places them
-// (shaders/plant_whole.gdshader mirrors this: keep the two in step). p_part_lengths: model units
+// (shaders/plant_bend.gdshaderinc mirrors this: keep the two in step). p_part_lengths: model units
 // from each part's root to the next one's (PlantShape::part_lengths).
 void assemble_parts(const WholePlant &p_plant, const glm::vec3 &p_part_lengths, PartTransforms &r_parts);
 

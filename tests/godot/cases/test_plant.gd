@@ -397,9 +397,71 @@ func test_a_shader_of_your_own_is_made_to_fade() -> void:
 		drawn is ShaderMaterial and (drawn as ShaderMaterial).shader == copy.shader, "the field draws the fading copy"
 	)
 	check_eq(plant.mesh_drawn(0, 0).surface_get_material(0), first, "the plant's own mesh keeps your material")
-	check(not plant.drawn_whole(), "and the plant is drawn part by part")
+	check(plant.drawn_whole(), "and the plant is drawn whole (by a copy that bends too)")
 	plant.use_plant_material = false
 	check_eq(plant.mesh_for_field(0, 0).surface_get_material(0), first, "use_plant_material off: yours as it is")
+	check(not plant.drawn_whole(), "and the plant part by part")
+
+
+## A plant drawn whole with a ShaderMaterial of your own is drawn by a copy whose shader also bends:
+## the bend's include after the shader_type and render_mode lines, its call first in vertex() (or a
+## vertex() of that call when it has none). A shader that reads UV2 (where the merged mesh keeps each
+## vertex's part), has world-space vertices or bends already, and one that is not spatial, cannot; a
+## part whose own shader cannot bend keeps its plant drawn part by part. The merged mesh's material is
+## the copy with the plant's part lengths and flutter; your material and the fading copy stay.
+func test_a_shader_of_your_own_is_made_to_bend_when_drawn_whole() -> void:
+	var code: String = "shader_type spatial;\nrender_mode unshaded;\nuniform vec4 tint;\n"
+	code += "void vertex() {\n\tVERTEX.y += 0.0;\n}\nvoid fragment() {\n\tALBEDO = tint.rgb;\n}\n"
+	var bent: String = PlantMaterialScript.bending_code(code)
+	var include_at: int = bent.find(PlantMaterialScript.BEND_INCLUDE)
+	var call_at: int = bent.find(PlantMaterialScript.BEND_CALL)
+	check(include_at > bent.find("render_mode unshaded;"), "the include follows the render_mode line:\n" + bent)
+	check(include_at < bent.find("uniform vec4 tint;"), "and comes before your declarations")
+	check(call_at > bent.find("void vertex() {"), "the call is in vertex()")
+	check(call_at < bent.find("VERTEX.y += 0.0;"), "before anything else there")
+	var bare: String = PlantMaterialScript.bending_code("shader_type spatial;\nvoid fragment() {\n}\n")
+	check(bare.contains("void vertex() {\n\t" + PlantMaterialScript.BEND_CALL), "a vertex() of the call is added")
+	check_eq(PlantMaterialScript.bending_code(bent), "", "a shader that bends already is left as it is")
+	check_eq(PlantMaterialScript.bending_code(code.replace("ALBEDO = tint.rgb", "ALBEDO = vec3(UV2, 0.0)")), "", "UV2")
+	check_eq(
+		PlantMaterialScript.bending_code(code.replace("unshaded", "unshaded, world_vertex_coords")), "", "world space"
+	)
+	check_eq(PlantMaterialScript.bending_code("shader_type canvas_item;\nvoid vertex() {\n}\n"), "", "not spatial")
+
+	var shader: Shader = Shader.new()
+	shader.code = code
+	var own: ShaderMaterial = ShaderMaterial.new()
+	own.shader = shader
+	var plant: FieldPlant = FieldPlant.new()
+	var box: BoxMesh = BoxMesh.new()
+	box.material = own
+	var mesh: ArrayMesh = ArrayMesh.new()
+	mesh.add_surface_from_arrays(Mesh.PRIMITIVE_TRIANGLES, box.get_mesh_arrays())
+	mesh.surface_set_material(0, own)
+	plant.mesh_level_1 = [mesh, null, null]
+	plant.mesh_level_2 = [mesh, null, null]
+	plant.mesh_level_3 = [mesh, null, null]
+	plant.part_lengths = Vector3(2.0, 0.0, 0.0)
+	plant.flutter = 0.25
+	check(plant.drawn_whole(), "a plant of one part with your shader is drawn whole")
+	var drawn: ShaderMaterial = plant.whole_mesh(0).surface_get_material(0) as ShaderMaterial
+	if check(drawn != null, "its merged mesh has a ShaderMaterial"):
+		check(drawn.shader.code.contains(PlantMaterialScript.BEND_CALL), "whose shader bends")
+		check(drawn.shader.code.contains(PlantMaterialScript.FADE_CALL), "and fades")
+		check(drawn.shader.code.contains("ALBEDO = tint.rgb;"), "and is yours")
+		check_eq(drawn.get_shader_parameter(&"plant_part_lengths"), Vector3(2.0, 0.0, 0.0), "the part lengths")
+		check_eq(drawn.get_shader_parameter(&"plant_flutter"), 0.25, "the flutter")
+		var again: ShaderMaterial = PlantMaterialScript.bending(plant.mesh_for_field(1, 0).surface_get_material(0))
+		check(again.shader == drawn.shader, "one bending shader for every material of yours")
+	check(own.shader == shader and shader.code == code, "your material and shader stay as they were")
+	var uv2_shader: Shader = Shader.new()
+	uv2_shader.code = code.replace("ALBEDO = tint.rgb", "ALBEDO = vec3(UV2, 0.0)")
+	var uv2_mesh: ArrayMesh = mesh.duplicate()
+	var uv2_material: ShaderMaterial = ShaderMaterial.new()
+	uv2_material.shader = uv2_shader
+	uv2_mesh.surface_set_material(0, uv2_material)
+	plant.mesh_level_1 = [uv2_mesh, null, null]
+	check(not plant.drawn_whole(), "a shader that reads UV2 keeps its plant drawn part by part")
 
 
 func test_plain_standard_materials_are_taken_over_and_others_kept() -> void:

@@ -353,27 +353,37 @@ func _box_on_screen(camera: Camera3D, root: Vector3, plant: FieldPlant) -> Rect2
 	return Rect2i(box.position.floor(), box.size.ceil()).intersection(screen)
 
 
-## A plant of one part bends in the wind instead of leaning like a post: a 10 m red pole from a scene,
-## seen from the side (an orthographic view across a strong wind), moves at its top and stands at its
-## base. A rigid lean about the root would move a point at a tenth of its height a tenth as far as
-## the top; the bend moves it under a twentieth as far.
+## A plant of one part bends with its height: a 10 m pole in wind 6, seen from the side, has its top
+## moved by the wind while a point 1 m up stays under a twentieth of that (a rigid lean about the root
+## would move it a tenth as far as the top); the same when the pole is
+## drawn with a ShaderMaterial of its own (the field draws a copy that bends: PlantMaterial.bending),
+## whose own "wind" (a shift it makes outside a field) the field's bend takes the place of.
 func test_a_plant_of_one_part_bends_in_the_wind_and_its_base_stands() -> void:
-	var pole: Dictionary = _pole_field()
-	var field: SunflowerField = pole.field
-	var centres: Array[PackedFloat32Array] = []
-	for power: float in [0.0, 6.0]:
-		field.wind_power = power
-		for step: int in 90:
-			field.advance(1.0 / 30.0)
-		await frames(4)
-		var image: Image = tree.root.get_viewport().get_texture().get_image()
-		image.save_png(artifact_path("scene_plant_pole_wind_%d.png" % int(power)))
-		centres.append(PackedFloat32Array([_pole_centre(pole, image, 1.0), _pole_centre(pole, image, 9.5)]))
-	var low: float = centres[1][0] - centres[0][0]
-	var top: float = centres[1][1] - centres[0][1]
-	print("     a 10 m pole in wind 6: its top moves %.2f m, a point 1 m up %.3f m" % [top, low])
-	check(top > 0.3, "the top sways with the wind (%.2f m)" % top)
-	check(absf(low) < 0.05 * absf(top), "the base stands: 1 m up moves under a twentieth of the top (%.3f m)" % low)
+	var bases: PackedFloat32Array = []
+	for material: Material in [_red(), _red_shader()]:
+		var pole: Dictionary = _pole_field(material)
+		var field: SunflowerField = pole.field
+		var kind: String = "a shader of its own" if material is ShaderMaterial else "a StandardMaterial3D"
+		var centres: Array[PackedFloat32Array] = []
+		for power: float in [0.0, 6.0]:
+			field.wind_power = power
+			for step: int in 90:
+				field.advance(1.0 / 30.0)
+			await frames(4)
+			var image: Image = tree.root.get_viewport().get_texture().get_image()
+			image.save_png(
+				artifact_path("scene_plant_pole_wind_%d%s.png" % [int(power), "_own" if bases.size() else ""])
+			)
+			centres.append(PackedFloat32Array([_pole_centre(pole, image, 1.0), _pole_centre(pole, image, 9.5)]))
+		var low: float = centres[1][0] - centres[0][0]
+		var top: float = centres[1][1] - centres[0][1]
+		print("     a 10 m pole (%s) in wind 6: its top moves %.2f m, a point 1 m up %.3f m" % [kind, top, low])
+		check(top > 0.3, "%s: the top sways with the wind (%.2f m)" % [kind, top])
+		check(absf(low) < 0.05 * absf(top), "%s: the base stands (1 m up moves %.3f m)" % [kind, low])
+		bases.append(centres[0][0])
+		stage.free()
+		stage = null
+	check(absf(bases[1] - bases[0]) < 0.05, "the shader's own shift is left out (%.2f m)" % (bases[1] - bases[0]))
 
 
 ## Leaves flutter ([member FieldPlant.flutter]): the pole bent by wind 6, the field held still (no
@@ -412,16 +422,15 @@ func test_a_plant_of_one_part_flutters_at_its_top() -> void:
 
 ## A field of one 10 m red pole from a scene (a plant of one part drawn whole), wind from −x, seen
 ## from the side through an orthographic camera 12 m high: field, plant, camera and the pole's root.
-func _pole_field() -> Dictionary:
+## [param material]: the pole's ([method _red] when null).
+func _pole_field(material: Material = null) -> Dictionary:
 	stage = Stage.new(tree.root).root
 	var pole: Node3D = Node3D.new()
 	var body: MeshInstance3D = MeshInstance3D.new()
 	var box: BoxMesh = BoxMesh.new()
 	box.size = Vector3(0.3, 10.0, 0.3)
 	box.subdivide_height = 40  # vertices all the way up, as a trunk has
-	var red: StandardMaterial3D = StandardMaterial3D.new()
-	red.albedo_color = Color(1.0, 0.02, 0.02)
-	box.material = red
+	box.material = material if material else _red()
 	body.mesh = box
 	body.position.y = 5.0
 	pole.add_child(body)
@@ -449,6 +458,24 @@ func _pole_field() -> Dictionary:
 	camera.look_at_from_position(root + Vector3(0.0, 5.5, 30.0), root + Vector3(0.0, 5.5, 0.0))
 	camera.make_current()
 	return {"field": field, "plant": plant, "camera": camera, "root": root}
+
+
+static func _red() -> StandardMaterial3D:
+	var red: StandardMaterial3D = StandardMaterial3D.new()
+	red.albedo_color = Color(1.0, 0.02, 0.02)
+	return red
+
+
+## A red ShaderMaterial of its own that, outside a field, shifts its mesh 3 m along +x (a wind of its
+## own, which it leaves to the field's bend there).
+static func _red_shader() -> ShaderMaterial:
+	var shader: Shader = Shader.new()
+	shader.code = "shader_type spatial;\nuniform vec4 tint : source_color = vec4(1.0, 0.02, 0.02, 1.0);\n"
+	shader.code += "void vertex() {\n#ifndef PLANT_BENT_BY_FIELD\n\tVERTEX.x += 3.0;\n#endif\n}\n"
+	shader.code += "void fragment() {\n\tALBEDO = tint.rgb;\n}\n"
+	var red: ShaderMaterial = ShaderMaterial.new()
+	red.shader = shader
+	return red
 
 
 ## Where the pole of [method _pole_field] is across [param image] at [param height] metres above its
