@@ -72,7 +72,8 @@ const FADE_CALL: String = "if (plant_fade_discards(FRAGCOORD.xy, COLOR.a)) { dis
 const SHADER_TYPE_PATTERN: String = "(?m)^\\s*shader_type\\s+(\\w+)\\s*;"
 const RENDER_MODE_PATTERN: String = "(?m)^\\s*render_mode\\s[^;]*;"
 const INCLUDE_PATTERN: String = '(?m)^\\s*#include\\s+"([^"]*)"'
-const FRAGMENT_PATTERN: String = "void\\s+fragment\\s*\\(\\s*\\)\\s*\\{"
+## A shader function's head, by the function's name (%s).
+const FUNCTION_PATTERN: String = "void\\s+%s\\s*\\(\\s*\\)\\s*\\{"
 ## The line that lets a shader of your own bend as a plant drawn whole ([method bending]), the call
 ## that places each vertex first in its [code]vertex()[/code], and what keeps a shader from it: UV2
 ## (which the merged mesh's vertices hold their part in), world-space vertices, a call of its own.
@@ -80,7 +81,6 @@ const BEND_INCLUDE_PATH: String = "res://addons/sunflower_field/shaders/plant_be
 const BEND_INCLUDE: String = '#include "' + BEND_INCLUDE_PATH + '"'
 const BEND_ARGUMENTS: String = "VERTEX, NORMAL, TANGENT, BINORMAL, INSTANCE_CUSTOM, UV2.x, MODEL_MATRIX[3].xz, TIME"
 const BEND_CALL: String = "plant_place(" + BEND_ARGUMENTS + ");"
-const VERTEX_PATTERN: String = "void\\s+vertex\\s*\\(\\s*\\)\\s*\\{"
 const NOT_BENDING_PATTERN: String = "\\b(UV2|world_vertex_coords|plant_place)\\b"
 
 static var _plain: StandardMaterial3D
@@ -184,13 +184,7 @@ static func fading(material: Material) -> ShaderMaterial:
 static func fading_code(code: String) -> String:
 	if code.contains("plant_fade_discards") or not _copyable(code):
 		return ""
-	var out: String = code
-	var fragment: RegExMatch = _regex(FRAGMENT_PATTERN).search(out)
-	if fragment:
-		out = out.insert(fragment.get_end(), "\n\t" + FADE_CALL + "\n")
-	else:
-		out += "\nvoid fragment() {\n\t" + FADE_CALL + "\n}\n"
-	return _with_include(out, FADE_INCLUDE_PATH, FADE_INCLUDE)
+	return _with_include(_first_in(code, "fragment", FADE_CALL), FADE_INCLUDE_PATH, FADE_INCLUDE)
 
 
 ## Whether a part drawn with [param material], a ShaderMaterial that fades ([method fading]'s copy
@@ -221,13 +215,7 @@ static func bending(material: Material) -> ShaderMaterial:
 static func bending_code(code: String) -> String:
 	if _regex(NOT_BENDING_PATTERN).search(code) != null or not _copyable(code):
 		return ""
-	var out: String = code
-	var vertex: RegExMatch = _regex(VERTEX_PATTERN).search(out)
-	if vertex:
-		out = out.insert(vertex.get_end(), "\n\t" + BEND_CALL + "\n")
-	else:
-		out += "\nvoid vertex() {\n\t" + BEND_CALL + "\n}\n"
-	return _with_include(out, BEND_INCLUDE_PATH, BEND_INCLUDE)
+	return _with_include(_first_in(code, "vertex", BEND_CALL), BEND_INCLUDE_PATH, BEND_INCLUDE)
 
 
 ## Whether [param code] is a spatial shader whose includes a copy can still find (by res:// paths).
@@ -239,6 +227,15 @@ static func _copyable(code: String) -> bool:
 		if not include.get_string(1).begins_with("res://"):
 			return false
 	return true
+
+
+## [param code] with [param line] first in its function [param function] (or a function of that line
+## added when it has none).
+static func _first_in(code: String, function: String, line: String) -> String:
+	var head: RegExMatch = _regex(FUNCTION_PATTERN % function).search(code)
+	if head:
+		return code.insert(head.get_end(), "\n\t" + line + "\n")
+	return code + "\nvoid %s() {\n\t%s\n}\n" % [function, line]
 
 
 ## [param code] with [param line], the include of [param path], after its [code]shader_type[/code]

@@ -359,12 +359,9 @@ func test_a_shader_of_your_own_is_made_to_fade() -> void:
 	var code: String = "shader_type spatial;\nrender_mode unshaded;\nuniform vec4 tint;\n"
 	code += "void fragment() {\n\tALBEDO = tint.rgb;\n}\n"
 	var faded: String = PlantMaterialScript.fading_code(code)
-	var include_at: int = faded.find(PlantMaterialScript.FADE_INCLUDE)
-	var call_at: int = faded.find(PlantMaterialScript.FADE_CALL)
-	check(include_at > faded.find("render_mode unshaded;"), "the include follows the render_mode line:\n" + faded)
-	check(include_at < faded.find("uniform vec4 tint;"), "and comes before your declarations")
-	check(call_at > faded.find("void fragment() {"), "the call is in fragment()")
-	check(call_at < faded.find("ALBEDO = tint.rgb;"), "before anything else there")
+	_check_placed(
+		faded, PlantMaterialScript.FADE_INCLUDE, PlantMaterialScript.FADE_CALL, "fragment", "ALBEDO = tint.rgb;"
+	)
 	var bare: String = PlantMaterialScript.fading_code("shader_type spatial;\nvoid vertex() {\n}\n")
 	check(bare.contains("void fragment() {\n\t" + PlantMaterialScript.FADE_CALL), "a fragment() of the call is added")
 	var included: String = PlantMaterialScript.fading_code(
@@ -413,12 +410,7 @@ func test_a_shader_of_your_own_is_made_to_bend_when_drawn_whole() -> void:
 	var code: String = "shader_type spatial;\nrender_mode unshaded;\nuniform vec4 tint;\n"
 	code += "void vertex() {\n\tVERTEX.y += 0.0;\n}\nvoid fragment() {\n\tALBEDO = tint.rgb;\n}\n"
 	var bent: String = PlantMaterialScript.bending_code(code)
-	var include_at: int = bent.find(PlantMaterialScript.BEND_INCLUDE)
-	var call_at: int = bent.find(PlantMaterialScript.BEND_CALL)
-	check(include_at > bent.find("render_mode unshaded;"), "the include follows the render_mode line:\n" + bent)
-	check(include_at < bent.find("uniform vec4 tint;"), "and comes before your declarations")
-	check(call_at > bent.find("void vertex() {"), "the call is in vertex()")
-	check(call_at < bent.find("VERTEX.y += 0.0;"), "before anything else there")
+	_check_placed(bent, PlantMaterialScript.BEND_INCLUDE, PlantMaterialScript.BEND_CALL, "vertex", "VERTEX.y += 0.0;")
 	var bare: String = PlantMaterialScript.bending_code("shader_type spatial;\nvoid fragment() {\n}\n")
 	check(bare.contains("void vertex() {\n\t" + PlantMaterialScript.BEND_CALL), "a vertex() of the call is added")
 	check_eq(PlantMaterialScript.bending_code(bent), "", "a shader that bends already is left as it is")
@@ -462,6 +454,18 @@ func test_a_shader_of_your_own_is_made_to_bend_when_drawn_whole() -> void:
 	uv2_mesh.surface_set_material(0, uv2_material)
 	plant.mesh_level_1 = [uv2_mesh, null, null]
 	check(not plant.drawn_whole(), "a shader that reads UV2 keeps its plant drawn part by part")
+
+
+## Checks that [param made] (a test shader's code, "render_mode unshaded;" then "uniform vec4 tint;")
+## has [param include] after its render_mode line and before its declarations, and [param call] in
+## its [param function]() before [param first], the statement that came first there.
+func _check_placed(made: String, include: String, call: String, function: String, first: String) -> void:
+	var include_at: int = made.find(include)
+	var call_at: int = made.find(call)
+	check(include_at > made.find("render_mode unshaded;"), "the include follows the render_mode line:\n" + made)
+	check(include_at < made.find("uniform vec4 tint;"), "and comes before your declarations")
+	check(call_at > made.find("void %s() {" % function), "the call is in %s()" % function)
+	check(call_at < made.find(first), "before anything else there")
 
 
 func test_plain_standard_materials_are_taken_over_and_others_kept() -> void:
