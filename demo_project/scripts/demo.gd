@@ -166,6 +166,7 @@ func load_map(path: String) -> void:
 		var legend: Dictionary = _field.legend.duplicate()
 		legend.merge(await DemoPlants.legend(self))
 		_field.legend = legend
+		_hud.clear_message()
 	var hilly: bool = HILLS_MAPS.has(path.get_file())
 	_hills.set_enabled(hilly)
 	_ground.visible = not hilly

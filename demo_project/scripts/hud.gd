@@ -10,13 +10,15 @@ Mouse look (click to capture)   R start position   F1 wireframe
 F2/F3 wind +/- increment   F4/F5 wind direction x/z   F6 increment 0.1 <-> 10
 F7 load a part mesh (glTF)   F8 walk among the flowers   F9 wind model (natural/thesis)
 M next map   F10/H hide this help   Esc quit"""
+## How long a message stays, in wall time (a recording's frames are slow: 6 s of them were minutes).
+const MESSAGE_MSEC: int = 6000
 
 var _stats: Label
 var _help: Label
 var _message: Label
 var _maps: OptionButton
 var _map_paths: PackedStringArray = []
-var _message_time: float = 0.0
+var _message_until: int = 0  # Time.get_ticks_msec() when the message goes
 
 
 func _ready() -> void:
@@ -55,11 +57,9 @@ func _ready() -> void:
 	add_child(progress)
 
 
-func _process(delta: float) -> void:
-	if _message_time > 0.0:
-		_message_time -= delta
-		if _message_time <= 0.0:
-			_message.text = ""
+func _process(_delta: float) -> void:
+	if not _message.text.is_empty() and Time.get_ticks_msec() >= _message_until:
+		_message.text = ""
 
 
 ## Lists the maps of the menu; [param current] is selected.
@@ -88,7 +88,12 @@ func is_help_visible() -> bool:
 func show_message(text: String) -> void:
 	print("demo: " + text)
 	_message.text = text
-	_message_time = 6.0
+	_message_until = Time.get_ticks_msec() + MESSAGE_MSEC
+
+
+## Takes the message away (what it said is done).
+func clear_message() -> void:
+	_message.text = ""
 
 
 func set_stats(text: String) -> void:
