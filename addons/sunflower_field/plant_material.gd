@@ -193,7 +193,7 @@ static func can_bend(material: Material) -> bool:
 	var own: ShaderMaterial = material as ShaderMaterial
 	if own == null or own.shader == null or not own.shader.code.contains("plant_fade_discards"):
 		return false
-	return _bent_shader(own.shader) != null
+	return _made_shader(own.shader, _bent_shaders, true) != null
 
 
 ## A copy of [param material] ([method can_bend]) whose shader bends the plant drawn whole as the
@@ -251,11 +251,6 @@ static func _with_include(code: String, path: String, line: String) -> String:
 	return code.insert(after, "\n" + line + "\n")
 
 
-## The shader made from [param shader] by [method bending_code], or null; made once per code.
-static func _bent_shader(shader: Shader) -> Shader:
-	return _made_shader(shader, _bent_shaders, true)
-
-
 ## The copy of [param own] drawn with its shader made fading ([param bend] false) or bending, kept in
 ## [param made_shaders] per shader; null when that shader cannot be made.
 static func _copy(own: ShaderMaterial, made_shaders: Dictionary, bend: bool) -> ShaderMaterial:
@@ -272,6 +267,8 @@ static func _copy(own: ShaderMaterial, made_shaders: Dictionary, bend: bool) -> 
 	return copy
 
 
+## The shader made from [param shader] by [method bending_code] ([param bend]) or [method fading_code],
+## kept in [param made_shaders] and made again only when its code changes; null when it cannot be made.
 static func _made_shader(shader: Shader, made_shaders: Dictionary, bend: bool) -> Shader:
 	var made: Array = made_shaders.get(shader, [])
 	if made.is_empty() or made[0] != shader.code:
