@@ -78,13 +78,27 @@ passed=0
 failed=0
 since=$SECONDS
 timings=()
+# cpu = the CPU time (user + system, whole seconds) of every child that has ended so far (bash's
+# times: its second line is the children's; run in this shell, not in a subshell, which has children
+# of its own): with the wall time per suite it shows how much of a suite could run beside another.
+# Call it as a command, not inside $(...).
+times_file=$(mktemp)
+trap 'rm -f "$times_file"' EXIT
+cpu=0
+children_cpu() {
+  times >"$times_file"
+  cpu=$(awk 'NR == 2 { for (i = 1; i <= 2; i++) { sub(/s$/, "", $i); split($i, t, "m"); s += t[1] * 60 + t[2] } printf "%d", s }' "$times_file")
+}
+cpu_since=0
 record() { # $1 = passed count, $2 = failed count, $3 = what; with the seconds since the last one
   passed=$((passed + $1)); failed=$((failed + $2))
   printf '== %s: %d passed, %d failed (%d s)\n' "$3" "$1" "$2" $((SECONDS - since))
   since=$SECONDS
 }
-suite_done() { # $1 = suite; the time since it started
-  timings+=("$(printf '%-10s %4d s' "$1" $((SECONDS - suite_start)))")
+suite_done() { # $1 = suite; the wall time since it started and the CPU time its programs took
+  children_cpu
+  timings+=("$(printf '%-10s %4d s wall %5d s CPU' "$1" $((SECONDS - suite_start)) $((cpu - cpu_since)))")
+  cpu_since=$cpu
 }
 
 case $build in
@@ -92,7 +106,8 @@ case $build in
   host) "$repo/tools/build.sh" || { echo "build: 0 passed, 1 failed"; echo "total: 0 passed, 1 failed"; exit 1; } ;;
 esac
 echo "== build: $SECONDS s"
-timings+=("$(printf '%-10s %4d s' build $SECONDS)")
+suite_start=0
+suite_done build
 since=$SECONDS
 godot=$("$repo/tools/find_godot.sh")
 artifacts="$repo/tests/artifacts"
@@ -426,8 +441,10 @@ if runs engine || runs opengl || runs demo; then
 fi
 
 echo "artifacts: $artifacts"
-echo "time per suite (wall; the fuzzer's is the wait for it at the end):"
+echo "time per suite (wall, and the CPU time of its programs; the fuzzer's wall time is the wait for it,"
+echo "its CPU time all of its run beside the suites before it):"
 printf '  %s\n' "${timings[@]}"
-echo "time: $SECONDS s"
+children_cpu
+echo "time: $SECONDS s wall, $cpu s CPU (this work on $(nproc) cores takes at least $((cpu / $(nproc))) s)"
 echo "total: $passed passed, $failed failed"
 ((failed == 0 && passed > 0))
