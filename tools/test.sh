@@ -441,8 +441,8 @@ if runs engine || runs opengl || runs demo; then
 fi
 
 echo "artifacts: $artifacts"
-echo "time per suite (wall, and the CPU time of its programs; the fuzzer's wall time is the wait for it,"
-echo "its CPU time all of its run beside the suites before it):"
+echo "time per suite (wall, and the CPU time of its programs; the fuzzer's wall time is the wait for it, its"
+echo "CPU time counted in the suite that ran when it ended):"
 printf '  %s\n' "${timings[@]}"
 children_cpu
 echo "time: $SECONDS s wall, $cpu s CPU (this work on $(nproc) cores takes at least $((cpu / $(nproc))) s)"
