@@ -175,7 +175,7 @@ static func fading(material: Material) -> ShaderMaterial:
 	var own: ShaderMaterial = material as ShaderMaterial
 	if own == null or own.shader == null or own.shader == PARTS_SHADER:
 		return null
-	return _copy(own, _faded_shaders, false)
+	return _copy(own, false)
 
 
 ## [param code], a shader's, with the plant material's fade added (see [method fading]); empty when it
@@ -193,7 +193,7 @@ static func can_bend(material: Material) -> bool:
 	var own: ShaderMaterial = material as ShaderMaterial
 	if own == null or own.shader == null or not own.shader.code.contains("plant_fade_discards"):
 		return false
-	return _made_shader(own.shader, _bent_shaders, true) != null
+	return _made_shader(own.shader, true) != null
 
 
 ## A copy of [param material] ([method can_bend]) whose shader bends the plant drawn whole as the
@@ -204,7 +204,7 @@ static func can_bend(material: Material) -> bool:
 static func bending(material: Material) -> ShaderMaterial:
 	if not can_bend(material):
 		return null
-	return _copy(material as ShaderMaterial, _bent_shaders, true)
+	return _copy(material as ShaderMaterial, true)
 
 
 ## [param code], a spatial shader's, with each vertex bent and stacked as a plant drawn whole (see
@@ -251,10 +251,10 @@ static func _with_include(code: String, path: String, line: String) -> String:
 	return code.insert(after, "\n" + line + "\n")
 
 
-## The copy of [param own] drawn with its shader made fading ([param bend] false) or bending, kept in
-## [param made_shaders] per shader; null when that shader cannot be made.
-static func _copy(own: ShaderMaterial, made_shaders: Dictionary, bend: bool) -> ShaderMaterial:
-	var shader: Shader = _made_shader(own.shader, made_shaders, bend)
+## The copy of [param own] drawn with its shader made fading ([param bend] false) or bending (the
+## shader from [method _made_shader]); null when that shader cannot be made.
+static func _copy(own: ShaderMaterial, bend: bool) -> ShaderMaterial:
+	var shader: Shader = _made_shader(own.shader, bend)
 	if shader == null:
 		return null
 	var copy: ShaderMaterial = ShaderMaterial.new()
@@ -268,8 +268,10 @@ static func _copy(own: ShaderMaterial, made_shaders: Dictionary, bend: bool) -> 
 
 
 ## The shader made from [param shader] by [method bending_code] ([param bend]) or [method fading_code],
-## kept in [param made_shaders] and made again only when its code changes; null when it cannot be made.
-static func _made_shader(shader: Shader, made_shaders: Dictionary, bend: bool) -> Shader:
+## kept per shader (in _bent_shaders or _faded_shaders) and made again only when its code changes; null
+## when it cannot be made.
+static func _made_shader(shader: Shader, bend: bool) -> Shader:
+	var made_shaders: Dictionary = _bent_shaders if bend else _faded_shaders
 	var made: Array = made_shaders.get(shader, [])
 	if made.is_empty() or made[0] != shader.code:
 		var code: String = bending_code(shader.code) if bend else fading_code(shader.code)
