@@ -28,6 +28,7 @@ done
 [[ -n "$screenshot" ]] && rm -f "$screenshot"
 log="$out/demo.log"
 echo "demo: no display; running the recording mode under Xvfb (Forward+ on Vulkan lavapipe); log $log"
+: >"$log" # there before the engine's shell opens it, for the watch below
 # The engine's own "status < 0" line comes from the X server's shared-memory probe under Xvfb.
 errors_in_log() { grep -E '^(SCRIPT ERROR|ERROR|USER ERROR)' "$log" | grep -v 'status < 0'; }
 setsid timeout 900 xvfb-run -a -s "-screen 0 1280x720x24" "$godot" --audio-driver Dummy --resolution 640x360 \
