@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Runs the tests. Ends with "total: N passed, N failed" and a non-zero exit on any failure.
-#   tools/test.sh                    every suite; builds every platform's library first (what CI runs)
+#   tools/test.sh                    every suite; builds every platform's library first (what CI runs);
+#                                    the engine suite in one lane, the others beside it (see "Two lanes")
 #   tools/test.sh --quick            the inner loop: this machine's build, the core's tests, lint and
 #                                    the engine tests that need no renderer (headless)
 #   tools/test.sh --suite NAME[,..]  only these suites (repeatable); see --list
@@ -46,6 +47,7 @@ wanted=()
 filter=""
 build=all
 quick=0
+lane=0
 while (($#)); do
   case "$1" in
     --quick) quick=1 ;;
@@ -54,6 +56,7 @@ while (($#)); do
     --filter) shift; filter=${1:-} ;;
     --filter=*) filter=${1#--filter=} ;;
     --no-build) build=none ;;
+    --lane) lane=1; build=none ;; # run by this script itself: the suites beside the engine's (see below)
     --list) list; exit 0 ;;
     -h | --help) usage; echo; echo "suites:"; list; exit 0 ;;
     *) echo "test.sh: unknown argument '$1'" >&2; usage >&2; exit 2 ;;
@@ -105,9 +108,11 @@ case $build in
   all) "$repo/tools/build.sh" --all || { echo "build: 0 passed, 1 failed"; echo "total: 0 passed, 1 failed"; exit 1; } ;;
   host) "$repo/tools/build.sh" || { echo "build: 0 passed, 1 failed"; echo "total: 0 passed, 1 failed"; exit 1; } ;;
 esac
-echo "== build: $SECONDS s"
-suite_start=0
-suite_done build
+if ((!lane)); then
+  echo "== build: $SECONDS s"
+  suite_start=0
+  suite_done build
+fi
 since=$SECONDS
 godot=$("$repo/tools/find_godot.sh")
 artifacts="$repo/tests/artifacts"
@@ -129,14 +134,15 @@ doctest_suite() {
 }
 
 # $1 = label, $2 = project, $3 = rendering driver ("headless": no renderer), $4 = log, rest = tests
-# (none: all); the --filter pattern, when given, in their place.
+# (none: all); the --filter pattern, when given, in their place. suite_env: more of the run's environment.
+suite_env=()
 engine_suite() {
   local label=$1 project=$2 driver=$3 log=$4; shift 4
   [[ -n "$filter" ]] && set -- "$filter"
   echo "== $label"
   local launch=("${xvfb[@]}" "$godot" --rendering-driver "$driver")
   [[ "$driver" == headless ]] && launch=("$godot" --headless)
-  timeout 2400 "${launch[@]}" --verbose --audio-driver Dummy --resolution 640x360 \
+  env "${suite_env[@]}" timeout 2400 "${launch[@]}" --verbose --audio-driver Dummy --resolution 640x360 \
     --path "$project" --script "res://$([[ -d "$project/runner" ]] && echo runner || echo tests/runner)/run_tests.gd" \
     -- "$@" >"$log" 2>&1
   local status=$? line p f
@@ -159,10 +165,23 @@ new_project() { # $1 = dir; copies the addon without following it being a link
   echo "res://addons/sunflower_field/sunflower_field.gdextension" >"$1/.godot/extension_list.cfg"
 }
 
+# --- Two lanes -----------------------------------------------------------------------------------------
+# The engine suite alone keeps 1.7 of the two cores busy: lavapipe shades vertices on the engine's
+# main thread, its rasterising threads wait for them. After the core and lint suites it runs in this
+# lane; the platforms, docs, fuzz, opengl, demo, dropin and editor suites run beside it in a second
+# run of this script, each in a project or user folder of its own, with the engine suite's
+# BESIDE_ENGINE_TESTS (which balance the two lanes' time); their output follows the engine suite's.
+BESIDE_ENGINE_TESTS=('test_fidelity.test_no_pops_*')
+beside=()
+if ((!lane)) && [[ -z "$filter" ]] && runs engine; then
+  for s in platforms docs fuzz opengl demo dropin editor; do runs "$s" && beside+=("$s"); done
+  for s in "${beside[@]}"; do # run there, not here
+    for i in "${!wanted[@]}"; do [[ "${wanted[i]}" == "$s" ]] && unset 'wanted[i]'; done
+  done
+fi
+
 # --- The fuzzer starts first and runs beside the suites before the engine's ---------------------------
 # It keeps one core busy for its build and 60 s; the core's tests under Wine and QEMU keep the other.
-# Nothing runs beside the engine suites: on two cores lavapipe's frames then take twice as long, more
-# than the suites beside them would save.
 if runs fuzz; then
   fuzz_seconds=${FUZZ_SECONDS:-60}
   (
@@ -190,6 +209,15 @@ if runs lint; then
   if "$repo/.cache/venv/bin/gdlint" "${scripts[@]}"; then record 1 0 "gdlint"; else record 0 1 "gdlint"; fi
   if "$repo/.cache/venv/bin/gdformat" --check --line-length 120 "${scripts[@]}"; then record 1 0 "gdformat"; else record 0 1 "gdformat"; fi
   suite_done lint
+fi
+
+# --- The second lane starts ----------------------------------------------------------------------------
+if ((${#beside[@]})); then
+  lane_log="$artifacts/lane.log"
+  LANE_ENGINE_TESTS="${BESIDE_ENGINE_TESTS[*]}" bash "$repo/tools/test.sh" --lane --suite "$(IFS=,; echo "${beside[*]}")" \
+    >"$lane_log" 2>&1 &
+  lane_pid=$!
+  echo "== beside the engine suite: ${beside[*]} (their output follows the engine suite's)"
 fi
 
 if runs platforms; then
@@ -253,17 +281,51 @@ fi
 
 if runs engine; then
   suite_start=$SECONDS
+  left_out=()
+  ((${#beside[@]})) && for t in "${BESIDE_ENGINE_TESTS[@]}"; do left_out+=("!$t"); done
   engine_suite "engine tests (Godot under Xvfb, Forward+ on Vulkan lavapipe)" "$repo/tests/godot" vulkan \
-    "$artifacts/godot_tests.log"
-  cp "$artifacts/render_demo_field.png" "$artifacts/render_demo_field_vulkan.png" 2>/dev/null
-  suite_done engine
+    "$artifacts/godot_tests.log" "${left_out[@]}"
+  engine_wall=$((SECONDS - suite_start))
+  [[ ${#beside[@]} -eq 0 ]] && suite_done engine
+fi
+
+if ((${#beside[@]})); then
+  wait "$lane_pid"
+  # The lane's programs ended before the engine suite's (the shell reaps them as they end): the engine
+  # suite's CPU time is what is left of both.
+  lane_cpu=$(sed -n -E 's/^time: [0-9]+ s wall, ([0-9]+) s CPU.*/\1/p' "$lane_log")
+  children_cpu
+  timings+=("$(printf '%-10s %4d s wall %5d s CPU' engine "$engine_wall" $((cpu - cpu_since - ${lane_cpu:-0})))")
+  sed -n '/^== /,/^artifacts: /{/^artifacts: /d;p}' "$lane_log"
+  line=$(grep -E '^total: [0-9]+ passed, [0-9]+ failed$' "$lane_log")
+  if [[ "$line" =~ ([0-9]+)\ passed,\ ([0-9]+)\ failed ]]; then
+    passed=$((passed + BASH_REMATCH[1])); failed=$((failed + BASH_REMATCH[2]))
+  else
+    tail -n 20 "$lane_log"; record 0 1 "the suites beside the engine's ended without their total (log: $lane_log)"
+  fi
+  mapfile -t -O "${#timings[@]}" timings < <(sed -n '/^time per suite/,/^time:/p' "$lane_log" | grep -E '^  [a-z]' |
+    sed -E 's/^  //; s/ wall / wall, beside the engine suite, /')
+  cpu_since=$cpu
+  since=$SECONDS
+fi
+
+# The engine suite's tests that run in the second lane, in a user folder of their own.
+if ((lane)) && [[ -n "${LANE_ENGINE_TESTS:-}" ]]; then
+  suite_start=$SECONDS
+  read -r -a part <<<"$LANE_ENGINE_TESTS"
+  suite_env=(XDG_DATA_HOME="$repo/.cache/lane_user_data")
+  engine_suite "engine tests beside the others: ${part[*]}" "$repo/tests/godot" vulkan "$artifacts/godot_tests_beside.log" "${part[@]}"
+  suite_env=()
+  suite_done "engine, ${part[*]}"
 fi
 
 if runs opengl; then
   suite_start=$SECONDS
+  # Its own user folder (the engine suite may run the same project beside it) and pictures folder.
+  suite_env=(XDG_DATA_HOME="$repo/.cache/opengl_user_data" TEST_ARTIFACTS="$artifacts/opengl")
   engine_suite "render tests (Compatibility renderer, OpenGL on llvmpipe)" "$repo/tests/godot" opengl3 \
     "$artifacts/godot_render_gl.log" "${OPENGL_TESTS[@]}"
-  mv "$artifacts/render_demo_field.png" "$artifacts/render_demo_field_opengl.png" 2>/dev/null
+  suite_env=()
   suite_done opengl
 fi
 
@@ -363,14 +425,18 @@ if runs editor; then
   suite_start=$SECONDS
   echo "== editor (headless): open and close scenes with a field (a large one builds in the background, with"
   echo "   the plugin's progress bar); a new field's inspector and saved scene"
+  # In a copy of the test project, imported as it is: the engine suite may be running the project itself.
+  scenes=$(mktemp -d)
+  cp -rL "$repo/tests/godot/." "$scenes/"
   for scene in field_scene large_field_scene; do
-    if timeout 300 "$godot" --headless --editor --path "$repo/tests/godot" "res://scenes/$scene.tscn" --quit-after 200 \
+    if timeout 300 "$godot" --headless --editor --path "$scenes" "res://scenes/$scene.tscn" --quit-after 200 \
       >"$artifacts/editor_$scene.log" 2>&1 && ! grep -E "SCRIPT ERROR|^ERROR" "$artifacts/editor_$scene.log"; then
       record 1 0 "editor opens $scene"
     else
       tail -n 20 "$artifacts/editor_$scene.log"; record 0 1 "editor opens $scene"
     fi
   done
+  rm -rf "$scenes"
   echo "== editor (headless): painting a field with synthetic mouse events, undo and redo, the file written back"
   paintproj=$(mktemp -d)
   new_project "$paintproj"
@@ -427,12 +493,15 @@ if runs editor; then
   suite_done editor
 fi
 
-if runs engine || runs opengl || runs demo; then
+# The suites run here or beside the engine suite (whose run leaves this check to this one).
+ran() { runs "$1" || [[ " ${beside[*]} " == *" $1 "* ]]; }
+if ((!lane)) && { ran engine || ran opengl || ran demo; }; then
   echo "== leaks at exit (--verbose output of the engine runs)"
   logs=()
-  runs engine && logs+=("$artifacts/godot_tests.log")
-  runs opengl && logs+=("$artifacts/godot_render_gl.log")
-  runs demo && logs+=("$artifacts/demo_tests.log")
+  ran engine && logs+=("$artifacts/godot_tests.log")
+  ((${#beside[@]})) && logs+=("$artifacts/godot_tests_beside.log")
+  ran opengl && logs+=("$artifacts/godot_render_gl.log")
+  ran demo && logs+=("$artifacts/demo_tests.log")
   if grep -E "leaked at exit|Leaked instance|were leaked|Orphan StringName|instances leaked" "${logs[@]}"; then
     record 0 1 "no leaks"
   else

@@ -19,10 +19,12 @@ func after_each() -> void:
 	pass
 
 
-## Where a test writes [param file] (a path under tests/artifacts/, which is made as needed), for a
-## reader to look at after the run.
+## Where a test writes [param file] (a path under tests/artifacts/, or under the folder the
+## environment's TEST_ARTIFACTS names; made as needed), for a reader to look at after the run.
 func artifact_path(file: String) -> String:
-	var folder: String = ProjectSettings.globalize_path("res://").path_join("../artifacts")
+	var folder: String = OS.get_environment("TEST_ARTIFACTS")
+	if folder.is_empty():
+		folder = ProjectSettings.globalize_path("res://").path_join("../artifacts")
 	var path: String = folder.path_join(file).simplify_path()
 	DirAccess.make_dir_recursive_absolute(path.get_base_dir())
 	return path
