@@ -180,7 +180,8 @@ if ((!lane)) && [[ -z "$filter" ]] && runs engine; then
   done
 fi
 
-# --- The fuzzer starts first and runs beside the suites before the engine's ---------------------------
+# --- The fuzzer starts first and runs beside the platforms and docs suites (in the second lane, when
+# there is one) -----------------------------------------------------------------------------------------
 # It keeps one core busy for its build and 60 s; the core's tests under Wine and QEMU keep the other.
 if runs fuzz; then
   fuzz_seconds=${FUZZ_SECONDS:-60}
@@ -291,8 +292,8 @@ fi
 
 if ((${#beside[@]})); then
   wait "$lane_pid"
-  # The lane's programs ended before the engine suite's (the shell reaps them as they end): the engine
-  # suite's CPU time is what is left of both.
+  # The children's CPU time now holds the lane's programs as well as the engine suite's (the shell
+  # reaps each as it ends, during the engine suite or in this wait): the engine suite's is what is left.
   lane_cpu=$(sed -n -E 's/^time: [0-9]+ s wall, ([0-9]+) s CPU.*/\1/p' "$lane_log")
   children_cpu
   timings+=("$(printf '%-10s %4d s wall %5d s CPU' engine "$engine_wall" $((cpu - cpu_since - ${lane_cpu:-0})))")
