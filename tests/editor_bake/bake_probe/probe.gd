@@ -21,14 +21,15 @@ func _enter_tree() -> void:
 
 func _run() -> void:
 	var tree: SceneTree = EditorInterface.get_base_control().get_tree()
-	for i: int in 120:  # let the editor settle (first scan, plugins)
+	# Let the editor settle: its first scan over, the plugins in (at least 30 frames, at most 120).
+	for i: int in 120:
 		await tree.process_frame
+		if i >= 30 and not EditorInterface.get_resource_filesystem().is_scanning():
+			break
 	var problems: PackedStringArray = []
 	var plant: Resource = load(PLANT_PATH)
 	EditorInterface.edit_resource(plant)
-	for i: int in 30:
-		await tree.process_frame
-	var button: Button = _find_button(EditorInterface.get_inspector(), "Bake impostors")
+	var button: Button = await _wait_for_button(tree, "Bake impostors")
 	var shot: String = OS.get_environment("PROBE_SHOT")
 	if not shot.is_empty():
 		EditorInterface.get_base_control().get_viewport().get_texture().get_image().save_png(shot)
@@ -63,6 +64,16 @@ func _run() -> void:
 	tree.quit(0 if problems.is_empty() else 1)
 
 
+## The inspector's button showing [param text] once it is there (null after 30 frames without it).
+func _wait_for_button(tree: SceneTree, text: String) -> Button:
+	for i: int in 30:
+		await tree.process_frame
+		var button: Button = _find_button(EditorInterface.get_inspector(), text)
+		if button:
+			return button
+	return null
+
+
 func _find_button(node: Node, text: String) -> Button:
 	if node is Button and (node as Button).text == text:
 		return node
@@ -78,15 +89,17 @@ func _find_button(node: Node, text: String) -> Button:
 func _plants_from_scenes(tree: SceneTree, shot: String) -> PackedStringArray:
 	var problems: PackedStringArray = []
 	EditorInterface.open_scene_from_path("res://own_plant_terrain.tscn")
+	var field: SunflowerField = null
 	for i: int in 30:
 		await tree.process_frame
-	var field: SunflowerField = EditorInterface.get_edited_scene_root().get_node_or_null("SunflowerField")
+		var root: Node = EditorInterface.get_edited_scene_root()
+		field = root.get_node_or_null("SunflowerField") as SunflowerField if root else null
+		if field:
+			break
 	if field == null:
 		return PackedStringArray(["own_plant_terrain.tscn has no SunflowerField"])
 	EditorInterface.edit_node(field)
-	for i: int in 30:
-		await tree.process_frame
-	var button: Button = _find_button(EditorInterface.get_inspector(), SceneDropButton.TEXT)
+	var button: Button = await _wait_for_button(tree, SceneDropButton.TEXT)
 	if button == null:
 		return PackedStringArray(["no 'Plant from scene…' in the field's inspector"])
 	var chosen: String = OS.get_environment("PROBE_PLANTS")
@@ -118,8 +131,10 @@ func _plants_from_scenes(tree: SceneTree, shot: String) -> PackedStringArray:
 			var mesh: Mesh = plant.get_part_mesh(level, 0)
 			if mesh == null or sunflower.has(mesh) or plant.get_part_mesh(level, 1) or plant.get_part_mesh(level, 2):
 				problems.append("%s: mesh level %d is not the scene's one part" % [saved, level + 1])
-		for i: int in 60:
+		for i: int in 60:  # the field built with its new plant (and a few frames drawn with it)
 			await tree.process_frame
+			if i >= 5 and not field.is_building():
+				break
 		if not shot.is_empty():
 			var picture: String = shot.get_basename() + "_%s.png" % plant_name
 			EditorInterface.get_base_control().get_viewport().get_texture().get_image().save_png(picture)
