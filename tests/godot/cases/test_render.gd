@@ -78,12 +78,13 @@ func test_density_thinning_draws_fewer_far_impostors() -> void:
 	var field: SunflowerField = _still_field(
 		"res://fields/large.field", Vector3(100.0, 25.0, 190.0), Vector3(100.0, 0.0, 60.0)
 	)
-	await frames(6)
+	check(await frames_until(func() -> bool: return not field.is_building(), 30) < 30, "the large field is built")
+	await frames(2)
 	var full_image: Image = tree.root.get_viewport().get_texture().get_image()
 	var full: float = _plant_pixels(full_image)
 	field.thinning_distance = 20.0
 	field.thinning_min_density = 0.1
-	await frames(6)
+	await frames(2)
 	var thinned_image: Image = tree.root.get_viewport().get_texture().get_image()
 	thinned_image.save_png(artifact_path("render_thinning.png"))
 	var thinned: float = _plant_pixels(thinned_image)
@@ -105,7 +106,8 @@ func test_thinning_keeps_the_same_plants_whatever_their_order_in_a_buffer() -> v
 	)
 	field.thinning_distance = 20.0
 	field.thinning_min_density = 0.1
-	await frames(6)
+	check(await frames_until(func() -> bool: return not field.is_building(), 30) < 30, "the large field is built")
+	await frames(2)
 	field.set_process(false)  # no updates: the buffers stay as this test leaves them
 	var before: Image = tree.root.get_viewport().get_texture().get_image()
 	# Reverse the order of the instances in every far tile's impostor buffer (as the near buckets
@@ -124,7 +126,7 @@ func test_thinning_keeps_the_same_plants_whatever_their_order_in_a_buffer() -> v
 					flipped[(count - 1 - i) * stride + k] = buffer[i * stride + k]
 			RenderingServer.multimesh_set_buffer(rid, flipped)
 			reversed += 1
-	await frames(4)
+	await frames(2)
 	var after: Image = tree.root.get_viewport().get_texture().get_image()
 	var changed: int = 0
 	for y: int in range(0, before.get_height(), 2):
@@ -486,7 +488,8 @@ func test_far_impostors_stand_where_their_plants_do_on_a_moved_and_turned_field(
 	var field: SunflowerField = _still_field(
 		"res://fields/large.field", Vector3(100.0, 25.0, 190.0), Vector3(100.0, 0.0, 60.0)
 	)
-	await frames(6)
+	check(await frames_until(func() -> bool: return not field.is_building(), 30) < 30, "the large field is built")
+	await frames(2)
 	var counts: PackedInt32Array = field.get_lod_counts()
 	check(counts[3] + counts[4] > counts[0] + counts[1] + counts[2], "mostly far plants in view: %s" % counts)
 	var picture: Picture = Picture.new(640, 360)
@@ -494,7 +497,7 @@ func test_far_impostors_stand_where_their_plants_do_on_a_moved_and_turned_field(
 	var moved: Transform3D = Transform3D(Basis(Vector3.UP, 0.6), Vector3(-230.0, 4.0, 170.0))
 	scene.transform = moved  # the camera is on the stage too
 	field.advance(0.0)
-	await frames(6)
+	await frames(2)
 	var image: Image = tree.root.get_viewport().get_texture().get_image()
 	image.save_png(artifact_path("render_moved_field.png"))
 	var after: PackedFloat32Array = picture.luminance(image)
