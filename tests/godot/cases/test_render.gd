@@ -555,7 +555,7 @@ func test_a_lone_far_plant_looks_like_its_mesh_from_every_side() -> void:
 			for i: int in 2:
 				field.force_lod = [0, 3][i]
 				field.advance(0.0)
-				await frames(3)
+				await frames(2)
 				var image: Image = tree.root.get_viewport().get_texture().get_image().get_region(crop)
 				seen[i].append(_yellowness(image))
 	var failures: PackedStringArray = []
