@@ -16,7 +16,8 @@ extends Node3D
 ##   --force-lod N            draw every plant as one representation (0-2 meshes, 3 sprite, 4 billboard)
 ##   --culling off            do not skip plants outside the camera's view
 ##   --baseline native        draw the field the Godot-native way instead (benchmark baseline): whole
-##                            plants near, front-view quads far; native-whole: whole plants everywhere
+##                            plants near, front-view quads far; native-whole: whole plants everywhere;
+##                            native-hashed: the far quads' alpha test hashed (the far field keeps its cover)
 ##   --wind P                 the wind power (0: calm)
 ##   --whole off              draw the near plants part by part (FieldPlant.draw_whole off)
 ##   --cheap-shadows off      near plants at mesh 1 and 2 cast shadows from the mesh they are drawn with
@@ -368,7 +369,8 @@ func _build_native_baseline() -> void:
 	add_child(baseline)
 	_recording.baseline_node = baseline
 	var far_quads: bool = _recording.baseline != "native-whole"
-	var plants: int = baseline.build(_field.map, _field, _draw_distance, far_quads)
+	var hashed: bool = _recording.baseline == "native-hashed"
+	var plants: int = baseline.build(_field.map, _field, _draw_distance, far_quads, hashed)
 	if plants == 0:
 		_fail("the native baseline was not built (its error is in the log)")
 		return

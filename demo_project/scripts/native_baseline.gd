@@ -8,7 +8,11 @@ extends Node3D
 ## StandardMaterial3D, alpha scissor) showing one picture: the plant's front view from its baked
 ## impostor atlas. Plant positions come from the addon's layout, so both draw the same field.
 ## Built with [code]far_quads[/code] false (the demo's [code]--baseline native-whole[/code]), whole
-## plants are drawn at every distance (the baseline of the draw-call tables).
+## plants are drawn at every distance (the baseline of the draw-call tables). Built with
+## [code]hashed[/code] (the demo's [code]--baseline native-hashed[/code]), the far quads' alpha test is
+## hashed (TRANSPARENCY_ALPHA_HASH), as a user would set it once they saw the alpha-scissored field
+## thin out to bare ground with distance (mipmaps average the alpha away): the far field keeps its
+## cover.
 
 ## Side of the chunks, metres.
 const CHUNK_SIZE: float = 16.0
@@ -20,7 +24,11 @@ const CUT_OFF: float = 100.0
 ## always drawn); with [param far_quads] false every chunk is whole plants. Returns the number of plants
 ## (0 after an error, which it reports).
 func build(
-	field_map: SunflowerFieldMap, field: SunflowerField, cut_off: float = CUT_OFF, far_quads: bool = true
+	field_map: SunflowerFieldMap,
+	field: SunflowerField,
+	cut_off: float = CUT_OFF,
+	far_quads: bool = true,
+	hashed: bool = false
 ) -> int:
 	var simulation: SunflowerSimulation = SunflowerSimulation.new()
 	var error: String = simulation.load_map(field_map.text, field_map.source_path, "", "", 0)
@@ -33,7 +41,7 @@ func build(
 	if far_quads and plant.impostor_views == null:
 		push_error("NativeBaseline: the plant '%s' has no baked impostor views for its far quads" % plant.name)
 		return 0
-	var far_mesh: QuadMesh = _front_view_quad(plant) if far_quads else null
+	var far_mesh: QuadMesh = _front_view_quad(plant, hashed) if far_quads else null
 	var far_from: float = field.lod_distances[2] if far_quads else cut_off
 	# Parts are one model unit each, stacked three high.
 	var scale_factor: float = field.plant_height / SunflowerSimulation.PART_COUNT
@@ -72,7 +80,7 @@ func _chunk(positions: Array, mesh: Mesh, scale_factor: float) -> MultiMeshInsta
 
 ## A quad the size of [param plant]'s impostor square (model units), its centre where the views' is,
 ## showing the front view (column 0, elevation 0 of the atlas), colours made straight from premultiplied.
-func _front_view_quad(plant: FieldPlant) -> QuadMesh:
+func _front_view_quad(plant: FieldPlant, hashed: bool) -> QuadMesh:
 	var atlas: Image = plant.impostor_views.get_image()
 	if atlas.is_compressed():
 		atlas.decompress()
@@ -89,7 +97,9 @@ func _front_view_quad(plant: FieldPlant) -> QuadMesh:
 	front.generate_mipmaps()
 	var material: StandardMaterial3D = StandardMaterial3D.new()
 	material.albedo_texture = ImageTexture.create_from_image(front)
-	material.transparency = BaseMaterial3D.TRANSPARENCY_ALPHA_SCISSOR
+	material.transparency = (
+		BaseMaterial3D.TRANSPARENCY_ALPHA_HASH if hashed else BaseMaterial3D.TRANSPARENCY_ALPHA_SCISSOR
+	)
 	material.billboard_mode = BaseMaterial3D.BILLBOARD_FIXED_Y
 	material.billboard_keep_scale = true
 	material.cull_mode = BaseMaterial3D.CULL_DISABLED

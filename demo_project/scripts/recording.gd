@@ -17,7 +17,7 @@ var view: String = ""
 var screenshot: String = ""
 var screenshot_every: int = 0
 var stats_path: String = ""
-## "native" or "native-whole" when the Godot-native baseline draws the field instead.
+## "native", "native-whole" or "native-hashed" when the Godot-native baseline draws the field instead.
 var baseline: String = ""
 var map_path: String = ""
 var build_ms: float = 0.0
