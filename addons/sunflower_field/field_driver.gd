@@ -125,6 +125,8 @@ func rebuild(background: bool = false) -> void:
 		show(null)
 		return
 	var job: FieldBuild.Job = FieldBuild.Job.for_field(_field, plants, native_simulation)
+	# Where the observer is now, so that the far tiles' records are ordered for it from the start.
+	FieldObserver.push(_field, frame.observer, frame.frustum_culling, native_simulation)
 	background = background and _field.background_build and field_map.text.size() >= BACKGROUND_BUILD_MIN_BYTES
 	build = FieldBuild.new(_field, impostor_sets, job, background, drawn)
 	if background or build.needs_frames():

@@ -133,6 +133,7 @@ func _ready() -> void:
 		_recording.buffer_memory["before"] = RenderingServer.get_rendering_info(
 			RenderingServer.RENDERING_INFO_BUFFER_MEM_USED
 		)
+	_place_view_camera()
 	var build_start: int = Time.get_ticks_usec()
 	await load_map(_map_path)
 	while _field.is_building():  # a large map builds in the background; the HUD shows its progress
@@ -156,6 +157,19 @@ func _ready() -> void:
 		apply_part_argument(argument)
 	if _recording.frames_total >= 0:
 		_recording.start(_field, _camera)
+
+
+## With a still view (--view), the camera is put there before the field builds, so that the far
+## tiles' records are ordered for it from the start (as a game's camera stands at its spawn point).
+func _place_view_camera() -> void:
+	if _recording.view.is_empty() or not ResourceLoader.exists(_map_path):
+		return
+	var map: SunflowerFieldMap = load(_map_path) as SunflowerFieldMap
+	var path: CameraPath = (
+		CameraPath.view(_recording.view, Vector2(map.columns, map.rows) * _field.cell_size) if map else null
+	)
+	if path:
+		_camera.transform = path.sample(0.0)
 
 
 ## Loads a map; an imported res:// map is used as a resource, any other path is read directly.

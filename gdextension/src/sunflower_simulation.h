@@ -122,6 +122,7 @@ private:
 	bool _is_tile(int64_t p_tile) const;
 	bool _is_species(int64_t p_species) const;
 	void _push_bucket(uint32_t p_bucket);
+	// Writes the tile's records (nearest the observer first) into its MultiMesh.
 	void _upload_tile(uint32_t p_tile);
 
 	struct BucketTarget {
@@ -141,6 +142,20 @@ private:
 	std::vector<BucketTarget> _buckets; // BUCKET_COUNT per species of the map
 	std::vector<gdx::Rid> _tiles; // each tile's impostors (sprite and billboard are one multi-view impostor)
 	std::vector<int64_t> _tile_visible; // each tile's MultiMesh's visible instances as last set (−1: not yet)
+	std::vector<glm::vec2> _tile_ordered_for; // where the observer was (x, z) when each tile's records were ordered
+	// The tile whose records are being written again, nearest the observer first, a few chunks a
+	// frame (TILE_ORDER_PLANTS_PER_FRAME), and given to its MultiMesh when complete.
+	struct TileOrder {
+		uint32_t tile = sunflower::FarTiles::NO_TILE;
+		glm::vec3 observer{ 0.0f };
+		uint32_t step = 0;
+		uint32_t written = 0;
+		uint32_t records_version = 0; // the field's when it began: given up if they change meanwhile
+		gdx::PackedFloat32Array buffer;
+	};
+	static constexpr uint32_t TILE_ORDER_PLANTS_PER_FRAME = 1024;
+	TileOrder _tile_order;
+	void _order_tiles();
 	std::vector<sunflower::Pusher> _pushers; // reused between frames
 	int64_t _last_update_usec = 0;
 };

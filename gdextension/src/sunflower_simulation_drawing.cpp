@@ -42,7 +42,11 @@ void SunflowerSimulation::set_tile_multimesh(int64_t p_tile, gdx::Rid p_multimes
 		return;
 	}
 	_tiles.resize(_sim.tiles().get_tile_count());
+	_tile_ordered_for.resize(_tiles.size(), glm::vec2(std::nanf("")));
 	_tiles[static_cast<size_t>(p_tile)] = p_multimesh;
+	if (_tile_order.tile == uint32_t(p_tile)) {
+		_tile_order = TileOrder{}; // written whole now
+	}
 	_upload_tile(static_cast<uint32_t>(p_tile));
 	_tile_visible.resize(_tiles.size(), -1);
 	_tile_visible[static_cast<size_t>(p_tile)] = -1; // allocating the data drew every instance
@@ -53,6 +57,11 @@ void SunflowerSimulation::adopt_tile_multimesh(int64_t p_tile, gdx::Rid p_multim
 		return;
 	}
 	_tiles.resize(_sim.tiles().get_tile_count());
+	_tile_ordered_for.resize(_tiles.size(), glm::vec2(std::nanf("")));
+	_tile_ordered_for[static_cast<size_t>(p_tile)] = glm::vec2(std::nanf("")); // ordered for the previous field's observer
+	if (_tile_order.tile == uint32_t(p_tile)) {
+		_tile_order = TileOrder{};
+	}
 	_tiles[static_cast<size_t>(p_tile)] = p_multimesh; // its data is this tile's already
 	_tile_visible.resize(_tiles.size(), -1);
 	_tile_visible[static_cast<size_t>(p_tile)] = -1; // its count is the previous field's
@@ -146,6 +155,8 @@ void SunflowerSimulation::release_multimeshes() {
 	_buckets.assign(_sim.near().get_bucket_count(), BucketTarget{});
 	_tiles.clear();
 	_tile_visible.clear();
+	_tile_ordered_for.clear();
+	_tile_order = TileOrder{};
 }
 
 int64_t SunflowerSimulation::get_chunk_count() const {
@@ -164,7 +175,9 @@ void SunflowerSimulation::_upload_tile(uint32_t p_tile) {
 	const uint32_t count = _sim.tiles().get_tile(p_tile).plants;
 	gdx::PackedFloat32Array buffer;
 	buffer.resize(int64_t(count) * FAR_FLOATS_PER_INSTANCE);
-	_sim.tiles().write_tile_instances(p_tile, buffer.data());
+	const glm::vec3 &observer = _sim.near().get_observer();
+	_sim.tiles().write_tile_instances(p_tile, buffer.data(), &observer);
+	_tile_ordered_for[p_tile] = glm::vec2(observer.x, observer.z);
 	if (_tiles[p_tile].is_valid()) {
 		gdx::RenderingServer::multimesh_allocate_data(_tiles[p_tile], count, gdx::RenderingServer::COMPACT);
 		// A merged tile keeps a quarter of its plants a level: one of a few large plants may keep
@@ -173,6 +186,38 @@ void SunflowerSimulation::_upload_tile(uint32_t p_tile) {
 			gdx::RenderingServer::multimesh_set_buffer(_tiles[p_tile], buffer);
 		}
 	}
+}
+
+void SunflowerSimulation::_order_tiles() {
+	// One tile at a time has its records written again, nearest the observer first, once the observer
+	// has moved on from where they were ordered (FarTiles::next_tile_to_order), a few chunks a frame.
+	const FarTiles &tiles = _sim.tiles();
+	if (_tile_order.tile != FarTiles::NO_TILE && _tile_order.records_version != _sim.get_records_version()) {
+		_tile_order = TileOrder{}; // the records changed meanwhile: the driver gives the tiles anew
+	}
+	if (_tile_order.tile == FarTiles::NO_TILE) {
+		const uint32_t stale = tiles.next_tile_to_order(_tile_ordered_for, _sim.near().get_observer());
+		if (stale == FarTiles::NO_TILE || stale >= _tiles.size()) {
+			return;
+		}
+		_tile_order.tile = stale;
+		_tile_order.observer = _sim.near().get_observer();
+		_tile_order.step = 0;
+		_tile_order.written = 0;
+		_tile_order.records_version = _sim.get_records_version();
+		_tile_order.buffer.resize(int64_t(tiles.get_tile(stale).plants) * FAR_FLOATS_PER_INSTANCE);
+	}
+	const uint32_t tile = _tile_order.tile;
+	_tile_order.step = tiles.write_tile_steps(tile, _tile_order.buffer.data() + size_t(_tile_order.written) * FAR_FLOATS_PER_INSTANCE,
+			&_tile_order.observer, _tile_order.step, TILE_ORDER_PLANTS_PER_FRAME, _tile_order.written);
+	if (_tile_order.step < tiles.get_tile_steps(tile)) {
+		return;
+	}
+	if (_tiles[tile].is_valid() && _tile_order.written > 0) {
+		gdx::RenderingServer::multimesh_set_buffer(_tiles[tile], _tile_order.buffer);
+	}
+	_tile_ordered_for[tile] = glm::vec2(_tile_order.observer.x, _tile_order.observer.z);
+	_tile_order.tile = FarTiles::NO_TILE;
 }
 
 void SunflowerSimulation::_push_bucket(uint32_t p_bucket) {
@@ -227,6 +272,7 @@ void SunflowerSimulation::update(double p_delta) {
 	for (uint32_t b = 0; b < _buckets.size(); ++b) {
 		_push_bucket(b);
 	}
+	_order_tiles();
 	// Each tile draws only its records kept at the nearest level its plants may be given.
 	for (size_t t = 0; t < _tiles.size() && t < _tile_visible.size(); ++t) {
 		const int64_t visible = _sim.tiles().get_tile_visible_count(uint32_t(t));

@@ -267,3 +267,119 @@ TEST_CASE("far tiles merge with distance: nested quarters, parents covering thei
 	CHECK(sim.tiles().get_tile_count() == 64);
 	CHECK(drawn(sim) == plant_count);
 }
+
+TEST_CASE("far tiles' records ordered for an observer: the same records in the same level groups, chunks nearest first, each chunk's plants from its nearer end; written a few chunks at a time, the same; a tile is ordered again once the observer moves on") {
+	FieldSimulation sim;
+	MapError error;
+	std::string text = "90 70\n";
+	for (int r = 0; r < 70; ++r) {
+		text += std::string(90, '*') + "\n";
+	}
+	REQUIRE(sim.load_map(text, U"", U"", "order", MapLimits{}, error));
+	LayoutParams params;
+	params.chunk_size = 4.0f;
+	params.tile_merge_distance = 10.0f; // merged tiles too
+	sim.set_layout_params(params);
+	const FieldLayout &layout = sim.plants().get_layout();
+	const FarTiles &tiles = sim.tiles();
+	REQUIRE(tiles.get_top_tile_level() > 0);
+	for (const glm::vec3 observer : { glm::vec3(-30.0f, 1.7f, 50.0f), glm::vec3(20.0f, 1.7f, 15.0f) }) {
+		const glm::vec2 at(observer.x, observer.z);
+		for (uint32_t t = 0; t < tiles.get_tile_count(); ++t) {
+			const FarTiles::Tile &tile = tiles.get_tile(t);
+			std::vector<float> plain(size_t(tile.plants) * FAR_FLOATS_PER_INSTANCE);
+			std::vector<float> ordered(plain.size());
+			tiles.write_tile_instances(t, plain.data());
+			tiles.write_tile_instances(t, ordered.data(), &observer);
+			// A few chunks at a time (at least 50 plants a call), the same records.
+			std::vector<float> sliced(plain.size());
+			uint32_t step = 0;
+			uint32_t written = 0;
+			uint32_t calls = 0;
+			while (step < tiles.get_tile_steps(t) && calls++ < 100000) {
+				step = tiles.write_tile_steps(t, sliced.data() + size_t(written) * FAR_FLOATS_PER_INSTANCE, &observer, step, 50, written);
+			}
+			CHECK(written == tile.plants);
+			CHECK(sliced == ordered);
+			std::map<uint32_t, glm::vec2> middles; // each chunk's middle, by its cell
+			for (uint32_t k = 0; k < tile.count; ++k) {
+				const Chunk &chunk = layout.chunks[tiles.get_tile_chunk(t, k)];
+				middles[sim.plants().get_chunk_cell(tiles.get_tile_chunk(t, k))] = (chunk.min + chunk.max) * 0.5f;
+			}
+			// Level groups: the same levels in the same places (kept_from's prefixes hold), the same records
+			// in each; within a group chunks nearest first, and each chunk's plants.
+			size_t group = 0;
+			std::vector<std::pair<float, float>> plain_roots;
+			std::vector<std::pair<float, float>> ordered_roots;
+			float chunk_distance = -1.0f;
+			uint32_t cell = UINT32_MAX;
+			// Each chunk's roots in each level's group (levels above, cell), in plain (map) order and as ordered.
+			std::map<std::pair<uint32_t, uint32_t>, std::vector<std::pair<float, float>>> plain_runs;
+			std::map<std::pair<uint32_t, uint32_t>, std::vector<std::pair<float, float>>> ordered_runs;
+			uint32_t unsorted = 0;
+			for (size_t k = 0; k <= tile.plants; ++k) {
+				const bool end = k == tile.plants;
+				const FarInstance a = end ? FarInstance{} : read_far_instance(plain.data() + k * FAR_FLOATS_PER_INSTANCE);
+				const FarInstance b = end ? FarInstance{} : read_far_instance(ordered.data() + k * FAR_FLOATS_PER_INSTANCE);
+				const FarInstance first = read_far_instance(plain.data() + group * FAR_FLOATS_PER_INSTANCE);
+				if (end || a.levels_above != first.levels_above) { // a group ends
+					std::sort(plain_roots.begin(), plain_roots.end());
+					std::sort(ordered_roots.begin(), ordered_roots.end());
+					CHECK(plain_roots == ordered_roots);
+					plain_roots.clear();
+					ordered_roots.clear();
+					chunk_distance = -1.0f;
+					cell = UINT32_MAX;
+					group = k;
+					if (end) {
+						break;
+					}
+				}
+				CHECK(a.levels_above == b.levels_above);
+				plain_roots.emplace_back(a.root.x, a.root.z);
+				ordered_roots.emplace_back(b.root.x, b.root.z);
+				plain_runs[{ a.levels_above, a.cell }].emplace_back(a.root.x, a.root.z);
+				ordered_runs[{ b.levels_above, b.cell }].emplace_back(b.root.x, b.root.z);
+				const float to_chunk = glm::distance(middles.at(b.cell), at);
+				if (b.cell != cell) { // the next chunk: not nearer the observer than the one before it
+					unsorted += to_chunk < chunk_distance - 1e-4f ? 1 : 0;
+					chunk_distance = to_chunk;
+					cell = b.cell;
+				}
+			}
+			CHECK(unsorted == 0);
+			// A chunk's plants in map order, backwards when the observer is ahead of its middle on the
+			// axis it is farther off on.
+			uint32_t misordered = 0;
+			for (auto &[run, roots] : plain_runs) {
+				const glm::vec2 off = at - middles.at(run.second);
+				if (std::abs(off.y) >= std::abs(off.x) ? off.y > 0.0f : off.x > 0.0f) {
+					std::reverse(roots.begin(), roots.end());
+				}
+				misordered += roots == ordered_runs[run] ? 0 : 1;
+			}
+			CHECK(misordered == 0);
+		}
+	}
+	// Ordering again: none ordered yet, the nearest tile first; ordered where the observer stands,
+	// none; moved less than TILE_ORDER_SLACK, none; moved 20 m, the nearest tile.
+	const glm::vec3 observer(20.0f, 1.7f, 15.0f);
+	std::vector<glm::vec2> ordered_for(tiles.get_tile_count(), glm::vec2(std::nanf("")));
+	uint32_t nearest = 0;
+	for (uint32_t t = 0; t < tiles.get_tile_count(); ++t) {
+		const auto middle = [&](uint32_t p_tile) {
+			return (tiles.get_tile(p_tile).area_min + tiles.get_tile(p_tile).area_max) * 0.5f;
+		};
+		if (glm::distance(middle(t), glm::vec2(20.0f, 15.0f)) < glm::distance(middle(nearest), glm::vec2(20.0f, 15.0f))) {
+			nearest = t;
+		}
+	}
+	CHECK(tiles.next_tile_to_order(ordered_for, observer) == nearest);
+	ordered_for.assign(tiles.get_tile_count(), glm::vec2(20.0f, 15.0f));
+	CHECK(tiles.next_tile_to_order(ordered_for, observer) == FarTiles::NO_TILE);
+	CHECK(tiles.next_tile_to_order(ordered_for, observer + glm::vec3(0.7f * FarTiles::TILE_ORDER_SLACK, 0.0f, 0.0f)) ==
+			FarTiles::NO_TILE);
+	CHECK(tiles.next_tile_to_order(ordered_for, observer + glm::vec3(0.0f, 0.0f, 20.0f)) != FarTiles::NO_TILE);
+	ordered_for.clear(); // no tiles given to the engine yet
+	CHECK(tiles.next_tile_to_order(ordered_for, observer) == FarTiles::NO_TILE);
+}

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <iterator>
 #include <utility>
 
 namespace sunflower {
@@ -222,44 +223,92 @@ ChunkBounds FarTiles::get_tile_bounds(uint32_t p_tile) const {
 	return bounds;
 }
 
-void FarTiles::write_tile_instances(uint32_t p_tile, float *r_out) const {
+void FarTiles::write_tile_instances(uint32_t p_tile, float *r_out, const glm::vec3 *p_observer) const {
+	uint32_t written = 0;
+	write_tile_steps(p_tile, r_out, p_observer, 0, UINT32_MAX, written);
+}
+
+uint32_t FarTiles::get_tile_steps(uint32_t p_tile) const {
+	const Tile &tile = _tiles[p_tile];
+	return tile.count * (_chunk_kept.empty() ? 1 : MAX_TILE_LEVELS - tile.level);
+}
+
+uint32_t FarTiles::write_tile_steps(uint32_t p_tile, float *r_out, const glm::vec3 *p_observer, uint32_t p_from, uint32_t p_budget,
+		uint32_t &r_written) const {
 	const FieldLayout &layout = _plants.get_layout();
 	const Tile &tile = _tiles[p_tile];
-	if (_chunk_kept.empty()) { // tiles do not merge
-		for (uint32_t k = 0; k < tile.count; ++k) {
-			const Chunk &chunk = layout.chunks[get_tile_chunk(p_tile, k)];
-			_plants.write_records(get_tile_chunk(p_tile, k), layout.chunk_plants.data() + chunk.first, chunk.count, r_out);
-			r_out += size_t(chunk.count) * FAR_FLOATS_PER_INSTANCE;
-		}
-		return;
+	// The tile's chunks (k), nearest the observer first when there is one (ties in chunk order, so
+	// that each call finds the same order).
+	std::vector<std::pair<float, uint32_t>> order(tile.count);
+	const glm::vec2 observer = p_observer ? glm::vec2(p_observer->x, p_observer->z) : glm::vec2(0.0f);
+	for (uint32_t k = 0; k < tile.count; ++k) {
+		const Chunk &chunk = layout.chunks[get_tile_chunk(p_tile, k)];
+		const glm::vec2 away = (chunk.min + chunk.max) * 0.5f - observer;
+		order[k] = { p_observer ? glm::dot(away, away) : 0.0f, k };
 	}
+	if (p_observer) {
+		std::sort(order.begin(), order.end());
+	}
+	// A chunk's plants come in map order (rows along +x, one after another along +z); backwards
+	// when the observer lies ahead of the chunk's middle along the axis it is farther off on: the
+	// rows nearest it first when it looks along z, each row's plants nearest it first when it looks
+	// along x (the plants one line of sight crosses are in one row then).
+	std::vector<uint32_t> backwards;
 	std::vector<uint32_t> level_zero; // a chunk's plants no merged level keeps
-	for (uint32_t level = MAX_TILE_LEVELS; level-- > tile.level;) {
-		for (uint32_t k = 0; k < tile.count; ++k) {
-			const uint32_t chunk = get_tile_chunk(p_tile, k);
-			const uint32_t *plants = nullptr;
-			uint32_t count = 0;
-			if (level > 0) {
-				// A chunk's merged plants come highest level first: level L's follow those above it.
-				const std::array<uint32_t, MAX_TILE_LEVELS> &kept = _chunk_kept[chunk];
-				const uint32_t above = level + 1 < MAX_TILE_LEVELS ? kept[level + 1] : 0;
-				plants = _merged_plants.data() + _merged_first[chunk] + above;
-				count = kept[level] - above;
-			} else {
-				level_zero.clear();
-				const Chunk &own = layout.chunks[chunk];
-				for (uint32_t p = own.first; p < own.first + own.count; ++p) {
-					if (plant_tile_level(layout.plants[layout.chunk_plants[p]]) == 0) {
-						level_zero.push_back(layout.chunk_plants[p]);
-					}
+	const uint32_t steps = get_tile_steps(p_tile);
+	const uint32_t budget_end = r_written + std::min(p_budget, UINT32_MAX - r_written);
+	uint32_t step = p_from;
+	for (; step < steps && r_written < budget_end; ++step) {
+		const uint32_t chunk = get_tile_chunk(p_tile, order[step % tile.count].second);
+		// While tiles merge, the levels' groups come highest first: level L's follow those above it.
+		const uint32_t level = _chunk_kept.empty() ? 0 : MAX_TILE_LEVELS - 1 - step / tile.count;
+		const uint32_t *plants = layout.chunk_plants.data() + layout.chunks[chunk].first;
+		uint32_t count = layout.chunks[chunk].count;
+		if (!_chunk_kept.empty() && level > 0) {
+			const std::array<uint32_t, MAX_TILE_LEVELS> &kept = _chunk_kept[chunk];
+			const uint32_t above = level + 1 < MAX_TILE_LEVELS ? kept[level + 1] : 0;
+			plants = _merged_plants.data() + _merged_first[chunk] + above;
+			count = kept[level] - above;
+		} else if (!_chunk_kept.empty()) {
+			level_zero.clear();
+			for (uint32_t i = 0; i < count; ++i) {
+				if (plant_tile_level(layout.plants[plants[i]]) == 0) {
+					level_zero.push_back(plants[i]);
 				}
-				plants = level_zero.data();
-				count = uint32_t(level_zero.size());
 			}
-			_plants.write_records(chunk, plants, count, r_out, level - tile.level);
-			r_out += size_t(count) * FAR_FLOATS_PER_INSTANCE;
+			plants = level_zero.data();
+			count = uint32_t(level_zero.size());
+		}
+		if (p_observer) {
+			const Chunk &own = layout.chunks[chunk];
+			const glm::vec2 off = observer - (own.min + own.max) * 0.5f;
+			if (std::abs(off.y) >= std::abs(off.x) ? off.y > 0.0f : off.x > 0.0f) {
+				backwards.assign(std::make_reverse_iterator(plants + count), std::make_reverse_iterator(plants));
+				plants = backwards.data();
+			}
+		}
+		_plants.write_records(chunk, plants, count, r_out, level - tile.level);
+		r_out += size_t(count) * FAR_FLOATS_PER_INSTANCE;
+		r_written += count;
+	}
+	return step;
+}
+
+uint32_t FarTiles::next_tile_to_order(const std::vector<glm::vec2> &p_ordered_for, const glm::vec3 &p_observer) const {
+	const glm::vec2 observer(p_observer.x, p_observer.z);
+	uint32_t nearest = NO_TILE;
+	float nearest_distance = 0.0f;
+	for (uint32_t t = 0; t < _tiles.size() && t < p_ordered_for.size(); ++t) {
+		const float distance = glm::distance((_tiles[t].area_min + _tiles[t].area_max) * 0.5f, observer);
+		const glm::vec2 ordered_for = p_ordered_for[t];
+		const bool stale = std::isnan(ordered_for.x) ||
+				glm::distance(ordered_for, observer) > std::max(TILE_ORDER_SLACK, TILE_ORDER_TURN * distance);
+		if (stale && (nearest == NO_TILE || distance < nearest_distance)) {
+			nearest = t;
+			nearest_distance = distance;
 		}
 	}
+	return nearest;
 }
 
 uint64_t FarTiles::get_tile_signature(uint32_t p_tile) const {

@@ -85,7 +85,26 @@ public:
 	ChunkBounds get_tile_bounds(uint32_t p_tile) const;
 	// The tile's plants' records: Tile::plants × FAR_FLOATS_PER_INSTANCE floats; while tiles merge,
 	// level by level, highest first (chunk after chunk within a level), else chunk after chunk.
-	void write_tile_instances(uint32_t p_tile, float *r_out) const;
+	// Given an observer (the field's frame), each level's chunks come nearest it first (by their
+	// middles), and each chunk's plants in map order or backwards, whichever begins nearer it: drawn
+	// nearest first, the hidden far quads' pixels fail the engine's early depth test instead of being
+	// shaded and covered (10–16 % of a software frame over the large field, docs/performance.md,
+	// table 12). Without one, in map order.
+	void write_tile_instances(uint32_t p_tile, float *r_out, const glm::vec3 *p_observer = nullptr) const;
+	// write_tile_instances a few chunks at a time: a step is one chunk's plants of one level's group
+	// (get_tile_steps in all). Writes steps from p_from on at r_out (the records of the steps before
+	// it written already) until p_budget plants are written or the tile ends; adds them to
+	// r_written and returns the next step (get_tile_steps when done).
+	uint32_t write_tile_steps(uint32_t p_tile, float *r_out, const glm::vec3 *p_observer, uint32_t p_from, uint32_t p_budget,
+			uint32_t &r_written) const;
+	uint32_t get_tile_steps(uint32_t p_tile) const;
+	// A tile's records ordered for an observer at p_ordered_for (x, z; NaN: not ordered for any)
+	// are written again for one at p_observer once it has moved TILE_ORDER_SLACK or a share
+	// TILE_ORDER_TURN of its distance from the tile's middle, whichever is more: the nearest such
+	// tile (p_ordered_for: one place per tile), or NO_TILE. Far tiles turn a little each time.
+	uint32_t next_tile_to_order(const std::vector<glm::vec2> &p_ordered_for, const glm::vec3 &p_observer) const;
+	static constexpr float TILE_ORDER_SLACK = 16.0f;
+	static constexpr float TILE_ORDER_TURN = 0.5f;
 	// How many of the tile's first records the engine must draw: those kept at the lowest level the
 	// observer's distance may give any of its plants (Tile::kept_from), counted from a distance
 	// TILE_COUNT_SLACK nearer than the observer's place at the last count. A level-0 tile seen from

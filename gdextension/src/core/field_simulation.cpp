@@ -52,6 +52,7 @@ void FieldSimulation::set_ground(Ground p_ground) {
 }
 
 void FieldSimulation::set_shape(const PlantShape &p_shape, uint32_t p_species) {
+	++_records_version;
 	if (_plants.set_shape(p_shape, p_species)) {
 		_near.make_buckets();
 	}
@@ -69,6 +70,7 @@ void FieldSimulation::_rebuilt() {
 	_near.rebuild();
 	_tiles.build();
 	++_mask_version;
+	++_records_version;
 }
 
 void FieldSimulation::update(float p_delta) {

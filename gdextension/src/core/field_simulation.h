@@ -58,6 +58,8 @@ public:
 	bool is_tile_drawn(uint32_t p_tile) const;
 	// Changes whenever a chunk turns active or static, or the field is rebuilt.
 	uint32_t get_mask_version() const { return _mask_version; }
+	// Changes whenever the far records change: the field rebuilt or a plant type's shape set.
+	uint32_t get_records_version() const { return _records_version; }
 	// Every chunk's signature now (FieldPlants::get_chunk_signature), e.g. on a worker during a build.
 	void compute_chunk_signatures() { _plants.compute_chunk_signatures(); }
 	// CPU memory held for the field, in bytes (map cells, layout, per-plant state, tiles, buffers).
@@ -76,6 +78,7 @@ private:
 	NearField _near{ _plants };
 	FarTiles _tiles{ _plants };
 	uint32_t _mask_version = 0;
+	uint32_t _records_version = 0;
 };
 
 } // namespace sunflower
