@@ -1,7 +1,8 @@
 #pragma once
 // Far tiles: the static representation of every plant not in an active chunk (near_field.h). A tile
 // is the chunks of one species in a square of TILE_CHUNKS × TILE_CHUNKS grid cells, drawn from one
-// buffer (level 0): one multi-view impostor record per plant, written once, one MultiMesh a tile.
+// buffer (level 0): one multi-view impostor record per plant, one MultiMesh a tile, written at a build
+// and again, nearest the observer first, as the observer moves (write_tile_steps, next_tile_to_order).
 // Every plant of a tile is in its buffer; the impostor shader skips those whose chunk is active, as
 // the active mask (NearField::write_active_mask) says.
 //
