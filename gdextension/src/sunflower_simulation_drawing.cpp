@@ -58,7 +58,10 @@ void SunflowerSimulation::adopt_tile_multimesh(int64_t p_tile, gdx::Rid p_multim
 	}
 	_tiles.resize(_sim.tiles().get_tile_count());
 	_tile_ordered_for.resize(_tiles.size(), glm::vec2(std::nanf("")));
-	_tile_ordered_for[static_cast<size_t>(p_tile)] = glm::vec2(std::nanf("")); // ordered for the previous field's observer
+	// Ordered for the previous field's observer, taken to be about where this one's is (a field edited
+	// in place): written again once the observer moves on, not all at once after every edit.
+	const glm::vec3 &observer = _sim.near().get_observer();
+	_tile_ordered_for[static_cast<size_t>(p_tile)] = glm::vec2(observer.x, observer.z);
 	if (_tile_order.tile == uint32_t(p_tile)) {
 		_tile_order = TileOrder{};
 	}

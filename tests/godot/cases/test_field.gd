@@ -285,6 +285,54 @@ func test_merged_far_tiles_draw_each_place_once_across_levels() -> void:
 	check_eq(_check_drawn_once_along(path).y, 0, "without merging every plant is drawn")
 
 
+## The far tiles' records reach the engine nearest the observer first and are written again as it
+## moves: with 1 m chunks (8 m tiles) each tile's buffer holds the same records (roots and cells)
+## before and after a walk across the field, some tiles' in a new order, and each tile's first record
+## is nearer the observer than its last at both places.
+func test_far_tiles_are_written_again_nearest_the_observer_first_as_it_moves() -> void:
+	field.chunk_size = 1.0
+	field.tile_merge_distance = 0.0
+	var ends: Array[Vector3] = [Vector3(-30.0, 1.7, -30.0), Vector3(60.0, 1.7, 50.0)]
+	var before: Dictionary = {}  # tile node name → its records' keys in order
+	var reordered: int = 0
+	for stop: int in ends.size():
+		observer.position = ends[stop]
+		if stop == 0:
+			field.finish_build()  # the tiles written for the observer there
+		for i: int in 60:  # one tile at a time, 1 024 plants an update
+			field.advance(1.0 / 60.0)
+		var nearer_first: int = 0
+		var tiles: int = 0
+		for node: MultiMeshInstance3D in _field_nodes():
+			if not node.name.begins_with("FarTile"):
+				continue
+			var buffer: PackedFloat32Array = RenderingServer.multimesh_get_buffer(node.multimesh.get_rid())
+			var far: int = SunflowerSimulation.FAR_FLOATS_PER_INSTANCE
+			var count: int = buffer.size() / far
+			if count < 2:
+				continue
+			tiles += 1
+			var keys: Array[Vector3i] = []
+			for k: int in count:
+				var root: Vector3 = _root(buffer, k, true, far)
+				keys.append(Vector3i(roundi(root.x * 1000.0), roundi(root.z * 1000.0), roundi(buffer[k * far + 6])))
+			var first: Vector3 = _root(buffer, 0, true, far)
+			var last: Vector3 = _root(buffer, count - 1, true, far)
+			nearer_first += 1 if first.distance_to(ends[stop]) < last.distance_to(ends[stop]) else 0
+			if stop == 0:
+				before[node.name] = keys
+			elif check(before.has(node.name), "%s was there before the walk" % node.name):
+				reordered += 1 if keys != before[node.name] else 0
+				var sorted_now: Array[Vector3i] = keys.duplicate()
+				var sorted_then: Array[Vector3i] = (before[node.name] as Array[Vector3i]).duplicate()
+				sorted_now.sort()
+				sorted_then.sort()
+				check(sorted_now == sorted_then, "%s holds the same records after the walk" % node.name)
+		check(tiles >= 4, "far tiles to look at (%d)" % tiles)
+		check_eq(nearer_first, tiles, "from %s each tile's first record is nearer than its last" % ends[stop])
+	check(reordered > 0, "tiles were written again in a new order after the walk (%d)" % reordered)
+
+
 ## Checks, at each of [param path]'s stops, that every plant is drawn once (or twice in a cross-fade,
 ## shares adding up to one) or left out where a merged level stands in for it; returns the plants
 ## seen in cross-fades and those left out, summed over the stops. A far tile the engine draws (in its
