@@ -143,6 +143,7 @@ private:
 	std::vector<gdx::Rid> _tiles; // each tile's impostors (sprite and billboard are one multi-view impostor)
 	std::vector<int64_t> _tile_visible; // each tile's MultiMesh's visible instances as last set (−1: not yet)
 	std::vector<glm::vec2> _tile_ordered_for; // where the observer was (x, z) when each tile's records were ordered
+	std::vector<uint32_t> _tile_counts; // each tile's MultiMesh's instances as allocated (or adopted)
 	// The tile whose records are being written again, nearest the observer first, a few chunks a
 	// frame (TILE_ORDER_PLANTS_PER_FRAME), and given to its MultiMesh when complete.
 	struct TileOrder {

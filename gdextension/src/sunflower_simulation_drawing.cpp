@@ -43,6 +43,7 @@ void SunflowerSimulation::set_tile_multimesh(int64_t p_tile, gdx::Rid p_multimes
 	}
 	_tiles.resize(_sim.tiles().get_tile_count());
 	_tile_ordered_for.resize(_tiles.size(), glm::vec2(std::nanf("")));
+	_tile_counts.resize(_tiles.size(), 0);
 	_tiles[static_cast<size_t>(p_tile)] = p_multimesh;
 	if (_tile_order.tile == uint32_t(p_tile)) {
 		_tile_order = TileOrder{}; // written whole now
@@ -58,6 +59,7 @@ void SunflowerSimulation::adopt_tile_multimesh(int64_t p_tile, gdx::Rid p_multim
 	}
 	_tiles.resize(_sim.tiles().get_tile_count());
 	_tile_ordered_for.resize(_tiles.size(), glm::vec2(std::nanf("")));
+	_tile_counts.resize(_tiles.size(), 0);
 	// Ordered for the previous field's observer, taken to be about where this one's is (a field edited
 	// in place): written again once the observer moves on, not all at once after every edit.
 	const glm::vec3 &observer = _sim.near().get_observer();
@@ -66,6 +68,7 @@ void SunflowerSimulation::adopt_tile_multimesh(int64_t p_tile, gdx::Rid p_multim
 		_tile_order = TileOrder{};
 	}
 	_tiles[static_cast<size_t>(p_tile)] = p_multimesh; // its data is this tile's already
+	_tile_counts[static_cast<size_t>(p_tile)] = _sim.tiles().get_tile(uint32_t(p_tile)).plants;
 	_tile_visible.resize(_tiles.size(), -1);
 	_tile_visible[static_cast<size_t>(p_tile)] = -1; // its count is the previous field's
 }
@@ -159,6 +162,7 @@ void SunflowerSimulation::release_multimeshes() {
 	_tiles.clear();
 	_tile_visible.clear();
 	_tile_ordered_for.clear();
+	_tile_counts.clear();
 	_tile_order = TileOrder{};
 }
 
@@ -181,6 +185,7 @@ void SunflowerSimulation::_upload_tile(uint32_t p_tile) {
 	const glm::vec3 &observer = _sim.near().get_observer();
 	_sim.tiles().write_tile_instances(p_tile, buffer.data(), &observer);
 	_tile_ordered_for[p_tile] = glm::vec2(observer.x, observer.z);
+	_tile_counts[p_tile] = count;
 	if (_tiles[p_tile].is_valid()) {
 		gdx::RenderingServer::multimesh_allocate_data(_tiles[p_tile], count, gdx::RenderingServer::COMPACT);
 		// A merged tile keeps a quarter of its plants a level: one of a few large plants may keep
@@ -216,7 +221,9 @@ void SunflowerSimulation::_order_tiles() {
 	if (_tile_order.step < tiles.get_tile_steps(tile)) {
 		return;
 	}
-	if (_tiles[tile].is_valid() && _tile_order.written > 0) {
+	// (Its MultiMesh holds as many instances unless the field was laid out again in place since: the
+	// driver gives that one its tiles anew.)
+	if (_tiles[tile].is_valid() && _tile_order.written > 0 && _tile_counts[tile] == _tile_order.written) {
 		gdx::RenderingServer::multimesh_set_buffer(_tiles[tile], _tile_order.buffer);
 	}
 	_tile_ordered_for[tile] = glm::vec2(_tile_order.observer.x, _tile_order.observer.z);
