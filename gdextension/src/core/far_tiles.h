@@ -89,7 +89,7 @@ public:
 	// Given an observer (the field's frame), each level's chunks come nearest it first (by their
 	// middles), and each chunk's plants in map order or backwards, whichever begins nearer it: drawn
 	// nearest first, the hidden far quads' pixels fail the engine's early depth test instead of being
-	// shaded and covered (10–16 % of a software frame over the large field, docs/performance.md,
+	// shaded and covered (8–10 % of a software frame over the large field, docs/performance.md,
 	// table 12). Without one, in map order.
 	void write_tile_instances(uint32_t p_tile, float *r_out, const glm::vec3 *p_observer = nullptr) const;
 	// write_tile_instances a few chunks at a time: a step is one chunk's plants of one level's group

@@ -78,8 +78,7 @@ func test_density_thinning_draws_fewer_far_impostors() -> void:
 	var field: SunflowerField = _still_field(
 		"res://fields/large.field", Vector3(100.0, 25.0, 190.0), Vector3(100.0, 0.0, 60.0)
 	)
-	check(await frames_until(func() -> bool: return not field.is_building(), 30) < 30, "the large field is built")
-	await frames(2)
+	await _built_and_drawn(field)
 	var full_image: Image = tree.root.get_viewport().get_texture().get_image()
 	var full: float = _plant_pixels(full_image)
 	field.thinning_distance = 20.0
@@ -106,8 +105,7 @@ func test_thinning_keeps_the_same_plants_whatever_their_order_in_a_buffer() -> v
 	)
 	field.thinning_distance = 20.0
 	field.thinning_min_density = 0.1
-	check(await frames_until(func() -> bool: return not field.is_building(), 30) < 30, "the large field is built")
-	await frames(2)
+	await _built_and_drawn(field)
 	field.set_process(false)  # no updates: the buffers stay as this test leaves them
 	var before: Image = tree.root.get_viewport().get_texture().get_image()
 	# Reverse the order of the instances in every far tile's impostor buffer (as the near buckets
@@ -488,8 +486,7 @@ func test_far_impostors_stand_where_their_plants_do_on_a_moved_and_turned_field(
 	var field: SunflowerField = _still_field(
 		"res://fields/large.field", Vector3(100.0, 25.0, 190.0), Vector3(100.0, 0.0, 60.0)
 	)
-	check(await frames_until(func() -> bool: return not field.is_building(), 30) < 30, "the large field is built")
-	await frames(2)
+	await _built_and_drawn(field)
 	var counts: PackedInt32Array = field.get_lod_counts()
 	check(counts[3] + counts[4] > counts[0] + counts[1] + counts[2], "mostly far plants in view: %s" % counts)
 	var picture: Picture = Picture.new(640, 360)
@@ -744,6 +741,13 @@ func _windy_demo_field(plant: FieldPlant) -> SunflowerField:
 
 ## A calm field from [param map_path] in the scene, seen by a current camera at [param eye]
 ## looking at [param target].
+## Waits until [param field]'s build is done (checked, within 30 frames) and two frames more, so the
+## window shows it.
+func _built_and_drawn(field: SunflowerField) -> void:
+	check(await frames_until(func() -> bool: return not field.is_building(), 30) < 30, "the large field is built")
+	await frames(2)
+
+
 func _still_field(map_path: String, eye: Vector3, target: Vector3) -> SunflowerField:
 	var field: SunflowerField = SunflowerField.new()
 	scene.add_child(field)
