@@ -79,7 +79,9 @@ func set_texture(kind: String, texture: Texture2D) -> void:
 				)
 			)
 		_set_all("atlas_views", layout)
-		_set_all("view_bounds", view_bounds(texture, layout))
+		var bounds: PackedVector4Array = view_bounds(texture, layout)
+		_set_all("view_bounds_up", joined_view_bounds(bounds, layout, Vector2i(1, 2)))
+		_set_all("view_bounds_block", joined_view_bounds(bounds, layout, Vector2i(2, 2)))
 
 
 ## Makes the impostors glow with the light [param texture] holds ([member FieldPlant.impostor_emission]),
@@ -143,6 +145,31 @@ static func view_bounds(texture: Texture2D, views: Vector2i) -> PackedVector4Arr
 			var end: Vector2 = Vector2(used.end) / Vector2(square)
 			bounds.append(Vector4(start.x, start.y, end.x, end.y))
 	return bounds
+
+
+## The rectangles of [method view_bounds] joined [param block] views at a time: per view (in rows
+## of [param views].x), the smallest rectangle holding what it and the views beside it (block.x
+## columns, the last one wrapping around to the first) and above it (block.y rows, the top row
+## standing for the rows beyond it) draw. The shader cuts a quad to the views it blends with one or
+## a few of these instead of one per view ([code]vertex()[/code]: a lookup a view was a quarter of
+## the far plants' vertex work). Where none of them draws anything, an empty rectangle
+## ([code]Vector4(1, 1, 0, 0)[/code]); empty when [param bounds] is.
+static func joined_view_bounds(bounds: PackedVector4Array, views: Vector2i, block: Vector2i) -> PackedVector4Array:
+	var joined: PackedVector4Array = []
+	if bounds.size() != views.x * views.y:
+		return joined
+	for row: int in views.y:
+		for column: int in views.x:
+			var union: Vector4 = Vector4(1, 1, 0, 0)
+			for up: int in block.y:
+				for across: int in block.x:
+					var view: Vector4 = bounds[mini(row + up, views.y - 1) * views.x + (column + across) % views.x]
+					if view.z > view.x and view.w > view.y:
+						union = Vector4(
+							minf(union.x, view.x), minf(union.y, view.y), maxf(union.z, view.z), maxf(union.w, view.w)
+						)
+			joined.append(union)
+	return joined
 
 
 ## Sets a shader parameter of the impostor material ([code]alpha_scissor[/code],

@@ -290,18 +290,47 @@ func test_the_impostor_quad_covers_only_what_its_views_show() -> void:
 	)
 	check(bounds[1].z <= bounds[1].x, "an empty view has an empty rectangle (%s)" % bounds[1])
 	check(ImpostorSetScript.view_bounds(null, Vector2i(2, 1)).is_empty(), "no texture: no rectangles")
+	# Joined for the shader: 3 columns × 2 rows of views, one of them empty.
+	var views: PackedVector4Array = [
+		Vector4(0.4, 0.5, 0.6, 0.9),
+		Vector4(0.3, 0.4, 0.5, 0.8),
+		Vector4(0, 0, 0, 0),
+		Vector4(0.2, 0.1, 0.5, 0.6),
+		Vector4(0.45, 0.2, 0.7, 0.7),
+		Vector4(0.1, 0.6, 0.2, 0.95),
+	]
+	var up: PackedVector4Array = ImpostorSetScript.joined_view_bounds(views, Vector2i(3, 2), Vector2i(1, 2))
+	var block: PackedVector4Array = ImpostorSetScript.joined_view_bounds(views, Vector2i(3, 2), Vector2i(2, 2))
+	var expected: Dictionary = {
+		"up, first view": [up[0], Vector4(0.2, 0.1, 0.6, 0.9)],
+		"up, an empty view and the one above it": [up[2], views[5]],
+		"up, the top row alone": [up[4], views[4]],
+		"block of the first two columns": [block[0], Vector4(0.2, 0.1, 0.7, 0.9)],
+		"block wrapping from the last column to the first": [block[2], Vector4(0.1, 0.1, 0.6, 0.95)],
+		"block at the top row": [block[5], Vector4(0.1, 0.1, 0.5, 0.95)],
+	}
+	for what: String in expected:
+		check(expected[what][0].is_equal_approx(expected[what][1]), "%s: %s" % [what, expected[what][0]])
+	var nothing: PackedVector4Array = [Vector4.ZERO, Vector4.ZERO]
+	check_eq(
+		ImpostorSetScript.joined_view_bounds(nothing, Vector2i(2, 1), Vector2i(2, 2))[0],
+		Vector4(1, 1, 0, 0),
+		"views drawing nothing join to an empty rectangle"
+	)
+	check(ImpostorSetScript.joined_view_bounds([], Vector2i(2, 1), Vector2i(2, 2)).is_empty(), "no views: none joined")
 	# The built-in sunflower's views fill about a quarter of their squares: its impostors' quads are
 	# cut to that, for the near buckets' material and the far tiles' alike.
 	var field: SunflowerField = _field()
 	for name: String in ["Impostors", "FarTile%d" % FarTileTable.new(NativeField.new(field.get_simulation())).key(0)]:
 		var node: MultiMeshInstance3D = _child_named(field, name)
 		var material: ShaderMaterial = node.multimesh.mesh.surface_get_material(0) as ShaderMaterial
-		var drawn: PackedVector4Array = material.get_shader_parameter("view_bounds")
+		var drawn: PackedVector4Array = material.get_shader_parameter("view_bounds_block")
 		var area: float = 0.0
 		for view: Vector4 in drawn:
 			area += (view.z - view.x) * (view.w - view.y) / drawn.size()
 		check_eq(drawn.size(), FieldPlant.ATLAS_VIEWS.x * FieldPlant.ATLAS_VIEWS.y, "%s: a rectangle per view" % name)
-		check(area > 0.1 and area < 0.4, "%s: the views fill %.2f of their squares" % [name, area])
+		check(area > 0.1 and area < 0.45, "%s: four views together fill %.2f of their squares" % [name, area])
+		check_eq(material.get_shader_parameter("view_bounds_up").size(), drawn.size(), "%s: pairs of views" % name)
 
 
 ## The baker makes 10 rows of elevation (10° apart); an atlas baked with 4 (30° apart) or 7 (15°
@@ -327,7 +356,7 @@ func test_an_atlas_is_read_with_the_rows_it_was_baked_with() -> void:
 		var rows: int = texture.get_height() / 8
 		for material: ShaderMaterial in [impostors.material, impostors.tile_material]:
 			check_eq(material.get_shader_parameter("atlas_views"), Vector2i(columns, rows), "%d rows drawn" % rows)
-			check_eq(material.get_shader_parameter("view_bounds").size(), columns * rows, "a rectangle per view")
+			check_eq(material.get_shader_parameter("view_bounds_block").size(), columns * rows, "a rectangle per view")
 	# An atlas of another shape is named as such (and warned of when drawn).
 	check_eq(ImpostorSetScript.atlas_problem(oldest), "", "a 4-row atlas is one the baker made")
 	check_eq(ImpostorSetScript.atlas_problem(old), "", "a 7-row atlas is one the baker made")
