@@ -4,6 +4,7 @@
 // itself, so no per-frame arrays travel through GDScript.
 #include "binding/godot_api.h"
 #include "core/field_simulation.h"
+#include "core/tile_reorder.h"
 
 #include <vector>
 
@@ -142,20 +143,14 @@ private:
 	std::vector<BucketTarget> _buckets; // BUCKET_COUNT per species of the map
 	std::vector<gdx::Rid> _tiles; // each tile's impostors (sprite and billboard are one multi-view impostor)
 	std::vector<int64_t> _tile_visible; // each tile's MultiMesh's visible instances as last set (−1: not yet)
-	std::vector<glm::vec2> _tile_ordered_for; // where the observer was (x, z) when each tile's records were ordered
 	std::vector<uint32_t> _tile_counts; // each tile's MultiMesh's instances as allocated (or adopted)
-	// The tile whose records are being written again, nearest the observer first, a few chunks a
-	// frame (TILE_ORDER_PLANTS_PER_FRAME), and given to its MultiMesh when complete.
-	struct TileOrder {
-		uint32_t tile = sunflower::FarTiles::NO_TILE;
-		glm::vec3 observer{ 0.0f };
-		uint32_t step = 0;
-		uint32_t written = 0;
-		uint32_t records_version = 0; // the field's when it began: given up if they change meanwhile
-		gdx::PackedFloat32Array buffer;
-	};
+	// The tiles' records written again nearest the observer first, TILE_ORDER_PLANTS_PER_FRAME plants a
+	// frame into _reorder_buffer, and given to the tile's MultiMesh when complete; given up if the
+	// field's records change meanwhile (_reorder_version: theirs when it began).
+	sunflower::TileReorder _reorder;
+	gdx::PackedFloat32Array _reorder_buffer;
+	uint32_t _reorder_version = 0;
 	static constexpr uint32_t TILE_ORDER_PLANTS_PER_FRAME = 1024;
-	TileOrder _tile_order;
 	void _order_tiles();
 	std::vector<sunflower::Pusher> _pushers; // reused between frames
 	int64_t _last_update_usec = 0;

@@ -42,12 +42,9 @@ void SunflowerSimulation::set_tile_multimesh(int64_t p_tile, gdx::Rid p_multimes
 		return;
 	}
 	_tiles.resize(_sim.tiles().get_tile_count());
-	_tile_ordered_for.resize(_tiles.size(), glm::vec2(std::nanf("")));
+	_reorder.resize(uint32_t(_tiles.size()));
 	_tile_counts.resize(_tiles.size(), 0);
 	_tiles[static_cast<size_t>(p_tile)] = p_multimesh;
-	if (_tile_order.tile == uint32_t(p_tile)) {
-		_tile_order = TileOrder{}; // written whole now
-	}
 	_upload_tile(static_cast<uint32_t>(p_tile));
 	_tile_visible.resize(_tiles.size(), -1);
 	_tile_visible[static_cast<size_t>(p_tile)] = -1; // allocating the data drew every instance
@@ -58,15 +55,11 @@ void SunflowerSimulation::adopt_tile_multimesh(int64_t p_tile, gdx::Rid p_multim
 		return;
 	}
 	_tiles.resize(_sim.tiles().get_tile_count());
-	_tile_ordered_for.resize(_tiles.size(), glm::vec2(std::nanf("")));
+	_reorder.resize(uint32_t(_tiles.size()));
 	_tile_counts.resize(_tiles.size(), 0);
 	// Ordered for the previous field's observer, taken to be about where this one's is (a field edited
 	// in place): written again once the observer moves on, not all at once after every edit.
-	const glm::vec3 &observer = _sim.near().get_observer();
-	_tile_ordered_for[static_cast<size_t>(p_tile)] = glm::vec2(observer.x, observer.z);
-	if (_tile_order.tile == uint32_t(p_tile)) {
-		_tile_order = TileOrder{};
-	}
+	_reorder.set_ordered(uint32_t(p_tile), _sim.near().get_observer());
 	_tiles[static_cast<size_t>(p_tile)] = p_multimesh; // its data is this tile's already
 	_tile_counts[static_cast<size_t>(p_tile)] = _sim.tiles().get_tile(uint32_t(p_tile)).plants;
 	_tile_visible.resize(_tiles.size(), -1);
@@ -161,9 +154,8 @@ void SunflowerSimulation::release_multimeshes() {
 	_buckets.assign(_sim.near().get_bucket_count(), BucketTarget{});
 	_tiles.clear();
 	_tile_visible.clear();
-	_tile_ordered_for.clear();
+	_reorder.resize(0);
 	_tile_counts.clear();
-	_tile_order = TileOrder{};
 }
 
 int64_t SunflowerSimulation::get_chunk_count() const {
@@ -184,7 +176,7 @@ void SunflowerSimulation::_upload_tile(uint32_t p_tile) {
 	buffer.resize(int64_t(count) * FAR_FLOATS_PER_INSTANCE);
 	const glm::vec3 &observer = _sim.near().get_observer();
 	_sim.tiles().write_tile_instances(p_tile, buffer.data(), &observer);
-	_tile_ordered_for[p_tile] = glm::vec2(observer.x, observer.z);
+	_reorder.set_ordered(p_tile, observer); // (a write of it in progress given up: written whole now)
 	_tile_counts[p_tile] = count;
 	if (_tiles[p_tile].is_valid()) {
 		gdx::RenderingServer::multimesh_allocate_data(_tiles[p_tile], count, gdx::RenderingServer::COMPACT);
@@ -198,36 +190,29 @@ void SunflowerSimulation::_upload_tile(uint32_t p_tile) {
 
 void SunflowerSimulation::_order_tiles() {
 	// One tile at a time has its records written again, nearest the observer first, once the observer
-	// has moved on from where they were ordered (FarTiles::next_tile_to_order), a few chunks a frame.
+	// has moved on from where they were ordered (TileReorder), a few chunks a frame.
 	const FarTiles &tiles = _sim.tiles();
-	if (_tile_order.tile != FarTiles::NO_TILE && _tile_order.records_version != _sim.get_records_version()) {
-		_tile_order = TileOrder{}; // the records changed meanwhile: the driver gives the tiles anew
+	if (_reorder.get_tile() != FarTiles::NO_TILE && _reorder_version != _sim.get_records_version()) {
+		_reorder.cancel(); // the records changed meanwhile: the driver gives the tiles anew
 	}
-	if (_tile_order.tile == FarTiles::NO_TILE) {
-		const uint32_t stale = tiles.next_tile_to_order(_tile_ordered_for, _sim.near().get_observer());
-		if (stale == FarTiles::NO_TILE || stale >= _tiles.size()) {
+	if (_reorder.get_tile() == FarTiles::NO_TILE) {
+		const uint32_t tile = _reorder.begin(tiles, _sim.near().get_observer());
+		if (tile == FarTiles::NO_TILE) {
 			return;
 		}
-		_tile_order.tile = stale;
-		_tile_order.observer = _sim.near().get_observer();
-		_tile_order.step = 0;
-		_tile_order.written = 0;
-		_tile_order.records_version = _sim.get_records_version();
-		_tile_order.buffer.resize(int64_t(tiles.get_tile(stale).plants) * FAR_FLOATS_PER_INSTANCE);
+		_reorder_version = _sim.get_records_version();
+		_reorder_buffer.resize(int64_t(tiles.get_tile(tile).plants) * FAR_FLOATS_PER_INSTANCE);
 	}
-	const uint32_t tile = _tile_order.tile;
-	_tile_order.step = tiles.write_tile_steps(tile, _tile_order.buffer.data() + size_t(_tile_order.written) * FAR_FLOATS_PER_INSTANCE,
-			&_tile_order.observer, _tile_order.step, TILE_ORDER_PLANTS_PER_FRAME, _tile_order.written);
-	if (_tile_order.step < tiles.get_tile_steps(tile)) {
+	const uint32_t tile = _reorder.get_tile();
+	if (!_reorder.advance(tiles, _reorder_buffer.data(), TILE_ORDER_PLANTS_PER_FRAME)) {
 		return;
 	}
 	// (Its MultiMesh holds as many instances unless the field was laid out again in place since: the
 	// driver gives that one its tiles anew.)
-	if (_tiles[tile].is_valid() && _tile_order.written > 0 && _tile_counts[tile] == _tile_order.written) {
-		gdx::RenderingServer::multimesh_set_buffer(_tiles[tile], _tile_order.buffer);
+	const uint32_t written = _reorder.get_written();
+	if (_tiles[tile].is_valid() && written > 0 && _tile_counts[tile] == written) {
+		gdx::RenderingServer::multimesh_set_buffer(_tiles[tile], _reorder_buffer);
 	}
-	_tile_ordered_for[tile] = glm::vec2(_tile_order.observer.x, _tile_order.observer.z);
-	_tile_order.tile = FarTiles::NO_TILE;
 }
 
 void SunflowerSimulation::_push_bucket(uint32_t p_bucket) {

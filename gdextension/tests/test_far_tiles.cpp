@@ -1,5 +1,6 @@
 // Core tests of far tiles: grouping, records, merging with distance.
 #include "field_test_support.h"
+#include "tile_reorder.h"
 
 #include <doctest/doctest.h>
 
@@ -382,4 +383,72 @@ TEST_CASE("far tiles' records ordered for an observer: the same records in the s
 	CHECK(tiles.next_tile_to_order(ordered_for, observer + glm::vec3(0.0f, 0.0f, 20.0f)) != FarTiles::NO_TILE);
 	ordered_for.clear(); // no tiles given to the engine yet
 	CHECK(tiles.next_tile_to_order(ordered_for, observer) == FarTiles::NO_TILE);
+}
+
+TEST_CASE("tile reorder: one tile at a time, the nearest due first, written whole over several calls as for the observer it began for; then not again until the observer moves on") {
+	FieldSimulation sim;
+	MapError error;
+	std::string text = "90 70\n";
+	for (int r = 0; r < 70; ++r) {
+		text += std::string(90, '*') + "\n";
+	}
+	REQUIRE(sim.load_map(text, U"", U"", "reorder", MapLimits{}, error));
+	LayoutParams params;
+	params.chunk_size = 4.0f;
+	params.tile_merge_distance = 10.0f;
+	sim.set_layout_params(params);
+	const FarTiles &tiles = sim.tiles();
+	REQUIRE(tiles.get_tile_count() > 2);
+	TileReorder reorder;
+	const glm::vec3 observer(20.0f, 1.7f, 15.0f);
+	CHECK(reorder.begin(tiles, observer) == FarTiles::NO_TILE); // no tiles followed yet
+	reorder.resize(tiles.get_tile_count());
+	std::vector<glm::vec2> never(tiles.get_tile_count(), glm::vec2(std::nanf("")));
+	// Every tile once, nearest first (as next_tile_to_order picks), each in slices of 40 plants while
+	// the observer moves on meanwhile: the records ordered for where it was when the tile began.
+	std::vector<uint32_t> order;
+	uint32_t calls = 0;
+	glm::vec3 eye = observer;
+	while (calls++ < 100000) {
+		const uint32_t expected = tiles.next_tile_to_order(never, eye);
+		const uint32_t tile = reorder.begin(tiles, eye);
+		if (tile == FarTiles::NO_TILE) {
+			break;
+		}
+		CHECK(tile == expected);
+		CHECK(reorder.begin(tiles, eye) == FarTiles::NO_TILE); // one at a time
+		const glm::vec3 began = eye;
+		std::vector<float> buffer(size_t(tiles.get_tile(tile).plants) * FAR_FLOATS_PER_INSTANCE);
+		uint32_t slices = 1;
+		while (!reorder.advance(tiles, buffer.data(), 40)) {
+			CHECK(reorder.get_tile() == tile);
+			eye.x += 0.01f; // less than TILE_ORDER_SLACK in all
+			++slices;
+		}
+		CHECK(reorder.get_tile() == FarTiles::NO_TILE);
+		CHECK(reorder.get_written() == tiles.get_tile(tile).plants);
+		CHECK(slices >= tiles.get_tile(tile).plants / 40 / 2); // a budget a call, not the whole tile
+		std::vector<float> whole(buffer.size());
+		tiles.write_tile_instances(tile, whole.data(), &began);
+		CHECK(buffer == whole);
+		never[tile] = glm::vec2(began.x, began.z);
+		order.push_back(tile);
+	}
+	CHECK(order.size() == tiles.get_tile_count());
+	CHECK(reorder.begin(tiles, eye) == FarTiles::NO_TILE); // all ordered for about here
+	// Moved 20 m: the nearest due tile again; given up by cancel and by set_ordered of that tile.
+	const glm::vec3 moved = observer + glm::vec3(0.0f, 0.0f, 20.0f);
+	const uint32_t due = reorder.begin(tiles, moved);
+	CHECK(due == tiles.next_tile_to_order(never, moved));
+	REQUIRE(due != FarTiles::NO_TILE);
+	reorder.cancel();
+	CHECK(reorder.get_tile() == FarTiles::NO_TILE);
+	CHECK(reorder.begin(tiles, moved) == due);
+	reorder.set_ordered(due, moved);
+	CHECK(reorder.get_tile() == FarTiles::NO_TILE);
+	CHECK(reorder.begin(tiles, moved) != due);
+	// Following fewer tiles: one in progress beyond them is given up, and none beyond is begun.
+	reorder.resize(0);
+	CHECK(reorder.get_tile() == FarTiles::NO_TILE);
+	CHECK(reorder.begin(tiles, moved) == FarTiles::NO_TILE);
 }
