@@ -166,7 +166,7 @@ func _place_view_camera() -> void:
 		return
 	var map: SunflowerFieldMap = load(_map_path) as SunflowerFieldMap
 	var path: CameraPath = (
-		CameraPath.view(_recording.view, Vector2(map.columns, map.rows) * _field.cell_size) if map else null
+		CameraPath.view(_recording.view, DemoRecording.field_size(map, _field.cell_size)) if map else null
 	)
 	if path:
 		_camera.transform = path.sample(0.0)

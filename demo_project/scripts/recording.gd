@@ -60,7 +60,7 @@ func fail(message: String) -> void:
 func start(field: SunflowerField, camera: FlyCamera) -> void:
 	_field = field
 	_camera = camera
-	var size: Vector2 = Vector2(_field.map.columns, _field.map.rows) * _field.cell_size
+	var size: Vector2 = field_size(_field.map, _field.cell_size)
 	if path_file.is_empty():
 		_camera_path = CameraPath.built_in(size, _camera.ground_below)
 	else:
@@ -76,6 +76,12 @@ func start(field: SunflowerField, camera: FlyCamera) -> void:
 			_camera_path = CameraPath.built_in(size, _camera.ground_below)
 	_camera.manual = false
 	_last_ticks = Time.get_ticks_usec()
+
+
+## The ground a field of [param map] covers with cells [param cell_size] metres wide (x, z), where
+## the camera paths and views are placed.
+static func field_size(map: SunflowerFieldMap, cell_size: float) -> Vector2:
+	return Vector2(map.columns, map.rows) * cell_size
 
 
 ## One recorded frame: the last frame's figures, then the camera moved for the next.
