@@ -269,18 +269,27 @@ TEST_CASE("far tiles merge with distance: nested quarters, parents covering thei
 	CHECK(drawn(sim) == plant_count);
 }
 
-TEST_CASE("far tiles' records ordered for an observer: the same records in the same level groups, chunks nearest first, each chunk's plants from its nearer end; written a few chunks at a time, the same; a tile is ordered again once the observer moves on") {
-	FieldSimulation sim;
+namespace {
+
+// A 90 × 70 field of sunflowers in 4 m chunks, its tiles merged from 10 m (the ordering tests').
+void load_ordering_field(FieldSimulation &r_sim) {
 	MapError error;
 	std::string text = "90 70\n";
 	for (int r = 0; r < 70; ++r) {
 		text += std::string(90, '*') + "\n";
 	}
-	REQUIRE(sim.load_map(text, U"", U"", "order", MapLimits{}, error));
+	REQUIRE(r_sim.load_map(text, U"", U"", "order", MapLimits{}, error));
 	LayoutParams params;
 	params.chunk_size = 4.0f;
 	params.tile_merge_distance = 10.0f; // merged tiles too
-	sim.set_layout_params(params);
+	r_sim.set_layout_params(params);
+}
+
+} // namespace
+
+TEST_CASE("far tiles' records ordered for an observer: the same records in the same level groups, chunks nearest first, each chunk's plants from its nearer end; written a few chunks at a time, the same; a tile is ordered again once the observer moves on") {
+	FieldSimulation sim;
+	load_ordering_field(sim);
 	const FieldLayout &layout = sim.plants().get_layout();
 	const FarTiles &tiles = sim.tiles();
 	REQUIRE(tiles.get_top_tile_level() > 0);
@@ -387,16 +396,7 @@ TEST_CASE("far tiles' records ordered for an observer: the same records in the s
 
 TEST_CASE("tile reorder: one tile at a time, the nearest due first, written whole over several calls as for the observer it began for; then not again until the observer moves on") {
 	FieldSimulation sim;
-	MapError error;
-	std::string text = "90 70\n";
-	for (int r = 0; r < 70; ++r) {
-		text += std::string(90, '*') + "\n";
-	}
-	REQUIRE(sim.load_map(text, U"", U"", "reorder", MapLimits{}, error));
-	LayoutParams params;
-	params.chunk_size = 4.0f;
-	params.tile_merge_distance = 10.0f;
-	sim.set_layout_params(params);
+	load_ordering_field(sim);
 	const FarTiles &tiles = sim.tiles();
 	REQUIRE(tiles.get_tile_count() > 2);
 	TileReorder reorder;
