@@ -86,6 +86,20 @@ func largest_block_change(a: PackedFloat32Array, b: PackedFloat32Array, block: i
 	return largest
 
 
+## 1 where a pixel of [param image] is leaf green (green above both red and blue by more than
+## 8 of 255), else 0: with [method mean_in], the share of a region that is leaves.
+func leaf_green(image: Image) -> PackedFloat32Array:
+	var rgb: Image = image.duplicate() as Image
+	rgb.convert(Image.FORMAT_RGB8)
+	var bytes: PackedByteArray = rgb.get_data()
+	var out: PackedFloat32Array = PackedFloat32Array()
+	out.resize(width * height)
+	for i: int in out.size():
+		var green: int = bytes[3 * i + 1]
+		out[i] = 1.0 if green > bytes[3 * i] + 8 and green > bytes[3 * i + 2] + 8 else 0.0
+	return out
+
+
 ## The pixels of [param mask] brighter than 0.02 (a picture of the region on black).
 func region(mask: PackedFloat32Array) -> PackedByteArray:
 	var out: PackedByteArray = PackedByteArray()

@@ -669,12 +669,16 @@ func _compare_field(plant_name: String, plant: FieldPlant) -> void:
 			if inside.count(1) > 0
 			else 1.0
 		)
+		# Leaf green where the impostors are drawn, ours against the meshes' (reported, not checked).
+		var green: Vector2 = Vector2(
+			picture.mean_in(picture.leaf_green(auto), inside), picture.mean_in(picture.leaf_green(mesh_1), inside)
+		)
 		check_eq(_yellow_pixels(auto), 0, "%s field %s: no sunflower yellow" % [plant_name, view])
 		auto.shrink_x2()
 		mesh_1.shrink_x2()
 		var similarity: float = small.ssim(small.luminance(auto), small.luminance(mesh_1))
 		var share: float = float(inside.count(1)) / inside.size()
-		figures[view] = [similarity, brightness, share]
+		figures[view] = [similarity, brightness, share, green]
 		# Brightness where the impostors are 2 % of the picture or more (less is a few rows at the horizon).
 		if share >= 0.02:
 			check(
@@ -694,10 +698,19 @@ func _compare_field(plant_name: String, plant: FieldPlant) -> void:
 	)
 	var parts: PackedStringArray = []
 	for view: String in figures:
-		parts.append("%s %.3f / %.3f / %.0f %%" % [view, figures[view][0], figures[view][1], 100.0 * figures[view][2]])
+		var green: Vector2 = figures[view][3]
+		parts.append(
+			(
+				"%s %.3f / %.3f / %.0f %% / %.0f of %.0f %%"
+				% [view, figures[view][0], figures[view][1], 100.0 * figures[view][2], 100.0 * green.x, 100.0 * green.y]
+			)
+		)
 	print(
 		(
-			"     %s field (%d × %d cells of %.2f m), SSIM anti-aliased / impostors' brightness / their share: %s"
+			(
+				"     %s field (%d × %d cells of %.2f m), SSIM anti-aliased / impostors' brightness / their share"
+				+ " / leaf green there, ours of the meshes': %s"
+			)
 			% [plant_name, cells, cells, cell, "; ".join(parts)]
 		)
 	)
