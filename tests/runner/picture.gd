@@ -19,9 +19,7 @@ func _init(picture_width: int, picture_height: int) -> void:
 
 ## The luminance of every pixel of [param image], row by row.
 func luminance(image: Image) -> PackedFloat32Array:
-	var rgb: Image = image.duplicate() as Image
-	rgb.convert(Image.FORMAT_RGB8)
-	var bytes: PackedByteArray = rgb.get_data()
+	var bytes: PackedByteArray = _rgb_bytes(image)
 	var out: PackedFloat32Array = PackedFloat32Array()
 	out.resize(width * height)
 	for i: int in out.size():
@@ -89,9 +87,7 @@ func largest_block_change(a: PackedFloat32Array, b: PackedFloat32Array, block: i
 ## 1 where a pixel of [param image] is leaf green (green above both red and blue by more than
 ## 8 of 255), else 0: with [method mean_in], the share of a region that is leaves.
 func leaf_green(image: Image) -> PackedFloat32Array:
-	var rgb: Image = image.duplicate() as Image
-	rgb.convert(Image.FORMAT_RGB8)
-	var bytes: PackedByteArray = rgb.get_data()
+	var bytes: PackedByteArray = _rgb_bytes(image)
 	var out: PackedFloat32Array = PackedFloat32Array()
 	out.resize(width * height)
 	for i: int in out.size():
@@ -118,6 +114,13 @@ func mean_in(picture: PackedFloat32Array, inside: PackedByteArray) -> float:
 			sum += picture[i]
 			count += 1
 	return sum / count if count > 0 else NAN
+
+
+## [param image]'s pixels as 8-bit red, green and blue, row by row (the image itself unchanged).
+static func _rgb_bytes(image: Image) -> PackedByteArray:
+	var rgb: Image = image.duplicate() as Image
+	rgb.convert(Image.FORMAT_RGB8)
+	return rgb.get_data()
 
 
 func _integral(values: PackedFloat32Array) -> PackedFloat64Array:
