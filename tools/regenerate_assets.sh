@@ -13,9 +13,9 @@ ln -s "$repo/addons" "$work/addons"
 timeout 300 "$godot" --headless --path "$work" --script "$repo/assets/generate_sunflower.gd" -- \
   "$repo/addons/sunflower_field/meshes" 2>&1 | grep -E '^level|ERROR'
 timeout 300 xvfb-run -a -s "-screen 0 1280x720x24" "$godot" --audio-driver Dummy --path "$work" \
-  --script "$repo/assets/bake_impostors.gd" -- "$repo/addons/sunflower_field/textures" 2>&1 | grep -E '^(views|normals|depths)|ERROR|SCRIPT'
+  --script "$repo/assets/bake_impostors.gd" -- "$repo/addons/sunflower_field/textures" 2>&1 | grep -E '^(views|normals|depths|alpha cuts)|ERROR|SCRIPT'
 timeout 300 "$godot" --headless --path "$work" --script "$repo/assets/generate_sunflower.gd" -- \
   "$repo/addons/sunflower_field/meshes" red 2>&1 | grep -E '^level|ERROR'
 timeout 300 xvfb-run -a -s "-screen 0 1280x720x24" "$godot" --audio-driver Dummy --path "$work" \
   --script "$repo/assets/bake_impostors.gd" -- "$repo/addons/sunflower_field/textures" \
-  res://addons/sunflower_field/plants/red_sunflower.tres red_sunflower 2>&1 | grep -E '^(views|normals|depths)|ERROR|SCRIPT'
+  res://addons/sunflower_field/plants/red_sunflower.tres red_sunflower 2>&1 | grep -E '^(views|normals|depths|alpha cuts)|ERROR|SCRIPT'

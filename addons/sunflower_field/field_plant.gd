@@ -263,6 +263,17 @@ static var _default: FieldPlant
 			impostor_emission_range = accepted
 			emit_changed()
 
+## The alpha each mip level of [member impostor_views] is cut at so that the impostors cover what
+## the views cover: at level [i]k[/i], the cut that the same share of that level's texels reaches as
+## the views' mean alpha (what a pixel of the plant's thin leaves covers, which a fixed cut loses).
+## The baker measures it (empty for an atlas baked before it did: the field's
+## [member SunflowerField.alpha_scissor], raised with distance); a cut above the field's is not used.
+@export var impostor_alpha_cuts: PackedFloat32Array = []:
+	set(value):
+		if value != impostor_alpha_cuts:
+			impostor_alpha_cuts = value
+			emit_changed()
+
 ## Near plants of this type cast their shadows from its far impostors from the field's
 ## [member SunflowerField.impostor_shadows_from] on (fewer primitives). Off: they cast from their
 ## meshes at every mesh level, for a plant whose impostor shadows are lighter than its meshes' (a

@@ -15,6 +15,13 @@ const PlantMaterial: GDScript = preload("plant_material.gd")
 
 ## Pixels per view square.
 const CELL_PIXELS: int = 128
+## Each view is drawn this many times as wide and high, without multisampling, and averaged down
+## ([method _read_pass]): a pixel of the atlas then holds the share of it the plant covers (a leaf a
+## quarter of a pixel wide is a quarter of alpha) in the plant's own colour. Multisampled, the
+## engine's resolve darkened partly covered pixels (to about cover² of their colour, the
+## background's black mixed in twice), and a tree of small leaves, most of its pixels partly
+## covered, baked much darker than its meshes.
+const SUPERSAMPLE: int = 2
 ## Frames waited before a pass is read back. Each pass is rendered once (the viewport updates
 ## once when asked): three renders a pass made a 120-view bake about three times as slow on a
 ## software renderer, for the same pixels.
@@ -92,7 +99,7 @@ static func _bake(plant: FieldPlant, host: Node, folder: String, base_name: Stri
 		push_error("Bake impostors: rendering is off (--headless); run with a display or under Xvfb")
 		return ERR_UNAVAILABLE
 	if folder.is_empty():
-		folder = plant.resource_path.get_base_dir() if plant.resource_path.begins_with("res://") else "user://"
+		folder = (plant.resource_path.get_base_dir() if plant.resource_path.begins_with("res://") else "user://")
 	if base_name.is_empty():
 		base_name = (
 			plant.resource_path.get_file().get_basename()
@@ -140,8 +147,40 @@ static func _bake(plant: FieldPlant, host: Node, folder: String, base_name: Stri
 			return saved
 		paths.append(path)
 	plant.impostor_emission_range = glow.energy_range
+	plant.impostor_alpha_cuts = alpha_cuts(images[0])
 	_give_textures(plant, kinds, paths, images)
 	return OK
+
+
+## The alpha cut of each mip level of the views [param image] (as the import makes them, alpha
+## averaged) that keeps the views' cover: the highest cut that at least the share of the level's
+## texels reaches that the views' mean alpha gives (a leaf a fraction of a texel wide is that
+## fraction of alpha, below a fixed cut; the test on this cut draws as many texels as the leaves
+## cover). See [member FieldPlant.impostor_alpha_cuts].
+static func alpha_cuts(image: Image) -> PackedFloat32Array:
+	var levels: Image = image.duplicate() as Image
+	levels.clear_mipmaps()
+	levels.convert(Image.FORMAT_RGBA8)
+	levels.generate_mipmaps()
+	var data: PackedByteArray = levels.get_data()
+	var cuts: PackedFloat32Array = []
+	for level: int in levels.get_mipmap_count() + 1:
+		var end: int = levels.get_mipmap_offset(level + 1) if level < levels.get_mipmap_count() else data.size()
+		var counts: PackedInt32Array = []
+		counts.resize(256)
+		for k: int in range(levels.get_mipmap_offset(level) + 3, end, 4):
+			counts[data[k]] += 1
+		var texels: int = (end - levels.get_mipmap_offset(level)) / 4
+		var covered: float = 0.0  # the mean alpha's worth of texels
+		for alpha: int in 256:
+			covered += counts[alpha] * alpha / 255.0
+		var cut: int = 255
+		var reached: int = counts[255]
+		while cut > 1 and reached < covered:
+			cut -= 1
+			reached += counts[cut]
+		cuts.append(cut / 255.0)
+	return cuts
 
 
 ## The light the parts let through from behind (their back-light), drawn as their colour, unshaded:
@@ -268,9 +307,12 @@ static func _can_glow(plant: FieldPlant) -> bool:
 	return false
 
 
-## The picture of a pass once its frames have settled, as 8-bit RGBA with the colours of covered
-## pixels bled into their transparent neighbours (so filtering and mipmaps do not pull dark fringes
-## into the alpha-tested edges); null when nothing was rendered.
+## The picture of a pass once its frames have settled, as 8-bit RGBA at the atlas' size: the
+## drawn picture ([constant SUPERSAMPLE] times as large, each pixel covered or not) with its covered
+## pixels' colours bled into their transparent neighbours, then averaged down, so that a pixel's
+## alpha is the share of it covered and its colour that of what covers it; then bled again (so
+## filtering and mipmaps do not pull dark fringes into the alpha-tested edges). Null when nothing
+## was rendered.
 static func _read_pass(viewport: SubViewport) -> Image:
 	viewport.render_target_update_mode = SubViewport.UPDATE_ONCE
 	for i: int in SETTLE_FRAMES:
@@ -279,6 +321,11 @@ static func _read_pass(viewport: SubViewport) -> Image:
 	if image == null or image.is_empty():
 		return null
 	image.convert(Image.FORMAT_RGBA8)
+	var size: int = SUPERSAMPLE
+	while size > 1:
+		image.fix_alpha_edges()  # within 4 pixels: every covered pixel's square of 2 × 2 is reached
+		image.shrink_x2()
+		size /= 2
 	image.fix_alpha_edges()
 	return image
 
@@ -301,10 +348,11 @@ static func _stage(plant: FieldPlant) -> SubViewport:
 	var frame: Vector2 = plant.impostor_frame()
 	var viewport: SubViewport = SubViewport.new()
 	viewport.name = "ImpostorBaker"
-	viewport.size = views * CELL_PIXELS
+	viewport.size = views * CELL_PIXELS * SUPERSAMPLE
 	viewport.transparent_bg = true
-	viewport.msaa_3d = Viewport.MSAA_4X
-	viewport.texture_mipmap_bias = TEXTURE_MIP_BIAS
+	viewport.msaa_3d = Viewport.MSAA_DISABLED
+	# The parts' textures read as at the atlas' own size (log2 of the supersampling coarser).
+	viewport.texture_mipmap_bias = TEXTURE_MIP_BIAS + log(SUPERSAMPLE) / log(2.0)
 	viewport.own_world_3d = true
 	viewport.debug_draw = Viewport.DEBUG_DRAW_UNSHADED
 	viewport.render_target_update_mode = SubViewport.UPDATE_DISABLED

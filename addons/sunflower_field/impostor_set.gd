@@ -15,6 +15,10 @@ const SHADOW_SHADER: Shader = preload("shaders/impostor_shadow.gdshader")
 ## The shader's sampler of each of [constant FieldPlant.IMPOSTOR_TEXTURES].
 const ATLAS_PARAMETERS: Dictionary = {"views": "view_atlas", "normals": "normal_atlas", "depths": "depth_atlas"}
 
+## The mip levels of the views whose alpha cut the shader takes (its alpha_cuts array): an atlas
+## 32 768 texels wide has 16.
+const ALPHA_CUT_LEVELS: int = 16
+
 ## The material of the near bucket's impostors (records with shares).
 var material: ShaderMaterial = ShaderMaterial.new()
 ## The material of the far tiles' impostors (records with their chunk's cell).
@@ -51,6 +55,17 @@ func configure(plant: Resource) -> void:
 	_set_all("frame_size", frame.x)
 	_set_all("frame_centre", frame.y)
 	_set_all("shadow_caster_shift", plant.impostor_shadow_shift)
+	set_alpha_cuts(plant.impostor_alpha_cuts)
+
+
+## Cuts the views' alpha at each mip level as [param cuts] says ([member FieldPlant.impostor_alpha_cuts]:
+## at most the shader's 16 levels); none: the field's alpha_scissor raised with distance.
+func set_alpha_cuts(cuts: PackedFloat32Array) -> void:
+	var kept: PackedFloat32Array = cuts.slice(0, ALPHA_CUT_LEVELS)
+	var padded: PackedFloat32Array = kept.duplicate()
+	padded.resize(ALPHA_CUT_LEVELS)
+	_set_all("alpha_cuts", padded)
+	_set_all("alpha_cut_count", kept.size())
 
 
 ## Shows [param texture] as the impostor's [param kind] (one of [constant FieldPlant.IMPOSTOR_TEXTURES]);

@@ -23,7 +23,7 @@ func luminance(image: Image) -> PackedFloat32Array:
 	var out: PackedFloat32Array = PackedFloat32Array()
 	out.resize(width * height)
 	for i: int in out.size():
-		out[i] = (0.2126 * bytes[3 * i] + 0.7152 * bytes[3 * i + 1] + 0.0722 * bytes[3 * i + 2]) / 255.0
+		out[i] = ((0.2126 * bytes[3 * i] + 0.7152 * bytes[3 * i + 1] + 0.0722 * bytes[3 * i + 2]) / 255.0)
 	return out
 
 
@@ -102,6 +102,31 @@ func region(mask: PackedFloat32Array) -> PackedByteArray:
 	out.resize(mask.size())
 	for i: int in mask.size():
 		out[i] = 1 if mask[i] > 0.02 else 0
+	return out
+
+
+## [param inside] (a region) grown by [param by] pixels each way: with the gaps between a sparse
+## crown's leaves, so that two pictures are compared over the same pixels whichever of them covers
+## each (a region that one picture's plants alone make holds none of the other's sky between them).
+func grown(inside: PackedByteArray, by: int) -> PackedByteArray:
+	var values: PackedFloat32Array = PackedFloat32Array()
+	values.resize(inside.size())
+	for i: int in inside.size():
+		values[i] = inside[i]
+	var integral: PackedFloat64Array = _integral(values)
+	var stride: int = width + 1
+	var out: PackedByteArray = PackedByteArray()
+	out.resize(inside.size())
+	for y: int in height:
+		var top: int = maxi(y - by, 0) * stride
+		var bottom: int = mini(y + by + 1, height) * stride
+		for x: int in width:
+			var left: int = maxi(x - by, 0)
+			var right: int = mini(x + by + 1, width)
+			var sum: float = (
+				integral[bottom + right] - integral[top + right] - integral[bottom + left] + integral[top + left]
+			)
+			out[y * width + x] = 1 if sum > 0.5 else 0
 	return out
 
 

@@ -408,3 +408,8 @@ func test_the_built_in_sunflower_baked_again_matches_the_shipped_textures() -> v
 		var share: float = float(differ) / total
 		print("     bake: %s differs from the shipped atlas in %.1f %% of pixels" % [kind, share * 100.0])
 		check(share < 0.03, "%s: the baker reproduces the shipped atlas (%.1f %% differ)" % [kind, share * 100.0])
+	# The alpha cuts it measures are the shipped plant's (tools/regenerate_assets.sh writes them there).
+	var shipped_cuts: PackedFloat32Array = FieldPlant.default_plant().impostor_alpha_cuts
+	check_eq(plant.impostor_alpha_cuts.size(), shipped_cuts.size(), "an alpha cut for each mip level, as shipped")
+	for level: int in mini(plant.impostor_alpha_cuts.size(), shipped_cuts.size()):
+		check_near(plant.impostor_alpha_cuts[level], shipped_cuts[level], 0.02, "the alpha cut at mip %d, as shipped" % level)

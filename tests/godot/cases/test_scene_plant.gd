@@ -20,6 +20,11 @@ const TEST_PLANTS: PackedStringArray = ["maple_tree.glb", "bottlebrush_bush.glb"
 ## off, as docs/plants.md advises for trees): the maple's impostor shadows are lighter than its
 ## branches' and leaves' (its field 25 m up at 45° scores SSIM 0.799 with them, 0.868 without).
 const MESH_SHADOWS: PackedStringArray = ["maple_tree"]
+## The impostors' brightness is compared over where they are drawn grown by this many pixels each
+## way: the region they alone make holds none of the sky the meshes show between their leaves (a
+## sparse crown's impostor pixels are other pixels than its meshes', as many), so it read the maple's
+## far field from 40 m outside as 0.885 of the meshes' brightness where, grown by 2, it is 1.05.
+const BRIGHTNESS_GROWTH: int = 2
 ## The test plants made and baked once a run ([method _baked_test_plant]), by file.
 static var baked_plants: Dictionary = {}
 
@@ -209,7 +214,7 @@ func test_lod_distances_follow_each_plant_types_size() -> void:
 	check(grass.lod_scale_used() < 0.6, "a grass clump's under 0.6× (%.2f)" % grass.lod_scale_used())
 	var map: SunflowerFieldMap = SunflowerFieldMap.new()
 	map.source_path = "user://three_sizes.field"
-	map.text = ("80 3\n%s\n%s\n%s\n" % ["t".repeat(80), "*".repeat(80), "g".repeat(80)]).to_utf8_buffer()
+	map.text = (("80 3\n%s\n%s\n%s\n" % ["t".repeat(80), "*".repeat(80), "g".repeat(80)]).to_utf8_buffer())
 	var observer: Node3D = Node3D.new()
 	observer.name = "Observer"
 	observer.position = Vector3(0.0, 1.6, 0.75)
@@ -544,6 +549,90 @@ func test_each_test_plants_impostor_views_are_framed() -> void:
 		check_eq(_yellow_pixels(views), 0, "%s: no sunflower yellow in its views" % file)
 
 
+## Each test plant's impostor, alone, against its mesh 1 at the same view (45° above, on black, no
+## ground, calm, unshadowed): where its impostors begin, the pixels it covers are 0.85–1.15 of the
+## mesh's. Its thin leaves' cover is kept by the bake (supersampled: a pixel's alpha is the share
+## covered) and by the alpha cut measured per mip level (FieldPlant.impostor_alpha_cuts). Reported,
+## not checked (not met yet for the maple: docs/plants.md): the cover twice as far, and the leaf
+## green pixels' share of the mesh's at both.
+func test_each_test_plants_lone_impostor_covers_what_its_mesh_covers() -> void:
+	var figures: PackedStringArray = []
+	var window: Vector2i = tree.root.size
+	tree.root.size = window * 2  # more pixels a plant: a far tree is a few hundred at 640 × 360
+	await RenderingServer.frame_post_draw
+	for file: String in TEST_PLANTS:
+		var plant: FieldPlant = await _baked_test_plant(file)
+		if not check(plant != null, "%s: baked" % file):
+			continue
+		var staged: Stage = Stage.new(tree.root)
+		stage = staged.root
+		staged.show_scenery(false)
+		var field: SunflowerField = SunflowerField.new()
+		field.plant = plant
+		field.map = _one_plant_map()
+		field.wind_power = 0.0
+		field.lod_fade = 0.0
+		stage.add_child(field)
+		field.finish_build()
+		field.set_process(false)
+		for light: Node in stage.find_children("*", "DirectionalLight3D", true, false):
+			(light as DirectionalLight3D).shadow_enabled = false
+		var camera: Camera3D = Camera3D.new()
+		camera.far = 2000.0
+		stage.add_child(camera)
+		camera.make_current()
+		var root: Vector3 = field.get_plant_info(0)["position"]
+		var middle: Vector3 = root + Vector3(0.0, plant.height * 0.5, 0.0)
+		var begins: float = field.lod_distances[2] * plant.lod_scale_used()
+		for distance: float in [begins, 2.0 * begins]:
+			camera.look_at_from_position(middle + Vector3(0.0, 1.0, 1.0).normalized() * distance, middle)
+			var counts: Array[Vector2] = []  # (covered, leaf green) per way
+			for level: int in [SunflowerField.Lod.MESH_1, SunflowerField.Lod.SPRITE]:
+				field.force_lod = level
+				field.advance(0.0)
+				await frames(3)
+				var image: Image = tree.root.get_viewport().get_texture().get_image()
+				image.save_png(
+					artifact_path(
+						(
+							"lone_cover_%s_%dm_%s.png"
+							% [file.get_basename(), roundi(distance), "mesh1" if level == 0 else "impostor"]
+						)
+					)
+				)
+				counts.append(_covered_and_green(image))
+			var cover: float = counts[1].x / maxf(counts[0].x, 1.0)
+			var green: float = counts[1].y / maxf(counts[0].y, 1.0)
+			figures.append("%s at %.0f m: cover %.2f, leaf green %.2f" % [file.get_basename(), distance, cover, green])
+			if distance == begins:
+				check(
+					cover >= 0.85 and cover <= 1.15,
+					(
+						"%s at %.0f m: the impostor covers %.2f of its mesh's pixels (%d of %d), 0.85–1.15"
+						% [file, distance, cover, counts[1].x, counts[0].x]
+					)
+				)
+		stage.free()
+		stage = null
+	tree.root.size = window
+	print("     lone impostor against its mesh 1 (45° above, 1 280 × 720): %s" % "; ".join(figures))
+
+
+## The pixels of [param image] that are not black (covered), and of those the leaf green ones.
+func _covered_and_green(image: Image) -> Vector2:
+	var rgb: Image = image.duplicate() as Image
+	rgb.convert(Image.FORMAT_RGB8)
+	var bytes: PackedByteArray = rgb.get_data()
+	var covered: int = 0
+	var green: int = 0
+	for i: int in range(0, bytes.size(), 3):
+		if bytes[i] + bytes[i + 1] + bytes[i + 2] > 12:
+			covered += 1
+			if bytes[i + 1] > bytes[i] + 8 and bytes[i + 1] > bytes[i + 2] + 8:
+				green += 1
+	return Vector2(covered, green)
+
+
 ## A plant drawn part by part with empty slots: the empty slots' near buckets are not filled (the
 ## renderer refuses instances of no mesh, an engine error this runner fails on), and the part there
 ## is drawn.
@@ -664,14 +753,16 @@ func _compare_field(plant_name: String, plant: FieldPlant) -> void:
 		var mesh_1: Image = await _field_picture(field, 0, "%s_%s_mesh1" % [plant_name, view])
 		var meshes_black: Image = await _impostors_alone(staged, field, plant, "%s_%s_impostors" % [plant_name, view])
 		var inside: PackedByteArray = picture.region(picture.luminance(meshes_black))
+		var around: PackedByteArray = picture.grown(inside, BRIGHTNESS_GROWTH)
 		var brightness: float = (
-			picture.mean_in(picture.luminance(auto), inside) / picture.mean_in(picture.luminance(mesh_1), inside)
+			(picture.mean_in(picture.luminance(auto), around) / picture.mean_in(picture.luminance(mesh_1), around))
 			if inside.count(1) > 0
 			else 1.0
 		)
-		# Leaf green where the impostors are drawn, ours against the meshes' (reported, not checked).
+		# Leaf green where the impostors are drawn (grown as for the brightness), ours against the meshes'
+		# (reported, not checked: the maple's far field is short of it, docs/plants.md).
 		var green: Vector2 = Vector2(
-			picture.mean_in(picture.leaf_green(auto), inside), picture.mean_in(picture.leaf_green(mesh_1), inside)
+			picture.mean_in(picture.leaf_green(auto), around), picture.mean_in(picture.leaf_green(mesh_1), around)
 		)
 		check_eq(_yellow_pixels(auto), 0, "%s field %s: no sunflower yellow" % [plant_name, view])
 		auto.shrink_x2()
