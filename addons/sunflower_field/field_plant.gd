@@ -302,16 +302,22 @@ var _field_meshes: Dictionary = {}  # a part mesh → the mesh the field draws i
 ## their node transforms and material overrides merged per mesh level, its level-of-detail variants
 ## ([code]_LOD0[/code], [code]_LOD1[/code] … node names) as mesh levels, or levels 2 and 3 simplified
 ## from level 1 (see [code]scene_plant.gd[/code]); framed by [method fit_to_meshes], and as tall as
-## the scene models it (a unit a metre). Null, with an error, for a scene without a mesh to draw.
+## the scene models it (a unit a metre). Null, with an error, for a scene that draws nothing (no
+## mesh, or no triangle with area); a warning for what it leaves out and for a plant that stands
+## wholly below or far above its root.
 ## Bake its impostors next ([method bake_impostors]; the editor's plant inspector does it at once).
 static func from_scene(scene: PackedScene) -> FieldPlant:
 	var source: String = scene.resource_path if scene and scene.resource_path else "(unsaved scene)"
 	var made: Dictionary = ScenePlant.levels_of(scene)
 	for problem: String in made.problems:
 		push_warning("FieldPlant.from_scene: %s: %s" % [source, problem])
-	if made.levels[0] == null:
-		push_error("FieldPlant.from_scene: %s has no visible MeshInstance3D to make a plant of" % source)
+	var refused: String = ScenePlant.refusal(made.levels[0])
+	if not refused.is_empty():
+		push_error("FieldPlant.from_scene: %s %s" % [source, refused])
 		return null
+	var placement: String = ScenePlant.placement_problem(made.levels[0])
+	if not placement.is_empty():
+		push_warning("FieldPlant.from_scene: %s: %s" % [source, placement])
 	var plant: FieldPlant = FieldPlant.new()
 	plant.name = source.get_file().get_basename() if scene.resource_path else "Plant"
 	plant.mesh_level_1 = [made.levels[0], null, null]

@@ -29,8 +29,7 @@ const CARD_TRIANGLES: float = 4.0
 const NORMAL_MERGE_ANGLE: float = 60.0
 const NORMAL_SPLIT_ANGLE: float = 25.0
 const WholePlantMesh: GDScript = preload("whole_plant_mesh.gd")
-
-static var _suffix: RegEx
+const ScenePieces: GDScript = preload("scene_pieces.gd")
 
 
 ## The scene's three mesh levels as ArrayMeshes (null where the scene has nothing to draw), with
@@ -42,8 +41,8 @@ static func levels_of(scene: PackedScene) -> Dictionary:
 	if root == null:
 		problems.append("the scene cannot be instantiated")
 		return {"levels": [null, null, null], "generated": false, "triangles": [0, 0, 0], "problems": problems}
-	var pieces: Array[Dictionary] = []  # {node, transform, level (-1: every level)}
-	_collect(root, Transform3D.IDENTITY, pieces, problems, true)
+	var pieces: Array[Dictionary] = ScenePieces.of(root, problems)
+	root.free()
 	var variants: bool = pieces.any(func(piece: Dictionary) -> bool: return piece.level >= 0)
 	var levels: Array = []
 	for level: int in 3 if variants else 1:
@@ -51,7 +50,6 @@ static func levels_of(scene: PackedScene) -> Dictionary:
 			func(piece: Dictionary) -> bool: return piece.level < 0 or piece.level == level
 		)
 		levels.append(_merge(chosen, problems))
-	root.free()
 	if variants:
 		for level: int in [1, 2]:
 			if levels[level] == null:
@@ -66,6 +64,43 @@ static func levels_of(scene: PackedScene) -> Dictionary:
 	}
 
 
+## Why [param mesh] (a plant's merged level 1) makes no plant, or "" when it makes one: nothing, or
+## nothing with area (every point at one place, or scaled to nothing).
+static func refusal(mesh: Mesh) -> String:
+	if mesh == null:
+		return "has no visible MeshInstance3D, MultiMeshInstance3D or CSG shape with triangles to make a plant of"
+	var area: float = 0.0
+	for surface: int in mesh.get_surface_count():
+		var arrays: Array = mesh.surface_get_arrays(surface)
+		area += _area(arrays[Mesh.ARRAY_VERTEX], arrays[Mesh.ARRAY_INDEX])
+	if not area > 1e-8:
+		return "draws no triangle with area (every point at one place, or scaled to nothing): no plant to make of it"
+	return ""
+
+
+## Where [param mesh] (a plant's merged level 1) stands off its root, or "": wholly below it, or
+## starting above it by more than its own height.
+static func placement_problem(mesh: Mesh) -> String:
+	var box: AABB = mesh.get_aabb()
+	if box.end.y <= 0.0:
+		return (
+			(
+				"it stands wholly below its root (%.2f to %.2f m): its plants would be under the ground;"
+				+ " move the scene's meshes up so that its base is at the root"
+			)
+			% [box.position.y, box.end.y]
+		)
+	if box.position.y > box.size.y:
+		return (
+			(
+				"it starts %.2f m above its root, more than its own height (%.2f m): its plants would float;"
+				+ " move the scene's meshes down to the root"
+			)
+			% [box.position.y, box.size.y]
+		)
+	return ""
+
+
 ## The triangles [param mesh] draws (0 for null).
 static func triangle_count(mesh: Mesh) -> int:
 	if mesh == null:
@@ -78,49 +113,35 @@ static func triangle_count(mesh: Mesh) -> int:
 	return count
 
 
-## The level of detail a node's name marks (0, 1, 2 …), or -1 for none.
-static func level_of_name(node_name: String) -> int:
-	if _suffix == null:
-		_suffix = RegEx.create_from_string("(?i)[_\\-. ]lod[_\\-]?(\\d+)$")
-	var found: RegExMatch = _suffix.search(node_name)
-	return found.get_string(1).to_int() if found else -1
-
-
-static func _collect(
-	node: Node, to_root: Transform3D, pieces: Array[Dictionary], problems: PackedStringArray, is_root: bool
-) -> void:
-	var here: Transform3D = to_root
-	if node is Node3D:
-		if not (node as Node3D).visible:
-			return
-		if not is_root:  # the plant's root stands at the scene root's origin
-			here = to_root * (node as Node3D).transform
-	if node is MeshInstance3D and (node as MeshInstance3D).mesh != null:
-		var level: int = level_of_name(node.name)
-		if level > 2:
-			problems.append("%s: level of detail %d is past the three mesh levels; left out" % [node.name, level])
-		else:
-			pieces.append({"node": node, "transform": here, "level": level})
-	for child: Node in node.get_children():
-		_collect(child, here, pieces, problems, false)
-
-
-## One mesh of [param pieces], surfaces of the same material and vertex format merged; null when
-## they draw nothing.
+## One mesh of [param pieces] ([code]scene_pieces.gd[/code]), surfaces of the same material and
+## vertex format merged; null when they draw nothing. A surface that is not of triangles, or whose
+## positions are not all finite, is left out and named in [param problems].
 static func _merge(pieces: Array[Dictionary], problems: PackedStringArray) -> ArrayMesh:
 	var groups: Array[Dictionary] = []  # {material, format, arrays}
 	for piece: Dictionary in pieces:
-		var instance: MeshInstance3D = piece.node
-		var mesh: Mesh = instance.mesh
+		var mesh: Mesh = piece.mesh
 		for surface: int in mesh.get_surface_count():
 			if (
 				mesh is ArrayMesh
 				and (mesh as ArrayMesh).surface_get_primitive_type(surface) != Mesh.PRIMITIVE_TRIANGLES
 			):
-				problems.append("%s: surface %d is not made of triangles; left out" % [instance.name, surface])
+				problems.append("%s: surface %d is not made of triangles; left out" % [piece.name, surface])
 				continue
 			var arrays: Array = mesh.surface_get_arrays(surface)
-			var material: Material = _material_shown(instance, surface)
+			if not (piece.weights as PackedFloat32Array).is_empty():
+				arrays = ScenePieces.blended(
+					arrays, (mesh as ArrayMesh).surface_get_blend_shape_arrays(surface), piece.weights
+				)
+			var unplaced: int = _non_finite(arrays[Mesh.ARRAY_VERTEX])
+			if unplaced > 0:
+				problems.append(
+					(
+						"%s: surface %d has %d vertex positions that are not finite numbers; left out"
+						% [piece.name, surface, unplaced]
+					)
+				)
+				continue
+			var material: Material = piece.materials[surface]
 			var format: Array = KEPT.map(func(kind: int) -> bool: return arrays[kind] != null)
 			var group: Dictionary = {}
 			for candidate: Dictionary in groups:
@@ -145,19 +166,22 @@ static func _merge(pieces: Array[Dictionary], problems: PackedStringArray) -> Ar
 	return merged
 
 
-## The material a MeshInstance3D shows on [param surface].
-static func _material_shown(instance: MeshInstance3D, surface: int) -> Material:
-	if instance.material_override:
-		return instance.material_override
-	var override: Material = instance.get_surface_override_material(surface)
-	return override if override else instance.mesh.surface_get_material(surface)
+## How many of [param positions] are not finite.
+static func _non_finite(positions: PackedVector3Array) -> int:
+	var count: int = 0
+	for position: Vector3 in positions:
+		if not position.is_finite():
+			count += 1
+	return count
 
 
 ## Appends a surface's [param arrays] to [param merged], its positions, normals and tangents moved
 ## by [param transform] into the plant's frame.
 static func _append(merged: Dictionary, arrays: Array, transform: Transform3D) -> void:
 	var first: int = (merged[Mesh.ARRAY_VERTEX] as PackedVector3Array).size()
-	var normal_basis: Basis = transform.basis.inverse().transposed()
+	# A transform that scales to nothing draws nothing; its normals are kept as they are.
+	var degenerate: bool = is_zero_approx(transform.basis.determinant())
+	var normal_basis: Basis = Basis.IDENTITY if degenerate else transform.basis.inverse().transposed()
 	var positions: PackedVector3Array = merged[Mesh.ARRAY_VERTEX]
 	for position: Vector3 in arrays[Mesh.ARRAY_VERTEX]:
 		positions.append(transform * position)

@@ -10,6 +10,7 @@ const Stage: GDScript = preload("res://runner/stage.gd")
 const Maps: GDScript = preload("res://runner/maps.gd")
 const Dressing: GDScript = preload("res://runner/dressing.gd")
 const ScenePlant: GDScript = preload("res://addons/sunflower_field/scene_plant.gd")
+const ScenePieces: GDScript = preload("res://addons/sunflower_field/scene_pieces.gd")
 const ImpostorBaker: GDScript = preload("res://addons/sunflower_field/impostor_baker.gd")
 const CROWN_PLACE: Vector3 = Vector3(0.5, 3.0, 0.0)
 const CROWN_SCALE: float = 1.5
@@ -181,8 +182,8 @@ func test_a_scene_of_several_meshes_becomes_a_plant_of_one_part_per_level() -> v
 			"mesh %d is the trunk and Leaves_LOD%d" % [level + 1, level]
 		)
 	parts.free()
-	check_eq(ScenePlant.level_of_name("Pine-lod2"), 2, "a '-lod2' suffix")
-	check_eq(ScenePlant.level_of_name("Pine"), -1, "no suffix")
+	check_eq(ScenePieces.level_of_name("Pine-lod2"), 2, "a '-lod2' suffix")
+	check_eq(ScenePieces.level_of_name("Pine"), -1, "no suffix")
 	# A field of it draws its meshes and nothing of the sunflower.
 	var field: SunflowerField = SunflowerField.new()
 	field.plant = plant
@@ -261,7 +262,7 @@ func test_a_scene_with_nothing_to_draw_is_an_error_naming_it() -> void:
 	var root: Node3D = Node3D.new()
 	empty.pack(root)
 	root.free()
-	allow_error("has no visible MeshInstance3D")
+	allow_error("has no visible MeshInstance3D, MultiMeshInstance3D or CSG shape")
 	check(FieldPlant.from_scene(empty) == null, "no plant of a scene without meshes")
 
 

@@ -1,0 +1,311 @@
+@tool
+extends RefCounted
+## What a plant scene draws, as the editor shows it, in pieces for [code]scene_plant.gd[/code] to
+## merge: each visible [MeshInstance3D] (its blend shapes at the node's weights), each instance of a
+## [MultiMeshInstance3D], and each CSG shape at the top of its tree (its baked mesh), placed by the
+## node transforms relative to the scene's root ([code]top_level[/code] nodes where they stand), with
+## the materials it shows and the mesh level it belongs to: a level-of-detail suffix in its name
+## ([code]_LOD0[/code], [code]-lod1[/code] …) or, for Godot's own manual levels of detail, its
+## [member GeometryInstance3D.visibility_range_begin]/[code]_end[/code] (the nearest range level 1).
+## What it cannot take is a problem naming the node and the reason.
+
+## The mesh levels a scene's variants fill.
+const LEVELS: int = 3
+
+static var _suffix: RegEx
+
+
+## The pieces [param root] draws: each a Dictionary of [code]"name"[/code] (the node's path in the
+## scene), [code]"mesh"[/code], [code]"materials"[/code] (one a surface, as shown),
+## [code]"transform"[/code] (to the root's frame), [code]"weights"[/code] (blend shape values; empty:
+## none) and [code]"level"[/code] (0–2, or -1 for every level). What is left out, and why, is
+## appended to [param problems].
+static func of(root: Node, problems: PackedStringArray) -> Array[Dictionary]:
+	var pieces: Array[Dictionary] = []
+	_collect(root, root, Transform3D.IDENTITY, pieces, problems)
+	_levels_from_suffixes(pieces, problems)
+	if not pieces.any(func(piece: Dictionary) -> bool: return piece.level >= 0):
+		_levels_from_ranges(pieces, problems)
+	for piece: Dictionary in pieces:
+		piece.erase("suffix")
+		piece.erase("range")
+	return pieces
+
+
+## The level of detail a node's name marks (0, 1, 2 …), or -1 for none.
+static func level_of_name(node_name: String) -> int:
+	if _suffix == null:
+		_suffix = RegEx.create_from_string("(?i)[_\\-. ]lod[_\\-]?(\\d+)$")
+	var found: RegExMatch = _suffix.search(node_name)
+	return found.get_string(1).to_int() if found else -1
+
+
+static func _collect(
+	node: Node, root: Node, to_root: Transform3D, pieces: Array[Dictionary], problems: PackedStringArray
+) -> void:
+	var here: Transform3D = to_root
+	if node is Node3D:
+		var spatial: Node3D = node as Node3D
+		if not spatial.visible:
+			return
+		if node != root:  # the plant's root stands at the scene root's origin
+			here = spatial.transform if spatial.top_level else to_root * spatial.transform
+	var path: String = String(root.get_path_to(node)) if node != root else String(root.name)
+	if node is MeshInstance3D:
+		_add_mesh_instance(node as MeshInstance3D, path, here, pieces, problems)
+	elif node is MultiMeshInstance3D:
+		_add_multimesh(node as MultiMeshInstance3D, path, here, pieces, problems)
+	elif node is CSGShape3D:
+		_add_csg(node as CSGShape3D, path, here, pieces, problems)
+		return  # the shapes below are part of its mesh
+	elif node is GeometryInstance3D:
+		problems.append(
+			(
+				"%s: a %s is not read (only MeshInstance3D, MultiMeshInstance3D and CSG shapes are); left out"
+				% [path, node.get_class()]
+			)
+		)
+	for child: Node in node.get_children():
+		_collect(child, root, here, pieces, problems)
+
+
+static func _add_mesh_instance(
+	instance: MeshInstance3D, path: String, here: Transform3D, pieces: Array[Dictionary], problems: PackedStringArray
+) -> void:
+	if instance.mesh == null:
+		return
+	var weights: PackedFloat32Array = []
+	var blends: int = instance.mesh.get_blend_shape_count() if instance.mesh is ArrayMesh else 0
+	for shape: int in blends:
+		weights.append(instance.get_blend_shape_value(shape))
+	var materials: Array[Material] = []
+	for surface: int in instance.mesh.get_surface_count():
+		materials.append(_material_shown(instance, surface))
+	var mesh: Mesh = instance.mesh
+	if _has_bone_weights(mesh):
+		var skeleton: Skeleton3D = instance.get_node_or_null(instance.skeleton) as Skeleton3D
+		if skeleton == null:
+			problems.append(
+				(
+					"%s: a skinned mesh whose skeleton (%s) is not in the scene; taken unposed (as modelled)"
+					% [path, instance.skeleton]
+				)
+			)
+		else:
+			mesh = posed(mesh as ArrayMesh, skeleton, instance.skin, weights)
+			weights = []  # applied before the pose, as the engine does
+	pieces.append(_piece(path, mesh, materials, here, weights, instance))
+
+
+## [param mesh] as its [param skeleton] poses it (each vertex moved by its bones' poses times their
+## bind poses, weighted; its blend shapes at [param weights] first), in the mesh instance's frame,
+## with no bones left. [param skin] binds the mesh's bone indices to the skeleton's bones; null: the
+## skeleton's bones in order, bound at their rest (as the engine makes one).
+static func posed(mesh: ArrayMesh, skeleton: Skeleton3D, skin: Skin, weights: PackedFloat32Array) -> ArrayMesh:
+	var binds: Array[Transform3D] = []
+	var bind_count: int = skin.get_bind_count() if skin else skeleton.get_bone_count()
+	for bind: int in bind_count:
+		var bone: int = bind
+		var bind_pose: Transform3D = skeleton.get_bone_global_rest(bind).affine_inverse() if not skin else Transform3D()
+		if skin:
+			bone = skin.get_bind_bone(bind)
+			if bone < 0:
+				bone = skeleton.find_bone(skin.get_bind_name(bind))
+			bind_pose = skin.get_bind_pose(bind)
+		binds.append(skeleton.get_bone_global_pose(bone) * bind_pose if bone >= 0 else Transform3D())
+	var out: ArrayMesh = ArrayMesh.new()
+	for surface: int in mesh.get_surface_count():
+		var arrays: Array = mesh.surface_get_arrays(surface)
+		if not weights.is_empty():
+			arrays = blended(arrays, mesh.surface_get_blend_shape_arrays(surface), weights)
+		var positions: PackedVector3Array = arrays[Mesh.ARRAY_VERTEX]
+		var bones: Variant = arrays[Mesh.ARRAY_BONES]
+		var bone_weights: Variant = arrays[Mesh.ARRAY_WEIGHTS]
+		if bones != null and bone_weights != null and positions.size() > 0:
+			var per_vertex: int = (
+				(bones as Array).size() / positions.size() if bones is Array else bones.size() / positions.size()
+			)
+			var normals: Variant = arrays[Mesh.ARRAY_NORMAL]
+			var moved: PackedVector3Array = positions.duplicate()
+			var turned: PackedVector3Array = normals.duplicate() if normals != null else PackedVector3Array()
+			for v: int in positions.size():
+				var position: Vector3 = Vector3.ZERO
+				var normal: Vector3 = Vector3.ZERO
+				for k: int in per_vertex:
+					var weight: float = bone_weights[v * per_vertex + k]
+					var bind: int = int(bones[v * per_vertex + k])
+					if weight == 0.0 or bind < 0 or bind >= binds.size():
+						continue
+					position += weight * (binds[bind] * positions[v])
+					if normals != null:
+						normal += weight * (binds[bind].basis * (normals as PackedVector3Array)[v])
+				moved[v] = position
+				if normals != null:
+					turned[v] = normal.normalized()
+			arrays[Mesh.ARRAY_VERTEX] = moved
+			if normals != null:
+				arrays[Mesh.ARRAY_NORMAL] = turned
+		arrays[Mesh.ARRAY_BONES] = null
+		arrays[Mesh.ARRAY_WEIGHTS] = null
+		out.add_surface_from_arrays(mesh.surface_get_primitive_type(surface), arrays)
+		out.surface_set_material(surface, mesh.surface_get_material(surface))
+	return out
+
+
+## A surface's [param arrays] with its blend shapes ([param shapes], their target arrays) applied at
+## [param weights], as the engine draws them: each position and normal moved by weight × (target −
+## base).
+static func blended(arrays: Array, shapes: Array, weights: PackedFloat32Array) -> Array:
+	var out: Array = arrays.duplicate()
+	for kind: int in [Mesh.ARRAY_VERTEX, Mesh.ARRAY_NORMAL]:
+		if arrays[kind] == null:
+			continue
+		var base: PackedVector3Array = arrays[kind]
+		var moved: PackedVector3Array = base.duplicate()
+		for shape: int in mini(shapes.size(), weights.size()):
+			var target: Variant = (shapes[shape] as Array)[kind]
+			if weights[shape] == 0.0 or target == null:
+				continue
+			var values: PackedVector3Array = target
+			for k: int in mini(values.size(), moved.size()):
+				moved[k] += weights[shape] * (values[k] - base[k])
+		if kind == Mesh.ARRAY_NORMAL:
+			for k: int in moved.size():
+				moved[k] = moved[k].normalized()
+		out[kind] = moved
+	return out
+
+
+static func _add_multimesh(
+	instance: MultiMeshInstance3D,
+	path: String,
+	here: Transform3D,
+	pieces: Array[Dictionary],
+	problems: PackedStringArray
+) -> void:
+	var multimesh: MultiMesh = instance.multimesh
+	if multimesh == null or multimesh.mesh == null:
+		return
+	if multimesh.transform_format != MultiMesh.TRANSFORM_3D:
+		problems.append("%s: a MultiMesh of 2D transforms; left out" % path)
+		return
+	var materials: Array[Material] = []
+	for surface: int in multimesh.mesh.get_surface_count():
+		var shown: Material = instance.material_override
+		materials.append(shown if shown else multimesh.mesh.surface_get_material(surface))
+	var count: int = multimesh.instance_count
+	if multimesh.visible_instance_count >= 0:
+		count = mini(count, multimesh.visible_instance_count)
+	for k: int in count:
+		var placed: Transform3D = here * multimesh.get_instance_transform(k)
+		pieces.append(_piece("%s (instance %d)" % [path, k], multimesh.mesh, materials, placed, [], instance))
+
+
+static func _add_csg(
+	shape: CSGShape3D, path: String, here: Transform3D, pieces: Array[Dictionary], problems: PackedStringArray
+) -> void:
+	var baked: ArrayMesh = shape.bake_static_mesh() if shape.is_root_shape() else null
+	if baked == null or baked.get_surface_count() == 0:
+		problems.append(
+			"%s: the CSG shape gives no mesh outside the scene tree; left out (bake it to a MeshInstance3D)" % path
+		)
+		return
+	var materials: Array[Material] = []
+	for surface: int in baked.get_surface_count():
+		var shown: Material = shape.material_override
+		materials.append(shown if shown else baked.surface_get_material(surface))
+	pieces.append(_piece(path, baked, materials, here, [], shape))
+
+
+static func _piece(
+	path: String,
+	mesh: Mesh,
+	materials: Array[Material],
+	here: Transform3D,
+	weights: PackedFloat32Array,
+	instance: GeometryInstance3D
+) -> Dictionary:
+	return {
+		"name": path,
+		"mesh": mesh,
+		"materials": materials,
+		"transform": here,
+		"weights": weights,
+		"level": -1,
+		"suffix": level_of_name(instance.name),
+		"range": Vector2(instance.visibility_range_begin, instance.visibility_range_end),
+	}
+
+
+## Levels from the names' suffixes: the suffixes present, lowest first, are levels 1, 2, 3 (a gap,
+## and suffixes past the third, named).
+static func _levels_from_suffixes(pieces: Array[Dictionary], problems: PackedStringArray) -> void:
+	var suffixes: Array = []
+	for piece: Dictionary in pieces:
+		if piece.suffix >= 0 and not suffixes.has(piece.suffix):
+			suffixes.append(piece.suffix)
+	suffixes.sort()
+	for k: int in suffixes.size():
+		if suffixes[k] != k and k < LEVELS:
+			problems.append(
+				(
+					"the level-of-detail suffixes go %s with no _LOD%d: _LOD%d is taken as mesh level %d"
+					% [", ".join(suffixes.map(func(s: int) -> String: return "_LOD%d" % s)), k, suffixes[k], k + 1]
+				)
+			)
+			break
+	for piece: Dictionary in pieces:
+		if piece.suffix < 0:
+			continue
+		var level: int = suffixes.find(piece.suffix)
+		if level >= LEVELS:
+			problems.append(
+				"%s: level of detail %d is past the three mesh levels; left out" % [piece.name, piece.suffix]
+			)
+		piece.level = level
+	for k: int in range(pieces.size() - 1, -1, -1):
+		if pieces[k].level >= LEVELS:
+			pieces.remove_at(k)
+
+
+## Levels from visibility ranges (Godot's manual levels of detail): the distinct ranges, nearest
+## first, are levels 1, 2, 3; a piece with no range is in every level; ranges past the third, named.
+static func _levels_from_ranges(pieces: Array[Dictionary], problems: PackedStringArray) -> void:
+	var ranges: Array[Vector2] = []
+	for piece: Dictionary in pieces:
+		if piece.range != Vector2.ZERO and not ranges.has(piece.range):
+			ranges.append(piece.range)
+	if ranges.is_empty():
+		return
+	ranges.sort_custom(func(a: Vector2, b: Vector2) -> bool: return a.x < b.x or a.x == b.x and a.y < b.y)
+	for k: int in range(pieces.size() - 1, -1, -1):
+		var piece: Dictionary = pieces[k]
+		if piece.range == Vector2.ZERO:
+			continue
+		piece.level = ranges.find(piece.range)
+		if piece.level >= LEVELS:
+			(
+				problems
+				. append(
+					(
+						"%s: its visibility range %.1f–%.1f m is the %dth of the scene's; past the three mesh levels, left out"
+						% [piece.name, piece.range.x, piece.range.y, piece.level + 1]
+					)
+				)
+			)
+			pieces.remove_at(k)
+
+
+## The material a MeshInstance3D shows on [param surface].
+static func _material_shown(instance: MeshInstance3D, surface: int) -> Material:
+	if instance.material_override:
+		return instance.material_override
+	var override: Material = instance.get_surface_override_material(surface)
+	return override if override else instance.mesh.surface_get_material(surface)
+
+
+static func _has_bone_weights(mesh: Mesh) -> bool:
+	for surface: int in mesh.get_surface_count():
+		if mesh.surface_get_arrays(surface)[Mesh.ARRAY_BONES] != null:
+			return true
+	return false

@@ -1,0 +1,209 @@
+extends TestCase
+## A catalogue of odd plant scenes, built here, each through FieldPlant.from_scene: drawn as the
+## editor shows it (top_level nodes where they stand, MultiMesh instances as parts, blend shapes at
+## their weights, Godot's visibility-range levels of detail as mesh levels), or refused or warned
+## about with a message naming the node and the reason (nothing with area, non-finite positions,
+## a gap in the LOD suffixes, nodes it does not read, a plant below its root); a skinned mesh in its
+## skeleton's pose.
+## Needs a renderer (the engine suite): a MultiMesh keeps its instances in the rendering server,
+## which --headless does not keep.
+
+const ScenePlant: GDScript = preload("res://addons/sunflower_field/scene_plant.gd")
+
+
+func _pack(root: Node3D) -> PackedScene:
+	for node: Node in root.find_children("*", "", true, false):
+		node.owner = root
+	var packed: PackedScene = PackedScene.new()
+	packed.pack(root)
+	root.free()
+	return packed
+
+
+func _box_node(node_name: String, size: Vector3, position: Vector3) -> MeshInstance3D:
+	var box: BoxMesh = BoxMesh.new()
+	box.size = size
+	var instance: MeshInstance3D = MeshInstance3D.new()
+	instance.name = node_name
+	instance.mesh = box
+	instance.position = position
+	return instance
+
+
+func _root() -> Node3D:
+	var root: Node3D = Node3D.new()
+	root.name = "Plant"
+	return root
+
+
+func test_a_top_level_node_stands_where_it_stands_not_where_its_parent_is() -> void:
+	var root: Node3D = _root()
+	var holder: Node3D = Node3D.new()
+	holder.name = "Holder"
+	holder.position = Vector3(0.0, 5.0, 0.0)
+	root.add_child(holder)
+	var free: MeshInstance3D = _box_node("Free", Vector3(0.4, 2.0, 0.4), Vector3(0.0, 1.0, 0.0))
+	free.top_level = true
+	holder.add_child(free)
+	var plant: FieldPlant = FieldPlant.from_scene(_pack(root))
+	if check(plant != null, "a plant"):
+		check_near(plant.height, 2.0, 1e-3, "2 m tall from the root, as the top_level box stands (not 7 m)")
+
+
+func test_multimesh_instances_are_parts_of_the_plant() -> void:
+	var root: Node3D = _root()
+	root.add_child(_box_node("Trunk", Vector3(0.2, 2.0, 0.2), Vector3(0.0, 1.0, 0.0)))
+	var leaves: MultiMeshInstance3D = MultiMeshInstance3D.new()
+	leaves.name = "Leaves"
+	var multimesh: MultiMesh = MultiMesh.new()
+	multimesh.transform_format = MultiMesh.TRANSFORM_3D
+	var leaf: QuadMesh = QuadMesh.new()
+	leaf.size = Vector2(0.3, 0.3)
+	multimesh.mesh = leaf
+	multimesh.instance_count = 3
+	for k: int in 3:
+		multimesh.set_instance_transform(k, Transform3D(Basis(), Vector3(0.5 * (k - 1), 2.5 + 0.3 * k, 0.0)))
+	leaves.multimesh = multimesh
+	root.add_child(leaves)
+	var plant: FieldPlant = FieldPlant.from_scene(_pack(root))
+	if not check(plant != null, "a plant"):
+		return
+	var trunk: int = ScenePlant.triangle_count(BoxMesh.new())
+	check_eq(ScenePlant.triangle_count(plant.mesh_level_1[0]), trunk + 3 * 2, "the trunk and three leaf quads")
+	check_near(plant.height, 2.5 + 0.6 + 0.15, 1e-3, "as tall as the highest leaf instance")
+
+
+func test_visibility_range_variants_are_mesh_levels() -> void:
+	var root: Node3D = _root()
+	var detailed: MeshInstance3D = MeshInstance3D.new()
+	detailed.name = "Detailed"
+	var sphere: SphereMesh = SphereMesh.new()
+	detailed.mesh = sphere
+	detailed.visibility_range_end = 20.0
+	root.add_child(detailed)
+	var simple: MeshInstance3D = _box_node("Simple", Vector3.ONE, Vector3.ZERO)
+	simple.visibility_range_begin = 20.0
+	root.add_child(simple)
+	var made: Dictionary = ScenePlant.levels_of(_pack(root))
+	check(not made.generated, "levels from the scene, not simplified")
+	check_eq(made.triangles[0], ScenePlant.triangle_count(SphereMesh.new()), "mesh 1: the detailed variant alone")
+	check_eq(made.triangles[1], ScenePlant.triangle_count(BoxMesh.new()), "mesh 2: the simple one alone")
+
+
+func test_blend_shapes_are_taken_at_the_nodes_weights() -> void:
+	var arrays: Array = []
+	arrays.resize(Mesh.ARRAY_MAX)
+	arrays[Mesh.ARRAY_VERTEX] = PackedVector3Array([Vector3(-0.5, 0, 0), Vector3(0.5, 0, 0), Vector3(0, 1, 0)])
+	var stretched: Array = []
+	stretched.resize(Mesh.ARRAY_MAX)
+	stretched[Mesh.ARRAY_VERTEX] = PackedVector3Array([Vector3(-0.5, 0, 0), Vector3(0.5, 0, 0), Vector3(0, 3, 0)])
+	var mesh: ArrayMesh = ArrayMesh.new()
+	mesh.add_blend_shape("Tall")
+	mesh.add_surface_from_arrays(Mesh.PRIMITIVE_TRIANGLES, arrays, [stretched])
+	var root: Node3D = _root()
+	var instance: MeshInstance3D = MeshInstance3D.new()
+	instance.name = "Blade"
+	instance.mesh = mesh
+	instance.set_blend_shape_value(0, 1.0)
+	root.add_child(instance)
+	var plant: FieldPlant = FieldPlant.from_scene(_pack(root))
+	if check(plant != null, "a plant"):
+		check_near(plant.height, 3.0, 1e-3, "3 m tall, as its blend shape at weight 1 shows it (the base is 1 m)")
+
+
+func test_a_scene_that_draws_nothing_with_area_is_refused_naming_why() -> void:
+	var root: Node3D = _root()
+	var flat: MeshInstance3D = _box_node("Squashed", Vector3.ONE, Vector3(0.0, 0.5, 0.0))
+	flat.scale = Vector3.ZERO
+	root.add_child(flat)
+	allow_error("draws no triangle with area")
+	check(FieldPlant.from_scene(_pack(root)) == null, "no plant of a mesh scaled to nothing")
+
+
+func test_non_finite_positions_are_named_by_node_and_surface() -> void:
+	var arrays: Array = []
+	arrays.resize(Mesh.ARRAY_MAX)
+	arrays[Mesh.ARRAY_VERTEX] = PackedVector3Array([Vector3(0, 0, 0), Vector3(1, 0, 0), Vector3(0, NAN, 0)])
+	var broken: ArrayMesh = ArrayMesh.new()
+	broken.add_surface_from_arrays(Mesh.PRIMITIVE_TRIANGLES, arrays)
+	var root: Node3D = _root()
+	root.add_child(_box_node("Trunk", Vector3(0.2, 2.0, 0.2), Vector3(0.0, 1.0, 0.0)))
+	var instance: MeshInstance3D = MeshInstance3D.new()
+	instance.name = "Broken"
+	instance.mesh = broken
+	root.add_child(instance)
+	var plant: FieldPlant = FieldPlant.from_scene(_pack(root))
+	check(plant != null, "a plant of the rest")
+	check(warned("Broken: surface 0 has 1 vertex positions that are not finite"), "the node and surface named")
+	if plant:
+		check_near(plant.height, 2.0, 1e-3, "the broken surface left out, not stretching the plant")
+
+
+func test_a_gap_in_the_lod_suffixes_is_named() -> void:
+	var root: Node3D = _root()
+	root.add_child(_box_node("Bush_LOD1", Vector3(1.0, 1.0, 1.0), Vector3(0.0, 0.5, 0.0)))
+	root.add_child(_box_node("Bush_LOD2", Vector3(1.0, 0.5, 1.0), Vector3(0.0, 0.25, 0.0)))
+	var plant: FieldPlant = FieldPlant.from_scene(_pack(root))
+	check(warned("no _LOD0: _LOD1 is taken as mesh level 1"), "the missing _LOD0 named")
+	if check(plant != null, "a plant of the variants there are"):
+		check_near(plant.height, 1.0, 1e-3, "mesh 1 is Bush_LOD1")
+		check_near(plant.mesh_level_2[0].get_aabb().size.y, 0.5, 1e-3, "mesh 2 is Bush_LOD2")
+
+
+func test_nodes_it_does_not_read_are_named() -> void:
+	var root: Node3D = _root()
+	root.add_child(_box_node("Trunk", Vector3(0.2, 2.0, 0.2), Vector3(0.0, 1.0, 0.0)))
+	var sprite: Sprite3D = Sprite3D.new()
+	sprite.name = "Flower"
+	root.add_child(sprite)
+	var crown: CSGSphere3D = CSGSphere3D.new()
+	crown.name = "Crown"
+	root.add_child(crown)
+	var plant: FieldPlant = FieldPlant.from_scene(_pack(root))
+	check(plant != null, "a plant of what it reads")
+	var warnings: String = "\n".join(take_warnings())
+	check(warnings.contains("Flower: a Sprite3D is not read"), "the sprite named, with the reason")
+	# The engine makes a CSG shape's mesh only in the scene tree: named, not dropped in silence.
+	check(warnings.contains("Crown: the CSG shape gives no mesh outside the scene tree"), "the CSG shape named")
+
+
+## A skinned mesh (as glTF plants with an armature for wind come) in the pose its skeleton holds:
+## a 1 m box bound to one bone posed 1 m up makes a plant 2 m tall (unposed: 1 m).
+func test_a_skinned_mesh_is_taken_in_its_pose() -> void:
+	var root: Node3D = _root()
+	var skeleton: Skeleton3D = Skeleton3D.new()
+	skeleton.name = "Armature"
+	skeleton.add_bone("Root")
+	skeleton.set_bone_pose_position(0, Vector3(0.0, 1.0, 0.0))
+	root.add_child(skeleton)
+	var arrays: Array = BoxMesh.new().get_mesh_arrays()
+	var count: int = (arrays[Mesh.ARRAY_VERTEX] as PackedVector3Array).size()
+	var positions: PackedVector3Array = arrays[Mesh.ARRAY_VERTEX]
+	for k: int in count:
+		positions[k] += Vector3(0.0, 0.5, 0.0)  # standing on the root
+	arrays[Mesh.ARRAY_VERTEX] = positions
+	var bones: PackedInt32Array = []
+	var weights: PackedFloat32Array = []
+	for k: int in count:
+		bones.append_array(PackedInt32Array([0, 0, 0, 0]))
+		weights.append_array(PackedFloat32Array([1.0, 0.0, 0.0, 0.0]))
+	arrays[Mesh.ARRAY_BONES] = bones
+	arrays[Mesh.ARRAY_WEIGHTS] = weights
+	var body: ArrayMesh = ArrayMesh.new()
+	body.add_surface_from_arrays(Mesh.PRIMITIVE_TRIANGLES, arrays)
+	var skinned: MeshInstance3D = MeshInstance3D.new()
+	skinned.name = "Body"
+	skinned.mesh = body
+	skinned.skeleton = NodePath("..")
+	skeleton.add_child(skinned)
+	var plant: FieldPlant = FieldPlant.from_scene(_pack(root))
+	if check(plant != null, "a plant"):
+		check_near(plant.height, 2.0, 1e-3, "2 m tall, as its bone's pose shows it")
+
+
+func test_a_plant_wholly_below_its_root_is_warned_about() -> void:
+	var root: Node3D = _root()
+	root.add_child(_box_node("Sunk", Vector3(1.0, 2.0, 1.0), Vector3(0.0, -4.0, 0.0)))
+	var plant: FieldPlant = FieldPlant.from_scene(_pack(root))
+	check(plant != null, "a plant, as the scene has it")
+	check(warned("stands wholly below its root"), "with what to fix")
