@@ -412,4 +412,6 @@ func test_the_built_in_sunflower_baked_again_matches_the_shipped_textures() -> v
 	var shipped_cuts: PackedFloat32Array = FieldPlant.default_plant().impostor_alpha_cuts
 	check_eq(plant.impostor_alpha_cuts.size(), shipped_cuts.size(), "an alpha cut for each mip level, as shipped")
 	for level: int in mini(plant.impostor_alpha_cuts.size(), shipped_cuts.size()):
-		check_near(plant.impostor_alpha_cuts[level], shipped_cuts[level], 0.02, "the alpha cut at mip %d, as shipped" % level)
+		check_near(
+			plant.impostor_alpha_cuts[level], shipped_cuts[level], 0.02, "the alpha cut at mip %d, as shipped" % level
+		)
