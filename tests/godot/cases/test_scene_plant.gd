@@ -11,6 +11,7 @@ const Maps: GDScript = preload("res://runner/maps.gd")
 const Dressing: GDScript = preload("res://runner/dressing.gd")
 const ScenePlant: GDScript = preload("res://addons/sunflower_field/scene_plant.gd")
 const ScenePieces: GDScript = preload("res://addons/sunflower_field/scene_pieces.gd")
+const Scenes: GDScript = preload("res://runner/scenes.gd")
 const ImpostorBaker: GDScript = preload("res://addons/sunflower_field/impostor_baker.gd")
 const CROWN_PLACE: Vector3 = Vector3(0.5, 3.0, 0.0)
 const CROWN_SCALE: float = 1.5
@@ -75,12 +76,7 @@ func _tree_scene(variants: bool = false) -> PackedScene:
 		leaves.mesh = cone
 		leaves.set_surface_override_material(0, _leaves())
 		crown.add_child(leaves)
-	for node: Node in root.find_children("*", "", true, false):
-		node.owner = root
-	var packed: PackedScene = PackedScene.new()
-	packed.pack(root)
-	root.free()
-	return packed
+	return Scenes.packed(root)
 
 
 func _bark() -> StandardMaterial3D:
