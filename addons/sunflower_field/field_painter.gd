@@ -68,6 +68,7 @@ func _init(undo_redo: EditorUndoRedoManager) -> void:
 	_radius_box = _spin_box("Brush radius", 0.25, 50.0, 0.25, radius, " m")
 	_radius_box.value_changed.connect(func(value: float) -> void: radius = value)
 	_density_box = _spin_box("Density: the share of cells a stroke fills", 0.05, 1.0, 0.05, density, "")
+	_density_box.prefix = "density"  # a bare "1.0" in the toolbar named nothing
 	_density_box.value_changed.connect(func(value: float) -> void: density = value)
 	toolbar.visible = false
 	if Engine.is_editor_hint():  # tools and tests also paint outside the editor

@@ -12,7 +12,11 @@ func _can_handle(object: Object) -> bool:
 func _parse_begin(object: Object) -> void:
 	var button: Button = Button.new()
 	button.text = "Bake impostors"
-	button.tooltip_text = "Render the plant's level-1 parts into its front, side and billboard textures."
+	button.tooltip_text = "Render the plant's level-1 parts from 120 views into its impostor atlases."
+	if object is SunflowerField and (object as SunflowerField).plant == null:
+		# Nothing of the field's own to bake: shown, but not offered.
+		button.disabled = true
+		button.tooltip_text = "The field grows the built-in sunflower, whose impostors ship baked: give it a plant first."
 	button.pressed.connect(_bake.bind(object, button))
 	add_custom_control(button)
 

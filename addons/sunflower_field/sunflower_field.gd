@@ -250,6 +250,8 @@ const WIND_PROPERTIES: Dictionary = {
 		if plant:
 			plant.changed.connect(_on_plant_changed)
 		_on_plant_changed()
+		if Engine.is_editor_hint():
+			notify_property_list_changed()  # the inspector offers Bake impostors for a plant of its own
 ## Alpha below which sprite and billboard pixels are discarded (thesis: 190/255).
 @export_range(0.0, 1.0, 0.001) var alpha_scissor: float = 190.0 / 255.0:
 	set(value):
