@@ -193,7 +193,10 @@ func test_the_field_holds_a_gpu_time_target_on_the_software_renderer() -> void:
 	field.budget_gpu_ms = full_ms * 0.7
 	var qualities: PackedFloat32Array = []
 	var times: PackedFloat32Array = []
-	for frame: int in 12:
+	# 20 frames: under the test command's second lane the software GPU time swings, and after 12 frames
+	# the quality was still stepping down to the target once (0.830 → 0.723, at 1 818–2 039 ms for a
+	# target of 1 879 ms); alone it settles within 6.
+	for frame: int in 20:
 		await frames(1)
 		qualities.append(field.get_quality())
 		times.append(field.get_frame_stats()["gpu_ms"])
