@@ -170,7 +170,6 @@ static func alpha_cuts(image: Image) -> PackedFloat32Array:
 		counts.resize(256)
 		for k: int in range(levels.get_mipmap_offset(level) + 3, end, 4):
 			counts[data[k]] += 1
-		var texels: int = (end - levels.get_mipmap_offset(level)) / 4
 		var covered: float = 0.0  # the mean alpha's worth of texels
 		for alpha: int in 256:
 			covered += counts[alpha] * alpha / 255.0
