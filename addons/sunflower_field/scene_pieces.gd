@@ -78,9 +78,7 @@ static func _add_mesh_instance(
 	var blends: int = instance.mesh.get_blend_shape_count() if instance.mesh is ArrayMesh else 0
 	for shape: int in blends:
 		weights.append(instance.get_blend_shape_value(shape))
-	var materials: Array[Material] = []
-	for surface: int in instance.mesh.get_surface_count():
-		materials.append(_material_shown(instance, surface))
+	var materials: Array[Material] = _materials_shown(instance, instance.mesh)
 	var mesh: Mesh = instance.mesh
 	if _has_bone_weights(mesh):
 		var skeleton: Skeleton3D = instance.get_node_or_null(instance.skeleton) as Skeleton3D
@@ -122,9 +120,7 @@ static func posed(mesh: ArrayMesh, skeleton: Skeleton3D, skin: Skin, weights: Pa
 		var bones: Variant = arrays[Mesh.ARRAY_BONES]
 		var bone_weights: Variant = arrays[Mesh.ARRAY_WEIGHTS]
 		if bones != null and bone_weights != null and positions.size() > 0:
-			var per_vertex: int = (
-				(bones as Array).size() / positions.size() if bones is Array else bones.size() / positions.size()
-			)
+			var per_vertex: int = bones.size() / positions.size()
 			var normals: Variant = arrays[Mesh.ARRAY_NORMAL]
 			var moved: PackedVector3Array = positions.duplicate()
 			var turned: PackedVector3Array = normals.duplicate() if normals != null else PackedVector3Array()
@@ -189,10 +185,7 @@ static func _add_multimesh(
 	if multimesh.transform_format != MultiMesh.TRANSFORM_3D:
 		problems.append("%s: a MultiMesh of 2D transforms; left out" % path)
 		return
-	var materials: Array[Material] = []
-	for surface: int in multimesh.mesh.get_surface_count():
-		var shown: Material = instance.material_override
-		materials.append(shown if shown else multimesh.mesh.surface_get_material(surface))
+	var materials: Array[Material] = _materials_shown(instance, multimesh.mesh)
 	var count: int = multimesh.instance_count
 	if multimesh.visible_instance_count >= 0:
 		count = mini(count, multimesh.visible_instance_count)
@@ -210,11 +203,7 @@ static func _add_csg(
 			"%s: the CSG shape gives no mesh outside the scene tree; left out (bake it to a MeshInstance3D)" % path
 		)
 		return
-	var materials: Array[Material] = []
-	for surface: int in baked.get_surface_count():
-		var shown: Material = shape.material_override
-		materials.append(shown if shown else baked.surface_get_material(surface))
-	pieces.append(_piece(path, baked, materials, here, [], shape))
+	pieces.append(_piece(path, baked, _materials_shown(shape, baked), here, [], shape))
 
 
 static func _piece(
@@ -296,12 +285,16 @@ static func _levels_from_ranges(pieces: Array[Dictionary], problems: PackedStrin
 			pieces.remove_at(k)
 
 
-## The material a MeshInstance3D shows on [param surface].
-static func _material_shown(instance: MeshInstance3D, surface: int) -> Material:
-	if instance.material_override:
-		return instance.material_override
-	var override: Material = instance.get_surface_override_material(surface)
-	return override if override else instance.mesh.surface_get_material(surface)
+## The material [param instance] shows on each surface of [param mesh]: its material override, else
+## (a MeshInstance3D) its surface override, else the mesh's own.
+static func _materials_shown(instance: GeometryInstance3D, mesh: Mesh) -> Array[Material]:
+	var materials: Array[Material] = []
+	for surface: int in mesh.get_surface_count():
+		var shown: Material = instance.material_override
+		if shown == null and instance is MeshInstance3D:
+			shown = (instance as MeshInstance3D).get_surface_override_material(surface)
+		materials.append(shown if shown else mesh.surface_get_material(surface))
+	return materials
 
 
 static func _has_bone_weights(mesh: Mesh) -> bool:
