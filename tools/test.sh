@@ -446,12 +446,14 @@ if runs editor; then
   cp "$repo/tests/editor_paint/"{project.godot,paint.field,paint.tscn} "$paintproj/"
   if "$repo/tools/import_project.sh" "$paintproj" >"$artifacts/editor_paint.log" 2>&1 &&
     RUN_PROBE=1 timeout 300 "$godot" --headless --editor --path "$paintproj" >>"$artifacts/editor_paint.log" 2>&1 &&
-    grep -q '^probe: ok$' "$artifacts/editor_paint.log"; then
+    grep -q '^probe: ok$' "$artifacts/editor_paint.log" &&
+    # The one error expected is the probe's missing file; Ctrl+Z printed "Inconsistent undo history" once.
+    ! grep -E "SCRIPT ERROR|^ERROR" "$artifacts/editor_paint.log" | grep -v "res://gone.field"; then
     grep '^probe:' "$artifacts/editor_paint.log" | tail -n 1
-    record 1 0 "editor: paint, erase, undo, redo, write-back, a missing file, a new field"
+    record 1 0 "editor: paint, erase, Ctrl+Z, Ctrl+Y, write-back, a missing file, a new field; no unexpected error"
   else
     grep -E '^probe:|ERROR' "$artifacts/editor_paint.log" | head -n 10
-    record 0 1 "editor: paint, erase, undo, redo, write-back, a missing file, a new field"
+    record 0 1 "editor: paint, erase, Ctrl+Z, Ctrl+Y, write-back, a missing file, a new field; no unexpected error"
   fi
   rm -rf "$paintproj"
   echo "== editor (Xvfb, Vulkan): a plant selected in the inspector, its 'Bake impostors' button pressed; three glTF"

@@ -387,8 +387,10 @@ func resize_map(field: SunflowerField, columns: int, rows: int) -> bool:
 	return true
 
 
-## Writes [param bytes] to the map file [param path], reimports it and gives [param field] the
-## imported map. On failure (a read-only or vanished file) says so and the field shows the file.
+## Writes [param bytes] to the map file [param path] and, once the frame's undo/redo step is over,
+## reimports it and gives [param field] the imported map (a reimport inside an undo step leaves the
+## editor's undo history inconsistent). On failure (a read-only or vanished file) says so and the
+## field shows the file.
 func write_map(field: SunflowerField, path: String, bytes: PackedByteArray) -> void:
 	var file: FileAccess = FileAccess.open(path, FileAccess.WRITE)
 	if file == null:
@@ -402,7 +404,13 @@ func write_map(field: SunflowerField, path: String, bytes: PackedByteArray) -> v
 		return
 	file.store_buffer(bytes)
 	file.close()
-	field.map = _reimported(path)
+	_give_reimported.call_deferred(field, path)
+
+
+## [param field] (when still there) takes the map file [param path] imported anew.
+func _give_reimported(field: Object, path: String) -> void:
+	if is_instance_valid(field):
+		(field as SunflowerField).map = _reimported(path)
 
 
 ## The map file [param path] imported anew (just written), as the resource fields load.

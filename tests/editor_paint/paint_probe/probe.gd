@@ -39,6 +39,9 @@ func _run() -> void:
 	var original: PackedByteArray = FileAccess.get_file_as_bytes(MAP_PATH)
 	var plants_before: int = field.get_plant_count()
 	var cells_before: Dictionary = _cells(original)
+	var undo_redo: EditorUndoRedoManager = EditorInterface.get_editor_undo_redo()
+	var history: UndoRedo = undo_redo.get_history_undo_redo(undo_redo.get_object_history_id(field))
+	var version_before: int = history.get_version()
 
 	# Paint a stroke in the empty east half: only the cells within the brush of the points visited.
 	painter.set_mode(1)  # Paint
@@ -70,14 +73,14 @@ func _run() -> void:
 	_check(field.map.text == painted, "the field's map is the reimported file")
 
 	# Undo restores the file byte for byte and the plants; redo paints again.
-	var undo_redo: EditorUndoRedoManager = EditorInterface.get_editor_undo_redo()
-	var history: UndoRedo = undo_redo.get_history_undo_redo(undo_redo.get_object_history_id(field))
-	history.undo()
+	_press_shortcut(KEY_Z)  # Ctrl+Z, as a user undoes
 	await _frames(2)
 	field.finish_build()
 	_check(FileAccess.get_file_as_bytes(MAP_PATH) == original, "undo restores the file byte for byte")
 	_check(field.get_plant_count() == plants_before, "undo restores the plants")
-	history.redo()
+	# The editor calls a scene changed while its history's version differs from the saved one.
+	_check(history.get_version() == version_before, "after the undo the scene is as unchanged as before")
+	_press_shortcut(KEY_Y)  # Ctrl+Y
 	await _frames(2)
 	field.finish_build()
 	_check(FileAccess.get_file_as_bytes(MAP_PATH) == painted, "redo writes the painted map again")
@@ -126,6 +129,7 @@ func _run() -> void:
 	for cell: Vector2i in _cells(before_resize):
 		kept += 1 if cell.y < 25 else 0
 	_check(painter.resize_map(field, 50, 25), "resized")
+	await _frames(2)
 	field.finish_build()
 	_check(FileAccess.get_file_as_string(MAP_PATH).contains("\n50 25\n"), "the header says 50 25")
 	_check(field.get_plant_count() == kept, "the shared cells kept (%d of %d)" % [field.get_plant_count(), kept])
@@ -201,6 +205,17 @@ func _picture(painter: RefCounted, field: SunflowerField, path: String) -> void:
 		painter.handle_input(eye, motion)
 		await _tree.process_frame
 	EditorInterface.get_base_control().get_viewport().get_texture().get_image().save_png(path)
+
+
+## Ctrl+[param key] pressed and released in the editor's window, as a user presses a shortcut.
+func _press_shortcut(key: Key) -> void:
+	for down: bool in [true, false]:
+		var event: InputEventKey = InputEventKey.new()
+		event.keycode = key
+		event.physical_keycode = key
+		event.ctrl_pressed = true
+		event.pressed = down
+		EditorInterface.get_base_control().get_viewport().push_input(event)
 
 
 ## A left drag through [param points] (Ctrl held when [param ctrl]): press, moves, release.
