@@ -457,7 +457,7 @@ if runs editor; then
   fi
   rm -rf "$paintproj"
   echo "== editor (Xvfb, Vulkan): a plant selected in the inspector, its 'Bake impostors' button pressed; three glTF"
-  echo "   plants dropped on a field's 'Plant from scene…'"
+  echo "   plants dropped on a field's 'Plant from scene…'; a field removed while its plant bakes"
   bakeproj=$(mktemp -d)
   new_project "$bakeproj"
   cp -r "$repo/tests/editor_bake/bake_probe" "$bakeproj/addons/"
@@ -466,12 +466,14 @@ if runs editor; then
   if "$repo/tools/import_project.sh" "$bakeproj" >"$artifacts/editor_bake.log" 2>&1 &&
     RUN_PROBE=1 PROBE_SHOT="$artifacts/editor_bake.png" timeout 300 xvfb-run -a -s "-screen 0 1600x900x24" "$godot" --editor \
       --audio-driver Dummy --path "$bakeproj" >>"$artifacts/editor_bake.log" 2>&1 &&
-    grep -q '^probe: ok$' "$artifacts/editor_bake.log"; then
-    grep '^probe:' "$artifacts/editor_bake.log" | head -n 3
-    record 1 0 "editor: Bake impostors writes, imports and saves the plant's textures; glTF plants dropped on a field"
+    grep -q '^probe: ok$' "$artifacts/editor_bake.log" &&
+    grep -q "the field left the edited scene while res://grass_clump_plant.*tres baked" "$artifacts/editor_bake.log" &&
+    ! grep "SCRIPT ERROR" "$artifacts/editor_bake.log"; then
+    grep '^probe:' "$artifacts/editor_bake.log" | head -n 4
+    record 1 0 "editor: Bake impostors writes, imports and saves the plant's textures; glTF plants dropped on a field; a field removed mid-bake"
   else
     grep -E '^probe:|ERROR' "$artifacts/editor_bake.log" | head -n 10
-    record 0 1 "editor: Bake impostors writes, imports and saves the plant's textures; glTF plants dropped on a field"
+    record 0 1 "editor: Bake impostors writes, imports and saves the plant's textures; glTF plants dropped on a field; a field removed mid-bake"
   fi
   # Then the game: a scene without code grows that plant, with its baked impostors, on a collider terrain.
   if timeout 300 "${xvfb[@]}" "$godot" --audio-driver Dummy --path "$bakeproj" \

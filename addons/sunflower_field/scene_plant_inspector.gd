@@ -42,7 +42,8 @@ func _parse_property(
 
 ## Makes the scene at [param path] the plant of [param field] (see the script's description); await
 ## it. Returns the plant, or null when the scene cannot be loaded, has nothing to draw or cannot be
-## saved (the error names it). [param button] and [param bar] show the progress when given.
+## saved (the error names it), or when the field left the edited scene during the bake (a warning says
+## where the plant is saved). [param button] and [param bar] show the progress when given.
 func make_plant(path: String, field: SunflowerField, button: Button = null, bar: ProgressBar = null) -> FieldPlant:
 	_show_step(0, button, bar)
 	var scene: PackedScene = load(path) as PackedScene
@@ -63,6 +64,16 @@ func make_plant(path: String, field: SunflowerField, button: Button = null, bar:
 	error = await plant.bake_impostors(EditorInterface.get_base_control())
 	if error != OK:
 		push_error("Plant from scene: the impostors of %s.tres were not baked (%s)" % [base, error_string(error)])
+	if not _in_edited_scene(field):
+		push_warning(
+			(
+				"Plant from scene: the field left the edited scene while %s.tres baked (removed, undone or its scene"
+				+ " closed); the plant is saved there, not given to any field"
+			)
+			% base
+		)
+		_show_step(-1, button, bar)
+		return null
 	var triangles: Array = [1, 2, 3].map(
 		func(level: int) -> int: return ScenePlant.triangle_count(plant.get("mesh_level_%d" % level)[0])
 	)
@@ -89,6 +100,14 @@ func make_plant(path: String, field: SunflowerField, button: Button = null, bar:
 	_undo.commit_action()
 	_show_step(-1, button, bar)
 	return plant
+
+
+## True while [param field] is a node of the scene being edited (the undo action needs it there).
+static func _in_edited_scene(field: Variant) -> bool:
+	if not is_instance_valid(field) or not (field as Node).is_inside_tree():
+		return false
+	var root: Node = EditorInterface.get_edited_scene_root()
+	return root != null and (root == field or root.is_ancestor_of(field as Node))
 
 
 ## [param base] (a path without extension), or with _2, _3 … added when a plant of that name exists.
@@ -121,7 +140,10 @@ static func _save(plant: FieldPlant, base: String) -> Error:
 
 
 ## Shows step [param step] of [constant STEPS] on the button and bar; -1: done, both as before.
-static func _show_step(step: int, button: Button, bar: ProgressBar) -> void:
+## (Untyped: the inspector frees its controls when another object is selected, which a bake outlasts.)
+static func _show_step(step: int, shown_button: Variant, shown_bar: Variant) -> void:
+	var button: Button = shown_button as Button if is_instance_valid(shown_button) else null
+	var bar: ProgressBar = shown_bar as ProgressBar if is_instance_valid(shown_bar) else null
 	if button:
 		button.disabled = step >= 0
 		button.text = STEPS[step] if step >= 0 else SceneDropButton.TEXT
