@@ -67,10 +67,12 @@ func make_plant(path: String, field: SunflowerField, button: Button = null, bar:
 	if not _in_edited_scene(field):
 		push_warning(
 			(
-				"Plant from scene: the field left the edited scene while %s.tres baked (removed, undone or its scene"
-				+ " closed); the plant is saved there, not given to any field"
+				(
+					"Plant from scene: the field left the edited scene while %s.tres baked (removed, undone or its scene"
+					+ " closed); the plant is saved there, not given to any field"
+				)
+				% base
 			)
-			% base
 		)
 		_show_step(-1, button, bar)
 		return null

@@ -554,16 +554,24 @@ func _on_map_error(message: String) -> void:
 
 func _validate_property(property: Dictionary) -> void:
 	var name: StringName = property["name"]
-	if WIND_PROPERTIES.has(name) or (name == &"wind" and wind == _own_wind and wind.is_default()):
+	if WIND_PROPERTIES.has(name) or (name == &"wind" and _wind_is_own_default()):
 		property["usage"] &= ~PROPERTY_USAGE_STORAGE
 
 
+## The wind settings revert to a new wind's; [member wind], while it is the node's own unchanged
+## one, reverts to itself (else the inspector, comparing it with no default, shows "Wind (1 change)").
 func _property_can_revert(property: StringName) -> bool:
-	return WIND_PROPERTIES.has(property)
+	return WIND_PROPERTIES.has(property) or (property == &"wind" and _wind_is_own_default())
 
 
 func _property_get_revert(property: StringName) -> Variant:
+	if property == &"wind":
+		return wind if _wind_is_own_default() else null
 	return SunflowerWind.new().get(WIND_PROPERTIES[property]) if WIND_PROPERTIES.has(property) else null
+
+
+func _wind_is_own_default() -> bool:
+	return wind == _own_wind and wind.is_default()
 
 
 func _ready() -> void:

@@ -207,6 +207,8 @@ func _field_removed_mid_bake(tree: SceneTree) -> PackedStringArray:
 
 ## How many views atlases of plants named [param prefix]… the project's folder holds.
 func _views_atlases(prefix: String) -> int:
-	return Array(DirAccess.get_files_at("res://")).filter(
-		func(file: String) -> bool: return file.begins_with(prefix) and file.ends_with("_views.png")
-	).size()
+	return (
+		Array(DirAccess.get_files_at("res://"))
+		. filter(func(file: String) -> bool: return file.begins_with(prefix) and file.ends_with("_views.png"))
+		. size()
+	)

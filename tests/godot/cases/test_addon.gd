@@ -120,6 +120,35 @@ func test_a_new_field_stores_only_what_was_changed() -> void:
 	root.free()
 
 
+## The inspector counts a property as changed when it differs from its revert value, or from the
+## script's default when there is none: a new field's wind group showed "Wind (1 change)".
+func test_a_new_field_shows_no_change() -> void:
+	var field: SunflowerField = SunflowerField.new()
+	var changed: PackedStringArray = []
+	for property: Dictionary in field.get_property_list():
+		if property["usage"] & PROPERTY_USAGE_EDITOR and _shows_changed(field, property["name"]):
+			changed.append(property["name"])
+	check_eq(changed, PackedStringArray(), "properties a new field shows changed")
+	field.wind_power = 2.0
+	check(_shows_changed(field, &"wind"), "a changed wind shows changed")
+	field.free()
+
+
+func _shows_changed(object: Object, property: StringName) -> bool:
+	var value: Variant = object.get(property)
+	var default: Variant = (
+		object.property_get_revert(property)
+		if object.property_can_revert(property)
+		else object.get_script().get_property_default_value(property)
+	)
+	var declared: bool = object.get_script().get_script_property_list().any(
+		func(p: Dictionary) -> bool: return p["name"] == property
+	)
+	if not declared and not object.property_can_revert(property):
+		return false  # the engine's own properties: not this test's business
+	return typeof(value) != typeof(default) or value != default
+
+
 func _packed(root: Node) -> PackedScene:
 	var scene: PackedScene = PackedScene.new()
 	scene.pack(root)
@@ -132,3 +161,13 @@ func _stored(root: Node) -> PackedStringArray:
 	for index: int in state.get_node_property_count(1):
 		names.append(state.get_node_property_name(1, index))
 	return names
+
+
+## The drop button in a field's inspector never widens the dock (its text was 170 px wider than the
+## dock's default width), whatever step of an import it shows.
+func test_the_drop_button_fits_a_narrow_dock() -> void:
+	var button: Button = load("res://addons/sunflower_field/scene_drop_button.gd").new()
+	for label: String in [button.text] + Array(load("res://addons/sunflower_field/scene_plant_inspector.gd").STEPS):
+		button.text = label
+		check(button.get_minimum_size().x <= 120.0, "'%s' asks for %.0f px" % [label, button.get_minimum_size().x])
+	button.free()
