@@ -72,6 +72,9 @@ const FADE_CALL: String = "if (plant_fade_discards(FRAGCOORD.xy, COLOR.a)) { dis
 const SHADER_TYPE_PATTERN: String = "(?m)^\\s*shader_type\\s+(\\w+)\\s*;"
 const RENDER_MODE_PATTERN: String = "(?m)^\\s*render_mode\\s[^;]*;"
 const INCLUDE_PATTERN: String = '(?m)^\\s*#include\\s+"([^"]*)"'
+## A uniform declared (of any kind: global, instance, group members).
+const UNIFORM_PATTERN: String = "(?m)^\\s*(global\\s+|instance\\s+)?uniform\\s"
+
 ## A shader function's head, by the function's name (%s).
 const FUNCTION_PATTERN: String = "void\\s+%s\\s*\\(\\s*\\)\\s*\\{"
 ## The line that lets a shader of your own bend as a plant drawn whole ([method bending]), the call
@@ -87,6 +90,7 @@ static var _plain: StandardMaterial3D
 static var _faded_shaders: Dictionary = {}  # your shader → [its code, the fading copy or null]
 static var _bent_shaders: Dictionary = {}  # a fading shader → [its code, the bending copy or null]
 static var _patterns: Dictionary = {}  # pattern → RegEx
+static var _broken_shaders: Dictionary = {}  # your shader that does not compile → true, once warned
 
 
 ## [param mesh] with every surface whose material can be carried over drawn with the plant material
@@ -234,12 +238,13 @@ static func _copyable(code: String) -> bool:
 static func _first_in(code: String, function: String, line: String) -> String:
 	var head: RegExMatch = _regex(FUNCTION_PATTERN % function).search(code)
 	if head:
-		return code.insert(head.get_end(), "\n\t" + line + "\n")
+		return code.insert(head.get_end(), " " + line)  # on the head's line: your line numbers stay
 	return code + "\nvoid %s() {\n\t%s\n}\n" % [function, line]
 
 
 ## [param code] with [param line], the include of [param path], after its [code]shader_type[/code]
-## line and the [code]render_mode[/code] line right after it (unless it includes the file already).
+## line and the [code]render_mode[/code] line right after it (unless it includes the file already):
+## in the blank line that follows them when there is one, so the shader's errors keep your line numbers.
 static func _with_include(code: String, path: String, line: String) -> String:
 	if code.contains(path):
 		return code
@@ -248,12 +253,34 @@ static func _with_include(code: String, path: String, line: String) -> String:
 	var modes: RegExMatch = _regex(RENDER_MODE_PATTERN).search(code, after)
 	if modes and code.substr(after, modes.get_start() - after).strip_edges().is_empty():
 		after = modes.get_end()
-	return code.insert(after, "\n" + line + "\n")
+	var line_end: int = code.find("\n", after)
+	if line_end < 0:
+		return code + "\n" + line + "\n"
+	var next_end: int = code.find("\n", line_end + 1)
+	next_end = code.length() if next_end < 0 else next_end
+	if code.substr(line_end + 1, next_end - line_end - 1).strip_edges().is_empty():
+		return code.substr(0, line_end + 1) + line + code.substr(next_end)
+	return code.insert(line_end, "\n" + line)
 
 
 ## The copy of [param own] drawn with its shader made fading ([param bend] false) or bending (the
 ## shader from [method _made_shader]); null when that shader cannot be made.
 static func _copy(own: ShaderMaterial, bend: bool) -> ShaderMaterial:
+	if _fails_to_compile(own.shader):
+		# The engine has reported its error once, with your line numbers; a copy would report it again.
+		if not _broken_shaders.has(own.shader):
+			_broken_shaders[own.shader] = true
+			push_warning(
+				(
+					(
+						"SunflowerField: the shader %s of the material %s does not compile (the engine's shader error"
+						+ " names the line); the plant's parts drawn with it keep it unchanged, without the levels'"
+						+ " cross-fade"
+					)
+					% [_named(own.shader), _named(own)]
+				)
+			)
+		return null
 	var shader: Shader = _made_shader(own.shader, bend)
 	if shader == null:
 		return null
@@ -283,6 +310,19 @@ static func _made_shader(shader: Shader, bend: bool) -> Shader:
 		made = [shader.code, copy]
 		made_shaders[shader] = made
 	return made[1]
+
+
+## Whether [param shader] declares uniforms and the engine found none: its code failed to compile (the
+## engine lists the uniforms of a shader it compiled, with any renderer; one without uniforms is not
+## judged).
+static func _fails_to_compile(shader: Shader) -> bool:
+	return _regex(UNIFORM_PATTERN).search(shader.code) != null and shader.get_shader_uniform_list().is_empty()
+
+
+## [param resource] as a message names it: its file (or the file it is built into) and its name.
+static func _named(resource: Resource) -> String:
+	var path: String = resource.resource_path if not resource.resource_path.is_empty() else "(built in, unsaved)"
+	return path + (' "%s"' % resource.resource_name if not resource.resource_name.is_empty() else "")
 
 
 static func _regex(pattern: String) -> RegEx:

@@ -488,6 +488,36 @@ func test_a_shader_of_your_own_is_made_to_bend_when_drawn_whole() -> void:
 ## Checks that [param made] (a test shader's code, "render_mode unshaded;" then "uniform vec4 tint;")
 ## has [param include] after its render_mode line and before its declarations, and [param call] in
 ## its [param function]() before [param first], the statement that came first there.
+## The copies keep your line numbers (an error in a copy names your line): the include takes the
+## blank line after the shader_type and render_mode lines, the calls go on the function's head line.
+## A shader of yours that does not compile is not copied (the engine reports its error once; a copy
+## would report it again), and the part keeps it as it is.
+func test_copies_of_your_shader_keep_its_lines_and_a_broken_one_is_not_copied() -> void:
+	var code: String = "shader_type spatial;\nrender_mode unshaded;\n\nuniform vec4 tint;\n"
+	code += "void vertex() {\n\tVERTEX.y += 0.0;\n}\nvoid fragment() {\n\tALBEDO = tint.rgb;\n}\n"
+	var faded: String = PlantMaterialScript.fading_code(code)
+	var lines: PackedStringArray = faded.split("\n")
+	var yours: PackedStringArray = code.split("\n")
+	if check_eq(lines.size(), yours.size(), "as many lines as yours:\n" + faded):
+		for i: int in yours.size():
+			check(lines[i].begins_with(yours[i]), "line %d is yours: '%s' / '%s'" % [i + 1, lines[i], yours[i]])
+	# The bending copy of a fading one has no blank line left for its include: one line more.
+	check_eq(PlantMaterialScript.bending_code(faded).count("\n"), faded.count("\n") + 1, "bent: one line more")
+	var without_blank: String = PlantMaterialScript.fading_code(code.replace("unshaded;\n\n", "unshaded;\n"))
+	check(without_blank.contains("unshaded;\n" + PlantMaterialScript.FADE_INCLUDE + "\nuniform"), "no blank line")
+	var broken: Shader = Shader.new()
+	allow_error("Unknown identifier in expression: 'nowhere'")
+	allow_error("Shader compilation failed")
+	broken.code = code.replace("tint.rgb;", "tint.rgb + nowhere;")
+	var material: ShaderMaterial = ShaderMaterial.new()
+	material.shader = broken
+	check(PlantMaterialScript.fading(material) == null, "a shader that does not compile gets no copy")
+	var mesh: ArrayMesh = ArrayMesh.new()
+	mesh.add_surface_from_arrays(Mesh.PRIMITIVE_TRIANGLES, BoxMesh.new().get_mesh_arrays())
+	mesh.surface_set_material(0, material)
+	check_eq(PlantMaterialScript.adopt_mesh(mesh).surface_get_material(0), material, "its part keeps it")
+
+
 func _check_placed(made: String, include: String, call: String, function: String, first: String) -> void:
 	var include_at: int = made.find(include)
 	var call_at: int = made.find(call)
