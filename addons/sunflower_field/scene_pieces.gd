@@ -189,6 +189,17 @@ static func _add_multimesh(
 	var count: int = multimesh.instance_count
 	if multimesh.visible_instance_count >= 0:
 		count = mini(count, multimesh.visible_instance_count)
+	if count > 0 and multimesh.buffer.is_empty():
+		problems.append(
+			(
+				(
+					"%s: this run's renderer keeps no MultiMesh instance transforms (--headless?); its %d instances"
+					+ " are left out: make the plant where the scene renders (the editor, or a run with a display)"
+				)
+				% [path, count]
+			)
+		)
+		return
 	for k: int in count:
 		var placed: Transform3D = here * multimesh.get_instance_transform(k)
 		pieces.append(_piece("%s (instance %d)" % [path, k], multimesh.mesh, materials, placed, [], instance))
