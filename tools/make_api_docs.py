@@ -98,8 +98,9 @@ def page(xml_path):
     description = (root.findtext("description") or "").strip()
     if description:
         out += [bbcode_to_markdown(description, name), ""]
-    members = root.find("members")
-    if members is not None and len(members):
+    # A script's own state (a leading underscore) is not part of the API either.
+    members = [m for m in root.find("members") or [] if not m.get("name").startswith("_")]
+    if members:
         out += ["## Properties", "", "| property | type | default | |", "|---|---|---|---|"]
         for m in members:
             default = m.get("default")

@@ -462,7 +462,6 @@ const WIND_PROPERTIES: Dictionary = {
 		_tell_frame()
 		update_configuration_warnings()
 
-## Everything behind the public face: builds, the field drawn, each frame, impostors, part meshes.
 ## The plant's height from root to head, metres: the [member plant]'s [member FieldPlant.height]
 ## (setting it gives the field its own copy of the plant).
 var plant_height: float:
@@ -490,6 +489,7 @@ var impostor_depths: Texture2D:
 	set(value):
 		_own_plant().impostor_depths = value
 
+# Everything behind the public face: builds, the field drawn, each frame, impostors, part meshes.
 var _driver: FieldDriver = FieldDriver.new(self)
 var _empty_simulation: RefCounted
 var _own_wind: SunflowerWind  # the wind the node made itself, saved only once it is changed
