@@ -55,11 +55,6 @@ static func mesh_bucket(level: int, part: int) -> int:
 	return ClassDB.class_call_static(CLASS, &"mesh_bucket", level, part) if is_available() else -1
 
 
-## The height the impostor quads frame, in model units (the native plant shape's).
-static func plant_height_units() -> float:
-	return ClassDB.class_call_static(CLASS, &"get_plant_height_units") if is_available() else 3.2
-
-
 ## The value the core accepts for [param property] (e.g. [code]"SunflowerWind.power"[/code]) when
 ## [param value] is asked for while [param current] is set; warns, naming the property, when that
 ## differs from [param value]. The core's table is the only place the limits are written.

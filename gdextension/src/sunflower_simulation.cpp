@@ -24,7 +24,6 @@ void SunflowerSimulation::bind_methods() {
 	gdx::bind_method(CLASS, "paint_map", &SunflowerSimulation::paint_map, { "center", "radius", "symbol", "density", "seed", "relayout" });
 	gdx::bind_method(CLASS, "write_map", &SunflowerSimulation::write_map);
 	gdx::bind_method(CLASS, "resize_map", &SunflowerSimulation::resize_map, { "columns", "rows" });
-	gdx::bind_method(CLASS, "clear", &SunflowerSimulation::clear);
 	gdx::bind_method(CLASS, "get_map_columns", &SunflowerSimulation::get_map_columns);
 	gdx::bind_method(CLASS, "get_map_rows", &SunflowerSimulation::get_map_rows);
 	gdx::bind_method(CLASS, "get_map_objects", &SunflowerSimulation::get_map_objects);
@@ -94,7 +93,6 @@ void SunflowerSimulation::bind_methods() {
 	gdx::bind_method(CLASS, "check_lod_distances", &SunflowerSimulation::check_lod_distances, { "distances" });
 	gdx::bind_method(CLASS, "sanitize_wind_direction", &SunflowerSimulation::sanitize_wind_direction, { "direction" });
 	gdx::bind_method(CLASS, "mesh_bucket", &SunflowerSimulation::mesh_bucket, { "level", "part" });
-	gdx::bind_method(CLASS, "get_plant_height_units", &SunflowerSimulation::get_plant_height_units);
 
 	gdx::bind_integer_constant(CLASS, "", "PART_COUNT", PART_COUNT);
 	gdx::bind_integer_constant(CLASS, "", "MESH_LEVEL_COUNT", LOD_MESH_COUNT);

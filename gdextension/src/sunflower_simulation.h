@@ -27,7 +27,6 @@ public:
 			bool p_relayout);
 	gdx::PackedByteArray write_map() const;
 	bool resize_map(int64_t p_columns, int64_t p_rows);
-	void clear();
 	int64_t get_map_columns() const;
 	int64_t get_map_rows() const;
 	gdx::PackedInt32Array get_map_objects() const;
@@ -115,7 +114,6 @@ public:
 	static gdx::String check_lod_distances(const gdx::PackedFloat32Array &p_distances);
 	static gdx::Vector2 sanitize_wind_direction(gdx::Vector2 p_direction);
 	static int64_t mesh_bucket(int64_t p_level, int64_t p_part);
-	static double get_plant_height_units();
 
 private:
 	bool _is_plant(int64_t p_plant) const;

@@ -59,11 +59,6 @@ gdx::PackedInt32Array SunflowerSimulation::get_map_figures(const gdx::PackedByte
 	return out;
 }
 
-void SunflowerSimulation::clear() {
-	_sim.clear();
-	release_multimeshes();
-}
-
 int64_t SunflowerSimulation::get_map_columns() const {
 	return _sim.plants().get_map().columns;
 }

@@ -154,6 +154,3 @@ int64_t SunflowerSimulation::mesh_bucket(int64_t p_level, int64_t p_part) {
 	return sunflower::mesh_bucket(uint32_t(p_level), uint32_t(p_part));
 }
 
-double SunflowerSimulation::get_plant_height_units() {
-	return PlantShape::HEIGHT;
-}

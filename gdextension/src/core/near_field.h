@@ -77,7 +77,6 @@ public:
 	static constexpr float JUMP_DISTANCE = 4.0f;
 	// The most plants whose chunks turn active in one update (nearest chunks first).
 	static constexpr uint32_t ACTIVATION_BUDGET = 4096;
-	double get_time() const { return _time; }
 
 	// Threads that move the near plants, the caller included: 0 picks the hardware's count (at most
 	// param::MAX_AUTO_THREADS), 1 moves them all on the caller, at most param::MAX_THREADS. The
@@ -91,7 +90,6 @@ public:
 	static constexpr uint32_t PARALLEL_MIN_PLANTS = 32768;
 	// Benchmarks move the threshold to measure where a second thread pays.
 	void set_parallel_min_plants(uint32_t p_plants) { _parallel_min_plants = p_plants; }
-	uint32_t get_parallel_min_plants() const { return _parallel_min_plants; }
 	// Plants in active chunks, and how many parallel tasks (runs of active chunks) the last update
 	// split them into: 1 when it ran on the caller alone.
 	uint32_t get_active_plant_count() const { return _active_plants; }
