@@ -1,5 +1,5 @@
 @tool
-@icon("icons/sunflower_field.svg")
+@icon("icons/field_plant.svg")
 class_name FieldPlant
 extends Resource
 ## One kind of plant for a [SunflowerField]: its three parts at each mesh level, how they stack,
@@ -543,8 +543,9 @@ func set_part_mesh(level: int, part: int, mesh: Mesh) -> void:
 ## Renders this plant's impostor textures from its level-1 parts and takes them (see
 ## ImpostorBaker: [code]impostor_baker.gd[/code]); await it. [param host] is any node in a tree that
 ## draws; the files go to [param folder] (default: beside this resource). Returns OK or an error.
-func bake_impostors(host: Node, folder: String = "", base_name: String = "") -> Error:
-	return await ImpostorBaker.bake(self, host, folder, base_name)
+## [param progress], when valid, is called with each step's name and the share done before it (0–1).
+func bake_impostors(host: Node, folder: String = "", base_name: String = "", progress: Callable = Callable()) -> Error:
+	return await ImpostorBaker.bake(self, host, folder, base_name, progress)
 
 
 ## Hands the plant's form, height and variety to a native simulation, as [param species].

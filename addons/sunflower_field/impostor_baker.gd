@@ -66,6 +66,9 @@ void fragment() {
 }
 """
 
+## The bake's steps as [method bake] reports them: three passes, back-light, emission, writing, importing.
+const STEPS: float = 7.0
+
 
 ## The emission pass: its picture (null when nothing glows) and the range its light was divided by
 ## (the default when nothing glows).
@@ -80,18 +83,21 @@ class Glow:
 ## and, for a plant that glows or lets light through, [code]_emission.png[/code] and
 ## [code]_backlight.png[/code] (default: beside the plant's resource file, named after it), and gives
 ## them to the plant (reimported in the editor; loaded from the files elsewhere). Returns OK, or an
-## error after pushing what went wrong.
-static func bake(plant: FieldPlant, host: Node, folder: String = "", base_name: String = "") -> Error:
+## error after pushing what went wrong. [param progress], when valid, is called with each step's
+## name and the share of the bake done before it (0–1), a drawn frame ahead of the step.
+static func bake(
+	plant: FieldPlant, host: Node, folder: String = "", base_name: String = "", progress: Callable = Callable()
+) -> Error:
 	# The editor draws a frame only when something on screen changed; the bake waits for drawn frames
 	# of its own viewport, so frames are drawn continuously while it runs.
 	var low_processor: bool = OS.low_processor_usage_mode
 	OS.low_processor_usage_mode = false
-	var result: Error = await _bake(plant, host, folder, base_name)
+	var result: Error = await _bake(plant, host, folder, base_name, progress)
 	OS.low_processor_usage_mode = low_processor
 	return result
 
 
-static func _bake(plant: FieldPlant, host: Node, folder: String, base_name: String) -> Error:
+static func _bake(plant: FieldPlant, host: Node, folder: String, base_name: String, progress: Callable) -> Error:
 	if plant == null or host == null or not host.is_inside_tree():
 		push_error("Bake impostors: needs a plant and a node in the scene tree to render under")
 		return ERR_INVALID_PARAMETER
@@ -115,6 +121,7 @@ static func _bake(plant: FieldPlant, host: Node, folder: String, base_name: Stri
 	var images: Array[Image] = []
 	var kinds: PackedStringArray = FieldPlant.IMPOSTOR_TEXTURES.duplicate()
 	for kind: String in FieldPlant.IMPOSTOR_TEXTURES:
+		_tell(progress, "drawing its " + kind, images.size() / STEPS)
 		if kind != "views":
 			var coded: ShaderMaterial = ShaderMaterial.new()
 			coded.shader = Shader.new()
@@ -129,7 +136,9 @@ static func _bake(plant: FieldPlant, host: Node, folder: String, base_name: Stri
 			push_error("Bake impostors: the %s rendered nothing (no renderer?)" % kind)
 			return ERR_CANT_CREATE
 		images.append(image)
+	_tell(progress, "drawing its back-light", 3.0 / STEPS)
 	var through: Image = await _backlight(viewport)
+	_tell(progress, "drawing its emission", 4.0 / STEPS)
 	var glow: Glow = await _emission(viewport, plant)
 	viewport.queue_free()
 	if glow.image:
@@ -138,6 +147,10 @@ static func _bake(plant: FieldPlant, host: Node, folder: String, base_name: Stri
 	if through:
 		kinds.append(FieldPlant.BACKLIGHT_TEXTURE)
 		images.append(through)
+	# Writing and importing the atlases take whole frames of their own: their step is drawn first.
+	_tell(progress, "writing its atlases", 5.0 / STEPS)
+	await host.get_tree().process_frame
+	await host.get_tree().process_frame
 	var paths: PackedStringArray = []
 	for i: int in images.size():
 		var path: String = folder.path_join("%s_%s.png" % [base_name, kinds[i]])
@@ -148,8 +161,16 @@ static func _bake(plant: FieldPlant, host: Node, folder: String, base_name: Stri
 		paths.append(path)
 	plant.impostor_emission_range = glow.energy_range
 	plant.impostor_alpha_cuts = alpha_cuts(images[0])
+	_tell(progress, "importing its atlases", 6.0 / STEPS)
+	await host.get_tree().process_frame
+	await host.get_tree().process_frame
 	_give_textures(plant, kinds, paths, images)
 	return OK
+
+
+static func _tell(progress: Callable, step: String, done: float) -> void:
+	if progress.is_valid():
+		progress.call(step, done)
 
 
 ## The alpha cut of each mip level of the views [param image] (as the import makes them, alpha

@@ -8,6 +8,12 @@ signal scene_chosen(path: String)
 
 ## What the button says while it waits for a scene.
 const TEXT: String = "Plant from scene…"
+## What its tooltip says while it waits.
+const TOOLTIP: String = (
+	"Make a plant of a scene (drop a .glb, .gltf, .blend or .tscn here, or press to choose one): its"
+	+ " meshes merged with their transforms and materials, its levels of detail, its frame from its"
+	+ " bounds; saved beside the scene and its impostors baked."
+)
 
 
 func _init() -> void:
@@ -15,11 +21,7 @@ func _init() -> void:
 	# A long text (a step of the import) is cut short rather than widening the inspector's dock.
 	clip_text = true
 	text_overrun_behavior = TextServer.OVERRUN_TRIM_ELLIPSIS
-	tooltip_text = (
-		"Make a plant of a scene (drop a .glb, .gltf, .blend or .tscn here, or press to choose one): its"
-		+ " meshes merged with their transforms and materials, its levels of detail, its frame from its"
-		+ " bounds; saved beside the scene and its impostors baked."
-	)
+	tooltip_text = TOOLTIP
 	pressed.connect(_choose)
 
 

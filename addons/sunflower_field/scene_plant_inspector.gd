@@ -13,6 +13,11 @@ const ScenePlant: GDScript = preload("scene_plant.gd")
 const STEPS: PackedStringArray = ["Merging the scene's meshes…", "Saving the plant…", "Baking its impostors…"]
 
 var _undo: EditorUndoRedoManager
+## The inspector builds its controls anew whenever it refreshes, which a running import outlasts: the
+## progress is kept per field (instance id → [step, detail, share done]) and shown on the field's
+## newest button and bar (instance id → [button, bar]).
+var _progress: Dictionary = {}
+var _controls: Dictionary = {}
 
 
 func _init(undo: EditorUndoRedoManager) -> void:
@@ -37,6 +42,8 @@ func _parse_property(
 	box.add_child(bar)
 	button.scene_chosen.connect(func(path: String) -> void: make_plant(path, object as SunflowerField, button, bar))
 	add_custom_control(box)
+	_controls[object.get_instance_id()] = [button, bar]
+	_show_progress(object.get_instance_id())
 	return false  # the plant's own editor stays below
 
 
@@ -45,23 +52,33 @@ func _parse_property(
 ## saved (the error names it), or when the field left the edited scene during the bake (a warning says
 ## where the plant is saved). [param button] and [param bar] show the progress when given.
 func make_plant(path: String, field: SunflowerField, button: Button = null, bar: ProgressBar = null) -> FieldPlant:
-	_show_step(0, button, bar)
+	var id: int = field.get_instance_id()
+	if button:
+		_controls[id] = [button, bar]
+	_show_step(id, 0)
+	await _drawn(button != null)  # the step shows before the merge holds the frame
 	var scene: PackedScene = load(path) as PackedScene
 	var plant: FieldPlant = FieldPlant.from_scene(scene) if scene else null
 	if scene == null:
 		push_error("Plant from scene: %s is not a scene" % path)
 	if plant == null:
-		_show_step(-1, button, bar)
+		_show_step(id, -1)
 		return null
-	_show_step(1, button, bar)
+	_show_step(id, 1)
+	await _drawn(button != null)
 	var base: String = _free_base(path.get_basename() + "_plant")
 	var error: Error = _save(plant, base)
 	if error != OK:
 		push_error("Plant from scene: cannot save %s.tres (%s)" % [base, error_string(error)])
-		_show_step(-1, button, bar)
+		_show_step(id, -1)
 		return null
-	_show_step(2, button, bar)
-	error = await plant.bake_impostors(EditorInterface.get_base_control())
+	_show_step(id, 2)
+	error = await plant.bake_impostors(
+		EditorInterface.get_base_control(),
+		"",
+		"",
+		func(step: String, done: float) -> void: _show_step(id, 2, step, done)
+	)
 	if error != OK:
 		push_error("Plant from scene: the impostors of %s.tres were not baked (%s)" % [base, error_string(error)])
 	if not _in_edited_scene(field):
@@ -74,7 +91,7 @@ func make_plant(path: String, field: SunflowerField, button: Button = null, bar:
 				% base
 			)
 		)
-		_show_step(-1, button, bar)
+		_show_step(id, -1)
 		return null
 	var triangles: Array = [1, 2, 3].map(
 		func(level: int) -> int: return ScenePlant.triangle_count(plant.get("mesh_level_%d" % level)[0])
@@ -100,7 +117,7 @@ func make_plant(path: String, field: SunflowerField, button: Button = null, bar:
 		_undo.add_do_property(field, &"cell_size", spacing)
 		_undo.add_undo_property(field, &"cell_size", field.cell_size)
 	_undo.commit_action()
-	_show_step(-1, button, bar)
+	_show_step(id, -1)
 	return plant
 
 
@@ -141,14 +158,42 @@ static func _save(plant: FieldPlant, base: String) -> Error:
 	return result
 
 
-## Shows step [param step] of [constant STEPS] on the button and bar; -1: done, both as before.
-## (Untyped: the inspector frees its controls when another object is selected, which a bake outlasts.)
-static func _show_step(step: int, shown_button: Variant, shown_bar: Variant) -> void:
-	var button: Button = shown_button as Button if is_instance_valid(shown_button) else null
-	var bar: ProgressBar = shown_bar as ProgressBar if is_instance_valid(shown_bar) else null
+## Keeps step [param step] of [constant STEPS] as the progress of the field of instance [param id]
+## ([param detail]: the part under way, [param done]: the share of the step done; -1: done) and shows
+## it on the field's controls.
+func _show_step(id: int, step: int, detail: String = "", done: float = 0.0) -> void:
+	if step < 0:
+		_progress.erase(id)
+	else:
+		_progress[id] = [step, detail, done]
+	_show_progress(id)
+
+
+## Shows the progress of the field of instance [param id] on its newest button and bar (as before
+## when none runs); nothing when the inspector has freed them.
+func _show_progress(id: int) -> void:
+	var shown: Array = _controls.get(id, [null, null])
+	var button: Button = shown[0] as Button if is_instance_valid(shown[0]) else null
+	var bar: ProgressBar = shown[1] as ProgressBar if is_instance_valid(shown[1]) else null
+	if button == null and bar == null:
+		_controls.erase(id)
+	var state: Array = _progress.get(id, [-1, "", 0.0])
+	var step: int = state[0]
 	if button:
 		button.disabled = step >= 0
-		button.text = STEPS[step] if step >= 0 else SceneDropButton.TEXT
+		button.text = (
+			SceneDropButton.TEXT
+			if step < 0
+			else STEPS[step].trim_suffix("…") + (": %s…" % state[1] if not str(state[1]).is_empty() else "…")
+		)
+		button.tooltip_text = button.text if step >= 0 else SceneDropButton.TOOLTIP
 	if bar:
 		bar.visible = step >= 0
-		bar.value = step + 1
+		bar.value = step + float(state[2])
+
+
+## Waits, when the progress is shown ([param shown]), until a frame has been drawn with its step.
+static func _drawn(shown: bool) -> void:
+	if shown:
+		await (Engine.get_main_loop() as SceneTree).process_frame
+		await (Engine.get_main_loop() as SceneTree).process_frame

@@ -1,5 +1,5 @@
 @tool
-@icon("icons/sunflower_field.svg")
+@icon("icons/sunflower_field_map.svg")
 class_name SunflowerFieldMap
 extends Resource
 ## A field map: the text of a [code].field[/code] file (see [code]fields/FORMAT.md[/code]).

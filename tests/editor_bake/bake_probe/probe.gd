@@ -112,14 +112,32 @@ func _plants_from_scenes(tree: SceneTree, shot: String) -> PackedStringArray:
 		var before: FieldPlant = field.plant
 		var cells_before: float = field.cell_size
 		var drag: Dictionary = {"type": "files", "files": PackedStringArray([scene_path])}
-		if not button._can_drop_data(Vector2.ZERO, drag):
+		button = _drop_button()
+		if button == null or not button._can_drop_data(Vector2.ZERO, drag):
 			problems.append("%s: the button refuses the drop" % scene_path)
 			continue
 		button._drop_data(Vector2.ZERO, drag)
+		var shown: PackedStringArray = []  # the steps the button showed, each once, in order
+		var shares: PackedFloat32Array = []
 		for i: int in 900:
+			# The inspector may build its controls anew meanwhile: the progress shows on the newest.
+			button = _drop_button()
+			var bar: ProgressBar = _bar_beside(button) if button else null
+			if button and not shown.has(button.text):
+				shown.append(button.text)
+				shares.append(bar.value / bar.max_value if bar else -1.0)
 			await tree.process_frame
-			if field.plant != before and button.text == SceneDropButton.TEXT:
+			if field.plant != before and button and button.text == SceneDropButton.TEXT:
 				break
+		for step: String in ["Merging", "Saving", "drawing its views", "drawing its depths", "importing its atlases"]:
+			if not Array(shown).any(func(text: String) -> bool: return text.contains(step)):
+				problems.append("%s: the progress never showed '%s' (it showed %s)" % [scene_path, step, shown])
+		for k: int in range(1, shares.size() - 1):
+			if shares[k] < shares[k - 1]:
+				problems.append("%s: the progress bar went back (%s)" % [scene_path, shares])
+		if shares.size() < 2 or shares[0] > 0.01:
+			problems.append("%s: the progress bar did not start empty (%s)" % [scene_path, shares])
+		print("probe: %s: the progress showed %s" % [scene_path, " | ".join(shown)])
 		var plant: FieldPlant = field.plant
 		var saved: String = "res://%s_plant.tres" % plant_name
 		if plant == before or plant == null or plant.resource_path != saved:
@@ -185,9 +203,15 @@ func _field_removed_mid_bake(tree: SceneTree) -> PackedStringArray:
 	var version: int = history.get_version()
 	var baked_before: int = _views_atlases("grass_clump_plant")
 	button._drop_data(Vector2.ZERO, {"type": "files", "files": PackedStringArray(["res://grass_clump.glb"])})
-	await tree.process_frame
-	if button.text != ScenePlantInspector.STEPS[2]:
-		return PackedStringArray(["the drop on a new field did not start a bake: " + button.text])
+	for i: int in 60:
+		await tree.process_frame
+		button = _drop_button()
+		if button and button.text.begins_with("Baking its impostors"):
+			break
+	if button == null or not button.text.begins_with("Baking its impostors"):
+		return PackedStringArray(
+			["the drop on a new field did not start a bake: %s" % [button.text if button else "no button"]]
+		)
 	root.remove_child(doomed)
 	doomed.queue_free()
 	for i: int in 900:
@@ -203,6 +227,25 @@ func _field_removed_mid_bake(tree: SceneTree) -> PackedStringArray:
 		problems.append("a field removed mid-bake got an undo step")
 	print("probe: a field removed while its plant baked: the editor goes on")
 	return problems
+
+
+## The inspector's newest "Plant from scene…" button (whatever step it shows), or null.
+func _drop_button(node: Node = EditorInterface.get_inspector()) -> Button:
+	if node is Button and node.get_script() == SceneDropButton:
+		return node
+	for child: Node in node.get_children(true):
+		var found: Button = _drop_button(child)
+		if found:
+			return found
+	return null
+
+
+## The progress bar the inspector shows under [param button] (null when there is none).
+func _bar_beside(button: Button) -> ProgressBar:
+	for sibling: Node in button.get_parent().get_children():
+		if sibling is ProgressBar:
+			return sibling
+	return null
 
 
 ## How many views atlases of plants named [param prefix]… the project's folder holds.

@@ -207,6 +207,9 @@ func test_the_field_holds_a_gpu_time_target_on_the_software_renderer() -> void:
 	var line: String = "     GPU time at full quality %.1f ms, target %.1f ms: after %d frames quality %.3f"
 	print((line + " (last 6: %.3f–%.3f), %.1f–%.1f ms") % figures)
 	check(field.get_quality() < 1.0, "the quality went down")
-	check((last.max() - last.min()) / last.max() < 0.05, "settled over the last 6 frames")
+	# Settled: the quality follows the software GPU time, which under the second lane swings by about
+	# ±10 % frame to frame (1 652–2 021 ms at quality 0.705–0.752 in one run, a 6 % spread); a
+	# controller that oscillates or keeps falling moves it by more.
+	check((last.max() - last.min()) / last.max() < 0.1, "settled over the last 6 frames")
 	check(last_times.min() < full_ms * 0.8, "the GPU time fell (%.1f of %.1f ms)" % [last_times.min(), full_ms])
 	stage.root.free()
