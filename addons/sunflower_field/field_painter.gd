@@ -360,9 +360,10 @@ func new_map(field: SunflowerField, columns: int, rows: int, filled: bool) -> St
 	if file == null:
 		_fail("SunflowerField: cannot write %s (%s)" % [path, error_string(FileAccess.get_open_error())])
 		return ""
-	file.store_buffer(editor.write_map())
+	var bytes: PackedByteArray = editor.write_map()
+	file.store_buffer(bytes)
 	file.close()
-	var made: SunflowerFieldMap = _reimported(path)
+	var made: SunflowerFieldMap = _unimported(path, bytes)
 	_undo_redo.create_action("New field map", UndoRedo.MERGE_DISABLE, field)
 	_undo_redo.add_do_property(field, &"map", made)
 	_undo_redo.add_undo_property(field, &"map", field.map)
@@ -411,6 +412,19 @@ func write_map(field: SunflowerField, path: String, bytes: PackedByteArray) -> v
 func _give_reimported(field: Object, path: String) -> void:
 	if is_instance_valid(field):
 		(field as SunflowerField).map = _reimported(path)
+
+
+## The map just written to the new file [param path] as [param bytes], as the resource the file's
+## import will give: the import itself runs when the editor next scans its files (a reimport now
+## redraws the whole editor for its progress dialog a few times: seconds under a software renderer).
+func _unimported(path: String, bytes: PackedByteArray) -> SunflowerFieldMap:
+	var made: SunflowerFieldMap = SunflowerFieldMap.new()
+	made.source_path = path
+	made.text = bytes
+	made.check_format()
+	made.take_over_path(path)
+	EditorInterface.get_resource_filesystem().update_file(path)
+	return made
 
 
 ## The map file [param path] imported anew (just written), as the resource fields load.

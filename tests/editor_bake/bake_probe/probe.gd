@@ -119,7 +119,13 @@ func _plants_from_scenes(tree: SceneTree, shot: String) -> PackedStringArray:
 		button._drop_data(Vector2.ZERO, drag)
 		var shown: PackedStringArray = []  # the steps the button showed, each once, in order
 		var shares: PackedFloat32Array = []
+		var longest: Array = [0, ""]  # the longest frame (µs) and the step shown before it: measured, not checked
+		var last: int = Time.get_ticks_usec()
 		for i: int in 900:
+			var now: int = Time.get_ticks_usec()
+			if now - last > longest[0]:
+				longest = [now - last, shown[-1] if not shown.is_empty() else "the drop"]
+			last = now
 			# The inspector may build its controls anew meanwhile: the progress shows on the newest.
 			button = _drop_button()
 			var bar: ProgressBar = _bar_beside(button) if button else null
@@ -138,6 +144,7 @@ func _plants_from_scenes(tree: SceneTree, shot: String) -> PackedStringArray:
 		if shares.size() < 2 or shares[0] > 0.01:
 			problems.append("%s: the progress bar did not start empty (%s)" % [scene_path, shares])
 		print("probe: %s: the progress showed %s" % [scene_path, " | ".join(shown)])
+		print("probe: %s: the longest frame %.1f s, after '%s'" % [scene_path, longest[0] / 1e6, longest[1]])
 		var plant: FieldPlant = field.plant
 		var saved: String = "res://%s_plant.tres" % plant_name
 		if plant == before or plant == null or plant.resource_path != saved:
