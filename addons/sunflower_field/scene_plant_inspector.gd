@@ -57,8 +57,8 @@ func make_plant(path: String, field: SunflowerField, button: Button = null, bar:
 		_controls[id] = [button, bar]
 	_show_step(id, 0)
 	await _drawn(button != null)  # the step shows before the merge holds the frame
-	var scene: PackedScene = load(path) as PackedScene
-	var plant: FieldPlant = FieldPlant.from_scene(scene) if scene else null
+	var scene: PackedScene = await _loaded(path)
+	var plant: FieldPlant = await _merged(scene) if scene else null
 	if scene == null:
 		push_error("Plant from scene: %s is not a scene" % path)
 	if plant == null:
@@ -119,6 +119,27 @@ func make_plant(path: String, field: SunflowerField, button: Button = null, bar:
 	_undo.commit_action()
 	_show_step(id, -1)
 	return plant
+
+
+## The resource at [param path] loaded on the loader's threads while the editor draws its frames (a
+## scene of a million triangles takes seconds to read), when it is a scene; else null.
+static func _loaded(path: String) -> PackedScene:
+	if ResourceLoader.load_threaded_request(path) != OK:
+		return null
+	while ResourceLoader.load_threaded_get_status(path) == ResourceLoader.THREAD_LOAD_IN_PROGRESS:
+		await (Engine.get_main_loop() as SceneTree).process_frame
+	return ResourceLoader.load_threaded_get(path) as PackedScene
+
+
+## [method FieldPlant.from_scene] of [param scene] on a worker thread while the editor draws its frames
+## (a scene of a million triangles takes seconds to merge and simplify); await it.
+static func _merged(scene: PackedScene) -> FieldPlant:
+	var made: Array[FieldPlant] = [null]
+	var task: int = WorkerThreadPool.add_task(func() -> void: made[0] = FieldPlant.from_scene(scene))
+	while not WorkerThreadPool.is_task_completed(task):
+		await (Engine.get_main_loop() as SceneTree).process_frame
+	WorkerThreadPool.wait_for_task_completion(task)
+	return made[0]
 
 
 ## True while [param field] is a node of the scene being edited (the undo action needs it there).

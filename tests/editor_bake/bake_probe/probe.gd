@@ -9,7 +9,7 @@ extends EditorPlugin
 
 const PLANT_PATH: String = "res://my_plant.tres"
 const SceneDropButton: GDScript = preload("res://addons/sunflower_field/scene_drop_button.gd")
-const ScenePlantInspector: GDScript = preload("res://addons/sunflower_field/scene_plant_inspector.gd")
+const ScenePlant: GDScript = preload("res://addons/sunflower_field/scene_plant.gd")
 ## The test plants dropped (PROBE_PLANTS, comma-separated, or the grass clump alone: baking a tree or
 ## a bush in the software-rendered editor takes minutes).
 const TEST_PLANTS: PackedStringArray = ["maple_tree", "bottlebrush_bush", "grass_clump"]
@@ -190,6 +190,62 @@ func _plants_from_scenes(tree: SceneTree, shot: String) -> PackedStringArray:
 			)
 		print("probe: %s is the field's plant, %.2f m tall, baked" % [saved, plant.height])
 	problems.append_array(await _field_removed_mid_bake(tree))
+	problems.append_array(await _a_large_scene_merges_while_the_editor_draws(tree))
+	return problems
+
+
+## A scene of 300 k triangles dropped on a field: its merge (seconds) runs while the editor draws
+## frames, so no frame of the merge step is as long as the step (the longest and the step's length
+## printed), and the plant comes out whole.
+func _a_large_scene_merges_while_the_editor_draws(tree: SceneTree) -> PackedStringArray:
+	var root: Node3D = Node3D.new()
+	root.name = "LargeBall"
+	var ball: MeshInstance3D = MeshInstance3D.new()
+	var sphere: SphereMesh = SphereMesh.new()
+	sphere.radial_segments = 512
+	sphere.rings = 300  # 307 200 triangles
+	var mesh: ArrayMesh = ArrayMesh.new()
+	mesh.add_surface_from_arrays(Mesh.PRIMITIVE_TRIANGLES, sphere.get_mesh_arrays())
+	ball.mesh = mesh
+	ball.position = Vector3(0.0, 0.5, 0.0)
+	ball.name = "Ball"
+	root.add_child(ball)
+	ball.owner = root
+	var packed: PackedScene = PackedScene.new()
+	packed.pack(root)
+	root.free()
+	ResourceSaver.save(packed, "res://large_ball.tscn")
+	var field: SunflowerField = EditorInterface.get_edited_scene_root().get_node("SunflowerField") as SunflowerField
+	EditorInterface.edit_node(field)
+	await _wait_for_button(tree, SceneDropButton.TEXT)
+	var before: FieldPlant = field.plant
+	var button: Button = _drop_button()
+	if button == null:
+		return PackedStringArray(["no 'Plant from scene…' for the large scene"])
+	button._drop_data(Vector2.ZERO, {"type": "files", "files": PackedStringArray(["res://large_ball.tscn"])})
+	var merging: int = 0  # µs the merge step showed
+	var longest: int = 0
+	var last: int = Time.get_ticks_usec()
+	for i: int in 3000:
+		await tree.process_frame
+		var now: int = Time.get_ticks_usec()
+		button = _drop_button()
+		if button and button.text.begins_with("Merging"):
+			merging += now - last
+			longest = maxi(longest, now - last)
+		last = now
+		if field.plant != before and button and button.text == SceneDropButton.TEXT:
+			break
+	print(
+		"probe: a 307 200-triangle scene: merged in %.1f s, its longest frame %.2f s" % [merging / 1e6, longest / 1e6]
+	)
+	var problems: PackedStringArray = []
+	if field.plant == before or field.plant == null:
+		problems.append("the large scene did not become the field's plant")
+	elif ScenePlant.triangle_count(field.plant.mesh_level_1[0]) < 300000:  # (its poles' slivers may go)
+		problems.append("the large plant has %d triangles" % ScenePlant.triangle_count(field.plant.mesh_level_1[0]))
+	if merging < 1000000 or longest * 2 > merging:
+		problems.append("the merge held the editor: %.2f s of %.2f s in one frame" % [longest / 1e6, merging / 1e6])
 	return problems
 
 
