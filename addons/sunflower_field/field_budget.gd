@@ -9,6 +9,11 @@ extends RefCounted
 ## [constant MAX_STEP_DOWN] a step); it steps up (at most [constant MAX_STEP_UP]) only after
 ## [constant HEADROOM_SECONDS] under [constant HEADROOM], and never above a quality that went over
 ## budget in the last [constant CEILING_SECONDS]: no pumping between two qualities.
+##
+## The GPU time is the viewport's, not a field's: every field with a GPU target in one viewport shares
+## one budget for it ([method governor_of]), stepped once a frame towards the smallest target they
+## set, so that two fields do not both answer one overrun. A field draws at the lesser of that shared
+## quality and its own (its triangles).
 
 ## Seconds between steps: a step's LOD pass has run and its cost shows before the next one.
 const STEP_SECONDS: float = 0.25
@@ -26,6 +31,8 @@ const CEILING_SECONDS: float = 10.0
 ## The GPU time is smoothed over about this many seconds (it jitters frame to frame).
 const GPU_SMOOTHING_SECONDS: float = 0.15
 
+static var _governors: Dictionary = {}  # viewport RID → the budget its fields share for the GPU time
+
 ## The cap on the near meshes' triangles a frame (0: none).
 var max_primitives: int = 0
 ## The target for the viewport's GPU time a frame, in milliseconds (0: none).
@@ -42,6 +49,47 @@ var _since_step: float = 0.0
 var _under_for: float = 0.0
 var _ceiling: float = INF
 var _ceiling_age: float = 0.0
+
+var _stepped_frame: int = -1  # the process frame a shared budget last stepped in
+var _offers: Array = [INF, INF]  # this frame's smallest GPU target and least quality offered
+var _offer_frame: int = -1
+
+
+## The budget every field drawn in the viewport [param viewport] shares for its GPU time.
+static func governor_of(viewport: RID) -> RefCounted:
+	if not _governors.has(viewport):
+		_governors[viewport] = new()
+	return _governors[viewport]
+
+
+## One frame of a shared budget (see [method governor_of]), called by each field in its viewport
+## with its own GPU target [param target_ms] and least quality [param least]: the first call of a
+## frame steps it, towards the smallest target offered the frame before, with the viewport's GPU
+## time [param frame_gpu_ms]; the other calls only offer their targets. True when it stepped and the
+## quality changed.
+func step_shared(delta: float, frame_gpu_ms: float, target_ms: float, least: float) -> bool:
+	var frame: int = Engine.get_process_frames()
+	if _offer_frame >= 0 and _offer_frame < frame - 1:  # no field offered last frame: start afresh
+		quality = 1.0
+		gpu_ms = 0.0
+		retarget()
+		_offer_frame = -1
+	if _offer_frame != frame:
+		if _offer_frame >= 0:
+			if not is_equal_approx(_offers[0], gpu_ms):
+				retarget()
+			gpu_ms = _offers[0]
+			min_quality = _offers[1]
+		_offers = [INF, INF]
+		_offer_frame = frame
+	_offers = [minf(_offers[0], target_ms), minf(_offers[1], least)]
+	if _stepped_frame == frame:
+		return false
+	_stepped_frame = frame
+	if gpu_ms <= 0.0:  # the first frame: its own offer
+		gpu_ms = target_ms
+		min_quality = least
+	return step(delta, 0, frame_gpu_ms)
 
 
 ## Whether a target is set.

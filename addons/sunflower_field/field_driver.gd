@@ -60,8 +60,11 @@ var interaction: FieldInteraction
 var frame: FrameSettings = FrameSettings.new()
 ## The far levels' look per species, shared by the field drawn and one being built.
 var impostor_sets: Array[ImpostorSet] = []
-## The frame budget the fields drawn are held to, and the quality it chose.
+## The frame budget for the near meshes' triangles the fields drawn are held to, and the quality it
+## chose; the GPU time's budget is the viewport's ([method governor]). See [method quality].
 var budget: FieldBudget = FieldBudget.new()
+## The GPU-time target (0: none) and least quality the node sets, offered to its viewport's budget.
+var gpu_target_ms: float = 0.0
 ## The plant types drawn (FieldPlant): species 0 the node's plant ('*'), then the legend's.
 var plants: Array = []
 var _layout_key: Array = []
@@ -74,6 +77,7 @@ var _draw_distance: float = 0.0  # SunflowerField.max_draw_distance (0: none)
 var _thinning_start: float = 0.0  # SunflowerField.thinning_distance (0: no thinning)
 var _triangles: Array[PackedInt32Array] = []  # per species, a plant's triangles at each mesh level
 var _measuring_viewport: RID  # the viewport whose GPU time is measured for the budget
+var _applied_quality: float = 1.0  # the quality the field is drawn at
 var _bucket_count: int  # the library's near buckets per species, and each mesh level's first
 var _level_buckets: PackedInt32Array = []
 var _field: Node3D
@@ -214,9 +218,8 @@ func update_field(delta: float) -> void:
 	drawn.show_filled_buckets()
 	drawn.update_masks()
 	drawn.follow_sun()
-	if budget.is_active() and not Engine.is_editor_hint() and budget.step(delta, near_primitives(), _gpu_ms()):
-		_apply_quality()
-		quality_changed.emit(budget.quality)
+	if not Engine.is_editor_hint():
+		_step_budgets(delta)
 	var wind_state: PackedFloat32Array = native_simulation.get_wind_state()
 	for impostors: ImpostorSet in impostor_sets:
 		impostors.sway(wind_state, _wind, _field.global_transform)
@@ -310,8 +313,8 @@ func _configure_drawn() -> void:
 func _send_lod() -> void:
 	var distances: PackedFloat32Array = _lod[0].duplicate()
 	for i: int in distances.size():
-		distances[i] *= budget.quality
-	drawn.simulation.set_lod(distances, _lod[1], _lod[2] * budget.quality, _lod[3], _lod[4])
+		distances[i] *= quality()
+	drawn.simulation.set_lod(distances, _lod[1], _lod[2] * quality(), _lod[3], _lod[4])
 
 
 ## Tells each plant type's far tiles from where they cast the near plants' shadows
@@ -329,7 +332,7 @@ func _send_near_shadows() -> void:
 		levels.append(level)
 		var from: float = -1.0
 		if level < PartMeshes.LEVELS:
-			var switch: float = (_lod[0][level - 1] - _lod[1]) * plants[species].lod_scale_used() * budget.quality
+			var switch: float = (_lod[0][level - 1] - _lod[1]) * plants[species].lod_scale_used() * quality()
 			from = maxf(0.0, switch - NEAR_SHADOW_MARGIN)
 		impostor_sets[species].set_shared(&"near_shadow_from", from)
 	if drawn:
@@ -340,7 +343,7 @@ func _send_near_shadows() -> void:
 ## and the chunks' visibility ranges on the field drawn and one being built.
 func set_draw_distance(max_draw_distance: float) -> void:
 	_draw_distance = max_draw_distance
-	var distance: float = max_draw_distance * budget.quality
+	var distance: float = max_draw_distance * quality()
 	set_impostor_shared(&"draw_distance", distance)
 	set_impostor_shared(&"draw_fade", maxf(2.0, 0.1 * distance))
 	for nodes: FieldNodes in [drawn, build.nodes if build else null]:
@@ -351,20 +354,57 @@ func set_draw_distance(max_draw_distance: float) -> void:
 ## Sets where thinning starts (0: no thinning), drawn at the budget's quality.
 func set_thinning_start(distance: float) -> void:
 	_thinning_start = distance
-	set_impostor_shared(&"thinning_start", distance * budget.quality)
+	set_impostor_shared(&"thinning_start", distance * quality())
 
 
-## Sets the budget's targets (0: none) and least quality; with no target the quality goes back to 1.
+## Sets the budgets' targets (0: none) and least quality; with no target the quality goes back to 1.
 func set_budget(max_primitives: int, gpu_ms: float, min_quality: float) -> void:
-	if max_primitives != budget.max_primitives or gpu_ms != budget.gpu_ms:
+	if max_primitives != budget.max_primitives:
 		budget.retarget()
 	budget.max_primitives = max_primitives
-	budget.gpu_ms = gpu_ms
 	budget.min_quality = min_quality
 	if budget.quality < min_quality or not budget.is_active():
 		budget.quality = min_quality if budget.is_active() else 1.0
+	gpu_target_ms = gpu_ms
+	var governor: FieldBudget = governor()
+	if governor and governor.quality < min_quality:
+		governor.quality = min_quality
+	_requalify()
+
+
+## The share of its distances the field draws with: the lesser of its own budget's quality and its
+## viewport's GPU-time budget's (1 without targets).
+func quality() -> float:
+	var governor: FieldBudget = governor()
+	return minf(budget.quality, governor.quality) if governor else budget.quality
+
+
+## The GPU-time budget of the field's viewport, which every field there with a GPU target shares;
+## null without a GPU target or a viewport.
+func governor() -> FieldBudget:
+	if gpu_target_ms <= 0.0 or not _field.is_inside_tree():
+		return null
+	return FieldBudget.governor_of(_field.get_viewport().get_viewport_rid())
+
+
+## A frame of the budgets: the field's own (its triangles) and its viewport's (the GPU time, stepped
+## once a frame whichever field comes first); the field is drawn anew when its quality moved.
+func _step_budgets(delta: float) -> void:
+	if budget.is_active():
+		budget.step(delta, near_primitives(), 0.0)
+	var governor: FieldBudget = governor()
+	if governor:
+		governor.step_shared(delta, _gpu_ms(), gpu_target_ms, budget.min_quality)
+	_requalify()
+
+
+## Draws the field at its quality and says so, when that moved.
+func _requalify() -> void:
+	var now: float = quality()
+	if not is_equal_approx(now, _applied_quality):
+		_applied_quality = now
 		_apply_quality()
-		quality_changed.emit(budget.quality)
+		quality_changed.emit(now)
 
 
 ## The triangles of the near meshes written this frame: plants at each mesh level, after culling,
@@ -385,7 +425,7 @@ func near_count(species: int, level: int) -> int:
 
 ## The field's viewport's GPU time last frame in milliseconds, measured only with a GPU target.
 func _gpu_ms() -> float:
-	if budget.gpu_ms <= 0.0 or not _field.is_inside_tree():
+	if gpu_target_ms <= 0.0 or not _field.is_inside_tree():
 		return 0.0
 	var viewport: RID = _field.get_viewport().get_viewport_rid()
 	if viewport != _measuring_viewport:

@@ -575,3 +575,9 @@ static func _three(meshes: Array[Mesh]) -> Array[Mesh]:
 
 static func _positive(value: float, fallback: float) -> float:
 	return value if value > 0.0 and is_finite(value) else fallback
+
+
+## The inspector's range hints take their limits from the core's table (native.gd: [code]range_hint[/code]).
+func _validate_property(property: Dictionary) -> void:
+	if property["hint"] == PROPERTY_HINT_RANGE:
+		property["hint_string"] = Native.range_hint("FieldPlant." + property["name"], property["hint_string"])

@@ -13,6 +13,7 @@ const BUILD_HINT: String = (
 )
 
 static var _reported: bool = false
+static var _names: Dictionary = {}  # "Class.property" → true, every row of the core's table
 
 
 ## Whether the native library is loaded (a build for this platform exists and loaded).
@@ -76,6 +77,41 @@ static func accept_int(property: String, value: int, current: int) -> int:
 ## The core's default for [param property] (tests compare the inspector's defaults with it).
 static func default_of(property: String) -> float:
 	return ClassDB.class_call_static(CLASS, &"get_parameter_default", property)
+
+
+## [param hint_string], a range hint of [param property] ([code]"min,max,step[,flags]"[/code] of its
+## [code]@export_range[/code]), with the limits of the core's table: its min (or [code]or_less[/code]
+## when it has none), and its max (or [code]or_greater[/code] when it has none). An annotation with
+## [code]or_greater[/code] below the table's max keeps its slider's span: the setter holds a larger
+## value to the table's max, with a warning. Degrees for [code]radians_as_degrees[/code]. The
+## annotation gives the step, the suffix and a slider's span; the table alone gives the limits.
+## Unchanged without the library.
+static func range_hint(property: String, hint_string: String) -> String:
+	if not is_available() or not _parameters().has(property):
+		return hint_string
+	var parts: PackedStringArray = hint_string.split(",")
+	var flags: PackedStringArray = parts.slice(3)
+	var degrees: bool = flags.has("radians_as_degrees") or flags.has("radians")
+	var unbounded: float = 1e30  # the table's largest finite float stands for "no limit"
+	for side: int in 2:
+		var limit: float = ClassDB.class_call_static(CLASS, &"get_parameter_limit", property, side == 1)
+		var flag: String = "or_less" if side == 0 else "or_greater"
+		var shown: float = rad_to_deg(limit) if degrees else limit
+		if side == 1 and flags.has(flag) and float(parts[1]) < shown:
+			continue  # a slider's span below the table's max
+		flags.erase(flag)
+		if absf(limit) >= unbounded:
+			flags.append(flag)
+		else:
+			parts[side] = String.num(shown, 4)  # (4 places: the table's float π is 180.000005°)
+	return ",".join(parts.slice(0, 3) + flags)
+
+
+static func _parameters() -> Dictionary:
+	if _names.is_empty():
+		for name: String in parameter_names():
+			_names[name] = true
+	return _names
 
 
 ## Every property the core's table knows, as [code]"Class.property"[/code].

@@ -556,6 +556,11 @@ func _validate_property(property: Dictionary) -> void:
 	var name: StringName = property["name"]
 	if WIND_PROPERTIES.has(name) or (name == &"wind" and _wind_is_own_default()):
 		property["usage"] &= ~PROPERTY_USAGE_STORAGE
+	if property["hint"] == PROPERTY_HINT_RANGE:
+		var row: String = (
+			"SunflowerWind." + WIND_PROPERTIES[name] if WIND_PROPERTIES.has(name) else "SunflowerField." + name
+		)
+		property["hint_string"] = Native.range_hint(row, property["hint_string"])
 
 
 ## The wind settings revert to a new wind's; [member wind], while it is the node's own unchanged
@@ -674,7 +679,7 @@ func get_lod_counts() -> PackedInt32Array:
 ## The share of its distances the field draws with now: 1 unless a frame budget
 ## ([member budget_primitives], [member budget_gpu_ms]) lowered it.
 func get_quality() -> float:
-	return _driver.budget.quality
+	return _driver.quality()
 
 
 ## What the field drawn costs now, for a HUD or a benchmark: [code]update_ms[/code] (the native
@@ -705,7 +710,7 @@ func get_frame_stats() -> Dictionary:
 		"memory_bytes": simulation.get_memory_bytes(),
 		"near_meshes": near,
 		"near_primitives": _driver.near_primitives(),
-		"gpu_ms": _driver.budget.smoothed_gpu_ms,
+		"gpu_ms": _driver.governor().smoothed_gpu_ms if _driver.governor() else 0.0,
 		"quality": get_quality(),
 	}
 

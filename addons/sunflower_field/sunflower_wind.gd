@@ -139,3 +139,9 @@ func apply_to(simulation: NativeField) -> void:
 		gust_speed,
 		gust_share
 	)
+
+
+## The inspector's range hints take their limits from the core's table (native.gd: [code]range_hint[/code]).
+func _validate_property(property: Dictionary) -> void:
+	if property["hint"] == PROPERTY_HINT_RANGE:
+		property["hint_string"] = Native.range_hint("SunflowerWind." + property["name"], property["hint_string"])

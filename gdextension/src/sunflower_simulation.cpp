@@ -89,6 +89,7 @@ void SunflowerSimulation::bind_methods() {
 	gdx::bind_method(CLASS, "sanitize_parameter", &SunflowerSimulation::sanitize_parameter, { "name", "value", "current" });
 	gdx::bind_method(CLASS, "explain_parameter", &SunflowerSimulation::explain_parameter, { "name", "value", "used" });
 	gdx::bind_method(CLASS, "get_parameter_default", &SunflowerSimulation::get_parameter_default, { "name" });
+	gdx::bind_method(CLASS, "get_parameter_limit", &SunflowerSimulation::get_parameter_limit, { "name", "upper" });
 	gdx::bind_method(CLASS, "get_parameter_names", &SunflowerSimulation::get_parameter_names);
 	gdx::bind_method(CLASS, "check_lod_distances", &SunflowerSimulation::check_lod_distances, { "distances" });
 	gdx::bind_method(CLASS, "sanitize_wind_direction", &SunflowerSimulation::sanitize_wind_direction, { "direction" });

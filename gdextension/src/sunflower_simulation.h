@@ -110,6 +110,7 @@ public:
 	static double sanitize_parameter(const gdx::String &p_name, double p_value, double p_current);
 	static gdx::String explain_parameter(const gdx::String &p_name, double p_value, double p_used);
 	static double get_parameter_default(const gdx::String &p_name);
+	static double get_parameter_limit(const gdx::String &p_name, bool p_upper);
 	static gdx::String get_parameter_names();
 	static gdx::String check_lod_distances(const gdx::PackedFloat32Array &p_distances);
 	static gdx::Vector2 sanitize_wind_direction(gdx::Vector2 p_direction);

@@ -132,6 +132,12 @@ double SunflowerSimulation::get_parameter_default(const gdx::String &p_name) {
 	return spec->default_value;
 }
 
+double SunflowerSimulation::get_parameter_limit(const gdx::String &p_name, bool p_upper) {
+	const ParameterSpec *spec = find_parameter(p_name.utf8());
+	SF_FAIL_COND_V_MSG(spec == nullptr, 0.0, "no parameter is called '" + p_name.utf8() + "'");
+	return p_upper ? spec->max : spec->min;
+}
+
 gdx::String SunflowerSimulation::get_parameter_names() {
 	std::string names;
 	for (const ParameterSpec *spec : param::ALL) {

@@ -131,6 +131,27 @@ func test_the_quality_scales_the_distances_the_plants_switch_at() -> void:
 ## The controller alone, against a cost that grows with the square of the quality (the near
 ## meshes') and a fixed part, in steps of a 60th of a second: it reaches the target from 4× over
 ## within 3 s and then holds one quality; the GPU target works the same way.
+## Every field with a GPU target in one viewport shares one budget for its GPU time: it steps once a
+## frame whichever field comes first, towards the smallest target offered, so that two fields do not
+## both answer one overrun (each did, with a budget of its own per node and one GPU time per viewport).
+func test_fields_in_one_viewport_share_its_gpu_time_budget() -> void:
+	var viewport: RID = RenderingServer.viewport_create()
+	var shared: RefCounted = FieldBudget.governor_of(viewport)
+	check(FieldBudget.governor_of(viewport) == shared, "one budget per viewport")
+	check(FieldBudget.governor_of(tree.root.get_viewport_rid()) != shared, "another for another viewport")
+	var alone: RefCounted = FieldBudget.new()  # one field's budget, as it was
+	alone.gpu_ms = 10.0
+	for frame: int in 3:
+		# Two fields offer 20 ms and 10 ms; the viewport took 20 ms on the GPU (twice the smaller target).
+		shared.step_shared(0.3, 20.0, 20.0 if frame > 0 else 10.0, 0.25)
+		shared.step_shared(0.3, 20.0, 10.0, 0.25)
+		alone.step(0.3, 0, 20.0)
+		check_near(shared.quality, alone.quality, 1e-6, "frame %d: one step towards 10 ms, as one field's" % frame)
+		await frames(1)
+	check(shared.quality < 0.8, "it went down (%.3f)" % shared.quality)
+	RenderingServer.free_rid(viewport)
+
+
 func test_the_controller_reaches_a_target_and_holds_it() -> void:
 	for target: String in ["primitives", "gpu"]:
 		var budget: RefCounted = FieldBudget.new()
