@@ -46,10 +46,18 @@ const PartMeshes: GDScript = preload("part_meshes.gd")
 ## The thesis' switch distances, [member lod_distances]' default.
 const DEFAULT_LOD_DISTANCES: PackedFloat32Array = [6.0, 10.0, 20.0, 25.0]
 ## The properties that edit [member wind]: stored there, so not in the scene a second time.
+## The settings of one ground source, by the source they belong to (shown only for it).
+const GROUND_SETTINGS: Dictionary = {
+	&"ground_collision_mask": GroundSource.COLLIDERS,
+	&"ground_ray_above": GroundSource.COLLIDERS,
+	&"ground_ray_below": GroundSource.COLLIDERS,
+	&"height_map": GroundSource.HEIGHT_MAP,
+	&"height_map_rect": GroundSource.HEIGHT_MAP,
+	&"height_range": GroundSource.HEIGHT_MAP,
+}
 const WIND_PROPERTIES: Dictionary = {
 	&"wind_power": &"power", &"wind_direction": &"direction", &"wind_increment": &"increment"
 }
-@export_group("Field")
 ## The field map. Import a [code].field[/code] file (the plugin turns it into a
 ## [SunflowerFieldMap]) or call [method load_map_file].
 @export var map: SunflowerFieldMap:
@@ -77,12 +85,6 @@ const WIND_PROPERTIES: Dictionary = {
 		if value != seed:
 			seed = value
 			_queue_rebuild()
-## Jitter x and z independently (the thesis used one α for both).
-@export var independent_jitter: bool = false:
-	set(value):
-		if value != independent_jitter:
-			independent_jitter = value
-			_queue_rebuild()
 ## What other map symbols stand for; keys are single characters. A [PackedScene] is placed at the
 ## cell's centre (e.g. [code]{"S": preload("stone.tscn")}[/code], the thesis' "big stone"); a
 ## [FieldPlant] makes the cell a plant of that type (e.g. [code]{"m": preload("maize.tres")}[/code]),
@@ -101,6 +103,124 @@ const WIND_PROPERTIES: Dictionary = {
 		_driver.configure_plants(_species_plants())
 		_queue_rebuild()
 		update_configuration_warnings()
+## The plant the field grows: its parts, form, variety and impostor textures. Empty: the built-in
+## sunflower. A plant shared by several fields changes them all.
+@export var plant: FieldPlant:
+	set(value):
+		if value == plant:
+			return
+		if plant and plant.changed.is_connected(_on_plant_changed):
+			plant.changed.disconnect(_on_plant_changed)
+		plant = value
+		if plant:
+			plant.changed.connect(_on_plant_changed)
+		_on_plant_changed()
+		if Engine.is_editor_hint():
+			notify_property_list_changed()  # the inspector offers Bake impostors for a plant of its own
+## The wind resource; share one between fields to give them the same weather. A field's own wind
+## is saved with its scene only once a setting differs from the defaults.
+@export var wind: SunflowerWind = SunflowerWind.new():
+	set(value):
+		if value == null:
+			value = SunflowerWind.new()
+		if value == wind:
+			return
+		if wind and wind.changed.is_connected(_tell_wind):
+			wind.changed.disconnect(_tell_wind)
+		wind = value
+		wind.changed.connect(_tell_wind)
+		_tell_wind()
+## Wind power p_w: 0 is calm, 1.0 ≈ 1 m/s, at most 100. Stored in [member wind].
+@export_range(0.0, 100.0, 0.1, "suffix:m/s") var wind_power: float:
+	get:
+		return wind.power
+	set(value):
+		wind.power = value
+## Where the wind blows to, on the ground (x, z). Stored in [member wind].
+@export var wind_direction: Vector2:
+	get:
+		return wind.direction
+	set(value):
+		wind.direction = value
+## What one step of [method increase_wind] / [method decrease_wind] changes the power by.
+## Stored in [member wind].
+@export_range(0.0, 100.0, 0.1, "suffix:m/s") var wind_increment: float:
+	get:
+		return wind.increment
+	set(value):
+		wind.increment = value
+## Where the plants stand. [b]Flat[/b]: on the node's plane (y = 0). [b]Colliders[/b]: where a ray
+## straight down hits a physics body in [member ground_collision_mask], between
+## [member ground_ray_above] and [member ground_ray_below] of the node — any terrain with collision
+## (a HeightMapShape3D, a trimesh, a terrain plugin's). The rays run on the main thread, a
+## [member build_budget_ms] share per frame, from the physics frame after the build starts.
+## [b]Height Map[/b]: on [member height_map], read on the build's worker thread. Cells with no
+## ground under their plant (a hole, past the colliders or the map) get no plant; legend objects
+## stand on the ground too.
+@export var ground_source: GroundSource = GroundSource.FLAT:
+	set(value):
+		if value != ground_source:
+			ground_source = value
+			_queue_rebuild()
+			notify_property_list_changed()  # its own settings show
+## Colliders: the physics layers that are ground.
+@export_flags_3d_physics var ground_collision_mask: int = 1:
+	set(value):
+		if value != ground_collision_mask:
+			ground_collision_mask = value
+			_queue_rebuild()
+## Height Map: its red channel (0 to 1) is the height from [code]height_range.x[/code] to
+## [code]height_range.y[/code] — as [method HeightMapShape3D.update_map_data_from_image] reads it, so
+## one image can make both the collision and the field. Pixels with alpha below 0.5 are holes.
+## Sampled bilinearly; the first and last pixels lie on [member height_map_rect]'s edges.
+@export var height_map: Texture2D:
+	set(value):
+		if value != height_map:
+			height_map = value
+			_queue_rebuild()
+## Height Map: the rectangle it covers in the node's space, x and z (an empty one: the whole map,
+## from (0, 0) to columns × rows cells). A HeightMapShape3D of w × d heights at the node's origin
+## spans [code]Rect2(-(w - 1) / 2, -(d - 1) / 2, w - 1, d - 1)[/code].
+@export var height_map_rect: Rect2 = Rect2():
+	set(value):
+		if value != height_map_rect:
+			height_map_rect = value
+			_queue_rebuild()
+## Height Map: the heights of red 0 and red 1.
+@export var height_range: Vector2 = Vector2(0.0, 10.0):
+	set(value):
+		if value != height_range:
+			height_range = value
+			_queue_rebuild()
+## Plants beyond this distance are not drawn (0: no limit); each dithers out over the last tenth
+## of it (at least 2 m) by its own distance, so no chunk of plants vanishes at once.
+@export_range(0.0, 10000.0, 1.0, "or_greater", "suffix:m") var max_draw_distance: float = 0.0:
+	set(value):
+		value = Native.accept("SunflowerField.max_draw_distance", value, max_draw_distance)
+		if value != max_draw_distance:
+			max_draw_distance = value
+			_driver.set_draw_distance(max_draw_distance)
+## The node distances are measured from. Empty: the viewport's active camera (in the editor, the
+## editor camera). A [Camera3D] also culls plants outside its view.
+@export var observer: NodePath:
+	set(value):
+		observer = value
+		_tell_frame()
+		update_configuration_warnings()
+## Nodes in this group part the plants around them, like a body walking through the field: near
+## plants within the pusher's radius bend away from it and spring back once it has gone. A pusher's
+## [code]push_radius[/code] meta sets its own radius. Empty: no pushers.
+@export var pusher_group: StringName = &"sunflower_pushers":
+	set(value):
+		pusher_group = value
+		_tell_frame()
+@export_group("Advanced: layout")
+## Jitter x and z independently (the thesis used one α for both).
+@export var independent_jitter: bool = false:
+	set(value):
+		if value != independent_jitter:
+			independent_jitter = value
+			_queue_rebuild()
 ## Refuse maps with more sunflowers than this (0: the core's limit of 16 million).
 @export_range(0, 100000000, 1) var max_plants: int = 4000000:
 	set(value):
@@ -136,27 +256,7 @@ const WIND_PROPERTIES: Dictionary = {
 		if value != tile_merge_distance:
 			tile_merge_distance = value
 			_queue_rebuild()
-
-@export_group("Ground")
-## Where the plants stand. [b]Flat[/b]: on the node's plane (y = 0). [b]Colliders[/b]: where a ray
-## straight down hits a physics body in [member ground_collision_mask], between
-## [member ground_ray_above] and [member ground_ray_below] of the node — any terrain with collision
-## (a HeightMapShape3D, a trimesh, a terrain plugin's). The rays run on the main thread, a
-## [member build_budget_ms] share per frame, from the physics frame after the build starts.
-## [b]Height Map[/b]: on [member height_map], read on the build's worker thread. Cells with no
-## ground under their plant (a hole, past the colliders or the map) get no plant; legend objects
-## stand on the ground too.
-@export var ground_source: GroundSource = GroundSource.FLAT:
-	set(value):
-		if value != ground_source:
-			ground_source = value
-			_queue_rebuild()
-## Colliders: the physics layers that are ground.
-@export_flags_3d_physics var ground_collision_mask: int = 1:
-	set(value):
-		if value != ground_collision_mask:
-			ground_collision_mask = value
-			_queue_rebuild()
+@export_group("Advanced: ground")
 ## Colliders: how far above the node the rays start.
 @export_range(0.0, 1000.0, 0.1, "or_greater", "suffix:m") var ground_ray_above: float = 100.0:
 	set(value):
@@ -171,29 +271,6 @@ const WIND_PROPERTIES: Dictionary = {
 		if value != ground_ray_below:
 			ground_ray_below = value
 			_queue_rebuild()
-## Height Map: its red channel (0 to 1) is the height from [code]height_range.x[/code] to
-## [code]height_range.y[/code] — as [method HeightMapShape3D.update_map_data_from_image] reads it, so
-## one image can make both the collision and the field. Pixels with alpha below 0.5 are holes.
-## Sampled bilinearly; the first and last pixels lie on [member height_map_rect]'s edges.
-@export var height_map: Texture2D:
-	set(value):
-		if value != height_map:
-			height_map = value
-			_queue_rebuild()
-## Height Map: the rectangle it covers in the node's space, x and z (an empty one: the whole map,
-## from (0, 0) to columns × rows cells). A HeightMapShape3D of w × d heights at the node's origin
-## spans [code]Rect2(-(w - 1) / 2, -(d - 1) / 2, w - 1, d - 1)[/code].
-@export var height_map_rect: Rect2 = Rect2():
-	set(value):
-		if value != height_map_rect:
-			height_map_rect = value
-			_queue_rebuild()
-## Height Map: the heights of red 0 and red 1.
-@export var height_range: Vector2 = Vector2(0.0, 10.0):
-	set(value):
-		if value != height_range:
-			height_range = value
-			_queue_rebuild()
 ## How far plants lean from upright towards the ground's normal: 0 keeps them upright (sunflowers
 ## do), 1 stands them along it.
 @export_range(0.0, 1.0, 0.01) var ground_tilt: float = 0.0:
@@ -202,63 +279,39 @@ const WIND_PROPERTIES: Dictionary = {
 		if value != ground_tilt:
 			ground_tilt = value
 			_queue_rebuild()
-
-@export_group("Wind")
-## Wind power p_w: 0 is calm, 1.0 ≈ 1 m/s, at most 100. Stored in [member wind].
-@export_range(0.0, 100.0, 0.1, "suffix:m/s") var wind_power: float:
-	get:
-		return wind.power
-	set(value):
-		wind.power = value
-## Where the wind blows to, on the ground (x, z). Stored in [member wind].
-@export var wind_direction: Vector2:
-	get:
-		return wind.direction
-	set(value):
-		wind.direction = value
-## What one step of [method increase_wind] / [method decrease_wind] changes the power by.
-## Stored in [member wind].
-@export_range(0.0, 100.0, 0.1, "suffix:m/s") var wind_increment: float:
-	get:
-		return wind.increment
-	set(value):
-		wind.increment = value
-## The wind resource; share one between fields to give them the same weather. A field's own wind
-## is saved with its scene only once a setting differs from the defaults.
-@export var wind: SunflowerWind = SunflowerWind.new():
-	set(value):
-		if value == null:
-			value = SunflowerWind.new()
-		if value == wind:
-			return
-		if wind and wind.changed.is_connected(_tell_wind):
-			wind.changed.disconnect(_tell_wind)
-		wind = value
-		wind.changed.connect(_tell_wind)
-		_tell_wind()
-
-@export_group("Plant")
-## The plant the field grows: its parts, form, variety and impostor textures. Empty: the built-in
-## sunflower. A plant shared by several fields changes them all.
-@export var plant: FieldPlant:
-	set(value):
-		if value == plant:
-			return
-		if plant and plant.changed.is_connected(_on_plant_changed):
-			plant.changed.disconnect(_on_plant_changed)
-		plant = value
-		if plant:
-			plant.changed.connect(_on_plant_changed)
-		_on_plant_changed()
-		if Engine.is_editor_hint():
-			notify_property_list_changed()  # the inspector offers Bake impostors for a plant of its own
+@export_group("Advanced: look")
 ## Alpha below which sprite and billboard pixels are discarded (thesis: 190/255).
 @export_range(0.0, 1.0, 0.001) var alpha_scissor: float = 190.0 / 255.0:
 	set(value):
 		alpha_scissor = Native.accept("SunflowerField.alpha_scissor", value, alpha_scissor)
 		_driver.set_impostor_shared(&"alpha_scissor", alpha_scissor)
-
-@export_group("Level of detail")
+## Near plants at mesh level 1 or 2 cast their shadows from their mesh 3 (the shadow of a plant a
+## few shadow-map texels wide looks the same, at a quarter of the triangles); off: each casts from the
+## mesh it is drawn with.
+@export var cheap_shadows: bool = true:
+	set(value):
+		if value != cheap_shadows:
+			cheap_shadows = value
+			_queue_rebuild()
+## Near plants drawn at this level or coarser cast their shadows from their impostors (two
+## triangles each: the plant's silhouette seen from the sun, each pixel at the depth the plant has
+## there) instead of a mesh, from the distance where they switch to it (less [member lod_hysteresis]
+## and a metre) on; nearer levels cast from their meshes (from mesh 3 with [member cheap_shadows]).
+## From mesh 3 (the default) the million-plant field at head height draws 0.47× the primitives of
+## full-detail shadows. Never, with [member cheap_shadows] off: every plant casts from the mesh it is
+## drawn with.
+@export_enum("Mesh 2:1", "Mesh 3:2", "Never:3") var impostor_shadows_from: int = 2:
+	set(value):
+		var used: int = clampi(value, SunflowerField.Lod.MESH_2, SunflowerField.Lod.SPRITE)
+		if used != value:
+			push_warning(
+				"SunflowerField.impostor_shadows_from: %d is not 1–3 (Mesh 2, Mesh 3, Never); using %d" % [value, used]
+			)
+			value = used
+		if value != impostor_shadows_from:
+			impostor_shadows_from = value
+			_tell_lod()
+@export_group("Advanced: levels of detail")
 ## Switch distances: mesh 1 → 2, mesh 2 → 3, mesh 3 → sprite, sprite → billboard (thesis:
 ## 6, 10, 20, 25 m) for a plant of the sunflower's 2 m; each plant type switches at these times its
 ## [method FieldPlant.lod_scale_used] (its size over 2 m unless its [member FieldPlant.lod_scale]
@@ -325,23 +378,7 @@ const WIND_PROPERTIES: Dictionary = {
 	set(value):
 		thinning_min_density = Native.accept("SunflowerField.thinning_min_density", value, thinning_min_density)
 		_driver.set_impostor_shared(&"thinning_min_density", thinning_min_density)
-## Plants beyond this distance are not drawn (0: no limit); each dithers out over the last tenth
-## of it (at least 2 m) by its own distance, so no chunk of plants vanishes at once.
-@export_range(0.0, 10000.0, 1.0, "or_greater", "suffix:m") var max_draw_distance: float = 0.0:
-	set(value):
-		value = Native.accept("SunflowerField.max_draw_distance", value, max_draw_distance)
-		if value != max_draw_distance:
-			max_draw_distance = value
-			_driver.set_draw_distance(max_draw_distance)
-
-@export_group("Interaction")
-## Nodes in this group part the plants around them, like a body walking through the field: near
-## plants within the pusher's radius bend away from it and spring back once it has gone. A pusher's
-## [code]push_radius[/code] meta sets its own radius. Empty: no pushers.
-@export var pusher_group: StringName = &"sunflower_pushers":
-	set(value):
-		pusher_group = value
-		_tell_frame()
+@export_group("Advanced: interaction")
 ## A pusher's radius when it sets none.
 @export_range(0.01, 20.0, 0.01, "or_greater", "suffix:m") var pusher_radius: float = 0.6:
 	set(value):
@@ -378,34 +415,7 @@ const WIND_PROPERTIES: Dictionary = {
 	set(value):
 		collision_mask = value
 		_tell_frame()
-
-@export_group("Performance")
-## Near plants at mesh level 1 or 2 cast their shadows from their mesh 3 (the shadow of a plant a
-## few shadow-map texels wide looks the same, at a quarter of the triangles); off: each casts from the
-## mesh it is drawn with.
-@export var cheap_shadows: bool = true:
-	set(value):
-		if value != cheap_shadows:
-			cheap_shadows = value
-			_queue_rebuild()
-## Near plants drawn at this level or coarser cast their shadows from their impostors (two
-## triangles each: the plant's silhouette seen from the sun, each pixel at the depth the plant has
-## there) instead of a mesh, from the distance where they switch to it (less [member lod_hysteresis]
-## and a metre) on; nearer levels cast from their meshes (from mesh 3 with [member cheap_shadows]).
-## From mesh 3 (the default) the million-plant field at head height draws 0.47× the primitives of
-## full-detail shadows. Never, with [member cheap_shadows] off: every plant casts from the mesh it is
-## drawn with.
-@export_enum("Mesh 2:1", "Mesh 3:2", "Never:3") var impostor_shadows_from: int = 2:
-	set(value):
-		var used: int = clampi(value, SunflowerField.Lod.MESH_2, SunflowerField.Lod.SPRITE)
-		if used != value:
-			push_warning(
-				"SunflowerField.impostor_shadows_from: %d is not 1–3 (Mesh 2, Mesh 3, Never); using %d" % [value, used]
-			)
-			value = used
-		if value != impostor_shadows_from:
-			impostor_shadows_from = value
-			_tell_lod()
+@export_group("Advanced: building")
 ## Build large maps without stalling: the map is read and laid out on a worker thread, then the
 ## field's nodes are made a few at a time, at most [member build_budget_ms] per frame. The previous
 ## field stays drawn until the new one is complete ([signal build_progress] reports, the editor shows
@@ -426,8 +436,7 @@ const WIND_PROPERTIES: Dictionary = {
 		if value != worker_threads:
 			worker_threads = value
 			_driver.set_threads(worker_threads)
-
-@export_group("Budget")
+@export_group("Advanced: frame budget")
 ## A frame budget the field holds by itself: the most triangles its near meshes may hold in a frame
 ## (the main view's; each shadow pass draws its own), 0: no cap. Over it, the field lowers its
 ## quality, one scalar that scales [member lod_distances], [member lod_fade],
@@ -452,15 +461,6 @@ const WIND_PROPERTIES: Dictionary = {
 	set(value):
 		budget_min_quality = Native.accept("SunflowerField.budget_min_quality", value, budget_min_quality)
 		_tell_budget()
-
-@export_group("Observer")
-## The node distances are measured from. Empty: the viewport's active camera (in the editor, the
-## editor camera). A [Camera3D] also culls plants outside its view.
-@export var observer: NodePath:
-	set(value):
-		observer = value
-		_tell_frame()
-		update_configuration_warnings()
 
 ## The plant's height from root to head, metres: the [member plant]'s [member FieldPlant.height]
 ## (setting it gives the field its own copy of the plant).
@@ -556,6 +556,10 @@ func _validate_property(property: Dictionary) -> void:
 	var name: StringName = property["name"]
 	if WIND_PROPERTIES.has(name) or (name == &"wind" and _wind_is_own_default()):
 		property["usage"] &= ~PROPERTY_USAGE_STORAGE
+	# One place for each setting in the inspector: the wind's in [member wind], each ground's own
+	# settings only while it is the ground (they stay stored).
+	if WIND_PROPERTIES.has(name) or GROUND_SETTINGS.get(name, ground_source) != ground_source:
+		property["usage"] &= ~PROPERTY_USAGE_EDITOR
 	if property["hint"] == PROPERTY_HINT_RANGE:
 		var row: String = (
 			"SunflowerWind." + WIND_PROPERTIES[name] if WIND_PROPERTIES.has(name) else "SunflowerField." + name

@@ -216,3 +216,56 @@ func _check_range(row: String, name: String, hint: String) -> void:
 				is_equal_approx(float(parts[side]), expected) and not parts.has(flag),
 				"%s (%s): the table's %s is %s, the hint says '%s'" % [name, row, ["min", "max"][side], expected, hint]
 			)
+
+
+## A new field's inspector shows on its first screen (outside the folded "Advanced: …" groups) at
+## most 15 settings, what a first field needs, with each ground's own settings only while it is the
+## ground, and no setting twice (the wind's power lives in its wind). It showed 47 in 9 groups.
+func test_a_new_fields_first_screen_shows_what_a_first_field_needs() -> void:
+	var needed: PackedStringArray = [
+		"map", "cell_size", "seed", "legend", "plant", "wind", "ground_source", "max_draw_distance", "observer"
+	]
+	var own: Dictionary = {
+		SunflowerField.GroundSource.FLAT: [],
+		SunflowerField.GroundSource.COLLIDERS: ["ground_collision_mask"],
+		SunflowerField.GroundSource.HEIGHT_MAP: ["height_map", "height_map_rect", "height_range"],
+	}
+	for source: int in own:
+		var field: SunflowerField = SunflowerField.new()
+		field.ground_source = source
+		var shown: PackedStringArray = _first_screen(field)
+		print("     ground %d: %d on the first screen: %s" % [source, shown.size(), ", ".join(shown)])
+		check(shown.size() <= 15, "at most 15 (%d)" % shown.size())
+		for name: String in needed + PackedStringArray(own[source]):
+			check(shown.has(name), "ground %d: %s on the first screen" % [source, name])
+		for other: int in own:
+			for name: String in own[other] if other != source else []:
+				check(not _shown_anywhere(field, name), "ground %d: %s (another ground's) hidden" % [source, name])
+		for name: StringName in SunflowerField.WIND_PROPERTIES:
+			check(not _shown_anywhere(field, name), "%s only in the wind" % name)
+		field.free()
+
+
+## The script's editor properties outside any group, in order.
+func _first_screen(object: Object) -> PackedStringArray:
+	var shown: PackedStringArray = []
+	var in_script: bool = false
+	var grouped: bool = false
+	for property: Dictionary in object.get_property_list():
+		if property["usage"] & PROPERTY_USAGE_CATEGORY:
+			in_script = (
+				str(property["hint_string"]).ends_with("sunflower_field.gd") or property["name"] == "SunflowerField"
+			)
+			grouped = false
+		elif property["usage"] & (PROPERTY_USAGE_GROUP | PROPERTY_USAGE_SUBGROUP):
+			grouped = not str(property["name"]).is_empty()
+		elif in_script and not grouped and property["usage"] & PROPERTY_USAGE_EDITOR:
+			shown.append(property["name"])
+	return shown
+
+
+func _shown_anywhere(object: Object, name: String) -> bool:
+	for property: Dictionary in object.get_property_list():
+		if property["name"] == name:
+			return property["usage"] & PROPERTY_USAGE_EDITOR != 0
+	return false
