@@ -489,5 +489,6 @@ func _spin_box(tooltip: String, low: float, high: float, step: float, value: flo
 	box.value = value
 	box.suffix = suffix
 	box.tooltip_text = tooltip
+	box.get_line_edit().expand_to_text_length = true  # its prefix and suffix shown whole, not cut
 	toolbar.add_child(box)
 	return box
