@@ -64,11 +64,8 @@ const WIND_PROPERTIES: Dictionary = {
 	set(value):
 		if value == map:
 			return
-		if map and map.changed.is_connected(_queue_rebuild):
-			map.changed.disconnect(_queue_rebuild)
+		_listen(map, value, _queue_rebuild)  # a reimport or a paint stroke changes it in place
 		map = value
-		if map:
-			map.changed.connect(_queue_rebuild)  # a reimport or a paint stroke changes it in place
 		_queue_rebuild()
 		update_configuration_warnings()
 ## The size of one map character on the ground (thesis: 0.5 m, four plants per square metre).
@@ -109,11 +106,8 @@ const WIND_PROPERTIES: Dictionary = {
 	set(value):
 		if value == plant:
 			return
-		if plant and plant.changed.is_connected(_on_plant_changed):
-			plant.changed.disconnect(_on_plant_changed)
+		_listen(plant, value, _on_plant_changed)
 		plant = value
-		if plant:
-			plant.changed.connect(_on_plant_changed)
 		_on_plant_changed()
 		if Engine.is_editor_hint():
 			notify_property_list_changed()  # the inspector offers Bake impostors for a plant of its own
@@ -125,10 +119,8 @@ const WIND_PROPERTIES: Dictionary = {
 			value = SunflowerWind.new()
 		if value == wind:
 			return
-		if wind and wind.changed.is_connected(_tell_wind):
-			wind.changed.disconnect(_tell_wind)
+		_listen(wind, value, _tell_wind)
 		wind = value
-		wind.changed.connect(_tell_wind)
 		_tell_wind()
 ## Wind power p_w: 0 is calm, 1.0 ≈ 1 m/s, at most 100. Stored in [member wind].
 @export_range(0.0, 100.0, 0.1, "suffix:m/s") var wind_power: float:
@@ -515,6 +507,14 @@ func _init() -> void:
 
 
 ## The settings the driver keeps for every field it draws, told as they change.
+## [param action] follows the [signal Resource.changed] of [param new] instead of [param old]'s.
+static func _listen(old: Resource, new: Resource, action: Callable) -> void:
+	if old and old.changed.is_connected(action):
+		old.changed.disconnect(action)
+	if new and not new.changed.is_connected(action):
+		new.changed.connect(action)
+
+
 func _tell_wind() -> void:
 	_driver.set_wind(wind)
 
