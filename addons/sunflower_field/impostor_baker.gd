@@ -164,7 +164,7 @@ static func _bake(plant: FieldPlant, host: Node, folder: String, base_name: Stri
 	_tell(progress, "importing its atlases", 6.0 / STEPS)
 	await host.get_tree().process_frame
 	await host.get_tree().process_frame
-	_give_textures(plant, kinds, paths, images)
+	await _give_textures(plant, kinds, paths, images, host.get_tree())
 	return OK
 
 
@@ -413,7 +413,7 @@ static func _stage(plant: FieldPlant) -> SubViewport:
 ## hold none): in the editor reimported from the files (and the plant saved when it is a file),
 ## elsewhere made from the images.
 static func _give_textures(
-	plant: FieldPlant, kinds: PackedStringArray, paths: PackedStringArray, images: Array[Image]
+	plant: FieldPlant, kinds: PackedStringArray, paths: PackedStringArray, images: Array[Image], tree: SceneTree
 ) -> void:
 	var textures: Array[Texture2D] = []
 	var in_project: bool = Engine.is_editor_hint() and paths[0].begins_with("res://")
@@ -422,7 +422,9 @@ static func _give_textures(
 		for path: String in paths:
 			filesystem.update_file(path)
 		_write_import_settings(paths)
-		filesystem.reimport_files(paths)
+		for path: String in paths:  # one a frame: each import holds the editor's frame
+			filesystem.reimport_files(PackedStringArray([path]))
+			await tree.process_frame
 		for path: String in paths:
 			textures.append(ResourceLoader.load(path, "Texture2D", ResourceLoader.CACHE_MODE_REPLACE) as Texture2D)
 	else:
