@@ -311,10 +311,11 @@ func _configure_drawn() -> void:
 
 ## Sends the LOD settings to the field drawn, its distances and fade at the budget's quality.
 func _send_lod() -> void:
+	var scale: float = quality()
 	var distances: PackedFloat32Array = _lod[0].duplicate()
 	for i: int in distances.size():
-		distances[i] *= quality()
-	drawn.simulation.set_lod(distances, _lod[1], _lod[2] * quality(), _lod[3], _lod[4])
+		distances[i] *= scale
+	drawn.simulation.set_lod(distances, _lod[1], _lod[2] * scale, _lod[3], _lod[4])
 
 
 ## Tells each plant type's far tiles from where they cast the near plants' shadows
@@ -326,13 +327,14 @@ func _send_near_shadows() -> void:
 	if _lod.is_empty():
 		return
 	var field_level: int = _field.impostor_shadows_from if _lod[4] < 0 else PartMeshes.LEVELS
+	var scale: float = quality()
 	var levels: PackedInt32Array = []
 	for species: int in mini(impostor_sets.size(), plants.size()):
 		var level: int = field_level if plants[species].impostor_shadows else PartMeshes.LEVELS
 		levels.append(level)
 		var from: float = -1.0
 		if level < PartMeshes.LEVELS:
-			var switch: float = (_lod[0][level - 1] - _lod[1]) * plants[species].lod_scale_used() * quality()
+			var switch: float = (_lod[0][level - 1] - _lod[1]) * plants[species].lod_scale_used() * scale
 			from = maxf(0.0, switch - NEAR_SHADOW_MARGIN)
 		impostor_sets[species].set_shared(&"near_shadow_from", from)
 	if drawn:

@@ -148,9 +148,7 @@ static func _bake(plant: FieldPlant, host: Node, folder: String, base_name: Stri
 		kinds.append(FieldPlant.BACKLIGHT_TEXTURE)
 		images.append(through)
 	# Writing and importing the atlases take whole frames of their own: their step is drawn first.
-	_tell(progress, "writing its atlases", 5.0 / STEPS)
-	await host.get_tree().process_frame
-	await host.get_tree().process_frame
+	await _tell_drawn(progress, "writing its atlases", 5.0 / STEPS, host.get_tree())
 	var paths: PackedStringArray = []
 	for i: int in images.size():
 		var path: String = folder.path_join("%s_%s.png" % [base_name, kinds[i]])
@@ -161,9 +159,7 @@ static func _bake(plant: FieldPlant, host: Node, folder: String, base_name: Stri
 		paths.append(path)
 	plant.impostor_emission_range = glow.energy_range
 	plant.impostor_alpha_cuts = alpha_cuts(images[0])
-	_tell(progress, "importing its atlases", 6.0 / STEPS)
-	await host.get_tree().process_frame
-	await host.get_tree().process_frame
+	await _tell_drawn(progress, "importing its atlases", 6.0 / STEPS, host.get_tree())
 	await _give_textures(plant, kinds, paths, images, host.get_tree())
 	return OK
 
@@ -171,6 +167,15 @@ static func _bake(plant: FieldPlant, host: Node, folder: String, base_name: Stri
 static func _tell(progress: Callable, step: String, done: float) -> void:
 	if progress.is_valid():
 		progress.call(step, done)
+
+
+## [method _tell], then (when someone shows the progress) two frames of [param tree], so that the
+## step is drawn before work that holds a whole frame.
+static func _tell_drawn(progress: Callable, step: String, done: float, tree: SceneTree) -> void:
+	_tell(progress, step, done)
+	if progress.is_valid():
+		await tree.process_frame
+		await tree.process_frame
 
 
 ## The alpha cut of each mip level of the views [param image] (as the import makes them, alpha

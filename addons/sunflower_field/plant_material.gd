@@ -90,7 +90,6 @@ static var _plain: StandardMaterial3D
 static var _faded_shaders: Dictionary = {}  # your shader → [its code, the fading copy or null]
 static var _bent_shaders: Dictionary = {}  # a fading shader → [its code, the bending copy or null]
 static var _patterns: Dictionary = {}  # pattern → RegEx
-static var _broken_shaders: Dictionary = {}  # your shader that does not compile → true, once warned
 
 
 ## [param mesh] with every surface whose material can be carried over drawn with the plant material
@@ -266,22 +265,7 @@ static func _with_include(code: String, path: String, line: String) -> String:
 ## The copy of [param own] drawn with its shader made fading ([param bend] false) or bending (the
 ## shader from [method _made_shader]); null when that shader cannot be made.
 static func _copy(own: ShaderMaterial, bend: bool) -> ShaderMaterial:
-	if _fails_to_compile(own.shader):
-		# The engine has reported its error once, with your line numbers; a copy would report it again.
-		if not _broken_shaders.has(own.shader):
-			_broken_shaders[own.shader] = true
-			push_warning(
-				(
-					(
-						"SunflowerField: the shader %s of the material %s does not compile (the engine's shader error"
-						+ " names the line); the plant's parts drawn with it keep it unchanged, without the levels'"
-						+ " cross-fade"
-					)
-					% [_named(own.shader), _named(own)]
-				)
-			)
-		return null
-	var shader: Shader = _made_shader(own.shader, bend)
+	var shader: Shader = _made_shader(own.shader, bend, own)
 	if shader == null:
 		return null
 	var copy: ShaderMaterial = ShaderMaterial.new()
@@ -296,12 +280,26 @@ static func _copy(own: ShaderMaterial, bend: bool) -> ShaderMaterial:
 
 ## The shader made from [param shader] by [method bending_code] ([param bend]) or [method fading_code],
 ## kept per shader (in _bent_shaders or _faded_shaders) and made again only when its code changes; null
-## when it cannot be made.
-static func _made_shader(shader: Shader, bend: bool) -> Shader:
+## when it cannot be made, or when [param shader] does not compile: the engine has reported its error
+## once, with your line numbers (a copy would report it again); one warning names it and
+## [param material], the first that draws with it.
+static func _made_shader(shader: Shader, bend: bool, material: Material = null) -> Shader:
 	var made_shaders: Dictionary = _bent_shaders if bend else _faded_shaders
 	var made: Array = made_shaders.get(shader, [])
 	if made.is_empty() or made[0] != shader.code:
-		var code: String = bending_code(shader.code) if bend else fading_code(shader.code)
+		var broken: bool = _fails_to_compile(shader)
+		if broken:
+			push_warning(
+				(
+					(
+						"SunflowerField: the shader %s of the material %s does not compile (the engine's shader error"
+						+ " names the line); the plant's parts drawn with it keep it unchanged, without the levels'"
+						+ " cross-fade"
+					)
+					% [_named(shader), _named(material) if material else "(none)"]
+				)
+			)
+		var code: String = "" if broken else (bending_code(shader.code) if bend else fading_code(shader.code))
 		var copy: Shader = null
 		if not code.is_empty():
 			copy = Shader.new()

@@ -709,12 +709,13 @@ func get_frame_stats() -> Dictionary:
 	for species: int in _species_plants().size():
 		for level: int in Lod.SPRITE:
 			near[level] += _driver.near_count(species, level)
+	var governor: RefCounted = _driver.governor()
 	return {
 		"update_ms": simulation.get_last_update_usec() / 1000.0,
 		"memory_bytes": simulation.get_memory_bytes(),
 		"near_meshes": near,
 		"near_primitives": _driver.near_primitives(),
-		"gpu_ms": _driver.governor().smoothed_gpu_ms if _driver.governor() else 0.0,
+		"gpu_ms": governor.smoothed_gpu_ms if governor else 0.0,
 		"quality": get_quality(),
 	}
 
