@@ -7,9 +7,10 @@ extends RefCounted
 ## (materials drawn unshaded, albedo only: the field's lights shade the impostors once, like the
 ## meshes), the normals in the plant's own frame, the depths along the view and, when any part
 ## gives off light, the light given off (the parts' own materials lit by nothing), and when any lets
-## light through from behind, that light (their back-light). All views render at once: one copy of
-## the plant per view, turned so that a single camera sees it from that view's direction. Needs a
-## renderer (not [code]--headless[/code]); the work takes a few frames, so [method bake] is awaited.
+## light through from behind, that light (their back-light). One copy of the plant per view, turned
+## so that a single camera sees it from that view's direction; the camera draws a tile of views at a
+## time, as many as [constant TRIANGLES_PER_RENDER] allows. Needs a renderer (not
+## [code]--headless[/code]); the work takes frames, so [method bake] is awaited.
 
 const PlantMaterial: GDScript = preload("plant_material.gd")
 
@@ -22,10 +23,18 @@ const CELL_PIXELS: int = 128
 ## background's black mixed in twice), and a tree of small leaves, most of its pixels partly
 ## covered, baked much darker than its meshes.
 const SUPERSAMPLE: int = 2
-## Frames waited before a pass is read back. Each pass is rendered once (the viewport updates
-## once when asked): three renders a pass made a 120-view bake about three times as slow on a
-## software renderer, for the same pixels.
-const SETTLE_FRAMES: int = 3
+## The most triangles one render of the bake draws: a tile of views is drawn at a time (a frame
+## each), as large as keeps the plant's copies in it under this (at least one view). Drawn all at
+## once, the 120 views of an 8 500-triangle bush held the editor for one 2.8 s frame under the
+## software renderer here, and those of a 300 000-triangle ball 12 s a pass; in tiles of this size
+## the longest editor frame of either drop is 1.6 s (tests/editor_bake's probe; a smaller budget
+## gave 1.4 s, and the ball's bake took 155 s instead of 100, a frame being most of a second of the
+## editor's own drawing).
+const TRIANGLES_PER_RENDER: int = 1_000_000
+## Frames waited before a tile is read back: the viewport, asked to update once, draws the tile in
+## the next frame (three frames gave the same atlases, in test_bake, on both renderers, and each
+## frame waited costs a whole editor frame).
+const SETTLE_FRAMES: int = 1
 ## Added to the mip level the parts' textures are read at in the bake. The views are drawn much
 ## larger than the plant is where its impostors are shown, so unbiased they read a leaf texture's
 ## fine detail, which the meshes there average away: a grass clump's blades (a dark midrib down a
@@ -68,6 +77,18 @@ void fragment() {
 
 ## The bake's steps as [method bake] reports them: three passes, back-light, emission, writing, importing.
 const STEPS: float = 7.0
+
+## When above 0, used instead of [constant TRIANGLES_PER_RENDER] ([method test_set_triangles_per_render]).
+static var _test_triangles_per_render: int = 0
+
+
+## The bake's world: its viewport (a tile of views large), the camera that frames one tile at a
+## time, the tile's size in views and a view square's side in metres.
+class Stage:
+	var viewport: SubViewport
+	var camera: Camera3D
+	var tile: Vector2i
+	var square: float
 
 
 ## The emission pass: its picture (null when nothing glows) and the range its light was divided by
@@ -116,7 +137,8 @@ static func _bake(plant: FieldPlant, host: Node, folder: String, base_name: Stri
 	if made != OK:
 		push_error("Bake impostors: cannot make the folder %s (%s)" % [folder, error_string(made)])
 		return made
-	var viewport: SubViewport = _stage(plant)
+	var stage: Stage = _stage(plant)
+	var viewport: SubViewport = stage.viewport
 	host.add_child(viewport)
 	var images: Array[Image] = []
 	var kinds: PackedStringArray = FieldPlant.IMPOSTOR_TEXTURES.duplicate()
@@ -130,16 +152,16 @@ static func _bake(plant: FieldPlant, host: Node, folder: String, base_name: Stri
 				coded.set_shader_parameter("square", plant.impostor_frame().x)
 			for instance: Node in viewport.find_children("*", "MeshInstance3D", true, false):
 				(instance as MeshInstance3D).material_override = coded
-		var image: Image = await _read_pass(viewport)
+		var image: Image = await _read_pass(stage)
 		if image == null:
 			viewport.queue_free()
 			push_error("Bake impostors: the %s rendered nothing (no renderer?)" % kind)
 			return ERR_CANT_CREATE
 		images.append(image)
 	_tell(progress, "drawing its back-light", 3.0 / STEPS)
-	var through: Image = await _backlight(viewport)
+	var through: Image = await _backlight(stage)
 	_tell(progress, "drawing its emission", 4.0 / STEPS)
-	var glow: Glow = await _emission(viewport, plant)
+	var glow: Glow = await _emission(stage, plant)
 	viewport.queue_free()
 	if glow.image:
 		kinds.append(FieldPlant.EMISSION_TEXTURE)
@@ -213,10 +235,10 @@ static func alpha_cuts(image: Image) -> PackedFloat32Array:
 ## back-light as the colour; a part the plant material cannot draw is black where it covers (a
 ## StandardMaterial3D keeps its alpha cut; another material is drawn whole). No image when no part
 ## lets light through.
-static func _backlight(viewport: SubViewport) -> Image:
+static func _backlight(stage: Stage) -> Image:
 	var copies: Dictionary = {}  # material → the one drawn in this pass
 	var lets_through: bool = false
-	var instances: Array[Node] = viewport.find_children("*", "MeshInstance3D", true, false)
+	var instances: Array[Node] = stage.viewport.find_children("*", "MeshInstance3D", true, false)
 	for node: Node in instances:
 		var mesh: Mesh = (node as MeshInstance3D).mesh
 		for surface: int in mesh.get_surface_count() if mesh else 0:
@@ -232,7 +254,7 @@ static func _backlight(viewport: SubViewport) -> Image:
 		instance.material_override = null
 		for surface: int in instance.mesh.get_surface_count() if instance.mesh else 0:
 			instance.set_surface_override_material(surface, copies[instance.mesh.surface_get_material(surface)])
-	var image: Image = await _read_pass(viewport)
+	var image: Image = await _read_pass(stage)
 	for node: Node in instances:
 		var instance: MeshInstance3D = node as MeshInstance3D
 		for surface: int in instance.mesh.get_surface_count() if instance.mesh else 0:
@@ -278,7 +300,8 @@ static func _black_material(material: Material) -> BaseMaterial3D:
 ## which no pixel saturates (through the exposure; rendered again with the next range while one
 ## does). No image when no pixel glows, or, without rendering, when no part's material can give off
 ## light.
-static func _emission(viewport: SubViewport, plant: FieldPlant) -> Glow:
+static func _emission(stage: Stage, plant: FieldPlant) -> Glow:
+	var viewport: SubViewport = stage.viewport
 	var glow: Glow = Glow.new()
 	glow.energy_range = (FieldPlant as Script).get_property_default_value(&"impostor_emission_range")
 	if not _can_glow(plant):
@@ -298,7 +321,7 @@ static func _emission(viewport: SubViewport, plant: FieldPlant) -> Glow:
 	for step: int in EMISSION_RANGE_STEPS:
 		for environment: Environment in environments:
 			environment.tonemap_exposure = 1.0 / glow.energy_range
-		var image: Image = await _read_pass(viewport)
+		var image: Image = await _read_pass(stage)
 		if image == null:
 			return glow
 		# The brightest colour channel, from a comparison with black (the alpha left out).
@@ -332,19 +355,39 @@ static func _can_glow(plant: FieldPlant) -> bool:
 	return false
 
 
-## The picture of a pass once its frames have settled, as 8-bit RGBA at the atlas' size: the
-## drawn picture ([constant SUPERSAMPLE] times as large, each pixel covered or not) with its covered
+## The picture of a pass, as 8-bit RGBA at the atlas' size: the stage's tiles drawn one a frame and
+## put together ([constant SUPERSAMPLE] times as large, each pixel covered or not), then brought
+## down by [method _average_down] on a worker thread (it takes most of a second for a 120-view
+## atlas on one core; the editor draws meanwhile). Null when nothing was rendered.
+static func _read_pass(stage: Stage) -> Image:
+	var views: Vector2i = FieldPlant.ATLAS_VIEWS
+	var pixels: int = CELL_PIXELS * SUPERSAMPLE
+	var image: Image = null
+	for top: int in range(0, views.y, stage.tile.y):
+		for left: int in range(0, views.x, stage.tile.x):
+			var middle: Vector2 = Vector2(left, top) + Vector2(stage.tile) * 0.5
+			stage.camera.position = Vector3(middle.x * stage.square, -middle.y * stage.square, 4.0 * stage.square)
+			stage.viewport.render_target_update_mode = SubViewport.UPDATE_ONCE
+			for i: int in SETTLE_FRAMES:
+				await RenderingServer.frame_post_draw
+			var drawn: Image = stage.viewport.get_texture().get_image()
+			if drawn == null or drawn.is_empty():
+				return null
+			if image == null:
+				image = Image.create_empty(views.x * pixels, views.y * pixels, false, drawn.get_format())
+			image.blit_rect(drawn, Rect2i(Vector2i.ZERO, drawn.get_size()), Vector2i(left, top) * pixels)
+	var task: int = WorkerThreadPool.add_task(_average_down.bind(image), false, "Sunflower Field: impostor pass")
+	while not WorkerThreadPool.is_task_completed(task):
+		await RenderingServer.frame_post_draw
+	WorkerThreadPool.wait_for_task_completion(task)
+	return image
+
+
+## Turns the drawn picture [param image] (in place) into 8-bit RGBA at the atlas' size: its covered
 ## pixels' colours bled into their transparent neighbours, then averaged down, so that a pixel's
 ## alpha is the share of it covered and its colour that of what covers it; then bled again (so
-## filtering and mipmaps do not pull dark fringes into the alpha-tested edges). Null when nothing
-## was rendered.
-static func _read_pass(viewport: SubViewport) -> Image:
-	viewport.render_target_update_mode = SubViewport.UPDATE_ONCE
-	for i: int in SETTLE_FRAMES:
-		await RenderingServer.frame_post_draw
-	var image: Image = viewport.get_texture().get_image()
-	if image == null or image.is_empty():
-		return null
+## filtering and mipmaps do not pull dark fringes into the alpha-tested edges).
+static func _average_down(image: Image) -> void:
 	image.convert(Image.FORMAT_RGBA8)
 	var size: int = SUPERSAMPLE
 	while size > 1:
@@ -352,7 +395,6 @@ static func _read_pass(viewport: SubViewport) -> Image:
 		image.shrink_x2()
 		size /= 2
 	image.fix_alpha_edges()
-	return image
 
 
 ## The direction view (column, row) of the atlas sees the plant from, and the image's right and up,
@@ -367,13 +409,17 @@ static func view_basis(column: int, row: int) -> Basis:
 
 ## A world of its own with one copy of the plant's level-1 parts per view, each turned so that an
 ## orthographic camera looking down −z sees it from its view's direction in its square, and a
-## transparent background.
-static func _stage(plant: FieldPlant) -> SubViewport:
+## transparent background; the viewport and camera one tile of views large.
+static func _stage(plant: FieldPlant) -> Stage:
 	var views: Vector2i = FieldPlant.ATLAS_VIEWS
 	var frame: Vector2 = plant.impostor_frame()
+	var stage: Stage = Stage.new()
+	stage.tile = tile_of(plant.triangle_count(0))
+	stage.square = frame.x
 	var viewport: SubViewport = SubViewport.new()
+	stage.viewport = viewport
 	viewport.name = "ImpostorBaker"
-	viewport.size = views * CELL_PIXELS * SUPERSAMPLE
+	viewport.size = stage.tile * CELL_PIXELS * SUPERSAMPLE
 	viewport.transparent_bg = true
 	viewport.msaa_3d = Viewport.MSAA_DISABLED
 	# The parts' textures read as at the atlas' own size (log2 of the supersampling coarser).
@@ -406,12 +452,36 @@ static func _stage(plant: FieldPlant) -> SubViewport:
 	var camera: Camera3D = Camera3D.new()
 	camera.name = "Camera"
 	camera.projection = Camera3D.PROJECTION_ORTHOGONAL
-	camera.size = views.y * frame.x
+	camera.size = stage.tile.y * frame.x
 	camera.keep_aspect = Camera3D.KEEP_HEIGHT
-	camera.position = Vector3(views.x * frame.x * 0.5, -views.y * frame.x * 0.5, 4.0 * frame.x)
 	camera.far = 8.0 * frame.x
 	viewport.add_child(camera)
-	return viewport
+	stage.camera = camera
+	return stage
+
+
+## The tile of views (columns, rows) one render draws for a plant of [param triangles] triangles:
+## whole rows while a row fits in [constant TRIANGLES_PER_RENDER], else part of a row; its sides
+## divide the atlas' so that every tile is whole.
+static func tile_of(triangles: int) -> Vector2i:
+	var views: Vector2i = FieldPlant.ATLAS_VIEWS
+	var budget: int = _test_triangles_per_render if _test_triangles_per_render > 0 else TRIANGLES_PER_RENDER
+	var fits: int = maxi(budget / maxi(triangles, 1), 1)
+	var rows: int = _largest_divisor(views.y, fits / views.x)
+	return Vector2i(views.x, rows) if rows > 0 else Vector2i(_largest_divisor(views.x, fits), 1)
+
+
+## Test hook: bakes draw tiles of at most [param triangles] (0: [constant TRIANGLES_PER_RENDER]).
+static func test_set_triangles_per_render(triangles: int) -> void:
+	_test_triangles_per_render = triangles
+
+
+## The largest divisor of [param whole] that is at most [param most] (0 when [param most] < 1).
+static func _largest_divisor(whole: int, most: int) -> int:
+	for divisor: int in range(mini(whole, most), 0, -1):
+		if whole % divisor == 0:
+			return divisor
+	return 0
 
 
 ## Hands the textures of [param kinds] to the plant (and no emission or back-light texture when they

@@ -13,6 +13,9 @@ const ScenePlant: GDScript = preload("res://addons/sunflower_field/scene_plant.g
 ## The test plants dropped (PROBE_PLANTS, comma-separated, or the grass clump alone: baking a tree or
 ## a bush in the software-rendered editor takes minutes).
 const TEST_PLANTS: PackedStringArray = ["maple_tree", "bottlebrush_bush", "grass_clump"]
+## The longest editor frame a drop may take: a freeze, where the aim is 2 s (printed, not checked: the
+## test command's other lanes load the machine and stretch every frame twofold or more).
+const FREEZE_USEC: int = 6_000_000
 
 
 func _enter_tree() -> void:
@@ -119,7 +122,7 @@ func _plants_from_scenes(tree: SceneTree, shot: String) -> PackedStringArray:
 		button._drop_data(Vector2.ZERO, drag)
 		var shown: PackedStringArray = []  # the steps the button showed, each once, in order
 		var shares: PackedFloat32Array = []
-		var longest: Array = [0, ""]  # the longest frame (µs) and the step shown before it: measured, not checked
+		var longest: Array = [0, ""]  # the longest frame (µs) and the step shown before it
 		var last: int = Time.get_ticks_usec()
 		for i: int in 900:
 			var now: int = Time.get_ticks_usec()
@@ -146,6 +149,8 @@ func _plants_from_scenes(tree: SceneTree, shot: String) -> PackedStringArray:
 			problems.append("%s: the progress bar did not start empty (%s)" % [scene_path, shares])
 		print("probe: %s: the progress showed %s" % [scene_path, " | ".join(shown)])
 		print("probe: %s: the longest frame %.1f s, after '%s'" % [scene_path, longest[0] / 1e6, longest[1]])
+		if longest[0] > FREEZE_USEC:
+			problems.append("%s: the drop held the editor %.1f s in one frame" % [scene_path, longest[0] / 1e6])
 		var plant: FieldPlant = field.plant
 		var saved: String = "res://%s_plant.tres" % plant_name
 		if plant == before or plant == null or plant.resource_path != saved:
@@ -225,19 +230,28 @@ func _a_large_scene_merges_while_the_editor_draws(tree: SceneTree) -> PackedStri
 	button._drop_data(Vector2.ZERO, {"type": "files", "files": PackedStringArray(["res://large_ball.tscn"])})
 	var merging: int = 0  # µs the merge step showed
 	var longest: int = 0
-	var last: int = Time.get_ticks_usec()
-	for i: int in 3000:
+	var longest_of_drop: int = 0  # (the bake's too: its views drawn a tile of 250 000 triangles a frame)
+	var start: int = Time.get_ticks_usec()
+	var last: int = start
+	for i: int in 5000:
 		await tree.process_frame
 		var now: int = Time.get_ticks_usec()
 		button = _drop_button()
 		if button and button.text.begins_with("Merging"):
 			merging += now - last
 			longest = maxi(longest, now - last)
+		longest_of_drop = maxi(longest_of_drop, now - last)
 		last = now
 		if field.plant != before and button and button.text == SceneDropButton.TEXT:
 			break
 	print(
 		"probe: a 307 200-triangle scene: merged in %.1f s, its longest frame %.2f s" % [merging / 1e6, longest / 1e6]
+	)
+	print(
+		(
+			"probe: a 307 200-triangle scene: dropped, merged and baked in %.0f s, its longest frame %.2f s"
+			% [(last - start) / 1e6, longest_of_drop / 1e6]
+		)
 	)
 	var problems: PackedStringArray = []
 	if field.plant == before or field.plant == null:
@@ -246,6 +260,9 @@ func _a_large_scene_merges_while_the_editor_draws(tree: SceneTree) -> PackedStri
 		problems.append("the large plant has %d triangles" % ScenePlant.triangle_count(field.plant.mesh_level_1[0]))
 	if merging < 1000000 or longest * 2 > merging:
 		problems.append("the merge held the editor: %.2f s of %.2f s in one frame" % [longest / 1e6, merging / 1e6])
+	# A freeze, not the 2 s aimed at: a loaded machine (the test command's other lanes) doubles frames.
+	if longest_of_drop > FREEZE_USEC:
+		problems.append("the large scene's drop held the editor %.1f s in one frame" % (longest_of_drop / 1e6))
 	return problems
 
 

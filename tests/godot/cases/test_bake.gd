@@ -382,6 +382,37 @@ func test_a_bright_glow_gets_a_wider_range() -> void:
 	field.free()
 
 
+func test_views_are_drawn_in_tiles_as_large_as_the_triangle_budget_allows() -> void:
+	var views: Vector2i = FieldPlant.ATLAS_VIEWS
+	check_eq(ImpostorBaker.tile_of(216), views, "a grass clump: every view in one render")
+	check_eq(ImpostorBaker.tile_of(8532), Vector2i(views.x, 5), "an 8 500-triangle bush: half the rows a render")
+	check_eq(ImpostorBaker.tile_of(30000), Vector2i(views.x, 2), "two rows")
+	check_eq(ImpostorBaker.tile_of(300000), Vector2i(3, 1), "a quarter of a row")
+	check_eq(ImpostorBaker.tile_of(2000000), Vector2i(1, 1), "a huge plant: one view a render")
+	# The sunflower drawn a view at a time bakes the atlases it bakes in one render.
+	var whole: FieldPlant = FieldPlant.default_plant().duplicate() as FieldPlant
+	check_eq(await whole.bake_impostors(tree.root, FOLDER, "sunflower_whole"), OK)
+	var tiled: FieldPlant = FieldPlant.default_plant().duplicate() as FieldPlant
+	ImpostorBaker.test_set_triangles_per_render(1)
+	check_eq(await tiled.bake_impostors(tree.root, FOLDER, "sunflower_tiled"), OK)
+	ImpostorBaker.test_set_triangles_per_render(0)
+	for kind: String in FieldPlant.IMPOSTOR_TEXTURES:
+		var a: Image = (whole.get("impostor_" + kind) as Texture2D).get_image()
+		var b: Image = (tiled.get("impostor_" + kind) as Texture2D).get_image()
+		a.clear_mipmaps()
+		b.clear_mipmaps()
+		var differ: int = 0
+		for y: int in a.get_height():
+			for x: int in a.get_width():
+				var p: Color = a.get_pixel(x, y)
+				var q: Color = b.get_pixel(x, y)
+				if absf(p.a - q.a) > 0.1 or absf(p.get_luminance() - q.get_luminance()) * minf(p.a, q.a) > 0.05:
+					differ += 1
+		var share: float = float(differ) / (a.get_width() * a.get_height())
+		print("     tiled bake: %s differs from the one-render bake in %.2f %% of pixels" % [kind, share * 100.0])
+		check(share < 0.005, "%s: a view at a time draws the same atlas (%.2f %% differ)" % [kind, share * 100.0])
+
+
 func test_the_built_in_sunflower_baked_again_matches_the_shipped_textures() -> void:
 	var plant: FieldPlant = FieldPlant.default_plant().duplicate() as FieldPlant
 	var result: Error = await plant.bake_impostors(tree.root, FOLDER, "sunflower_again")
