@@ -33,6 +33,7 @@ enum RandomStream : uint64_t {
 	STREAM_COLOR = 9,
 	STREAM_PAINT = 10,
 	STREAM_TILE_LEVEL = 11,
+	STREAM_PLACEMENT = 12,
 };
 
 } // namespace sunflower
