@@ -517,7 +517,20 @@ func _place_objects(legend: Dictionary, cell_size: float) -> void:
 				)
 			)
 			continue
-		var instance: Node = scene.instantiate()
+		var instance: Node = scene.instantiate() if scene.can_instantiate() else null
+		if instance == null:
+			push_warning(
+				(
+					"SunflowerField.legend: '%s' names a scene that makes no node (%s); cell (%d, %d) stays empty"
+					% [
+						symbol,
+						scene.resource_path if not scene.resource_path.is_empty() else "an empty scene",
+						objects[i],
+						objects[i + 1]
+					]
+				)
+			)
+			continue
 		instance.name = "%s_%d_%d" % [instance.name, objects[i], objects[i + 1]]
 		if instance is Node3D:
 			(instance as Node3D).position = Vector3(

@@ -2,13 +2,19 @@
 extends EditorInspectorPlugin
 ## The map buttons at the top of a [SunflowerField]'s inspector: "New map…" (columns × rows, filled
 ## or empty, saved as a new .field beside the scene) and "Resize map…" (keeps the cells both sizes
-## share), each one undo/redo action through the painter.
+## share), each one undo/redo action through the painter; and, for a field with placement rules,
+## "Generate from rules" (placement_generator.gd; pressed again while it runs, it cancels).
+
+const GENERATE: String = "Generate from rules"
+const GENERATING: String = "Generating… (press to cancel)"
 
 var _painter: RefCounted
+var _generator: RefCounted
 
 
-func _init(painter: RefCounted) -> void:
+func _init(painter: RefCounted, generator: RefCounted) -> void:
 	_painter = painter
+	_generator = generator
 
 
 func _can_handle(object: Object) -> bool:
@@ -25,6 +31,25 @@ func _parse_begin(object: Object) -> void:
 		button.pressed.connect(_ask_size.bind(field, entry[1]))
 		row.add_child(button)
 	add_custom_control(row)
+	if field.placement_rules:
+		var generate: Button = Button.new()
+		generate.text = GENERATING if _generator.is_running(field) else GENERATE
+		generate.tooltip_text = (
+			"Writes what the placement rules place into the map file (cells painted by hand since the last "
+			+ "generation are kept)"
+		)
+		generate.pressed.connect(_on_generate.bind(field, generate))
+		add_custom_control(generate)
+
+
+func _on_generate(field: SunflowerField, button: Button) -> void:
+	if _generator.is_running(field):
+		_generator.cancel(field)
+		return
+	button.text = GENERATING
+	await _generator.generate(field)
+	if is_instance_valid(button):
+		button.text = GENERATE
 
 
 ## A dialog asking for columns and rows (and, for a new map, whether it starts planted).

@@ -6,6 +6,8 @@ extends RefCounted
 ## library fits the platform; there, exactly one error says so and how to build one.
 
 const CLASS: StringName = &"SunflowerSimulation"
+## The native class of placement by rules.
+const PLACEMENT_CLASS: StringName = &"SunflowerPlacement"
 ## The command that builds the libraries, for the missing-library error.
 const BUILD_HINT: String = (
 	"build it with 'scons platform=<linux|windows|macos> arch=<x86_64|arm64>' or 'tools/build.sh --all' "
@@ -27,6 +29,14 @@ static func create_simulation() -> RefCounted:
 		report_missing()
 		return null
 	return ClassDB.instantiate(CLASS) as RefCounted
+
+
+## A new native placement (rules to cells), or null (with the one missing-library error).
+static func create_placement() -> RefCounted:
+	if not is_available():
+		report_missing()
+		return null
+	return ClassDB.instantiate(PLACEMENT_CLASS) as RefCounted
 
 
 ## Prints, once per run, that no native library fits this platform and how to make one.

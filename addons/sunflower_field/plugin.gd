@@ -27,7 +27,9 @@ func _enter_tree() -> void:
 	add_inspector_plugin(_inspector)
 	_painter = preload("field_painter.gd").new(get_undo_redo())
 	add_control_to_container(CONTAINER_SPATIAL_EDITOR_MENU, _painter.toolbar)
-	_map_inspector = preload("map_inspector.gd").new(_painter)
+	_map_inspector = preload("map_inspector.gd").new(
+		_painter, preload("placement_generator.gd").new(get_undo_redo(), _painter)
+	)
 	add_inspector_plugin(_map_inspector)
 	_scene_plant_inspector = preload("scene_plant_inspector.gd").new(get_undo_redo())
 	add_inspector_plugin(_scene_plant_inspector)

@@ -68,6 +68,10 @@ const WIND_PROPERTIES: Dictionary = {
 		map = value
 		_queue_rebuild()
 		update_configuration_warnings()
+## Rules that fill the map (grass by slope, trees by noise and away from paths, …): "Generate from
+## rules" above the inspector writes what they place into the map file, keeping cells painted by
+## hand since the last generation. Not read when the field builds: the map is what it draws.
+@export var placement_rules: SunflowerPlacementRules
 ## The size of one map character on the ground (thesis: 0.5 m, four plants per square metre).
 @export_range(0.05, 10.0, 0.01, "or_greater", "suffix:m") var cell_size: float = 0.5:
 	set(value):

@@ -1,9 +1,13 @@
-// The library's entry point: loads the binding, registers SunflowerSimulation and its docs.
+// The library's entry point: loads the binding, registers SunflowerSimulation, SunflowerPlacement and
+// their docs.
 #include "binding/class_binder.h"
 #include "binding/rendering_server.h"
+#include "sunflower_placement.h"
 #include "sunflower_simulation.h"
 
 #include "doc_data.gen.h"
+
+#include <cstring>
 
 namespace {
 
@@ -13,9 +17,12 @@ void initialize(void *, GDExtensionInitializationLevel p_level) {
 	if (p_level == GDEXTENSION_INITIALIZATION_SCENE) {
 		// The RenderingServer singleton is not published yet at this level: it is looked up on first use.
 		gdx::register_class<SunflowerSimulation>("SunflowerSimulation", "RefCounted");
+		gdx::register_class<SunflowerPlacement>("SunflowerPlacement", "RefCounted");
 		registered = true;
 	} else if (p_level == GDEXTENSION_INITIALIZATION_EDITOR && registered) {
-		gdx::api.editor_help_load_xml_from_utf8_chars_and_len(sunflower_doc::XML, sizeof(sunflower_doc::XML) - 1);
+		for (const char *xml : sunflower_doc::XML) {
+			gdx::api.editor_help_load_xml_from_utf8_chars_and_len(xml, static_cast<GDExtensionInt>(std::strlen(xml)));
+		}
 	}
 }
 

@@ -433,3 +433,37 @@ TEST_CASE("placement: hand edits are kept through a regeneration") {
 	const std::vector<uint8_t> now = { 1, 1, 0, 0, 0, 2 }; // the rules changed
 	CHECK(keep_hand_edits(before, edited, now) == std::vector<uint8_t>{ 1, 0, 0, 3, 0, 2 });
 }
+
+TEST_CASE("placement: a layer read from its row of numbers, paths and footprints") {
+	const std::vector<std::string> &fields = placement_layer_fields();
+	std::vector<float> row(fields.size(), 0.0f);
+	auto set = [&](const char *p_name, float p_value) {
+		const auto found = std::find(fields.begin(), fields.end(), p_name);
+		REQUIRE(found != fields.end());
+		row[static_cast<size_t>(found - fields.begin())] = p_value;
+	};
+	set("mode", 1.0f);
+	set("species", 3.0f);
+	set("density", 0.5f);
+	set("slope_on", 1.0f);
+	set("slope_high", 30.0f);
+	set("paths_on", 1.0f);
+	set("paths_half_width", 2.0f);
+	set("spacing_layer", 4.0f);
+	PlacementLayer layer;
+	const std::vector<float> lines = { 2.0f, 0.0f, 0.0f, 10.0f, 0.0f, 3.0f, 1.0f, 1.0f, 2.0f, 2.0f, 3.0f, 1.0f };
+	REQUIRE(placement_layer_from(row, lines, {}, {}, layer) == "");
+	CHECK(layer.mode == PlacementLayer::FILL);
+	CHECK(layer.species == 3);
+	CHECK(layer.density == 0.5f);
+	CHECK(layer.slope.enabled);
+	CHECK(layer.slope.high == 30.0f);
+	CHECK_FALSE(layer.height.enabled);
+	CHECK(layer.paths.lines.size() == 2);
+	CHECK(layer.paths.lines[1] == std::vector<float>{ 1.0f, 1.0f, 2.0f, 2.0f, 3.0f, 1.0f });
+	CHECK(layer.spacing.layer == 4);
+	CHECK(placement_layer_from(row, { 3.0f, 0.0f, 0.0f }, {}, {}, layer) ==
+			"the paths' points do not divide into lines of (count, x, z, …)");
+	row.pop_back();
+	CHECK(placement_layer_from(row, {}, {}, {}, layer).find("numbers, not") != std::string::npos);
+}

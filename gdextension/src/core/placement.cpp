@@ -398,7 +398,121 @@ std::string check_layer(const PlacementRules &p_rules, size_t p_index) {
 	return "";
 }
 
+struct LayerField {
+	const char *name;
+	void (*set)(PlacementLayer &, float);
+};
+
+bool on(float p_value) {
+	return p_value != 0.0f;
+}
+
+int whole_number(float p_value) {
+	return std::isfinite(p_value) && std::fabs(p_value) < 1e9f ? static_cast<int>(std::lround(p_value)) : -1;
+}
+
+// The row's columns: each name once, with where its number goes.
+const LayerField LAYER_FIELDS[] = {
+	{ "mode", [](PlacementLayer &l, float v) { l.mode = static_cast<PlacementLayer::Mode>(std::clamp(whole_number(v), 0, 2)); } },
+	{ "species", [](PlacementLayer &l, float v) { l.species = whole_number(v); } },
+	{ "density", [](PlacementLayer &l, float v) { l.density = v; } },
+	{ "height_on", [](PlacementLayer &l, float v) { l.height.enabled = on(v); } },
+	{ "height_low", [](PlacementLayer &l, float v) { l.height.low = v; } },
+	{ "height_high", [](PlacementLayer &l, float v) { l.height.high = v; } },
+	{ "height_falloff", [](PlacementLayer &l, float v) { l.height.falloff = v; } },
+	{ "height_invert", [](PlacementLayer &l, float v) { l.height.invert = on(v); } },
+	{ "slope_on", [](PlacementLayer &l, float v) { l.slope.enabled = on(v); } },
+	{ "slope_low", [](PlacementLayer &l, float v) { l.slope.low = v; } },
+	{ "slope_high", [](PlacementLayer &l, float v) { l.slope.high = v; } },
+	{ "slope_falloff", [](PlacementLayer &l, float v) { l.slope.falloff = v; } },
+	{ "slope_invert", [](PlacementLayer &l, float v) { l.slope.invert = on(v); } },
+	{ "noise_on", [](PlacementLayer &l, float v) { l.noise.enabled = on(v); } },
+	{ "noise_scale", [](PlacementLayer &l, float v) { l.noise.scale = v; } },
+	{ "noise_octaves", [](PlacementLayer &l, float v) { l.noise.octaves = whole_number(v); } },
+	{ "noise_threshold", [](PlacementLayer &l, float v) { l.noise.threshold = v; } },
+	{ "noise_falloff", [](PlacementLayer &l, float v) { l.noise.falloff = v; } },
+	{ "noise_seed", [](PlacementLayer &l, float v) { l.noise.seed = static_cast<uint32_t>(std::max(whole_number(v), 0)); } },
+	{ "noise_invert", [](PlacementLayer &l, float v) { l.noise.invert = on(v); } },
+	{ "mask_on", [](PlacementLayer &l, float v) { l.mask.enabled = on(v); } },
+	{ "mask_width", [](PlacementLayer &l, float v) { l.mask.width = whole_number(v); } },
+	{ "mask_height", [](PlacementLayer &l, float v) { l.mask.height = whole_number(v); } },
+	{ "mask_x", [](PlacementLayer &l, float v) { l.mask.x = v; } },
+	{ "mask_z", [](PlacementLayer &l, float v) { l.mask.z = v; } },
+	{ "mask_size_x", [](PlacementLayer &l, float v) { l.mask.size_x = v; } },
+	{ "mask_size_z", [](PlacementLayer &l, float v) { l.mask.size_z = v; } },
+	{ "mask_outside", [](PlacementLayer &l, float v) { l.mask.outside = v; } },
+	{ "mask_invert", [](PlacementLayer &l, float v) { l.mask.invert = on(v); } },
+	{ "mask_channel", [](PlacementLayer &l, float v) { l.mask_channel = whole_number(v); } },
+	{ "paths_on", [](PlacementLayer &l, float v) { l.paths.enabled = on(v); } },
+	{ "paths_half_width", [](PlacementLayer &l, float v) { l.paths.half_width = v; } },
+	{ "paths_falloff", [](PlacementLayer &l, float v) { l.paths.falloff = v; } },
+	{ "paths_invert", [](PlacementLayer &l, float v) { l.paths.invert = on(v); } },
+	{ "exclusion_on", [](PlacementLayer &l, float v) { l.exclusion.enabled = on(v); } },
+	{ "exclusion_falloff", [](PlacementLayer &l, float v) { l.exclusion.falloff = v; } },
+	{ "spacing_on", [](PlacementLayer &l, float v) { l.spacing.enabled = on(v); } },
+	{ "spacing_layer", [](PlacementLayer &l, float v) { l.spacing.layer = whole_number(v); } },
+	{ "spacing_distance", [](PlacementLayer &l, float v) { l.spacing.distance = v; } },
+};
+
+// Shapes from a list of (count, x, z, x, z, …); false when the list does not divide into them.
+bool shapes_from(const std::vector<float> &p_list, std::vector<std::vector<float>> &r_shapes) {
+	r_shapes.clear();
+	size_t i = 0;
+	while (i < p_list.size()) {
+		const int count = whole_number(p_list[i]);
+		if (count < 0 || i + 1 + 2 * static_cast<size_t>(count) > p_list.size()) {
+			return false;
+		}
+		r_shapes.emplace_back(p_list.begin() + static_cast<std::ptrdiff_t>(i + 1),
+				p_list.begin() + static_cast<std::ptrdiff_t>(i + 1 + 2 * static_cast<size_t>(count)));
+		i += 1 + 2 * static_cast<size_t>(count);
+	}
+	return true;
+}
+
 } // namespace
+
+const std::vector<std::string> &placement_layer_fields() {
+	static const std::vector<std::string> names = [] {
+		std::vector<std::string> list;
+		for (const LayerField &field : LAYER_FIELDS) {
+			list.emplace_back(field.name);
+		}
+		return list;
+	}();
+	return names;
+}
+
+std::string placement_layer_from(const std::vector<float> &p_row, const std::vector<float> &p_lines,
+		const std::vector<float> &p_footprints, const std::vector<uint8_t> &p_mask, PlacementLayer &r_layer) {
+	constexpr size_t COUNT = sizeof(LAYER_FIELDS) / sizeof(LAYER_FIELDS[0]);
+	if (p_row.size() != COUNT) {
+		return "the layer's row has " + std::to_string(p_row.size()) + " numbers, not " + std::to_string(COUNT);
+	}
+	PlacementLayer layer;
+	for (size_t i = 0; i < COUNT; i++) {
+		LAYER_FIELDS[i].set(layer, p_row[i]);
+	}
+	if (!shapes_from(p_lines, layer.paths.lines)) {
+		return "the paths' points do not divide into lines of (count, x, z, …)";
+	}
+	if (!shapes_from(p_footprints, layer.exclusion.footprints)) {
+		return "the footprints' points do not divide into polygons of (count, x, z, …)";
+	}
+	const size_t pixels = layer.mask.width > 0 && layer.mask.height > 0
+			? static_cast<size_t>(layer.mask.width) * static_cast<size_t>(layer.mask.height)
+			: 0;
+	if (layer.mask_channel >= 0 && layer.mask_channel < 4 && pixels > 0 && p_mask.size() == 4 * pixels) {
+		layer.mask.values.resize(pixels);
+		for (size_t i = 0; i < pixels; i++) {
+			layer.mask.values[i] = p_mask[4 * i + static_cast<size_t>(layer.mask_channel)];
+		}
+	} else {
+		layer.mask.values = p_mask;
+	}
+	r_layer = std::move(layer);
+	return "";
+}
 
 float placement_noise(uint64_t p_seed, float p_x, float p_z, int p_octaves) {
 	float sum = 0.0f;

@@ -95,6 +95,8 @@ struct PlacementLayer {
 	PathFilter paths;
 	ExclusionFilter exclusion;
 	SpacingFilter spacing;
+	// How placement_layer_from reads a mask of four bytes a pixel: the channel it takes (0–3).
+	int mask_channel = 0;
 };
 
 struct PlacementRules {
@@ -131,6 +133,17 @@ bool generate_placement(const PlacementRules &p_rules, const CellRect &p_rect, W
 // cell takes p_generated_now. All three of one size; returns the result.
 std::vector<uint8_t> keep_hand_edits(const std::vector<uint8_t> &p_generated_before,
 		const std::vector<uint8_t> &p_edited, const std::vector<uint8_t> &p_generated_now);
+
+// A layer's settings as one row of numbers (what the engine's face passes): the names of the row's
+// columns in order, e.g. "mode", "species", "density", "height_on", "height_low", … (booleans 0 or 1).
+const std::vector<std::string> &placement_layer_fields();
+
+// The layer from a row of placement_layer_fields().size() numbers, its paths and footprints as
+// lists of shapes (each shape: its point count, then x, z of each point) and its mask's bytes (one a
+// pixel, or RGBA8, four a pixel, of which the row's mask_channel is taken).
+// Returns what is wrong with the row's shape (not its values: check_placement judges those).
+std::string placement_layer_from(const std::vector<float> &p_row, const std::vector<float> &p_lines,
+		const std::vector<float> &p_footprints, const std::vector<uint8_t> &p_mask, PlacementLayer &r_layer);
 
 // Value noise in [0, 1] at (p_x, p_z) in units of the first octave's feature, for p_seed.
 float placement_noise(uint64_t p_seed, float p_x, float p_z, int p_octaves);

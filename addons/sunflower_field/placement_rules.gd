@@ -1,0 +1,296 @@
+@tool
+@icon("icons/placement_rules.svg")
+class_name SunflowerPlacementRules
+extends Resource
+## Placement by rules: an ordered list of [SunflowerPlacementLayer]s that turn a field's cells into
+## plants (grass where the slope allows, trees by noise and away from a road, flowers in the
+## meadows). Give it to a field's [member SunflowerField.placement_rules] and press "Generate from
+## rules" above the field's inspector: the result is written into the field's map file, which stays
+## a map you can read, diff and paint; cells painted by hand after a generation are kept at the next
+## one. At run time, [method generate_map] makes the map in memory.
+##
+## The rules run in the native core on worker threads (a million cells in about 0.1 s here), and
+## the same rules and seed give the same map on every platform.
+
+const Native: GDScript = preload("native.gd")
+const FieldLegend: GDScript = preload("field_legend.gd")
+const FieldGround: GDScript = preload("field_ground.gd")
+
+## The layers, first to last: a later layer places over an earlier one, fills what it left empty
+## or empties cells, as its [member SunflowerPlacementLayer.mode] says.
+@export var layers: Array[SunflowerPlacementLayer] = []:
+	set(value):
+		layers = value
+		emit_changed()
+## The seed every layer's randomness follows: another seed, another field from the same rules.
+@export var seed: int = 1:
+	set(value):
+		seed = value
+		emit_changed()
+
+
+## The native placement of these rules for [param field] (its map's size, cell size, ground,
+## legend, paths and excluding bodies as they are now), ready for its [code]generate()[/code]; null
+## after an error naming what is wrong. Reads the scene: call it on the main thread.
+func prepare(field: SunflowerField) -> RefCounted:
+	var problem: String = _field_problem(field)
+	if not problem.is_empty():
+		push_error("%s: %s" % [_name(), problem])
+		return null
+	var placement: RefCounted = Native.create_placement()
+	if placement == null:
+		return null
+	placement.set_field(field.map.columns, field.map.rows, field.cell_size, seed)
+	var heights: Variant = _heights(field)
+	if heights == null:
+		return null
+	placement.set_heights(heights)
+	var names: PackedStringArray = String(placement.get_layer_fields()).split(",")
+	var plant_symbols: String = FieldLegend.plant_symbols(field.legend)
+	for i: int in layers.size():
+		var layer: SunflowerPlacementLayer = layers[i]
+		var made: String = _add_layer(placement, layer, names, plant_symbols, field) if layer else "it is empty"
+		if not made.is_empty():
+			push_error("%s: layer %d: %s" % [_name(), i + 1, made])
+			return null
+	var checked: String = placement.check()
+	if not checked.is_empty():
+		push_error("%s: %s" % [_name(), checked])
+		return null
+	return placement
+
+
+## The cells of [param region] (default: the whole map) as the rules place them for [param field],
+## row by row: 0 for an empty cell, 1 + the plant type for a plant ([code]*[/code] is type 0, the
+## legend's plants 1, 2, … in order). Empty after an error.
+func generate_cells(field: SunflowerField, region: Rect2i = Rect2i()) -> PackedByteArray:
+	var placement: RefCounted = prepare(field)
+	if placement == null:
+		return PackedByteArray()
+	if region == Rect2i():
+		region = Rect2i(0, 0, field.map.columns, field.map.rows)
+	var cells: PackedByteArray = placement.generate(
+		region.position.x, region.position.y, region.size.x, region.size.y, 0
+	)
+	if cells.is_empty():
+		push_error(
+			(
+				"%s: the region %s is not inside the field's %d x %d cells"
+				% [_name(), region, field.map.columns, field.map.rows]
+			)
+		)
+	return cells
+
+
+## A new map of [param field]'s size with the plants the rules place, keeping the comments and
+## objects of the field's map (for a field generated at run time: [code]field.map =
+## rules.generate_map(field)[/code]). Null after an error.
+func generate_map(field: SunflowerField) -> SunflowerFieldMap:
+	var cells: PackedByteArray = generate_cells(field)
+	if cells.is_empty():
+		return null
+	var made: SunflowerFieldMap = SunflowerFieldMap.new()
+	made.source_path = field.map.source_path
+	made.text = map_text(cells, field, field.map.text)
+	return made
+
+
+## [param cells] of [param field]'s map size as map text: '*' and the legend's plant symbols, the
+## comment lines and objects of the map text [param previous] kept (or a comment naming these rules).
+func map_text(cells: PackedByteArray, field: SunflowerField, previous: PackedByteArray) -> PackedByteArray:
+	var placement: RefCounted = Native.create_placement()
+	if placement == null:
+		return PackedByteArray()
+	var header: String = (
+		"# Generated from placement rules%s; see docs/placement.md."
+		% (" " + resource_path if not resource_path.is_empty() else "")
+	)
+	return placement.write_map(
+		cells, field.map.columns, field.map.rows, FieldLegend.plant_symbols(field.legend), header, previous
+	)
+
+
+func _name() -> String:
+	return "Placement rules" + (" " + resource_path if not resource_path.is_empty() else "")
+
+
+func _field_problem(field: SunflowerField) -> String:
+	if field == null:
+		return "needs a field"
+	if field.map == null:
+		return "the field %s has no map: give it one (New map… above its inspector) of the size to fill" % field.name
+	if field.map.columns == 0 and not field.map.check_format().is_empty():
+		return "the field's map %s does not read" % field.map.source_path
+	if field.ground_source != FieldGround.Source.FLAT and not field.is_inside_tree():
+		return "the field must be in the scene tree to read its ground"
+	return ""
+
+
+## The ground's height at every cell's centre (empty for flat ground), from the field's built
+## simulation; null after an error.
+func _heights(field: SunflowerField) -> Variant:
+	if field.ground_source == FieldGround.Source.FLAT:
+		return PackedFloat32Array()
+	if field.is_building():
+		field.finish_build()
+	var simulation: RefCounted = field.get_simulation()
+	if simulation == null or simulation.get_map_columns() != field.map.columns:
+		push_error("%s: the field %s is not built on its ground yet; build it first" % [_name(), field.name])
+		return null
+	var heights: PackedFloat32Array = PackedFloat32Array()
+	heights.resize(field.map.columns * field.map.rows)
+	var cell: float = field.cell_size
+	var i: int = 0
+	for row: int in field.map.rows:
+		for column: int in field.map.columns:
+			var height: float = simulation.get_ground_height(Vector2((column + 0.5) * cell, (row + 0.5) * cell))
+			heights[i] = height if is_finite(height) else 0.0  # no ground there: no plant is laid out anyway
+			i += 1
+	return heights
+
+
+## Adds [param layer] to [param placement]; returns what is wrong, or "".
+func _add_layer(
+	placement: RefCounted,
+	layer: SunflowerPlacementLayer,
+	names: PackedStringArray,
+	symbols: String,
+	field: SunflowerField
+) -> String:
+	var species: int = 0 if layer.plant == "*" else symbols.find(layer.plant) + 1
+	if (
+		layer.mode != SunflowerPlacementLayer.Mode.ERASE
+		and (layer.plant.length() != 1 or species < 1 and layer.plant != "*")
+	):
+		return "its plant '%s' is neither '*' nor a plant symbol of the field's legend ('%s')" % [layer.plant, symbols]
+	var mask: PackedByteArray = PackedByteArray()
+	var mask_size: Vector2i = Vector2i.ZERO
+	if layer.mask_use:
+		var image: Image = layer.mask_texture.get_image() if layer.mask_texture else null
+		if image == null or image.is_empty():
+			return "its mask has no texture (or the texture has no image to read)"
+		image = image.duplicate() as Image
+		if image.is_compressed():
+			image.decompress()
+		image.clear_mipmaps()
+		image.convert(Image.FORMAT_RGBA8)
+		mask = image.get_data()
+		mask_size = image.get_size()
+	var rect: Rect2 = layer.mask_rect
+	if rect.size == Vector2.ZERO:
+		rect = Rect2(Vector2.ZERO, Vector2(field.map.columns, field.map.rows) * field.cell_size)
+	var lines: PackedFloat32Array = PackedFloat32Array()
+	if layer.paths_use:
+		var problem: String = _path_lines(layer, field, lines)
+		if not problem.is_empty():
+			return problem
+	var footprints: PackedFloat32Array = _footprints(layer, field) if layer.exclusion_use else PackedFloat32Array()
+	var numbers: Dictionary = {
+		"mode": layer.mode,
+		"species": species,
+		"density": layer.density,
+		"height_on": layer.height_use,
+		"height_low": layer.height_min,
+		"height_high": layer.height_max,
+		"height_falloff": layer.height_falloff,
+		"height_invert": layer.height_invert,
+		"slope_on": layer.slope_use,
+		"slope_low": layer.slope_min,
+		"slope_high": layer.slope_max,
+		"slope_falloff": layer.slope_falloff,
+		"slope_invert": layer.slope_invert,
+		"noise_on": layer.noise_use,
+		"noise_scale": layer.noise_scale,
+		"noise_octaves": layer.noise_octaves,
+		"noise_threshold": layer.noise_threshold,
+		"noise_falloff": layer.noise_falloff,
+		"noise_seed": layer.noise_seed,
+		"noise_invert": layer.noise_invert,
+		"mask_on": layer.mask_use,
+		"mask_width": mask_size.x,
+		"mask_height": mask_size.y,
+		"mask_x": rect.position.x,
+		"mask_z": rect.position.y,
+		"mask_size_x": rect.size.x,
+		"mask_size_z": rect.size.y,
+		"mask_outside": layer.mask_outside,
+		"mask_invert": layer.mask_invert,
+		"mask_channel": layer.mask_channel,
+		"paths_on": layer.paths_use,
+		"paths_half_width": layer.paths_half_width,
+		"paths_falloff": layer.paths_falloff,
+		"paths_invert": layer.paths_invert,
+		"exclusion_on": layer.exclusion_use,
+		"exclusion_falloff": layer.exclusion_falloff,
+		"spacing_on": layer.spacing_use,
+		"spacing_layer": layer.spacing_layer - 1,
+		"spacing_distance": layer.spacing_distance,
+	}
+	var row: PackedFloat32Array = PackedFloat32Array()
+	for name: String in names:
+		if not numbers.has(name):
+			return (
+				"the native library asks for '%s', which this script does not know (the addon's scripts and library differ)"
+				% name
+			)
+		row.append(float(numbers[name]))
+	return placement.add_layer(row, lines, footprints, mask)
+
+
+## The layer's paths' curves as seen from above in the field's space, each as (count, x, z, …),
+## appended to [param lines]; returns what is wrong, or "".
+func _path_lines(layer: SunflowerPlacementLayer, field: SunflowerField, lines: PackedFloat32Array) -> String:
+	if not field.is_inside_tree():
+		return "the field must be in the scene tree to find its paths"
+	var to_field: Transform3D = field.global_transform.affine_inverse()
+	for path: NodePath in layer.paths_nodes:
+		var node: Path3D = field.get_node_or_null(path) as Path3D
+		if node == null or node.curve == null:
+			return "its path %s is not a Path3D with a curve (paths are named from the field)" % path
+		var points: PackedVector3Array = node.curve.get_baked_points()
+		if points.size() < 2:
+			return "its path %s has fewer than two points" % path
+		var transform: Transform3D = to_field * node.global_transform
+		lines.append(points.size())
+		for point: Vector3 in points:
+			var local: Vector3 = transform * point
+			lines.append(local.x)
+			lines.append(local.z)
+	return ""
+
+
+## The footprints, as seen from above in the field's space, of the collision shapes of every
+## CollisionObject3D of the field's scene on the layer's exclusion layers (not the field's own), each
+## the convex outline of its shape's box, as (count, x, z, …).
+func _footprints(layer: SunflowerPlacementLayer, field: SunflowerField) -> PackedFloat32Array:
+	var footprints: PackedFloat32Array = PackedFloat32Array()
+	if not field.is_inside_tree():
+		return footprints
+	var tree: SceneTree = field.get_tree()
+	var scene: Node = tree.edited_scene_root if Engine.is_editor_hint() else tree.current_scene
+	if scene == null:
+		scene = tree.root
+	var to_field: Transform3D = field.global_transform.affine_inverse()
+	for node: Node in scene.find_children("*", "CollisionObject3D", true, false):
+		var body: CollisionObject3D = node as CollisionObject3D
+		if body.collision_layer & layer.exclusion_layers == 0 or field.is_ancestor_of(body):
+			continue
+		for child: Node in body.get_children():
+			var shape: CollisionShape3D = child as CollisionShape3D
+			if shape == null or shape.disabled or shape.shape == null:
+				continue
+			var box: AABB = shape.shape.get_debug_mesh().get_aabb()
+			var transform: Transform3D = to_field * shape.global_transform
+			var points: PackedVector2Array = PackedVector2Array()
+			for corner: int in 8:
+				var local: Vector3 = transform * box.get_endpoint(corner)
+				points.append(Vector2(local.x, local.z))
+			var outline: PackedVector2Array = Geometry2D.convex_hull(points)
+			outline.remove_at(outline.size() - 1)  # the hull repeats its first point last
+			if outline.size() < 3:
+				continue
+			footprints.append(outline.size())
+			for point: Vector2 in outline:
+				footprints.append(point.x)
+				footprints.append(point.y)
+	return footprints
