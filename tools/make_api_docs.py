@@ -21,7 +21,8 @@ import xml.etree.ElementTree as ET
 REPO = pathlib.Path(__file__).resolve().parent.parent
 API = REPO / "docs" / "api"
 # The classes a user meets, in the order the index lists them.
-CLASSES = ["SunflowerField", "FieldPlant", "SunflowerWind", "SunflowerFieldMap", "SunflowerSimulation"]
+CLASSES = ["SunflowerField", "FieldPlant", "SunflowerWind", "SunflowerFieldMap", "SunflowerPlacementRules",
+           "SunflowerPlacementLayer", "SunflowerSimulation", "SunflowerPlacement"]
 ENGINE_DOCS = "https://docs.godotengine.org/en/stable/classes/class_{}.html"
 
 
@@ -134,8 +135,9 @@ def page(xml_path):
             out += [f"### {s.get('name')}", "", f"`{s.get('name')}({params})`", ""]
             text = bbcode_to_markdown(s.findtext("description") or "", name)
             out += [text, ""] if text else []
-    constants = root.find("constants")
-    if constants is not None and len(constants):
+    # A preloaded script (value <Object>) is the class's own wiring, not part of its face.
+    constants = [c for c in root.find("constants") or [] if c.get("value") != "<Object>"]
+    if constants:
         out += ["## Constants and enums", "", "| name | value | |", "|---|---|---|"]
         for c in constants:
             qualified = f"{c.get('enum')}.{c.get('name')}" if c.get("enum") else c.get("name")
@@ -170,7 +172,7 @@ def write(target, godot):
                 sys.exit(f"make_api_docs: no docs for {cls} (looked in the doctool's output and doc_classes/)")
             name, text, brief = page(sources[cls])
             (target / f"{name}.md").write_text(text, encoding="utf-8")
-            index.append(f"| [{name}]({name}.md) | {one_line(brief, name)} |")
+            index.append(f"| [{name}]({name}.md) | {one_line(brief, name).replace('](#', f']({name}.md#')} |")
         (target / "README.md").write_text("\n".join(index) + "\n", encoding="utf-8")
 
 

@@ -3,8 +3,8 @@
 class_name SunflowerPlacementLayer
 extends Resource
 ## One layer of a field's placement rules ([SunflowerPlacementRules]): it places one plant type in
-## the cells its filters let through, each cell with the chance [member density] × every filter's
-## weight (0–1). The filters multiply; each is off until its [code]use_…[/code] switch is on.
+## the cells its filters let through, each cell with the chance [member SunflowerPlacementLayer.density] × every filter's
+## weight (0–1). The filters multiply; each is off until its [code]…_use[/code] switch is on.
 ## Positions are in the field's space, in metres (x along the map's columns, z along its rows).
 
 ## How the layer's cells meet what earlier layers placed.
@@ -20,6 +20,7 @@ enum Mode {
 	set(value):
 		plant = value
 		emit_changed()
+## How its cells meet what earlier layers placed (see [enum Mode]).
 @export var mode: Mode = Mode.PLACE:
 	set(value):
 		mode = value
@@ -37,14 +38,17 @@ enum Mode {
 	set(value):
 		height_use = value
 		emit_changed()
+## The range's low end, metres in the field's space.
 @export var height_min: float = 0.0:
 	set(value):
 		height_min = value
 		emit_changed()
+## The range's high end, metres.
 @export var height_max: float = 10.0:
 	set(value):
 		height_max = value
 		emit_changed()
+## Metres outside the range over which the weight falls from 1 to 0 (0: a sharp edge).
 @export_range(0.0, 100.0, 0.1, "or_greater", "suffix:m") var height_falloff: float = 0.0:
 	set(value):
 		height_falloff = value
@@ -62,18 +66,22 @@ enum Mode {
 	set(value):
 		slope_use = value
 		emit_changed()
+## The range's low end, degrees from level.
 @export_range(0.0, 90.0, 0.1, "suffix:°") var slope_min: float = 0.0:
 	set(value):
 		slope_min = value
 		emit_changed()
+## The range's high end, degrees.
 @export_range(0.0, 90.0, 0.1, "suffix:°") var slope_max: float = 30.0:
 	set(value):
 		slope_max = value
 		emit_changed()
+## Degrees outside the range over which the weight falls from 1 to 0 (0: a sharp edge).
 @export_range(0.0, 90.0, 0.1, "suffix:°") var slope_falloff: float = 0.0:
 	set(value):
 		slope_falloff = value
 		emit_changed()
+## The other way round: 0 in the range, 1 outside (plants only on steep ground).
 @export var slope_invert: bool = false:
 	set(value):
 		slope_invert = value
@@ -86,6 +94,7 @@ enum Mode {
 	set(value):
 		noise_use = value
 		emit_changed()
+## Metres across a patch of the first octave.
 @export_range(0.1, 1000.0, 0.1, "or_greater", "suffix:m") var noise_scale: float = 20.0:
 	set(value):
 		noise_scale = value
@@ -95,10 +104,12 @@ enum Mode {
 	set(value):
 		noise_octaves = value
 		emit_changed()
+## The noise value below which the weight is 0: higher, fewer and smaller patches.
 @export_range(0.0, 1.0, 0.01) var noise_threshold: float = 0.5:
 	set(value):
 		noise_threshold = value
 		emit_changed()
+## How far above the threshold the weight reaches 1 (0: patches with sharp edges).
 @export_range(0.0, 1.0, 0.01) var noise_falloff: float = 0.1:
 	set(value):
 		noise_falloff = value
@@ -108,6 +119,7 @@ enum Mode {
 	set(value):
 		noise_seed = value
 		emit_changed()
+## The other way round: plants between the patches.
 @export var noise_invert: bool = false:
 	set(value):
 		noise_invert = value
@@ -121,10 +133,12 @@ enum Mode {
 	set(value):
 		mask_use = value
 		emit_changed()
+## The image (imported textures are read back from the GPU's copy; a compressed one is decompressed).
 @export var mask_texture: Texture2D:
 	set(value):
 		mask_texture = value
 		emit_changed()
+## The channel read as the weight (a splat map keeps one ground texture per channel).
 @export_enum("Red", "Green", "Blue", "Alpha") var mask_channel: int = 0:
 	set(value):
 		mask_channel = value
@@ -139,6 +153,7 @@ enum Mode {
 	set(value):
 		mask_outside = value
 		emit_changed()
+## The other way round: 1 − the channel.
 @export var mask_invert: bool = false:
 	set(value):
 		mask_invert = value
@@ -156,10 +171,12 @@ enum Mode {
 	set(value):
 		paths_nodes = value
 		emit_changed()
+## Metres either side of a curve with no plant.
 @export_range(0.0, 100.0, 0.1, "or_greater", "suffix:m") var paths_half_width: float = 2.0:
 	set(value):
 		paths_half_width = value
 		emit_changed()
+## Metres beyond the half width over which the weight rises from 0 to 1 (0: a sharp verge).
 @export_range(0.0, 100.0, 0.1, "or_greater", "suffix:m") var paths_falloff: float = 1.0:
 	set(value):
 		paths_falloff = value
@@ -177,10 +194,12 @@ enum Mode {
 	set(value):
 		exclusion_use = value
 		emit_changed()
+## The physics layers whose bodies and areas keep plants out.
 @export_flags_3d_physics var exclusion_layers: int = 1:
 	set(value):
 		exclusion_layers = value
 		emit_changed()
+## Metres outside a footprint over which the weight rises from 0 to 1.
 @export_range(0.0, 100.0, 0.1, "or_greater", "suffix:m") var exclusion_falloff: float = 0.0:
 	set(value):
 		exclusion_falloff = value
@@ -198,6 +217,7 @@ enum Mode {
 	set(value):
 		spacing_layer = value
 		emit_changed()
+## Metres, centre to centre, kept from the earlier layer's plants (up to 64 cells).
 @export_range(0.0, 32.0, 0.1, "or_greater", "suffix:m") var spacing_distance: float = 1.5:
 	set(value):
 		spacing_distance = value

@@ -7,7 +7,7 @@ extends Resource
 ## meadows). Give it to a field's [member SunflowerField.placement_rules] and press "Generate from
 ## rules" above the field's inspector: the result is written into the field's map file, which stays
 ## a map you can read, diff and paint; cells painted by hand after a generation are kept at the next
-## one. At run time, [method generate_map] makes the map in memory.
+## one. At run time, [method SunflowerPlacementRules.generate_map] makes the map in memory.
 ##
 ## The rules run in the native core on worker threads (a million cells in about 0.1 s here), and
 ## the same rules and seed give the same map on every platform.
