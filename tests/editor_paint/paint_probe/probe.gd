@@ -148,6 +148,7 @@ func _run() -> void:
 	_check(field.get_plant_count() == kept, "the shared cells kept (%d of %d)" % [field.get_plant_count(), kept])
 	history.undo()
 	_check(FileAccess.get_file_as_bytes(MAP_PATH) == before_resize, "undo restores the map before the resize")
+	await _generate_paint_move_generate(painter, camera, field, history)
 	camera.free()
 	# With PROBE_SHOT set (a run under Xvfb): a picture of the editor with the brush over the field.
 	var shot: String = OS.get_environment("PROBE_SHOT")
@@ -197,6 +198,101 @@ func _check_toolbar_follows_the_field(painter: RefCounted, field: SunflowerField
 		_check(colour != erase_colour and erase_colour == painter.brush_colour(), "the brush turns Erase's colour")
 	painter.set_mode(0)
 	camera.free()
+
+
+## Placement by rules as a user meets it: rules that plant everything but a road, "Generate from
+## rules" pressed above the field's inspector, a patch erased by hand, the road moved, Generate
+## again: the new road is clear, the old one planted, the erased patch still empty; Ctrl+Z takes
+## back each step, the file byte for byte.
+func _generate_paint_move_generate(
+	painter: RefCounted, camera: Camera3D, field: SunflowerField, history: UndoRedo
+) -> void:
+	var road: Path3D = Path3D.new()
+	road.name = "Road"
+	road.curve = Curve3D.new()
+	road.curve.add_point(Vector3(0.0, 0.0, 10.0))
+	road.curve.add_point(Vector3(20.0, 0.0, 10.0))
+	field.get_parent().add_child(road)
+	road.owner = field.owner
+	var everything: SunflowerPlacementLayer = SunflowerPlacementLayer.new()
+	everything.paths_use = true
+	everything.paths_nodes = [NodePath("../Road")]
+	everything.paths_half_width = 2.0
+	everything.paths_falloff = 0.0
+	var rules: SunflowerPlacementRules = SunflowerPlacementRules.new()
+	rules.layers = [everything]
+	field.placement_rules = rules
+	EditorInterface.edit_node(null)
+	await _frames(2)
+	EditorInterface.edit_node(field)
+	await _frames(3)
+	var before: PackedByteArray = FileAccess.get_file_as_bytes(MAP_PATH)
+	var first: PackedByteArray = await _press_generate(field, before)
+	var road_at: Callable = func(cell: Vector2i, z: float) -> bool: return absf((cell.y + 0.5) * CELL - z) <= 2.0
+	var cells: Dictionary = _cells(first)
+	var wrong: int = 0
+	for x: int in 40:
+		for y: int in 30:
+			wrong += 1 if cells.has(Vector2i(x, y)) == road_at.call(Vector2i(x, y), 10.0) else 0
+	_check(not first.is_empty() and wrong == 0, "Generate planted every cell but the road's (%d wrong)" % wrong)
+	_check(FileAccess.file_exists(MAP_PATH + ".generated"), "the generation's cells kept beside the map")
+	# A patch erased by hand, away from both roads.
+	var patch: Array[Vector3] = [Vector3(6.0, 0.0, 5.0)]
+	painter.set_mode(1)
+	_drag(painter, camera, patch, true)
+	await _frames(2)
+	var erased: PackedByteArray = FileAccess.get_file_as_bytes(MAP_PATH)
+	var hole: Array[Vector2i] = []
+	for cell: Vector2i in _cells(first):
+		if not _cells(erased).has(cell):
+			hole.append(cell)
+	_check(hole.size() > 20, "the hand erased a patch (%d cells)" % hole.size())
+	painter.set_mode(0)
+	# The road moves south; Generate again.
+	road.curve.set_point_position(0, Vector3(0.0, 0.0, 12.0))
+	road.curve.set_point_position(1, Vector3(20.0, 0.0, 12.0))
+	var second: PackedByteArray = await _press_generate(field, erased)
+	cells = _cells(second)
+	wrong = 0
+	var refilled: int = 0
+	for x: int in 40:
+		for y: int in 30:
+			var cell: Vector2i = Vector2i(x, y)
+			if hole.has(cell):
+				refilled += 1 if cells.has(cell) else 0
+			elif cells.has(cell) == road_at.call(cell, 12.0):
+				wrong += 1
+	_check(wrong == 0, "the moved road is clear and the old one planted (%d wrong)" % wrong)
+	_check(refilled == 0, "the patch erased by hand stays empty (%d refilled)" % refilled)
+	# Undo each step.
+	for step: Array in [[erased, "the second generation"], [first, "the erase"], [before, "the first generation"]]:
+		history.undo()
+		await _frames(2)
+		_check(FileAccess.get_file_as_bytes(MAP_PATH) == step[0], "undo of %s restores the file" % step[1])
+	_check(not FileAccess.file_exists(MAP_PATH + ".generated"), "undo of the first generation removes its cells")
+	field.placement_rules = null
+	road.queue_free()
+	print("probe: Generate from rules, a patch erased, the road moved, Generate again, three undos: checked")
+
+
+## Presses "Generate from rules" in the field's inspector and waits for the map file to change from
+## [param before]; returns the new bytes (empty when nothing was written).
+func _press_generate(field: SunflowerField, before: PackedByteArray) -> PackedByteArray:
+	var button: Button = null
+	for node: Node in EditorInterface.get_inspector().find_children("*", "Button", true, false):
+		if (node as Button).text == "Generate from rules":
+			button = node as Button
+	if not _check(button != null, "a Generate from rules button above the field with rules"):
+		return PackedByteArray()
+	button.pressed.emit()
+	for i: int in 300:
+		await _frames(1)
+		if FileAccess.get_file_as_bytes(MAP_PATH) != before:
+			break
+	await _frames(2)
+	field.finish_build()
+	var after: PackedByteArray = FileAccess.get_file_as_bytes(MAP_PATH)
+	return after if _check(after != before, "Generate wrote the map") else PackedByteArray()
 
 
 ## The editor as a user sees it while painting: the brush (moved over the field through the
