@@ -123,28 +123,50 @@ func _field_problem(field: SunflowerField) -> String:
 		return "the field's map %s does not read" % field.map.source_path
 	if field.ground_source != FieldGround.Source.FLAT and not field.is_inside_tree():
 		return "the field must be in the scene tree to read its ground"
+	if field.ground_source == FieldGround.Source.COLLIDERS and field.get_world_3d() == null:
+		return "the field has no world to cast its ground rays in"
 	return ""
 
 
-## The ground's height at every cell's centre (empty for flat ground), from the field's built
-## simulation; null after an error.
+## The ground's height at every cell's centre (empty for flat ground): from the field's height map
+## through its built simulation, or from rays cast onto its colliders as its build casts them (no
+## ground under a cell: 0, where the build lays out no plant anyway); null after an error.
 func _heights(field: SunflowerField) -> Variant:
 	if field.ground_source == FieldGround.Source.FLAT:
 		return PackedFloat32Array()
-	if field.is_building():
-		field.finish_build()
-	var simulation: RefCounted = field.get_simulation()
-	if simulation == null or simulation.get_map_columns() != field.map.columns:
-		push_error("%s: the field %s is not built on its ground yet; build it first" % [_name(), field.name])
-		return null
 	var heights: PackedFloat32Array = PackedFloat32Array()
 	heights.resize(field.map.columns * field.map.rows)
 	var cell: float = field.cell_size
+	var simulation: RefCounted = null
+	var space: PhysicsDirectSpaceState3D = null
+	var query: PhysicsRayQueryParameters3D = null
+	if field.ground_source == FieldGround.Source.COLLIDERS:
+		space = field.get_world_3d().direct_space_state
+		query = PhysicsRayQueryParameters3D.create(Vector3(), Vector3.DOWN, field.ground_collision_mask)
+		query.hit_back_faces = false
+	else:
+		if field.is_building():
+			field.finish_build()
+		simulation = field.get_simulation()
+		if simulation == null or simulation.get_map_columns() != field.map.columns:
+			push_error("%s: the field %s is not built on its height map yet; build it first" % [_name(), field.name])
+			return null
+	var to_world: Transform3D = field.global_transform
+	var to_local: Transform3D = to_world.affine_inverse()
 	var i: int = 0
 	for row: int in field.map.rows:
 		for column: int in field.map.columns:
-			var height: float = simulation.get_ground_height(Vector2((column + 0.5) * cell, (row + 0.5) * cell))
-			heights[i] = height if is_finite(height) else 0.0  # no ground there: no plant is laid out anyway
+			var x: float = (column + 0.5) * cell
+			var z: float = (row + 0.5) * cell
+			var height: float = NAN
+			if space:
+				query.from = to_world * Vector3(x, field.ground_ray_above, z)
+				query.to = to_world * Vector3(x, -field.ground_ray_below, z)
+				var hit: Dictionary = space.intersect_ray(query)
+				height = (to_local * (hit["position"] as Vector3)).y if not hit.is_empty() else NAN
+			else:
+				height = simulation.get_ground_height(Vector2(x, z))
+			heights[i] = height if is_finite(height) else 0.0
 			i += 1
 	return heights
 

@@ -196,3 +196,40 @@ func test_slope_follows_the_fields_height_map_ground() -> void:
 		level += _cell(field, cells, 50, row)  # x 25.25 m
 	check_eq(ramp, 54, "every cell of the 27° ramp is steep enough")
 	check_eq(level, 0, "no cell of the level top is")
+
+
+func test_slope_follows_a_collider_ground_through_rays() -> void:
+	var image: Image = Image.create(32, 32, false, Image.FORMAT_RF)
+	for z: int in 32:
+		for x: int in 32:
+			image.set_pixel(x, z, Color(minf(x / 20.0, 1.0), 0.0, 0.0))
+	var shape: HeightMapShape3D = HeightMapShape3D.new()
+	shape.update_map_data_from_image(image, 0.0, 10.0)
+	var body: StaticBody3D = StaticBody3D.new()
+	var collision: CollisionShape3D = CollisionShape3D.new()
+	collision.shape = shape
+	body.add_child(collision)
+	body.position = Vector3(15.5, 0.0, 15.5)  # the shape's lattice is centred on its body
+	tree.root.add_child(body)
+	nodes.append(body)
+	await tree.physics_frame
+	await tree.physics_frame
+	var field: SunflowerField = _field(62, 62)
+	field.ground_source = SunflowerField.GroundSource.COLLIDERS
+	var steep: SunflowerPlacementLayer = _layer("*")
+	steep.slope_use = true
+	steep.slope_min = 20.0
+	steep.slope_max = 90.0
+	var rules: SunflowerPlacementRules = SunflowerPlacementRules.new()
+	rules.layers = [steep]
+	var cells: PackedByteArray = rules.generate_cells(field)
+	check_eq(cells.size(), 62 * 62, "a cell each")
+	if cells.size() != 62 * 62:
+		return
+	var ramp: int = 0
+	var level: int = 0
+	for row: int in range(4, 58):
+		ramp += _cell(field, cells, 20, row)
+		level += _cell(field, cells, 50, row)
+	check_eq(ramp, 54, "every cell of the 27° ramp under the rays is steep enough")
+	check_eq(level, 0, "no cell of the level top is")
