@@ -32,14 +32,19 @@ const MAP_NAMES: PackedStringArray = [
 	"Large field (400 x 300)",
 	"Hills (240 x 240, on a terrain)",
 	"Plants (maples, bushes, grass from Blender's Sapling, on the hills)",
+	"Hillside (the same plants placed by rules: fields/hillside.field)",
 ]
 const MAP_PATHS: PackedStringArray = [
-	"res://fields/demo.field", "res://fields/large.field", "res://fields/hills.field", "res://fields/plants.field"
+	"res://fields/demo.field",
+	"res://fields/large.field",
+	"res://fields/hills.field",
+	"res://fields/plants.field",
+	DemoHillside.MAP_PATH,
 ]
 ## The maps that stand on the demo's hills (ground source Colliders); the others lie on the plane.
-const HILLS_MAPS: PackedStringArray = ["hills.field", "plants.field"]
-## The map whose legend grows the test plants (DemoPlants).
-const PLANTS_MAP: String = "plants.field"
+const HILLS_MAPS: PackedStringArray = ["hills.field", "plants.field", "hillside.field"]
+## The maps whose legend grows the test plants (DemoPlants).
+const PLANTS_MAPS: PackedStringArray = ["plants.field", "hillside.field"]
 const INCREMENTS: PackedFloat32Array = [0.1, 10.0]
 const TRIANGLES_SPRITE: int = 4
 const TRIANGLES_BILLBOARD: int = 2
@@ -176,7 +181,7 @@ func _place_view_camera() -> void:
 ## A large map builds in the background while the current field stays (see [member
 ## SunflowerField.background_build]).
 func load_map(path: String) -> void:
-	if path.get_file() == PLANTS_MAP and not _field.legend.has("t"):
+	if PLANTS_MAPS.has(path.get_file()) and not _field.legend.has("t"):
 		_hud.show_message("making the plants of the Plants map (their impostors bake on first use)…")
 		var legend: Dictionary = _field.legend.duplicate()
 		legend.merge(await DemoPlants.legend(self))

@@ -435,7 +435,7 @@ TEST_CASE("placement: hand edits are kept through a regeneration") {
 }
 
 TEST_CASE("placement: a layer read from its row of numbers, paths and footprints") {
-	const std::vector<std::string> &fields = placement_layer_fields();
+	const std::vector<std::string> fields = placement_layer_fields();
 	std::vector<float> row(fields.size(), 0.0f);
 	auto set = [&](const char *p_name, float p_value) {
 		const auto found = std::find(fields.begin(), fields.end(), p_name);

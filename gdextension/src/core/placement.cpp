@@ -472,14 +472,13 @@ bool shapes_from(const std::vector<float> &p_list, std::vector<std::vector<float
 
 } // namespace
 
-const std::vector<std::string> &placement_layer_fields() {
-	static const std::vector<std::string> names = [] {
-		std::vector<std::string> list;
-		for (const LayerField &field : LAYER_FIELDS) {
-			list.emplace_back(field.name);
-		}
-		return list;
-	}();
+std::vector<std::string> placement_layer_fields() {
+	// Made on each call: a function-local static with a destructor would be destroyed at the
+	// process's exit, after the engine has unloaded the library (a crash at quit).
+	std::vector<std::string> names;
+	for (const LayerField &field : LAYER_FIELDS) {
+		names.emplace_back(field.name);
+	}
 	return names;
 }
 

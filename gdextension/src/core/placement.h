@@ -136,7 +136,7 @@ std::vector<uint8_t> keep_hand_edits(const std::vector<uint8_t> &p_generated_bef
 
 // A layer's settings as one row of numbers (what the engine's face passes): the names of the row's
 // columns in order, e.g. "mode", "species", "density", "height_on", "height_low", … (booleans 0 or 1).
-const std::vector<std::string> &placement_layer_fields();
+std::vector<std::string> placement_layer_fields();
 
 // The layer from a row of placement_layer_fields().size() numbers, its paths and footprints as
 // lists of shapes (each shape: its point count, then x, z of each point) and its mask's bytes (one a
