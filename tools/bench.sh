@@ -37,6 +37,9 @@ echo "Engine: $("$godot" --version | head -n 1); rendering: Forward+ on Vulkan l
 echo
 echo "## 1. The core alone"
 "$repo/build/bench/core_bench"
+echo
+echo "## 13. Placement by rules, the core alone"
+"$repo/build/bench/placement_bench"
 
 "$repo/tools/make_field.py" 50 30 "$out/fields/thesis1500.field" >/dev/null
 "$repo/tools/make_field.py" 1000 1000 "$out/fields/million.field" >/dev/null
