@@ -46,6 +46,7 @@ var _buttons: Dictionary = {}
 var _symbols: OptionButton
 var _radius_box: SpinBox
 var _density_box: SpinBox
+var _reimporting: bool = false  # a reimport is running, the editor's or ours (see _give_reimported)
 
 
 func _init(undo_redo: EditorUndoRedoManager) -> void:
@@ -73,6 +74,9 @@ func _init(undo_redo: EditorUndoRedoManager) -> void:
 	toolbar.visible = false
 	if Engine.is_editor_hint():  # tools and tests also paint outside the editor
 		EditorInterface.get_inspector().property_edited.connect(_on_property_edited)
+		var filesystem: EditorFileSystem = EditorInterface.get_resource_filesystem()
+		filesystem.resources_reimporting.connect(func(_paths: PackedStringArray) -> void: _reimporting = true)
+		filesystem.resources_reimported.connect(func(_paths: PackedStringArray) -> void: _reimporting = false)
 
 
 ## Lets go of the editor (the plugin leaves): frees the toolbar; no painter is active any more.
@@ -388,10 +392,11 @@ func resize_map(field: SunflowerField, columns: int, rows: int) -> bool:
 	return true
 
 
-## Writes [param bytes] to the map file [param path] and, once the frame's undo/redo step is over,
-## reimports it and gives [param field] the imported map (a reimport inside an undo step leaves the
-## editor's undo history inconsistent). On failure (a read-only or vanished file) says so and the
-## field shows the file.
+## Writes [param bytes] to the map file [param path], gives [param field] that map at once (the next
+## stroke starts from it), and, once the frame's undo/redo step is over and no other import runs,
+## reimports the file and gives the field the imported map (a reimport inside an undo step leaves
+## the editor's undo history inconsistent). On failure (a read-only or vanished file) says so and
+## the field shows the file.
 func write_map(field: SunflowerField, path: String, bytes: PackedByteArray) -> void:
 	var file: FileAccess = FileAccess.open(path, FileAccess.WRITE)
 	if file == null:
@@ -405,13 +410,29 @@ func write_map(field: SunflowerField, path: String, bytes: PackedByteArray) -> v
 		return
 	file.store_buffer(bytes)
 	file.close()
-	_give_reimported.call_deferred(field, path)
+	var written: SunflowerFieldMap = SunflowerFieldMap.new()
+	written.source_path = path
+	written.text = bytes
+	written.check_format()
+	written.take_over_path(path)  # what load(path) gives until the reimport lands
+	field.map = written
+	_give_reimported(field, path)  # not awaited: it waits for the next frame and other imports
 
 
-## [param field] (when still there) takes the map file [param path] imported anew.
+## At the next frame, [param field] (when still there) takes the map file [param path] imported
+## anew. (Not by call_deferred: a reimport while deferred calls are flushed opens the editor's
+## progress dialog where it refuses to open, and it printed errors at every stroke under a display.)
 func _give_reimported(field: Object, path: String) -> void:
+	await Engine.get_main_loop().process_frame
+	# One import at a time: a reimport (the editor's, after a scan, or ours) keeps its progress task
+	# while it runs, and the frames it draws for it may resume this wait inside it.
+	var filesystem: EditorFileSystem = EditorInterface.get_resource_filesystem()
+	while _reimporting or filesystem.is_scanning():
+		await Engine.get_main_loop().process_frame
 	if is_instance_valid(field):
+		_reimporting = true
 		(field as SunflowerField).map = _reimported(path)
+		_reimporting = false
 
 
 ## The map just written to the new file [param path] as [param bytes], as the resource the file's

@@ -264,6 +264,10 @@ func _generate_paint_move_generate(
 				wrong += 1
 	_check(wrong == 0, "the moved road is clear and the old one planted (%d wrong)" % wrong)
 	_check(refilled == 0, "the patch erased by hand stays empty (%d refilled)" % refilled)
+	# With PROBE_GENERATE_SHOT set (a run under Xvfb): the editor showing the field generated again.
+	var shot: String = OS.get_environment("PROBE_GENERATE_SHOT")
+	if not shot.is_empty():
+		await _miniature_picture(field, shot)
 	# Undo each step.
 	for step: Array in [[erased, "the second generation"], [first, "the erase"], [before, "the first generation"]]:
 		history.undo()
@@ -293,6 +297,22 @@ func _press_generate(field: SunflowerField, before: PackedByteArray) -> PackedBy
 	field.finish_build()
 	var after: PackedByteArray = FileAccess.get_file_as_bytes(MAP_PATH)
 	return after if _check(after != before, "Generate wrote the map") else PackedByteArray()
+
+
+## The editor with [param field] as a miniature in front of its default view (a few metres from
+## the origin), saved to [param path]; the field's size and place are given back.
+func _miniature_picture(field: SunflowerField, path: String) -> void:
+	var before: Array = [field.cell_size, field.plant_height, field.position]
+	field.cell_size = 0.12
+	field.plant_height = 0.45
+	field.position = Vector3(-2.4, 0.0, -1.8)
+	field.finish_build()
+	await _frames(20)
+	EditorInterface.get_base_control().get_viewport().get_texture().get_image().save_png(path)
+	field.cell_size = before[0]
+	field.plant_height = before[1]
+	field.position = before[2]
+	field.finish_build()
 
 
 ## The editor as a user sees it while painting: the brush (moved over the field through the
