@@ -3,8 +3,9 @@
 class_name SunflowerPlacementLayer
 extends Resource
 ## One layer of a field's placement rules ([SunflowerPlacementRules]): it places one plant type in
-## the cells its filters let through, each cell with the chance [member SunflowerPlacementLayer.density] × every filter's
-## weight (0–1). The filters multiply; each is off until its [code]…_use[/code] switch is on.
+## the cells its filters let through, each cell with the chance
+## [member SunflowerPlacementLayer.density] × every filter's weight (0–1). The filters multiply;
+## each is off until its [code]…_use[/code] switch is on.
 ## Positions are in the field's space, in metres (x along the map's columns, z along its rows).
 
 ## How the layer's cells meet what earlier layers placed.
