@@ -1,6 +1,7 @@
 @tool
 extends RefCounted
-## Bakes a [FieldPlant]'s multi-view impostor: renders its level-1 parts, stacked as the plant
+## Bakes a [FieldPlant]'s multi-view impostor: renders its level-1 parts (a coarser level when
+## level 1 has more than [constant BAKE_TRIANGLES] triangles), stacked as the plant
 ## stands, from [constant FieldPlant.ATLAS_VIEWS] directions (around it, and from the side up to
 ## straight above), orthographic, on a transparent background, each view framing the square of
 ## [method FieldPlant.impostor_frame] about the plant's middle, into atlases: the colours
@@ -31,6 +32,11 @@ const SUPERSAMPLE: int = 2
 ## gave 1.4 s, and the ball's bake took 155 s instead of 100, a frame being most of a second of the
 ## editor's own drawing).
 const TRIANGLES_PER_RENDER: int = 1_000_000
+## The most triangles of the mesh level the bake draws: a plant with more at level 1 is drawn from its
+## finest level within this ([method bake_level]). A view is drawn 256 pixels wide; 100 000
+## triangles there are already more than its pixels, and a 300 000-triangle plant's bake from level 1
+## took 111 editor frames (100 s under the software renderer) where its level 3 takes 15.
+const BAKE_TRIANGLES: int = 100_000
 ## Frames waited before a tile is read back: the viewport, asked to update once, draws the tile in
 ## the next frame (three frames gave the same atlases, in test_bake, on both renderers, and each
 ## frame waited costs a whole editor frame).
@@ -343,7 +349,7 @@ static func _emission(stage: Stage, plant: FieldPlant) -> Glow:
 ## rendering it).
 static func _can_glow(plant: FieldPlant) -> bool:
 	for part: int in 3:
-		var mesh: Mesh = plant.mesh_drawn(0, part)
+		var mesh: Mesh = plant.mesh_drawn(bake_level(plant), part)
 		if mesh == null:
 			continue
 		for surface: int in mesh.get_surface_count():
@@ -407,14 +413,16 @@ static func view_basis(column: int, row: int) -> Basis:
 	return Basis(right, back.cross(right), back)
 
 
-## A world of its own with one copy of the plant's level-1 parts per view, each turned so that an
-## orthographic camera looking down −z sees it from its view's direction in its square, and a
-## transparent background; the viewport and camera one tile of views large.
+## A world of its own with one copy of the plant's parts at the bake's level ([method bake_level])
+## per view, each turned so that an orthographic camera looking down −z sees it from its view's
+## direction in its square, and a transparent background; the viewport and camera one tile of views
+## large.
 static func _stage(plant: FieldPlant) -> Stage:
 	var views: Vector2i = FieldPlant.ATLAS_VIEWS
 	var frame: Vector2 = plant.impostor_frame()
 	var stage: Stage = Stage.new()
-	stage.tile = tile_of(plant.triangle_count(0))
+	var level: int = bake_level(plant)
+	stage.tile = tile_of(plant.triangle_count(level))
 	stage.square = frame.x
 	var viewport: SubViewport = SubViewport.new()
 	stage.viewport = viewport
@@ -445,7 +453,7 @@ static func _stage(plant: FieldPlant) -> Stage:
 			var y: float = 0.0
 			for part: int in lengths.size():
 				var instance: MeshInstance3D = MeshInstance3D.new()
-				instance.mesh = plant.mesh_drawn(0, part)
+				instance.mesh = plant.mesh_drawn(level, part)
 				instance.position.y = y
 				copy.add_child(instance)
 				y += lengths[part]
@@ -458,6 +466,15 @@ static func _stage(plant: FieldPlant) -> Stage:
 	viewport.add_child(camera)
 	stage.camera = camera
 	return stage
+
+
+## The mesh level (0–2) the bake draws: the finest of at most [constant BAKE_TRIANGLES] triangles,
+## else the coarsest.
+static func bake_level(plant: FieldPlant) -> int:
+	for level: int in 2:
+		if plant.triangle_count(level) <= BAKE_TRIANGLES:
+			return level
+	return 2
 
 
 ## The tile of views (columns, rows) one render draws for a plant of [param triangles] triangles:

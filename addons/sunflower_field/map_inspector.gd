@@ -47,7 +47,11 @@ func _on_generate(field: SunflowerField, button: Button) -> void:
 		_generator.cancel(field)
 		return
 	button.text = GENERATING
-	await _generator.generate(field)
+	# (The inspector may build its controls anew meanwhile: the text goes to the button pressed.)
+	var show: Callable = func(step: String) -> void:
+		if is_instance_valid(button):
+			button.text = "Generating: %s… (press to cancel)" % step
+	await _generator.generate(field, show)
 	if is_instance_valid(button):
 		button.text = GENERATE
 

@@ -10,13 +10,18 @@ const Native: GDScript = preload("native.gd")
 const FieldLegend: GDScript = preload("field_legend.gd")
 ## Added to a map's path for the last generation's cells.
 const GENERATED_SUFFIX: String = ".generated"
+## Main-thread time a frame spent reading the ground before the rules run (rays onto colliders).
+const PREPARE_BUDGET_USEC: int = 20_000
+## What [member _running] holds for a field while its ground is read, and once that is cancelled.
+const PREPARING: StringName = &"preparing"
+const CANCELLED: StringName = &"cancelled"
 
 ## The last message (an error or what was done), for tools and tests.
 var last_message: String = ""
 
 var _undo_redo: EditorUndoRedoManager
 var _painter: RefCounted
-var _running: Dictionary = {}  # field → its native placement while it generates
+var _running: Dictionary = {}  # field → PREPARING, CANCELLED, then its native placement while it generates
 
 
 func _init(undo_redo: EditorUndoRedoManager, painter: RefCounted) -> void:
@@ -31,22 +36,40 @@ func is_running(field: SunflowerField) -> bool:
 
 ## Stops [param field]'s generation; its map stays as it was.
 func cancel(field: SunflowerField) -> void:
-	if _running.has(field):
+	if _running.get(field) is RefCounted:
 		_running[field].cancel()
+	elif _running.has(field):
+		_running[field] = CANCELLED
 
 
-## Generates [param field]'s map from its rules (awaitable: the rules run on a worker thread while
-## the editor draws). Returns OK, ERR_SKIP when cancelled, or an error after saying what is wrong.
-func generate(field: SunflowerField) -> Error:
+## Generates [param field]'s map from its rules (awaitable: the ground is read a few milliseconds a
+## frame, then the rules run on a worker thread, while the editor draws). [param progress], when
+## valid, is called with what is being done ("reading the ground 40 %"). Returns OK, ERR_SKIP when
+## cancelled, or an error after saying what is wrong.
+func generate(field: SunflowerField, progress: Callable = Callable()) -> Error:
 	var problem: String = _problem(field)
 	if not problem.is_empty():
 		return _fail("SunflowerField %s: %s" % [field.name, problem])
-	var placement: RefCounted = field.placement_rules.prepare(field)
-	if placement == null:
-		return _fail("SunflowerField %s: the placement rules cannot run (the error above says why)" % field.name)
 	var path: String = field.map.source_path
 	var size: Vector2i = Vector2i(field.map.columns, field.map.rows)
 	var original: PackedByteArray = field.map.text
+	_running[field] = PREPARING
+	var placement: RefCounted = await field.placement_rules.prepare_in_steps(
+		field,
+		PREPARE_BUDGET_USEC,
+		func(share: float) -> bool:
+			if progress.is_valid():
+				progress.call("reading the ground %d %%" % roundi(share * 100.0))
+			return _running.get(field) == PREPARING
+	)
+	if _running.get(field) == CANCELLED:
+		_running.erase(field)
+		return _cancelled(field)
+	if placement == null:
+		_running.erase(field)
+		return _fail("SunflowerField %s: the placement rules cannot run (the error above says why)" % field.name)
+	if progress.is_valid():
+		progress.call("placing")
 	_running[field] = placement
 	var out: Array[PackedByteArray] = []
 	var task: int = WorkerThreadPool.add_task(
@@ -58,12 +81,16 @@ func generate(field: SunflowerField) -> Error:
 	_running.erase(field)
 	var cells: PackedByteArray = out[0] if not out.is_empty() else PackedByteArray()
 	if cells.is_empty():
-		last_message = "SunflowerField %s: the generation was cancelled; the map is as it was" % field.name
-		print(last_message)
-		return ERR_SKIP
+		return _cancelled(field)
 	if not is_instance_valid(field) or field.map == null or field.map.source_path != path or field.map.text != original:
 		return _fail("SunflowerField: the map %s changed while its rules ran; nothing written" % path)
 	return _commit(field, placement, cells)
+
+
+func _cancelled(field: SunflowerField) -> Error:
+	last_message = "SunflowerField %s: the generation was cancelled; the map is as it was" % field.name
+	print(last_message)
+	return ERR_SKIP
 
 
 ## What keeps [param field] from generating, or "".

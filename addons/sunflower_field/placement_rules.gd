@@ -16,34 +16,118 @@ const Native: GDScript = preload("native.gd")
 const FieldLegend: GDScript = preload("field_legend.gd")
 const FieldGround: GDScript = preload("field_ground.gd")
 
+
+## Reads the ground's height at every cell's centre, row by row (empty for flat ground): from the
+## field's height map through its built simulation, or from rays cast onto its colliders as its build
+## casts them (no ground under a cell: 0, where the build lays out no plant anyway).
+class HeightReader:
+	extends RefCounted
+	var heights: PackedFloat32Array = PackedFloat32Array()
+	var rows_read: int = 0
+	var _field: SunflowerField
+	var _simulation: RefCounted
+	var _space: PhysicsDirectSpaceState3D
+	var _query: PhysicsRayQueryParameters3D
+	var _to_world: Transform3D
+	var _to_local: Transform3D
+
+	## Readies the reader for [param field]; returns what is wrong, or "".
+	func start(field: SunflowerField) -> String:
+		_field = field
+		if field.ground_source == FieldGround.Source.FLAT:
+			rows_read = field.map.rows
+			return ""
+		heights.resize(field.map.columns * field.map.rows)
+		if field.ground_source == FieldGround.Source.COLLIDERS:
+			_space = field.get_world_3d().direct_space_state
+			_query = PhysicsRayQueryParameters3D.create(Vector3(), Vector3.DOWN, field.ground_collision_mask)
+			_query.hit_back_faces = false
+		else:
+			if field.is_building():
+				field.finish_build()
+			_simulation = field.get_simulation()
+			if _simulation == null or _simulation.get_map_columns() != field.map.columns:
+				return "the field %s is not built on its height map yet; build it first" % field.name
+		_to_world = field.global_transform
+		_to_local = _to_world.affine_inverse()
+		return ""
+
+	## Reads the next [param rows] rows (fewer at the end).
+	func read(rows: int) -> void:
+		var cell: float = _field.cell_size
+		var columns: int = _field.map.columns
+		for row: int in range(rows_read, mini(rows_read + rows, _field.map.rows)):
+			for column: int in columns:
+				var x: float = (column + 0.5) * cell
+				var z: float = (row + 0.5) * cell
+				var height: float = NAN
+				if _space:
+					_query.from = _to_world * Vector3(x, _field.ground_ray_above, z)
+					_query.to = _to_world * Vector3(x, -_field.ground_ray_below, z)
+					var hit: Dictionary = _space.intersect_ray(_query)
+					height = (_to_local * (hit["position"] as Vector3)).y if not hit.is_empty() else NAN
+				else:
+					height = _simulation.get_ground_height(Vector2(x, z))
+				heights[row * columns + column] = height if is_finite(height) else 0.0
+			rows_read = row + 1
+
+
 ## The layers, first to last: a later layer places over an earlier one, fills what it left empty
 ## or empties cells, as its [member SunflowerPlacementLayer.mode] says.
-@export var layers: Array[SunflowerPlacementLayer] = []:
-	set(value):
-		layers = value
-		emit_changed()
+@export var layers: Array[SunflowerPlacementLayer] = []
 ## The seed every layer's randomness follows: another seed, another field from the same rules.
-@export var seed: int = 1:
-	set(value):
-		seed = value
-		emit_changed()
+@export var seed: int = 1
 
 
 ## The native placement of these rules for [param field] (its map's size, cell size, ground,
 ## legend, paths and excluding bodies as they are now), ready for its [code]generate()[/code]; null
 ## after an error naming what is wrong. Reads the scene: call it on the main thread.
 func prepare(field: SunflowerField) -> RefCounted:
+	var reader: HeightReader = _reader(field)
+	if reader == null:
+		return null
+	reader.read(field.map.rows)
+	return _placement(field, reader.heights)
+
+
+## [method prepare] a few milliseconds a frame while it reads the ground (a ray a cell on colliders:
+## seconds for a million cells), calling [param progress] with the share read (0–1) between frames;
+## when it returns false, stops and gives null without an error. Await it.
+func prepare_in_steps(field: SunflowerField, budget_usec: int, progress: Callable) -> RefCounted:
+	var reader: HeightReader = _reader(field)
+	if reader == null:
+		return null
+	var start: int = Time.get_ticks_usec()
+	while reader.rows_read < field.map.rows:
+		reader.read(1)
+		if Time.get_ticks_usec() - start >= budget_usec and reader.rows_read < field.map.rows:
+			if not progress.call(float(reader.rows_read) / field.map.rows):
+				return null
+			await Engine.get_main_loop().process_frame
+			start = Time.get_ticks_usec()
+	return _placement(field, reader.heights) if is_instance_valid(field) else null
+
+
+## The reader of [param field]'s ground for these rules, or null after an error.
+func _reader(field: SunflowerField) -> HeightReader:
 	var problem: String = _field_problem(field)
 	if not problem.is_empty():
 		push_error("%s: %s" % [_name(), problem])
 		return null
+	var reader: HeightReader = HeightReader.new()
+	problem = reader.start(field)
+	if not problem.is_empty():
+		push_error("%s: %s" % [_name(), problem])
+		return null
+	return reader
+
+
+## The native placement for [param field] with the ground's [param heights]; null after an error.
+func _placement(field: SunflowerField, heights: PackedFloat32Array) -> RefCounted:
 	var placement: RefCounted = Native.create_placement()
 	if placement == null:
 		return null
 	placement.set_field(field.map.columns, field.map.rows, field.cell_size, seed)
-	var heights: Variant = _heights(field)
-	if heights == null:
-		return null
 	placement.set_heights(heights)
 	var names: PackedStringArray = String(placement.get_layer_fields()).split(",")
 	var plant_symbols: String = FieldLegend.plant_symbols(field.legend)
@@ -126,49 +210,6 @@ func _field_problem(field: SunflowerField) -> String:
 	if field.ground_source == FieldGround.Source.COLLIDERS and field.get_world_3d() == null:
 		return "the field has no world to cast its ground rays in"
 	return ""
-
-
-## The ground's height at every cell's centre (empty for flat ground): from the field's height map
-## through its built simulation, or from rays cast onto its colliders as its build casts them (no
-## ground under a cell: 0, where the build lays out no plant anyway); null after an error.
-func _heights(field: SunflowerField) -> Variant:
-	if field.ground_source == FieldGround.Source.FLAT:
-		return PackedFloat32Array()
-	var heights: PackedFloat32Array = PackedFloat32Array()
-	heights.resize(field.map.columns * field.map.rows)
-	var cell: float = field.cell_size
-	var simulation: RefCounted = null
-	var space: PhysicsDirectSpaceState3D = null
-	var query: PhysicsRayQueryParameters3D = null
-	if field.ground_source == FieldGround.Source.COLLIDERS:
-		space = field.get_world_3d().direct_space_state
-		query = PhysicsRayQueryParameters3D.create(Vector3(), Vector3.DOWN, field.ground_collision_mask)
-		query.hit_back_faces = false
-	else:
-		if field.is_building():
-			field.finish_build()
-		simulation = field.get_simulation()
-		if simulation == null or simulation.get_map_columns() != field.map.columns:
-			push_error("%s: the field %s is not built on its height map yet; build it first" % [_name(), field.name])
-			return null
-	var to_world: Transform3D = field.global_transform
-	var to_local: Transform3D = to_world.affine_inverse()
-	var i: int = 0
-	for row: int in field.map.rows:
-		for column: int in field.map.columns:
-			var x: float = (column + 0.5) * cell
-			var z: float = (row + 0.5) * cell
-			var height: float = NAN
-			if space:
-				query.from = to_world * Vector3(x, field.ground_ray_above, z)
-				query.to = to_world * Vector3(x, -field.ground_ray_below, z)
-				var hit: Dictionary = space.intersect_ray(query)
-				height = (to_local * (hit["position"] as Vector3)).y if not hit.is_empty() else NAN
-			else:
-				height = simulation.get_ground_height(Vector2(x, z))
-			heights[i] = height if is_finite(height) else 0.0
-			i += 1
-	return heights
 
 
 ## Adds [param layer] to [param placement]; returns what is wrong, or "".

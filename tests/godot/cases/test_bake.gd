@@ -389,6 +389,24 @@ func test_views_are_drawn_in_tiles_as_large_as_the_triangle_budget_allows() -> v
 	check_eq(ImpostorBaker.tile_of(30000), Vector2i(views.x, 2), "two rows")
 	check_eq(ImpostorBaker.tile_of(300000), Vector2i(3, 1), "a quarter of a row")
 	check_eq(ImpostorBaker.tile_of(2000000), Vector2i(1, 1), "a huge plant: one view a render")
+	# A plant of more than BAKE_TRIANGLES at level 1 is drawn from its finest level within them.
+	var ball: SphereMesh = SphereMesh.new()
+	ball.radial_segments = 320
+	ball.rings = 200  # 128 000 triangles
+	var heavy: ArrayMesh = ArrayMesh.new()
+	heavy.add_surface_from_arrays(Mesh.PRIMITIVE_TRIANGLES, ball.get_mesh_arrays())
+	var light: ArrayMesh = ArrayMesh.new()
+	ball.radial_segments = 64
+	ball.rings = 32
+	light.add_surface_from_arrays(Mesh.PRIMITIVE_TRIANGLES, ball.get_mesh_arrays())
+	var plant: FieldPlant = FieldPlant.new()
+	plant.set_part_mesh(0, 0, heavy)
+	plant.set_part_mesh(1, 0, heavy)
+	plant.set_part_mesh(2, 0, light)
+	check_eq(ImpostorBaker.bake_level(plant), 2, "128 000 triangles at levels 1 and 2: drawn from level 3")
+	plant.set_part_mesh(1, 0, light)
+	check_eq(ImpostorBaker.bake_level(plant), 1, "from level 2 when it is within the budget")
+	check_eq(ImpostorBaker.bake_level(FieldPlant.default_plant()), 0, "the sunflower from level 1")
 	# The sunflower drawn a view at a time bakes the atlases it bakes in one render.
 	var whole: FieldPlant = FieldPlant.default_plant().duplicate() as FieldPlant
 	check_eq(await whole.bake_impostors(tree.root, FOLDER, "sunflower_whole"), OK)
