@@ -62,12 +62,9 @@ func generate(field: SunflowerField, progress: Callable = Callable()) -> Error:
 				progress.call("reading the ground %d %%" % roundi(share * 100.0))
 			return _running.get(field) == PREPARING
 	)
-	if _running.get(field) == CANCELLED:
-		_running.erase(field)
-		return _cancelled(field)
-	if placement == null:
-		_running.erase(field)
-		return _fail("SunflowerField %s: the placement rules cannot run (the error above says why)" % field.name)
+	var stopped: Error = _stopped_preparing(field, placement)
+	if stopped != OK:
+		return stopped
 	if progress.is_valid():
 		progress.call("placing")
 	_running[field] = placement
@@ -80,11 +77,27 @@ func generate(field: SunflowerField, progress: Callable = Callable()) -> Error:
 	WorkerThreadPool.wait_for_task_completion(task)
 	_running.erase(field)
 	var cells: PackedByteArray = out[0] if not out.is_empty() else PackedByteArray()
+	if not is_instance_valid(field):
+		return _fail("SunflowerField: the field left the scene while its rules ran; nothing written")
 	if cells.is_empty():
 		return _cancelled(field)
-	if not is_instance_valid(field) or field.map == null or field.map.source_path != path or field.map.text != original:
+	if field.map == null or field.map.source_path != path or field.map.text != original:
 		return _fail("SunflowerField: the map %s changed while its rules ran; nothing written" % path)
 	return _commit(field, placement, cells)
+
+
+## After the ground is read: OK to go on with [param placement], or why [param field] stops
+## (gone, cancelled, or rules that cannot run), its run forgotten.
+func _stopped_preparing(field: SunflowerField, placement: RefCounted) -> Error:
+	var state: Variant = _running.get(field)
+	if placement != null and is_instance_valid(field) and state == PREPARING:
+		return OK
+	_running.erase(field)
+	if not is_instance_valid(field):
+		return _fail("SunflowerField: the field left the scene while its ground was read; nothing written")
+	if state == CANCELLED:
+		return _cancelled(field)
+	return _fail("SunflowerField %s: the placement rules cannot run (the error above says why)" % field.name)
 
 
 func _cancelled(field: SunflowerField) -> Error:
