@@ -93,10 +93,22 @@ func needs_rays() -> bool:
 func prepare_rays(simulation: NativeField) -> void:
 	if not needs_rays():
 		return
-	_points = simulation.get_ground_points()
-	_heights.resize(_points.size() / 2)
+	set_ray_points(simulation.get_ground_points())
 	_normals.resize(_points.size() / 2 * 3 if tilt > 0.0 else 0)
+
+
+## The points the rays go through (x, z pairs in the field's space), without normals: the build's
+## ground points ([method prepare_rays]) or any others (placement rules: every cell's centre).
+func set_ray_points(points: PackedFloat32Array) -> void:
+	_points = points
+	_heights.resize(_points.size() / 2)
+	_normals.resize(0)
 	_next = 0
+
+
+## The heights the rays found, one a point, in the field's space (NaN where a ray hit nothing).
+func get_ray_heights() -> PackedFloat32Array:
+	return _heights
 
 
 ## Readies the rays (on the main thread), cast from [param above] metres above the field's origin

@@ -89,12 +89,13 @@ static var _test_triangles_per_render: int = 0
 
 
 ## The bake's world: its viewport (a tile of views large), the camera that frames one tile at a
-## time, the tile's size in views and a view square's side in metres.
+## time, the tile's size in views, a view square's side in metres and the mesh level drawn.
 class Stage:
 	var viewport: SubViewport
 	var camera: Camera3D
 	var tile: Vector2i
 	var square: float
+	var level: int
 
 
 ## The emission pass: its picture (null when nothing glows) and the range its light was divided by
@@ -310,7 +311,7 @@ static func _emission(stage: Stage, plant: FieldPlant) -> Glow:
 	var viewport: SubViewport = stage.viewport
 	var glow: Glow = Glow.new()
 	glow.energy_range = (FieldPlant as Script).get_property_default_value(&"impostor_emission_range")
-	if not _can_glow(plant):
+	if not _can_glow(plant, stage.level):
 		return glow
 	for instance: Node in viewport.find_children("*", "MeshInstance3D", true, false):
 		(instance as MeshInstance3D).material_override = null
@@ -344,12 +345,12 @@ static func _emission(stage: Stage, plant: FieldPlant) -> Glow:
 	return glow
 
 
-## Whether any of the parts' materials (or their next passes) may give off light: anything but a
-## StandardMaterial3D or ORMMaterial3D with its emission off (a shader's is not known without
-## rendering it).
-static func _can_glow(plant: FieldPlant) -> bool:
+## Whether any of the parts' materials at mesh [param level] (or their next passes) may give off
+## light: anything but a StandardMaterial3D or ORMMaterial3D with its emission off (a shader's is not
+## known without rendering it).
+static func _can_glow(plant: FieldPlant, level: int) -> bool:
 	for part: int in 3:
-		var mesh: Mesh = plant.mesh_drawn(bake_level(plant), part)
+		var mesh: Mesh = plant.mesh_drawn(level, part)
 		if mesh == null:
 			continue
 		for surface: int in mesh.get_surface_count():
@@ -422,6 +423,7 @@ static func _stage(plant: FieldPlant) -> Stage:
 	var frame: Vector2 = plant.impostor_frame()
 	var stage: Stage = Stage.new()
 	var level: int = bake_level(plant)
+	stage.level = level
 	stage.tile = tile_of(plant.triangle_count(level))
 	stage.square = frame.x
 	var viewport: SubViewport = SubViewport.new()

@@ -17,59 +17,71 @@ const FieldLegend: GDScript = preload("field_legend.gd")
 const FieldGround: GDScript = preload("field_ground.gd")
 
 
-## Reads the ground's height at every cell's centre, row by row (empty for flat ground): from the
-## field's height map through its built simulation, or from rays cast onto its colliders as its build
-## casts them (no ground under a cell: 0, where the build lays out no plant anyway).
+## Reads the ground's height at every cell's centre (empty for flat ground): from the field's height
+## map through its built simulation, row by row, or from rays cast onto its colliders by the field's
+## own ground ([code]field_ground.gd[/code], as its build casts them). No ground under a cell: 0,
+## where the build lays out no plant anyway.
 class HeightReader:
 	extends RefCounted
 	var heights: PackedFloat32Array = PackedFloat32Array()
-	var rows_read: int = 0
 	var _field: SunflowerField
 	var _simulation: RefCounted
-	var _space: PhysicsDirectSpaceState3D
-	var _query: PhysicsRayQueryParameters3D
-	var _to_world: Transform3D
-	var _to_local: Transform3D
+	var _rays: RefCounted  # the FieldGround casting the rays, on colliders
+	var _rows_read: int = 0
 
 	## Readies the reader for [param field]; returns what is wrong, or "".
 	func start(field: SunflowerField) -> String:
 		_field = field
 		if field.ground_source == FieldGround.Source.FLAT:
-			rows_read = field.map.rows
-			return ""
-		heights.resize(field.map.columns * field.map.rows)
-		if field.ground_source == FieldGround.Source.COLLIDERS:
-			_space = field.get_world_3d().direct_space_state
-			_query = PhysicsRayQueryParameters3D.create(Vector3(), Vector3.DOWN, field.ground_collision_mask)
-			_query.hit_back_faces = false
+			_rows_read = field.map.rows
+		elif field.ground_source == FieldGround.Source.COLLIDERS:
+			var centres: PackedFloat32Array = PackedFloat32Array()
+			centres.resize(field.map.columns * field.map.rows * 2)
+			var i: int = 0
+			for row: int in field.map.rows:
+				for column: int in field.map.columns:
+					centres[i] = (column + 0.5) * field.cell_size
+					centres[i + 1] = (row + 0.5) * field.cell_size
+					i += 2
+			_rays = FieldGround.for_field(field)
+			_rays.set_ray_points(centres)
+			_rays.start_rays(field, field.ground_ray_above, field.ground_ray_below, field.ground_collision_mask)
 		else:
 			if field.is_building():
 				field.finish_build()
 			_simulation = field.get_simulation()
 			if _simulation == null or _simulation.get_map_columns() != field.map.columns:
 				return "the field %s is not built on its height map yet; build it first" % field.name
-		_to_world = field.global_transform
-		_to_local = _to_world.affine_inverse()
+			heights.resize(field.map.columns * field.map.rows)
 		return ""
 
-	## Reads the next [param rows] rows (fewer at the end).
-	func read(rows: int) -> void:
-		var cell: float = _field.cell_size
+	## Reads until [param budget_usec] is spent (negative: all of it, now). True when all is read.
+	func read(budget_usec: int) -> bool:
+		if _rays:
+			var none: Array[RID] = []  # (the stalk colliders the build passes by are not known here)
+			if not _rays.cast_rays(budget_usec, none):
+				return false
+			heights = _rays.get_ray_heights()
+			for i: int in heights.size():
+				if not is_finite(heights[i]):
+					heights[i] = 0.0
+			_rays = null
+			return true
+		var start: int = Time.get_ticks_usec()
 		var columns: int = _field.map.columns
-		for row: int in range(rows_read, mini(rows_read + rows, _field.map.rows)):
+		while _rows_read < _field.map.rows:
+			var z: float = (_rows_read + 0.5) * _field.cell_size
 			for column: int in columns:
-				var x: float = (column + 0.5) * cell
-				var z: float = (row + 0.5) * cell
-				var height: float = NAN
-				if _space:
-					_query.from = _to_world * Vector3(x, _field.ground_ray_above, z)
-					_query.to = _to_world * Vector3(x, -_field.ground_ray_below, z)
-					var hit: Dictionary = _space.intersect_ray(_query)
-					height = (_to_local * (hit["position"] as Vector3)).y if not hit.is_empty() else NAN
-				else:
-					height = _simulation.get_ground_height(Vector2(x, z))
-				heights[row * columns + column] = height if is_finite(height) else 0.0
-			rows_read = row + 1
+				var height: float = _simulation.get_ground_height(Vector2((column + 0.5) * _field.cell_size, z))
+				heights[_rows_read * columns + column] = height if is_finite(height) else 0.0
+			_rows_read += 1
+			if budget_usec >= 0 and Time.get_ticks_usec() - start >= budget_usec:
+				break
+		return _rows_read >= _field.map.rows
+
+	## How much is read, 0 to 1.
+	func progress() -> float:
+		return _rays.get_ray_progress() if _rays else float(_rows_read) / maxi(_field.map.rows, 1)
 
 
 ## The layers, first to last: a later layer places over an earlier one, fills what it left empty
@@ -86,7 +98,7 @@ func prepare(field: SunflowerField) -> RefCounted:
 	var reader: HeightReader = _reader(field)
 	if reader == null:
 		return null
-	reader.read(field.map.rows)
+	reader.read(-1)
 	return _placement(field, reader.heights)
 
 
@@ -97,14 +109,10 @@ func prepare_in_steps(field: SunflowerField, budget_usec: int, progress: Callabl
 	var reader: HeightReader = _reader(field)
 	if reader == null:
 		return null
-	var start: int = Time.get_ticks_usec()
-	while reader.rows_read < field.map.rows:
-		reader.read(1)
-		if Time.get_ticks_usec() - start >= budget_usec and reader.rows_read < field.map.rows:
-			if not progress.call(float(reader.rows_read) / field.map.rows):
-				return null
-			await Engine.get_main_loop().process_frame
-			start = Time.get_ticks_usec()
+	while not reader.read(budget_usec):
+		if not progress.call(reader.progress()):
+			return null
+		await Engine.get_main_loop().process_frame
 	return _placement(field, reader.heights) if is_instance_valid(field) else null
 
 
