@@ -2,7 +2,9 @@
 extends RefCounted
 ## Painting a field in the editor: with a [SunflowerField] selected, a toolbar in the 3D editor
 ## offers Paint and Erase, the symbol to paint ('*' and the legend's symbols), the brush radius (m)
-## and density (the share of cells a stroke fills, seeded). A circle follows the mouse on the
+## and density (the share of cells a stroke fills, seeded), and a layer of the field's placement
+## rules to follow ([code]rule_brush.gd[/code]: paint only where its filters let the plant grow). A
+## circle follows the mouse on the
 ## field's ground; a stroke changes the map in the native core and shows it as it goes; on release
 ## the [code].field[/code] file is written back in the canonical form (see fields/FORMAT.md),
 ## reimported, and the stroke is one undo/redo action. Ctrl-drag erases.
@@ -13,6 +15,7 @@ enum Mode { OFF, PAINT, ERASE }
 const Native: GDScript = preload("native.gd")
 const NativeField: GDScript = preload("native_field.gd")
 const FieldLegend: GDScript = preload("field_legend.gd")
+const RuleBrush: GDScript = preload("rule_brush.gd")
 ## The stroke's preview is rebuilt at most this often, milliseconds.
 const PREVIEW_INTERVAL_MS: int = 60
 const CIRCLE_SEGMENTS: int = 48
@@ -27,6 +30,8 @@ var symbol: String = "*"
 var radius: float = 2.0
 ## The share of cells in reach a painting stroke fills, 0 to 1.
 var density: float = 1.0
+## The layer of the field's placement rules a stroke follows (see [code]rule_brush.gd[/code]).
+var rule_brush: RuleBrush = RuleBrush.new()
 ## The toolbar (added to the 3D editor's menu by the plugin).
 var toolbar: HBoxContainer
 ## The last error a stroke ran into ("" when none), for tests and the toolbar's tooltip.
@@ -46,6 +51,7 @@ var _buttons: Dictionary = {}
 var _symbols: OptionButton
 var _radius_box: SpinBox
 var _density_box: SpinBox
+var _rules_box: OptionButton
 var _reimporting: bool = false  # a reimport is running, the editor's or ours (see _give_reimported)
 
 
@@ -71,6 +77,13 @@ func _init(undo_redo: EditorUndoRedoManager) -> void:
 	_density_box = _spin_box("Density: the share of cells a stroke fills", 0.05, 1.0, 0.05, density, "")
 	_density_box.prefix = "density"  # a bare "1.0" in the toolbar named nothing
 	_density_box.value_changed.connect(func(value: float) -> void: density = value)
+	_rules_box = OptionButton.new()
+	_rules_box.tooltip_text = (
+		"Paint only where a layer of the field's placement rules lets its plant grow (its height, slope,"
+		+ " noise, mask, path, exclusion and spacing filters); the density is the brush's"
+	)
+	_rules_box.item_selected.connect(func(index: int) -> void: follow_rule(index - 1))
+	toolbar.add_child(_rules_box)
 	toolbar.visible = false
 	if Engine.is_editor_hint():  # tools and tests also paint outside the editor
 		EditorInterface.get_inspector().property_edited.connect(_on_property_edited)
@@ -102,6 +115,7 @@ func edit(field: SunflowerField) -> void:
 	if is_instance_valid(_field) and _field.field_built.is_connected(_on_field_built):
 		_field.field_built.disconnect(_on_field_built)
 	_field = field
+	rule_brush.follow(field, -1)
 	toolbar.visible = _field != null
 	if _field:
 		_field.field_built.connect(_on_field_built)  # the plant, legend or map may have changed
@@ -126,6 +140,7 @@ func refresh() -> void:
 		if _symbols.get_item_text(index).left(1) == chosen:
 			_symbols.select(index)
 			symbol = chosen
+	_refresh_rules()
 	var paintable: bool = _field.map != null
 	for key: Mode in _buttons:
 		var button: Button = _buttons[key]
@@ -139,17 +154,49 @@ func refresh() -> void:
 		set_mode(Mode.OFF)
 
 
+## The rules box: "anywhere" and a line a layer of the field's placement rules, the one followed
+## kept while it is still there.
+func _refresh_rules() -> void:
+	var layers: Array[SunflowerPlacementLayer] = []
+	if _field.placement_rules:
+		layers = _field.placement_rules.layers
+	_rules_box.clear()
+	_rules_box.add_item("anywhere")
+	for i: int in layers.size():
+		var plant: String = layers[i].plant if layers[i] else "?"
+		_rules_box.add_item("where rule %d lets %s grow" % [i + 1, plant])
+	_rules_box.visible = not layers.is_empty()
+	if rule_brush.layer >= layers.size():
+		rule_brush.follow(_field, -1)
+	_rules_box.select(rule_brush.layer + 1)
+
+
+## Paints following layer [param index] of the field's placement rules (-1: anywhere) from now on:
+## its plant becomes the symbol painted, and the field's ground is read for it.
+func follow_rule(index: int) -> void:
+	var layers: Array[SunflowerPlacementLayer] = []
+	if _field and _field.placement_rules:
+		layers = _field.placement_rules.layers
+	index = index if index < layers.size() else -1
+	if index >= 0 and layers[index]:
+		for item: int in _symbols.item_count:
+			if _symbols.get_item_text(item).left(1) == layers[index].plant:
+				_symbols.select(item)
+				symbol = layers[index].plant
+	_rules_box.select(index + 1)
+	rule_brush.follow(_field, index)
+
+
 func _on_field_built(_plant_count: int) -> void:
 	refresh()
 
 
 func _on_property_edited(property: String) -> void:
-	if (
-		_field
-		and EditorInterface.get_inspector().get_edited_object() == _field
-		and property in ["map", "plant", "legend"]
-	):
-		refresh()
+	if _field and EditorInterface.get_inspector().get_edited_object() == _field:
+		if property in ["map", "plant", "legend", "placement_rules"]:
+			refresh()
+		if property.begins_with("ground_") or property.begins_with("height_") or property in ["map", "cell_size"]:
+			rule_brush.invalidate()  # its ground is read again
 
 
 ## Sets what a drag does, keeping the toolbar's buttons in step.
@@ -248,6 +295,10 @@ func _begin_stroke(erasing: bool) -> bool:
 	_stroke = _open_map(_field)
 	if _stroke == null:
 		return false
+	var following: String = rule_brush.begin(_field, _original)
+	if not following.is_empty():
+		_stroke = null
+		return _fail("SunflowerField painter: " + following)
 	_erasing = erasing
 	_seed += 1
 	return true
@@ -295,7 +346,14 @@ func _paint_at(world_point: Vector3) -> void:
 	var local: Vector3 = _field.to_local(world_point)
 	var cells: Vector2 = Vector2(local.x, local.z) / _field.cell_size
 	var painted: String = "" if _erasing else symbol
-	var changed: PackedInt32Array = _stroke.paint_map(cells, radius / _field.cell_size, painted, density, _seed, false)
+	var reach: float = radius / _field.cell_size
+	var changed: PackedInt32Array
+	if rule_brush.is_following():
+		var weights: Array = rule_brush.weights_at(cells, reach)
+		changed = _stroke.paint_map(cells, reach, painted, density, _seed, false, weights[0], weights[1])
+		rule_brush.note_changed(changed, painted)
+	else:
+		changed = _stroke.paint_map(cells, reach, painted, density, _seed, false)
 	_preview_due = _preview_due or not changed.is_empty()
 	_preview_if_due()
 
@@ -326,6 +384,7 @@ func _end_stroke(commit: bool) -> void:
 	var field: SunflowerField = _field
 	_stroke = null
 	_erasing = false
+	rule_brush.end()
 	if not commit or painted == _original:
 		field.map = _original_map
 		return

@@ -99,13 +99,22 @@ func prepare(field: SunflowerField) -> RefCounted:
 	if reader == null:
 		return null
 	reader.read(-1)
-	return _placement(field, reader.heights)
+	return placement_for(field, reader.heights)
 
 
 ## [method prepare] a few milliseconds a frame while it reads the ground (a ray a cell on colliders:
 ## seconds for a million cells), calling [param progress] with the share read (0–1) between frames;
 ## when it returns false, stops and gives null without an error. Await it.
 func prepare_in_steps(field: SunflowerField, budget_usec: int, progress: Callable) -> RefCounted:
+	var heights: Variant = await read_ground_in_steps(field, budget_usec, progress)
+	return placement_for(field, heights) if heights is PackedFloat32Array and is_instance_valid(field) else null
+
+
+## The ground's height at the centre of every cell of [param field]'s map, row by row (empty for
+## flat ground), read [param budget_usec] a frame as [method prepare_in_steps] reads it; null after
+## an error or when [param progress] returned false. Await it. With [method placement_for], what a
+## brush following the rules keeps between strokes.
+func read_ground_in_steps(field: SunflowerField, budget_usec: int, progress: Callable) -> Variant:
 	var reader: HeightReader = _reader(field)
 	if reader == null:
 		return null
@@ -113,7 +122,7 @@ func prepare_in_steps(field: SunflowerField, budget_usec: int, progress: Callabl
 		if not progress.call(reader.progress()):
 			return null
 		await Engine.get_main_loop().process_frame
-	return _placement(field, reader.heights) if is_instance_valid(field) else null
+	return reader.heights
 
 
 ## The reader of [param field]'s ground for these rules, or null after an error.
@@ -130,8 +139,9 @@ func _reader(field: SunflowerField) -> HeightReader:
 	return reader
 
 
-## The native placement for [param field] with the ground's [param heights]; null after an error.
-func _placement(field: SunflowerField, heights: PackedFloat32Array) -> RefCounted:
+## The native placement of these rules for [param field] on the ground's [param heights] (as
+## [method read_ground_in_steps] gives them); null after an error naming what is wrong.
+func placement_for(field: SunflowerField, heights: PackedFloat32Array) -> RefCounted:
 	var placement: RefCounted = Native.create_placement()
 	if placement == null:
 		return null

@@ -26,6 +26,8 @@ void SunflowerPlacement::bind_methods() {
 	gdx::bind_method(CLASS, "add_layer", &SunflowerPlacement::add_layer, { "row", "lines", "footprints", "mask" });
 	gdx::bind_method(CLASS, "check", &SunflowerPlacement::check);
 	gdx::bind_method(CLASS, "generate", &SunflowerPlacement::generate, { "column", "row", "columns", "rows", "threads" });
+	gdx::bind_method(CLASS, "layer_weights", &SunflowerPlacement::layer_weights,
+			{ "layer", "column", "row", "columns", "rows", "map" });
 	gdx::bind_method(CLASS, "cancel", &SunflowerPlacement::cancel);
 	gdx::bind_method(CLASS, "write_map", &SunflowerPlacement::write_map,
 			{ "cells", "columns", "rows", "plant_symbols", "header", "previous" });
@@ -85,6 +87,23 @@ gdx::PackedByteArray SunflowerPlacement::generate(int64_t p_column, int64_t p_ro
 		static_cast<int>(p_rows) };
 	if (sunflower::generate_placement(_rules, rect, &pool, cells, &_cancel)) {
 		out.assign(cells.data(), cells.size());
+	}
+	return out;
+}
+
+gdx::PackedFloat32Array SunflowerPlacement::layer_weights(int64_t p_layer, int64_t p_column, int64_t p_row, int64_t p_columns,
+		int64_t p_rows, const gdx::PackedByteArray &p_map) const {
+	gdx::PackedFloat32Array out;
+	const int64_t limit = sunflower::MapLimits{}.max_side;
+	if (p_layer < 0 || std::min({ p_column, p_row, p_columns, p_rows }) < 0 ||
+			std::max({ p_column, p_row, p_columns, p_rows }) > limit) {
+		return out;
+	}
+	std::vector<float> weights;
+	const sunflower::CellRect rect{ static_cast<int>(p_column), static_cast<int>(p_row), static_cast<int>(p_columns),
+		static_cast<int>(p_rows) };
+	if (sunflower::placement_layer_weights(_rules, static_cast<size_t>(p_layer), rect, to_vector<uint8_t>(p_map), weights)) {
+		out.assign(weights.data(), weights.size());
 	}
 	return out;
 }

@@ -24,6 +24,12 @@ public:
 	// The cells of a rectangle (0 empty, 1 + the plant type), on p_threads threads (0: the machine's
 	// cores, at most 8); empty when the rules do not check or cancel() was called meanwhile.
 	gdx::PackedByteArray generate(int64_t p_column, int64_t p_row, int64_t p_columns, int64_t p_rows, int64_t p_threads);
+	// The filters' weight (0–1) of layer p_layer (0-based) at every cell of a rectangle, row by row
+	// (core placement_layer_weights; p_map: the whole map's cells as read_map_cells gives them, for
+	// the layer's spacing, or empty). Empty when the layer or rectangle is not there or the rules do
+	// not check.
+	gdx::PackedFloat32Array layer_weights(int64_t p_layer, int64_t p_column, int64_t p_row, int64_t p_columns, int64_t p_rows,
+			const gdx::PackedByteArray &p_map) const;
 	// Stops a generate() running now, from any thread.
 	void cancel();
 	// Cells (columns × rows) as a map's text in canonical form: '*' for plant type 0 and

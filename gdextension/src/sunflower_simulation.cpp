@@ -21,7 +21,7 @@ void SunflowerSimulation::bind_methods() {
 			{ "text", "source", "legend", "plant_symbols", "max_plants", "any_symbol" });
 	gdx::bind_method(CLASS, "get_map_figures", &SunflowerSimulation::get_map_figures, { "text", "max_plants" });
 	gdx::bind_method(CLASS, "get_species_count", &SunflowerSimulation::get_species_count);
-	gdx::bind_method(CLASS, "paint_map", &SunflowerSimulation::paint_map, { "center", "radius", "symbol", "density", "seed", "relayout" });
+	gdx::bind_method(CLASS, "paint_map", &SunflowerSimulation::paint_map, { "center", "radius", "symbol", "density", "seed", "relayout", "weights", "weights_rect" });
 	gdx::bind_method(CLASS, "write_map", &SunflowerSimulation::write_map);
 	gdx::bind_method(CLASS, "resize_map", &SunflowerSimulation::resize_map, { "columns", "rows" });
 	gdx::bind_method(CLASS, "get_map_columns", &SunflowerSimulation::get_map_columns);

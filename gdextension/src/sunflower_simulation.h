@@ -23,8 +23,10 @@ public:
 	// map that parses with any printable symbol as an object; empty when it does not parse.
 	static gdx::PackedInt32Array get_map_figures(const gdx::PackedByteArray &p_text, int64_t p_max_plants);
 	int64_t get_species_count() const;
+	// A brush stroke (core paint_cells); p_weights over the cells of p_weights_rect (column, row,
+	// columns, rows) when not empty: the brush follows a placement layer's filters.
 	gdx::PackedInt32Array paint_map(gdx::Vector2 p_center, double p_radius, const gdx::String &p_symbol, double p_density, int64_t p_seed,
-			bool p_relayout);
+			bool p_relayout, const gdx::PackedFloat32Array &p_weights, const gdx::PackedInt32Array &p_weights_rect);
 	gdx::PackedByteArray write_map() const;
 	bool resize_map(int64_t p_columns, int64_t p_rows);
 	int64_t get_map_columns() const;

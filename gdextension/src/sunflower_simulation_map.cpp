@@ -78,7 +78,8 @@ gdx::PackedInt32Array SunflowerSimulation::get_map_objects() const {
 }
 
 gdx::PackedInt32Array SunflowerSimulation::paint_map(gdx::Vector2 p_center, double p_radius, const gdx::String &p_symbol,
-		double p_density, int64_t p_seed, bool p_relayout) {
+		double p_density, int64_t p_seed, bool p_relayout, const gdx::PackedFloat32Array &p_weights,
+		const gdx::PackedInt32Array &p_weights_rect) {
 	const std::u32string symbol = decode_utf8_text(p_symbol.utf8());
 	SF_FAIL_COND_V_MSG(symbol.size() > 1, gdx::PackedInt32Array(),
 			"paint_map: the symbol must be one character ('*', a legend symbol) or empty to erase; got \"" + p_symbol.utf8() +
@@ -94,8 +95,24 @@ gdx::PackedInt32Array SunflowerSimulation::paint_map(gdx::Vector2 p_center, doub
 			content = CellContent{ CellContent::OBJECT, 0, symbol[0] };
 		}
 	}
+	CellWeights weights;
+	const bool weighted = p_weights.size() > 0;
+	if (weighted) {
+		SF_FAIL_COND_V_MSG(p_weights_rect.size() != 4 || p_weights_rect.data()[2] < 0 || p_weights_rect.data()[3] < 0 ||
+						int64_t(p_weights_rect.data()[2]) * p_weights_rect.data()[3] != p_weights.size(),
+				gdx::PackedInt32Array(),
+				"paint_map: weights_rect must be column, row, columns, rows of the weights' " + std::to_string(p_weights.size()) +
+						" cells");
+		const int32_t *rect = p_weights_rect.data();
+		weights.column = rect[0];
+		weights.row = rect[1];
+		weights.columns = rect[2];
+		weights.rows = rect[3];
+		weights.values.assign(p_weights.data(), p_weights.data() + p_weights.size());
+	}
 	std::vector<int> changed;
-	_sim.paint_map(gdx::to_core(p_center), float(p_radius), content, float(p_density), uint64_t(p_seed), p_relayout, changed);
+	_sim.paint_map(gdx::to_core(p_center), float(p_radius), content, float(p_density), uint64_t(p_seed), p_relayout, changed,
+			weighted ? &weights : nullptr);
 	if (p_relayout && !changed.empty()) {
 		release_multimeshes(); // the layout changed
 	}

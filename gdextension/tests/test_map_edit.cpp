@@ -123,6 +123,49 @@ TEST_CASE("a brush stroke changes the cells within its radius only, seeded by de
 	CHECK(changed.empty());
 }
 
+TEST_CASE("a brush following weights paints a cell with its weight's share of the density, erases by weight") {
+	std::string text = "40 40\n";
+	for (int row = 0; row < 40; ++row) {
+		text += "\n";
+	}
+	const CellContent sunflower{ CellContent::PLANT, 0, 0 };
+	CellWeights weights; // columns 10–29: weight 1 left of 20, 0 from 20 on; rows 10–29; nothing outside
+	weights.column = 10;
+	weights.row = 10;
+	weights.columns = 20;
+	weights.rows = 20;
+	for (int r = 0; r < 20; r++) {
+		for (int c = 0; c < 20; c++) {
+			weights.values.push_back(c < 10 ? 1.0f : 0.0f);
+		}
+	}
+	FieldMap map = parse(text);
+	std::vector<int> changed;
+	paint_cells(map, 20.0f, 20.0f, 15.0f, sunflower, 1.0f, 7, changed, &weights);
+	for (int row = 0; row < 40; ++row) {
+		for (int column = 0; column < 40; ++column) {
+			CHECK(map.has_plant(column, row) == (column >= 10 && column < 20 && row >= 10 && row < 30));
+		}
+	}
+	// A weight of a half halves the share painted; the same cells as a half density.
+	std::fill(weights.values.begin(), weights.values.end(), 0.5f);
+	FieldMap half_weight = parse(text);
+	FieldMap half_density = parse(text);
+	paint_cells(half_weight, 20.0f, 20.0f, 9.0f, sunflower, 1.0f, 3, changed, &weights);
+	paint_cells(half_density, 20.0f, 20.0f, 9.0f, sunflower, 0.5f, 3, changed);
+	CHECK(half_weight.plants == half_density.plants);
+	CHECK(half_weight.plant_count > 80);
+	// Erasing by weight: cells of weight 0 stay; a NaN weight is 0.
+	std::fill(weights.values.begin(), weights.values.end(), 0.0f);
+	weights.values[0] = NAN;
+	changed.clear();
+	paint_cells(map, 20.0f, 20.0f, 30.0f, CellContent{}, 1.0f, 7, changed, &weights);
+	CHECK(changed.empty());
+	std::fill(weights.values.begin(), weights.values.end(), 1.0f);
+	paint_cells(map, 20.0f, 20.0f, 30.0f, CellContent{}, 1.0f, 7, changed, &weights);
+	CHECK(map.plant_count == 0);
+}
+
 TEST_CASE("resizing keeps the cells both sizes share and cuts or adds the rest") {
 	FieldMap map = parse(CANONICAL, U"Sö", U"m");
 	const int64_t plants = map.plant_count;

@@ -340,6 +340,53 @@ TEST_CASE("placement: spacing keeps a layer's plants away from an earlier layer'
 	CHECK(at(rules, cells, 0, 0) + at(rules, cells, 1, 0) > 0);
 }
 
+TEST_CASE("placement: a layer's weights are its filters' product at each cell, spacing read from a map") {
+	PlacementRules rules = field(60, 40, 0.5f);
+	PlacementLayer trees;
+	trees.species = 1;
+	PlacementLayer grass;
+	grass.density = 0.25f; // not in the weights: a brush brings its own density
+	grass.slope = RangeFilter{ true, 0.0f, 30.0f, 10.0f, false };
+	grass.height = RangeFilter{ true, -100.0f, 5.0f, 0.0f, false };
+	grass.spacing = SpacingFilter{ true, 0, 1.5f };
+	rules.layers = { trees, grass };
+	rules.heights = incline(rules, 35.0f); // half way through the slope's falloff
+	const float rise = static_cast<float>(std::tan(35.0 * 3.14159265358979 / 180.0)) * 0.5f; // a column's rise
+	std::vector<float> weights;
+	REQUIRE(placement_layer_weights(rules, 1, CellRect{ 0, 0, 60, 40 }, {}, weights));
+	REQUIRE(weights.size() == 60u * 40u);
+	for (int c = 0; c < 60; c++) {
+		const float height = static_cast<float>(c) * rise;
+		// Half by the slope below 5 m up; nothing above (a sharp edge).
+		CHECK(weights[static_cast<size_t>(20 * 60 + c)] == doctest::Approx(height <= 5.0f ? 0.5f : 0.0f).epsilon(0.01));
+	}
+	// A tree in the map: no grass within 1.5 m (3 cells) of it, the rest as before.
+	std::vector<uint8_t> map(60 * 40, 0);
+	map[static_cast<size_t>(20 * 60 + 5)] = 2;
+	std::vector<float> spaced;
+	REQUIRE(placement_layer_weights(rules, 1, CellRect{ 2, 17, 8, 7 }, map, spaced));
+	REQUIRE(spaced.size() == 8u * 7u);
+	for (int r = 0; r < 7; r++) {
+		for (int c = 0; c < 8; c++) {
+			const int dc = c + 2 - 5;
+			const int dr = r + 17 - 20;
+			const bool near = static_cast<float>(dc * dc + dr * dr) * 0.25f <= 1.5f * 1.5f;
+			CHECK(spaced[static_cast<size_t>(r * 8 + c)] == (near ? 0.0f : weights[static_cast<size_t>((r + 17) * 60 + c + 2)]));
+		}
+	}
+	// The weights agree with generation: where a cell's weight is 0 the layer never places.
+	rules.layers[1].density = 1.0f;
+	rules.layers[0].density = 0.0f;
+	const std::vector<uint8_t> cells = whole(rules);
+	for (size_t i = 0; i < cells.size(); i++) {
+		if (weights[i] == 0.0f) {
+			CHECK(cells[i] == 0);
+		}
+	}
+	CHECK_FALSE(placement_layer_weights(rules, 2, CellRect{ 0, 0, 1, 1 }, {}, weights)); // no third layer
+	CHECK_FALSE(placement_layer_weights(rules, 1, CellRect{ 55, 0, 10, 1 }, {}, weights)); // past the edge
+}
+
 TEST_CASE("placement: later layers take cells, fill the empty ones, or empty them, as each says") {
 	PlacementRules rules = field(50, 50);
 	PlacementLayer all;

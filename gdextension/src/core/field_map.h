@@ -99,12 +99,24 @@ CellContent get_cell(const FieldMap &p_map, int p_column, int p_row);
 // Sets a cell; returns whether it changed. Keeps plant_count and the object list in step.
 bool set_cell(FieldMap &r_map, int p_column, int p_row, const CellContent &p_content);
 
+// Weights over a rectangle of the map's cells (a brush following a placement layer's filters: see
+// placement_layer_weights); a cell outside the rectangle weighs 0.
+struct CellWeights {
+	int column = 0;
+	int row = 0;
+	int columns = 0;
+	int rows = 0;
+	std::vector<float> values; // columns × rows, row-major, each 0–1
+	float at(int p_column, int p_row) const;
+};
+
 // A brush stroke: every cell whose centre lies within p_radius cells of p_center (in cells, x along
 // columns, y along rows) gets p_content, if its seeded draw (p_seed, column, row) falls below
-// p_density (1: every cell); an erasing stroke (p_content EMPTY) empties every cell in reach. The
-// changed cells are appended to r_changed as column, row pairs.
+// p_density (1: every cell); an erasing stroke (p_content EMPTY) empties every cell in reach. With
+// p_weights, a painted cell's chance is p_density × its weight, and an erased cell is emptied when
+// its draw falls below its weight. The changed cells are appended to r_changed as column, row pairs.
 void paint_cells(FieldMap &r_map, float p_center_x, float p_center_y, float p_radius, const CellContent &p_content,
-		float p_density, uint64_t p_seed, std::vector<int> &r_changed);
+		float p_density, uint64_t p_seed, std::vector<int> &r_changed, const CellWeights *p_weights = nullptr);
 
 // Gives the map p_columns × p_rows cells (each at least 1): cells and objects inside both sizes
 // stay where they are, the rest is cut off or added empty. Returns false (and leaves the map) for a

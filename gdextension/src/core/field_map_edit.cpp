@@ -147,8 +147,22 @@ bool resize_field_map(FieldMap &r_map, int p_columns, int p_rows, const MapLimit
 	return true;
 }
 
+float CellWeights::at(int p_column, int p_row) const {
+	const int c = p_column - column;
+	const int r = p_row - row;
+	if (c < 0 || r < 0 || c >= columns || r >= rows) {
+		return 0.0f;
+	}
+	const size_t index = static_cast<size_t>(r) * static_cast<size_t>(columns) + static_cast<size_t>(c);
+	if (index >= values.size()) {
+		return 0.0f;
+	}
+	const float weight = values[index];
+	return std::isfinite(weight) ? std::clamp(weight, 0.0f, 1.0f) : 0.0f;
+}
+
 void paint_cells(FieldMap &r_map, float p_center_x, float p_center_y, float p_radius, const CellContent &p_content,
-		float p_density, uint64_t p_seed, std::vector<int> &r_changed) {
+		float p_density, uint64_t p_seed, std::vector<int> &r_changed, const CellWeights *p_weights) {
 	if (!(p_radius >= 0.0f) || !std::isfinite(p_radius) || !std::isfinite(p_center_x) || !std::isfinite(p_center_y)) {
 		return;
 	}
@@ -165,7 +179,9 @@ void paint_cells(FieldMap &r_map, float p_center_x, float p_center_y, float p_ra
 			if (dx * dx + dy * dy > p_radius * p_radius) {
 				continue;
 			}
-			if (!erase && unit_float(hash_plant(p_seed, cell_index(r_map, column, row), STREAM_PAINT)) >= density) {
+			const float weight = p_weights ? p_weights->at(column, row) : 1.0f;
+			const float chance = erase ? weight : density * weight;
+			if (chance < 1.0f && unit_float(hash_plant(p_seed, cell_index(r_map, column, row), STREAM_PAINT)) >= chance) {
 				continue;
 			}
 			if (set_cell(r_map, column, row, p_content)) {

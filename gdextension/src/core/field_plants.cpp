@@ -27,9 +27,9 @@ void FieldPlants::replace_map(FieldMap p_map) {
 }
 
 bool FieldPlants::paint_map(const glm::vec2 &p_center, float p_radius, const CellContent &p_content, float p_density,
-		uint64_t p_seed, bool p_relayout, std::vector<int> &r_changed) {
+		uint64_t p_seed, bool p_relayout, std::vector<int> &r_changed, const CellWeights *p_weights) {
 	const size_t before = r_changed.size();
-	paint_cells(_map, p_center.x, p_center.y, p_radius, p_content, p_density, p_seed, r_changed);
+	paint_cells(_map, p_center.x, p_center.y, p_radius, p_content, p_density, p_seed, r_changed, p_weights);
 	if (!p_relayout || r_changed.size() == before) {
 		return false;
 	}

@@ -44,7 +44,7 @@ public:
 	// appended to r_changed. Rebuilds the layout when p_relayout and anything changed; returns whether
 	// it did.
 	bool paint_map(const glm::vec2 &p_center, float p_radius, const CellContent &p_content, float p_density, uint64_t p_seed,
-			bool p_relayout, std::vector<int> &r_changed);
+			bool p_relayout, std::vector<int> &r_changed, const CellWeights *p_weights = nullptr);
 	// Sanitises the parameters (an invalid value keeps the current one); rebuilds the layout and
 	// returns true when they differ from the current ones.
 	bool set_layout_params(const LayoutParams &p_params);

@@ -32,8 +32,8 @@ void FieldSimulation::replace_map(FieldMap p_map) {
 }
 
 void FieldSimulation::paint_map(const glm::vec2 &p_center, float p_radius, const CellContent &p_content, float p_density,
-		uint64_t p_seed, bool p_relayout, std::vector<int> &r_changed) {
-	if (_plants.paint_map(p_center, p_radius, p_content, p_density, p_seed, p_relayout, r_changed)) {
+		uint64_t p_seed, bool p_relayout, std::vector<int> &r_changed, const CellWeights *p_weights) {
+	if (_plants.paint_map(p_center, p_radius, p_content, p_density, p_seed, p_relayout, r_changed, p_weights)) {
 		_rebuilt();
 	}
 }

@@ -40,7 +40,7 @@ public:
 	// A brush stroke on the map (FieldPlants::paint_map), then, when p_relayout, the field rebuilt if
 	// anything changed. (A simulation that only edits a map, for a painter, skips the layout.)
 	void paint_map(const glm::vec2 &p_center, float p_radius, const CellContent &p_content, float p_density, uint64_t p_seed,
-			bool p_relayout, std::vector<int> &r_changed);
+			bool p_relayout, std::vector<int> &r_changed, const CellWeights *p_weights = nullptr);
 	// Rebuilds when the (sanitised) parameters differ from the current ones; returns whether it did.
 	bool set_layout_params(const LayoutParams &p_params);
 	// Stands the plants on p_ground (rebuilding). Plants whose cells have no ground go.

@@ -228,44 +228,40 @@ float slope_at(const PlacementRules &p_rules, int p_column, int p_row) {
 	return atan_positive(std::sqrt(gx * gx + gz * gz)) * DEGREES_PER_RADIAN;
 }
 
-// Whether layer p_index takes cell (p_column, p_row), reading the owners before it (p_before, over
-// p_area) for its spacing.
-bool takes(const PlacementRules &p_rules, const PreparedLayer &p_prepared, size_t p_index, int p_column, int p_row,
-		const std::vector<uint8_t> &p_before, const CellRect &p_area) {
+// p_chance times the weights of the layer's height, slope, mask, noise, path and exclusion filters
+// at the cell, in that order, stopping as soon as it falls to p_draw or below (the cell is not
+// taken then; a negative p_draw never stops it, giving the whole product).
+float filtered_chance(const PlacementRules &p_rules, const PreparedLayer &p_prepared, int p_column, int p_row, float p_chance,
+		float p_draw) {
 	const PlacementLayer &layer = *p_prepared.layer;
-	const uint64_t cell = static_cast<uint64_t>(p_row) * static_cast<uint64_t>(p_rules.columns) + static_cast<uint64_t>(p_column);
-	const float draw = unit_float(hash_plant(p_rules.seed, cell, STREAM_PLACEMENT, p_index));
-	float chance = layer.density;
-	if (draw >= chance) {
-		return false;
-	}
+	float chance = p_chance;
 	const float x = (static_cast<float>(p_column) + 0.5f) * p_rules.cell_size;
 	const float z = (static_cast<float>(p_row) + 0.5f) * p_rules.cell_size;
 	if (layer.height.enabled) {
 		const float height = p_rules.heights.empty() ? 0.0f : height_at(p_rules, p_column, p_row);
 		chance *= range_weight(layer.height, height);
-		if (draw >= chance) {
-			return false;
+		if (p_draw >= chance) {
+			return chance;
 		}
 	}
 	if (layer.slope.enabled) {
 		chance *= range_weight(layer.slope, slope_at(p_rules, p_column, p_row));
-		if (draw >= chance) {
-			return false;
+		if (p_draw >= chance) {
+			return chance;
 		}
 	}
 	if (layer.mask.enabled) {
 		chance *= mask_weight(layer.mask, x, z);
-		if (draw >= chance) {
-			return false;
+		if (p_draw >= chance) {
+			return chance;
 		}
 	}
 	if (layer.noise.enabled) {
 		const float value = placement_noise(p_prepared.noise_seed, x / layer.noise.scale, z / layer.noise.scale, layer.noise.octaves);
 		const float weight = ramp(value, layer.noise.threshold, layer.noise.falloff);
 		chance *= layer.noise.invert ? 1.0f - weight : weight;
-		if (draw >= chance) {
-			return false;
+		if (p_draw >= chance) {
+			return chance;
 		}
 	}
 	if (layer.paths.enabled) {
@@ -277,8 +273,8 @@ bool takes(const PlacementRules &p_rules, const PreparedLayer &p_prepared, size_
 		}
 		const float weight = ramp(nearest, layer.paths.half_width, layer.paths.falloff);
 		chance *= layer.paths.invert ? 1.0f - weight : weight;
-		if (draw >= chance) {
-			return false;
+		if (p_draw >= chance) {
+			return chance;
 		}
 	}
 	if (layer.exclusion.enabled) {
@@ -286,34 +282,53 @@ bool takes(const PlacementRules &p_rules, const PreparedLayer &p_prepared, size_
 			if (x >= f.min_x && x <= f.max_x && z >= f.min_z && z <= f.max_z) {
 				const float distance = footprint_distance(f, x, z);
 				chance *= distance <= 0.0f ? 0.0f : ramp(distance, 0.0f, layer.exclusion.falloff);
-				if (draw >= chance) {
-					return false;
+				if (p_draw >= chance) {
+					return chance;
 				}
 			}
 		}
 	}
-	if (layer.spacing.enabled) {
-		const uint8_t other = static_cast<uint8_t>(layer.spacing.layer + 1);
-		const int reach = p_prepared.spacing_cells;
-		const float distance2 = layer.spacing.distance * layer.spacing.distance;
-		const float s2 = p_rules.cell_size * p_rules.cell_size;
-		for (int dr = -reach; dr <= reach; dr++) {
-			const int row = p_row + dr - p_area.row;
-			if (row < 0 || row >= p_area.rows) {
+	return chance;
+}
+
+// Whether a cell within the layer's spacing of (p_column, p_row) holds p_other in p_cells (the
+// cells of p_area, row-major).
+bool spaced_out(const PlacementRules &p_rules, const PreparedLayer &p_prepared, int p_column, int p_row, uint8_t p_other,
+		const std::vector<uint8_t> &p_cells, const CellRect &p_area) {
+	const int reach = p_prepared.spacing_cells;
+	const float distance = p_prepared.layer->spacing.distance;
+	const float distance2 = distance * distance;
+	const float s2 = p_rules.cell_size * p_rules.cell_size;
+	for (int dr = -reach; dr <= reach; dr++) {
+		const int row = p_row + dr - p_area.row;
+		if (row < 0 || row >= p_area.rows) {
+			continue;
+		}
+		for (int dc = -reach; dc <= reach; dc++) {
+			const int column = p_column + dc - p_area.column;
+			if (column < 0 || column >= p_area.columns || static_cast<float>(dr * dr + dc * dc) * s2 > distance2) {
 				continue;
 			}
-			for (int dc = -reach; dc <= reach; dc++) {
-				const int column = p_column + dc - p_area.column;
-				if (column < 0 || column >= p_area.columns || static_cast<float>(dr * dr + dc * dc) * s2 > distance2) {
-					continue;
-				}
-				if (p_before[static_cast<size_t>(row) * static_cast<size_t>(p_area.columns) + static_cast<size_t>(column)] == other) {
-					return false;
-				}
+			if (p_cells[static_cast<size_t>(row) * static_cast<size_t>(p_area.columns) + static_cast<size_t>(column)] == p_other) {
+				return true;
 			}
 		}
 	}
-	return true;
+	return false;
+}
+
+// Whether layer p_index takes cell (p_column, p_row), reading the owners before it (p_before, over
+// p_area) for its spacing.
+bool takes(const PlacementRules &p_rules, const PreparedLayer &p_prepared, size_t p_index, int p_column, int p_row,
+		const std::vector<uint8_t> &p_before, const CellRect &p_area) {
+	const PlacementLayer &layer = *p_prepared.layer;
+	const uint64_t cell = static_cast<uint64_t>(p_row) * static_cast<uint64_t>(p_rules.columns) + static_cast<uint64_t>(p_column);
+	const float draw = unit_float(hash_plant(p_rules.seed, cell, STREAM_PLACEMENT, p_index));
+	if (draw >= layer.density || draw >= filtered_chance(p_rules, p_prepared, p_column, p_row, layer.density, draw)) {
+		return false;
+	}
+	return !layer.spacing.enabled ||
+			!spaced_out(p_rules, p_prepared, p_column, p_row, static_cast<uint8_t>(layer.spacing.layer + 1), p_before, p_area);
 }
 
 std::string check_range(const RangeFilter &p_filter, const char *p_name) {
@@ -623,6 +638,34 @@ bool generate_placement(const PlacementRules &p_rules, const CellRect &p_rect, W
 			const uint8_t owner = before[from + static_cast<size_t>(c)];
 			r_cells[static_cast<size_t>(r) * static_cast<size_t>(p_rect.columns) + static_cast<size_t>(c)] =
 					owner == 0 ? 0 : static_cast<uint8_t>(p_rules.layers[owner - 1].species + 1);
+		}
+	}
+	return true;
+}
+
+bool placement_layer_weights(const PlacementRules &p_rules, size_t p_layer, const CellRect &p_rect,
+		const std::vector<uint8_t> &p_map, std::vector<float> &r_weights) {
+	if (p_layer >= p_rules.layers.size() || !check_placement(p_rules).empty() || p_rect.columns < 0 || p_rect.rows < 0 ||
+			p_rect.column < 0 || p_rect.row < 0 || p_rect.column + p_rect.columns > p_rules.columns ||
+			p_rect.row + p_rect.rows > p_rules.rows) {
+		return false;
+	}
+	const PreparedLayer prepared = prepare(p_rules, p_layer);
+	const PlacementLayer &layer = p_rules.layers[p_layer];
+	const CellRect whole{ 0, 0, p_rules.columns, p_rules.rows };
+	const bool spacing = layer.spacing.enabled &&
+			p_map.size() == static_cast<size_t>(p_rules.columns) * static_cast<size_t>(p_rules.rows);
+	const uint8_t other = spacing ? static_cast<uint8_t>(p_rules.layers[static_cast<size_t>(layer.spacing.layer)].species + 1) : 0;
+	r_weights.assign(static_cast<size_t>(p_rect.columns) * static_cast<size_t>(p_rect.rows), 0.0f);
+	for (int r = 0; r < p_rect.rows; r++) {
+		for (int c = 0; c < p_rect.columns; c++) {
+			const int column = p_rect.column + c;
+			const int row = p_rect.row + r;
+			if (spacing && spaced_out(p_rules, prepared, column, row, other, p_map, whole)) {
+				continue;
+			}
+			r_weights[static_cast<size_t>(r) * static_cast<size_t>(p_rect.columns) + static_cast<size_t>(c)] =
+					filtered_chance(p_rules, prepared, column, row, 1.0f, -1.0f);
 		}
 	}
 	return true;

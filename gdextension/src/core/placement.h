@@ -128,6 +128,15 @@ std::string check_placement(const PlacementRules &p_rules);
 bool generate_placement(const PlacementRules &p_rules, const CellRect &p_rect, WorkerPool *p_pool,
 		std::vector<uint8_t> &r_cells, const std::atomic<bool> *p_cancel = nullptr);
 
+// The weight (0–1) of layer p_layer's filters at every cell of p_rect, row-major, into r_weights:
+// the product of its height, slope, mask, noise, path and exclusion weights (not its density), and
+// 0 within its spacing of a cell of p_map that holds the plant type of the layer its spacing names.
+// p_map: the whole field's cells as generate_placement gives them (empty: the spacing is not read).
+// What a brush painting "by a layer" multiplies its density by. False when the layer or rectangle
+// is not there or the rules do not check.
+bool placement_layer_weights(const PlacementRules &p_rules, size_t p_layer, const CellRect &p_rect,
+		const std::vector<uint8_t> &p_map, std::vector<float> &r_weights);
+
 // Hand edits kept through a regeneration: every cell where p_edited (the map as the user left it)
 // differs from p_generated_before (what the rules gave then) keeps its edited value; every other
 // cell takes p_generated_now. All three of one size; returns the result.

@@ -178,6 +178,66 @@ func test_slope_follows_the_fields_height_map_ground() -> void:
 	_check_the_ramp_is_steep(field)
 
 
+func test_a_brush_following_a_rule_paints_only_where_the_rule_lets_plants_grow() -> void:
+	# The ramp field: a layer for level ground only (slope up to 10°), with grass kept 1.5 m off
+	# the trees of layer 1 ('g').
+	var field: SunflowerField = _field(62, 62)
+	field.ground_source = SunflowerField.GroundSource.HEIGHT_MAP
+	field.height_map = ImageTexture.create_from_image(_ramp_image())
+	field.height_range = Vector2(0.0, 10.0)
+	field.height_map_rect = Rect2(0.0, 0.0, 31.0, 31.0)
+	field.finish_build()
+	var trees: SunflowerPlacementLayer = _layer("g", 0.0)
+	var level: SunflowerPlacementLayer = _layer("*", 0.01)  # its own density is not the brush's
+	level.slope_use = true
+	level.slope_max = 10.0
+	level.spacing_use = true
+	level.spacing_layer = 1
+	level.spacing_distance = 1.5
+	field.placement_rules = SunflowerPlacementRules.new()
+	field.placement_rules.layers = [trees, level]
+	var brush: RefCounted = load("res://addons/sunflower_field/rule_brush.gd").new()
+	check_eq(brush.problem(field), "", "no layer followed: nothing in the way")
+	await brush.follow(field, 1)
+	check_eq(brush.problem(field), "", "the ground is read")
+	# A tree at cell (50, 30) in the map the stroke begins on.
+	var editor: RefCounted = load("res://addons/sunflower_field/native_field.gd").create()
+	editor.set_ground_heights(PackedFloat32Array(), PackedFloat32Array(), 0.0)
+	var text: String = "62 62\n" + "\n".repeat(30) + ".".repeat(50) + "g\n"
+	check_eq(editor.load_map(text.to_utf8_buffer(), "brush.field", "S", "g", 0), "", "the map reads")
+	check_eq(brush.begin(field, editor.write_map()), "", "the stroke follows the rule")
+	check(brush.is_following(), "following")
+	# One dab over the whole field, the brush's density 1.
+	var weights: Array = brush.weights_at(Vector2(31.0, 31.0), 50.0)
+	check_eq(weights[1], Rect2i(0, 0, 62, 62), "the dab's cells, clipped to the map")
+	var changed: PackedInt32Array = editor.paint_map(
+		Vector2(31.0, 31.0), 50.0, "*", 1.0, 1, false, weights[0], weights[1]
+	)
+	brush.note_changed(changed, "*")
+	brush.end()
+	var reader: RefCounted = load("res://addons/sunflower_field/native.gd").create_placement()
+	var cells: PackedByteArray = reader.read_map_cells(editor.write_map(), "g")
+	var ramp: int = 0
+	var top: int = 0
+	for row: int in range(4, 58):
+		ramp += _cell(field, cells, 20, row)  # x 10.25 m: the 27° ramp
+		top += 1 if _cell(field, cells, 56, row) == 1 else 0  # x 28.25 m: level
+	check_eq(ramp, 0, "nothing painted on the ramp")
+	check_eq(top, 54, "every level cell painted, whatever the layer's own density")
+	check_eq(_cell(field, cells, 50, 30), 2, "the tree stays")
+	check_eq(_cell(field, cells, 52, 30), 0, "no sunflower 1 m from the tree")
+	check_eq(_cell(field, cells, 54, 30), 1, "one 2 m from it")
+	# A rule that is gone, and a ground that cannot be read, are refused with a reason.
+	field.placement_rules.layers = [trees]
+	check(brush.begin(field, editor.write_map()).contains("no placement rule 2"), "a layer that is gone")
+	field.placement_rules.layers = [trees, level]
+	tree.root.remove_child(field)
+	allow_error("the field must be in the scene tree to read its ground")
+	await brush.follow(field, 1)
+	check(brush.begin(field, editor.write_map()).contains("could not be read"), "no ground read")
+	tree.root.add_child(field)
+
+
 ## A ramp as a height image: red rising along x from 0 to 1 over 20 px, then level.
 func _ramp_image() -> Image:
 	var image: Image = Image.create(32, 32, false, Image.FORMAT_RF)
