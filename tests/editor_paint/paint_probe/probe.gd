@@ -264,19 +264,63 @@ func _generate_paint_move_generate(
 				wrong += 1
 	_check(wrong == 0, "the moved road is clear and the old one planted (%d wrong)" % wrong)
 	_check(refilled == 0, "the patch erased by hand stays empty (%d refilled)" % refilled)
+	# A patch over the new road's verge erased, then painted back with the brush following rule 1
+	# (chosen in the toolbar): the verge fills again, the road stays clear.
+	var verge: Array[Vector3] = [Vector3(15.0, 0.0, 14.5)]
+	painter.set_mode(1)
+	_drag(painter, camera, verge, true)
+	await _frames(2)
+	var cleared: PackedByteArray = FileAccess.get_file_as_bytes(MAP_PATH)
+	_check(_cells(cleared).size() < _cells(second).size(), "the verge erased")
+	var rules_box: OptionButton = null
+	for node: Node in painter.toolbar.find_children("*", "OptionButton", true, false):
+		if (
+			(node as OptionButton).item_count > 1
+			and (node as OptionButton).get_item_text(1).begins_with("where rule 1")
+		):
+			rules_box = node as OptionButton
+	if _check(rules_box != null and rules_box.visible, "the toolbar offers the field's rule to follow"):
+		rules_box.select(1)
+		rules_box.item_selected.emit(1)
+		while painter.rule_brush.is_reading():
+			await _frames(1)
+		_drag(painter, camera, verge, false)
+		await _frames(2)
+		rules_box.select(0)
+		rules_box.item_selected.emit(0)
+	var repainted: PackedByteArray = FileAccess.get_file_as_bytes(MAP_PATH)
+	_check(
+		_cells(repainted) == _cells(second),
+		(
+			"the brush following the rule refilled the verge and left the road clear (%d cells, %d generated)"
+			% [_cells(repainted).size(), _cells(second).size()]
+		)
+	)
+	painter.set_mode(0)
 	# With PROBE_GENERATE_SHOT set (a run under Xvfb): the editor showing the field generated again.
 	var shot: String = OS.get_environment("PROBE_GENERATE_SHOT")
 	if not shot.is_empty():
 		await _miniature_picture(field, shot)
 	# Undo each step.
-	for step: Array in [[erased, "the second generation"], [first, "the erase"], [before, "the first generation"]]:
+	for step: Array in [
+		[cleared, "the rule's stroke"],
+		[second, "the verge's erase"],
+		[erased, "the second generation"],
+		[first, "the erase"],
+		[before, "the first generation"],
+	]:
 		history.undo()
 		await _frames(2)
 		_check(FileAccess.get_file_as_bytes(MAP_PATH) == step[0], "undo of %s restores the file" % step[1])
 	_check(not FileAccess.file_exists(MAP_PATH + ".generated"), "undo of the first generation removes its cells")
 	field.placement_rules = null
 	road.queue_free()
-	print("probe: Generate from rules, a patch erased, the road moved, Generate again, three undos: checked")
+	print(
+		(
+			"probe: Generate from rules, a patch erased, the road moved, Generate again, a verge repainted"
+			+ " following the rule, five undos: checked"
+		)
+	)
 
 
 ## Presses "Generate from rules" in the field's inspector and waits for the map file to change from
