@@ -3,7 +3,8 @@ extends EditorInspectorPlugin
 ## The map buttons at the top of a [SunflowerField]'s inspector: "New map…" (columns × rows, filled
 ## or empty, saved as a new .field beside the scene) and "Resize map…" (keeps the cells both sizes
 ## share), each one undo/redo action through the painter; and, for a field with placement rules,
-## "Generate from rules" (placement_generator.gd; pressed again while it runs, it cancels).
+## "Generate from rules" (placement_generator.gd; pressed again while it runs, it cancels) with a
+## progress bar under it while it runs.
 
 const GENERATE: String = "Generate from rules"
 const GENERATING: String = "Generating… (press to cancel)"
@@ -38,22 +39,34 @@ func _parse_begin(object: Object) -> void:
 			"Writes what the placement rules place into the map file (cells painted by hand since the last "
 			+ "generation are kept)"
 		)
-		generate.pressed.connect(_on_generate.bind(field, generate))
+		var bar: ProgressBar = ProgressBar.new()
+		bar.name = "GenerateProgress"
+		bar.max_value = 1.0
+		bar.visible = _generator.is_running(field)
+		bar.indeterminate = true
+		generate.pressed.connect(_on_generate.bind(field, generate, bar))
 		add_custom_control(generate)
+		add_custom_control(bar)
 
 
-func _on_generate(field: SunflowerField, button: Button) -> void:
+func _on_generate(field: SunflowerField, button: Button, bar: ProgressBar) -> void:
 	if _generator.is_running(field):
 		_generator.cancel(field)
 		return
 	button.text = GENERATING
-	# (The inspector may build its controls anew meanwhile: the text goes to the button pressed.)
-	var show: Callable = func(step: String) -> void:
+	bar.visible = true
+	# (The inspector may build its controls anew meanwhile: progress goes to the controls pressed.)
+	var show: Callable = func(step: String, share: float) -> void:
 		if is_instance_valid(button):
 			button.text = "Generating: %s… (press to cancel)" % step
+		if is_instance_valid(bar):
+			bar.indeterminate = share < 0.0
+			bar.value = maxf(share, 0.0)
 	await _generator.generate(field, show)
 	if is_instance_valid(button):
 		button.text = GENERATE
+	if is_instance_valid(bar):
+		bar.visible = false
 
 
 ## A dialog asking for columns and rows (and, for a new map, whether it starts planted).

@@ -38,14 +38,15 @@ func is_running(field: SunflowerField) -> bool:
 func cancel(field: SunflowerField) -> void:
 	if _running.get(field) is RefCounted:
 		_running[field].cancel()
-	elif _running.has(field):
-		_running[field] = CANCELLED
+	if _running.has(field):
+		_running[field] = CANCELLED  # (also when the worker had not begun: its cancel() came too early)
 
 
 ## Generates [param field]'s map from its rules (awaitable: the ground is read a few milliseconds a
 ## frame, then the rules run on a worker thread, while the editor draws). [param progress], when
-## valid, is called with what is being done ("reading the ground 40 %"). Returns OK, ERR_SKIP when
-## cancelled, or an error after saying what is wrong.
+## valid, is called with what is being done ("reading the ground") and the share of it done (0–1;
+## -1 while the rules run, which is not measured: a million cells take a tenth of a second).
+## Returns OK, ERR_SKIP when cancelled, or an error after saying what is wrong.
 func generate(field: SunflowerField, progress: Callable = Callable()) -> Error:
 	var problem: String = _problem(field)
 	if not problem.is_empty():
@@ -59,14 +60,14 @@ func generate(field: SunflowerField, progress: Callable = Callable()) -> Error:
 		PREPARE_BUDGET_USEC,
 		func(share: float) -> bool:
 			if progress.is_valid():
-				progress.call("reading the ground %d %%" % roundi(share * 100.0))
+				progress.call("reading the ground", share)
 			return _running.get(field) == PREPARING
 	)
 	var stopped: Error = _stopped_preparing(field, placement)
 	if stopped != OK:
 		return stopped
 	if progress.is_valid():
-		progress.call("placing")
+		progress.call("placing", -1.0)
 	_running[field] = placement
 	var out: Array[PackedByteArray] = []
 	var task: int = WorkerThreadPool.add_task(
@@ -75,11 +76,12 @@ func generate(field: SunflowerField, progress: Callable = Callable()) -> Error:
 	while not WorkerThreadPool.is_task_completed(task):
 		await Engine.get_main_loop().process_frame
 	WorkerThreadPool.wait_for_task_completion(task)
+	var cancelled: bool = _running.get(field) is StringName and _running.get(field) == CANCELLED
 	_running.erase(field)
 	var cells: PackedByteArray = out[0] if not out.is_empty() else PackedByteArray()
 	if not is_instance_valid(field):
 		return _fail("SunflowerField: the field left the scene while its rules ran; nothing written")
-	if cells.is_empty():
+	if cells.is_empty() or cancelled:
 		return _cancelled(field)
 	if field.map == null or field.map.source_path != path or field.map.text != original:
 		return _fail("SunflowerField: the map %s changed while its rules ran; nothing written" % path)

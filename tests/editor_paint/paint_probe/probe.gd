@@ -227,6 +227,19 @@ func _generate_paint_move_generate(
 	EditorInterface.edit_node(field)
 	await _frames(3)
 	var before: PackedByteArray = FileAccess.get_file_as_bytes(MAP_PATH)
+	# Generate pressed, and pressed again at once: cancelled, the map as it was.
+	var controls: Array = _generate_controls()
+	if _check(controls.size() == 2, "a Generate from rules button and its progress bar above the field"):
+		controls[0].pressed.emit()
+		controls[0].pressed.emit()
+		for i: int in 100:
+			await _frames(1)
+			if not is_instance_valid(controls[0]) or controls[0].text == "Generate from rules":
+				break
+		_check(
+			FileAccess.get_file_as_bytes(MAP_PATH) == before and not FileAccess.file_exists(MAP_PATH + ".generated"),
+			"a generation cancelled at once leaves the map as it was"
+		)
 	var first: PackedByteArray = await _press_generate(field, before)
 	var road_at: Callable = func(cell: Vector2i, z: float) -> bool: return absf((cell.y + 0.5) * CELL - z) <= 2.0
 	var cells: Dictionary = _cells(first)
@@ -323,16 +336,23 @@ func _generate_paint_move_generate(
 	)
 
 
+## The inspector's "Generate from rules" button and its progress bar, or [] when not there.
+func _generate_controls() -> Array:
+	for node: Node in EditorInterface.get_inspector().find_children("*", "Button", true, false):
+		if (node as Button).text == "Generate from rules":
+			var bars: Array[Node] = node.get_parent().find_children("GenerateProgress", "ProgressBar", true, false)
+			return [node, bars[0]] if bars.size() == 1 else []
+	return []
+
+
 ## Presses "Generate from rules" in the field's inspector and waits for the map file to change from
 ## [param before]; returns the new bytes (empty when nothing was written).
 func _press_generate(field: SunflowerField, before: PackedByteArray) -> PackedByteArray:
-	var button: Button = null
-	for node: Node in EditorInterface.get_inspector().find_children("*", "Button", true, false):
-		if (node as Button).text == "Generate from rules":
-			button = node as Button
-	if not _check(button != null, "a Generate from rules button above the field with rules"):
+	var controls: Array = _generate_controls()
+	if not _check(controls.size() == 2, "a Generate from rules button and its progress bar above the field"):
 		return PackedByteArray()
-	button.pressed.emit()
+	controls[0].pressed.emit()
+	_check(controls[1].visible, "the progress bar shows while the rules run")
 	for i: int in 300:
 		await _frames(1)
 		if FileAccess.get_file_as_bytes(MAP_PATH) != before:
