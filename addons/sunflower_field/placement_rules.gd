@@ -360,11 +360,10 @@ func _footprints(layer: SunflowerPlacementLayer, field: SunflowerField) -> Packe
 			var shape: CollisionShape3D = child as CollisionShape3D
 			if shape == null or shape.disabled or shape.shape == null:
 				continue
-			var box: AABB = shape.shape.get_debug_mesh().get_aabb()
 			var transform: Transform3D = to_field * shape.global_transform
 			var points: PackedVector2Array = PackedVector2Array()
-			for corner: int in 8:
-				var local: Vector3 = transform * box.get_endpoint(corner)
+			for vertex: Vector3 in _outline_points(shape.shape):
+				var local: Vector3 = transform * vertex
 				points.append(Vector2(local.x, local.z))
 			var outline: PackedVector2Array = Geometry2D.convex_hull(points)
 			outline.remove_at(outline.size() - 1)  # the hull repeats its first point last
@@ -375,3 +374,20 @@ func _footprints(layer: SunflowerPlacementLayer, field: SunflowerField) -> Packe
 				footprints.append(point.x)
 				footprints.append(point.y)
 	return footprints
+
+
+## Points whose hull from above is [param shape]'s footprint: the corners of a box, the edges the
+## editor draws of any other shape (a sphere's, cylinder's or capsule's circles, a convex polygon's
+## corners). A concave shape's footprint is the hull of its outline.
+static func _outline_points(shape: Shape3D) -> PackedVector3Array:
+	if shape is BoxShape3D:
+		var box: AABB = AABB(-0.5 * (shape as BoxShape3D).size, (shape as BoxShape3D).size)
+		var corners: PackedVector3Array = PackedVector3Array()
+		for corner: int in 8:
+			corners.append(box.get_endpoint(corner))
+		return corners
+	var mesh: ArrayMesh = shape.get_debug_mesh()
+	var points: PackedVector3Array = PackedVector3Array()
+	for surface: int in mesh.get_surface_count() if mesh else 0:
+		points.append_array(mesh.surface_get_arrays(surface)[Mesh.ARRAY_VERTEX])
+	return points

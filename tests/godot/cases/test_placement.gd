@@ -59,6 +59,16 @@ func test_a_road_and_a_building_stay_clear_and_grass_keeps_off_the_trees() -> vo
 	building.rotation.y = deg_to_rad(30.0)
 	tree.root.add_child(building)
 	nodes.append(building)
+	# A round rock, 2.5 m across its footprint: the corners of its square are not excluded.
+	var rock: StaticBody3D = StaticBody3D.new()
+	rock.collision_layer = 2
+	var round_shape: CollisionShape3D = CollisionShape3D.new()
+	round_shape.shape = SphereShape3D.new()
+	(round_shape.shape as SphereShape3D).radius = 2.5
+	rock.add_child(round_shape)
+	rock.position = Vector3(10.0, 0.0, 22.0)
+	tree.root.add_child(rock)
+	nodes.append(rock)
 	var trees: SunflowerPlacementLayer = _layer("g", 0.05)
 	var grass: SunflowerPlacementLayer = _layer("*", 0.9)
 	grass.mode = SunflowerPlacementLayer.Mode.FILL
@@ -112,6 +122,28 @@ func test_a_road_and_a_building_stay_clear_and_grass_keeps_off_the_trees() -> vo
 		for column: int in 30:
 			same = same and part[row * 30 + column] == _cell(field, cells, 10 + column, 7 + row)
 	check(same, "a region generated alone equals the same region of the whole")
+	# Every cell but the rock's and the building's, for the rock's outline: none in its circle, all in
+	# the corners of its square.
+	var everywhere: SunflowerPlacementLayer = _layer("*")
+	everywhere.exclusion_use = true
+	everywhere.exclusion_layers = 2
+	rules.layers = [everywhere]
+	cells = rules.generate_cells(field)
+	var in_rock: int = 0
+	var corners: Array[int] = [0, 0]  # planted, all
+	for row: int in 60:
+		for column: int in 80:
+			var from_rock: Vector2 = Vector2((column + 0.5) * 0.5 - 10.0, (row + 0.5) * 0.5 - 22.0)
+			var plant: int = _cell(field, cells, column, row)
+			in_rock += 1 if from_rock.length() < 2.5 and plant != 0 else 0
+			if from_rock.length() > 2.55 and absf(from_rock.x) < 2.5 and absf(from_rock.y) < 2.5:
+				corners[0] += 1 if plant != 0 else 0
+				corners[1] += 1
+	check_eq(in_rock, 0, "no plant inside the round rock's footprint")
+	check(
+		corners[1] > 10 and corners[0] == corners[1],
+		"every cell in the corners of the rock's square planted (%d of %d): its outline, not its box" % corners
+	)
 
 
 func test_the_generated_map_keeps_the_maps_comments_and_objects_and_the_field_draws_it() -> void:
