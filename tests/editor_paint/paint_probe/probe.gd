@@ -299,6 +299,11 @@ func _generate_paint_move_generate(
 			await _frames(1)
 		_drag(painter, camera, verge, false)
 		await _frames(2)
+		# With PROBE_GENERATE_SHOT set (a run under Xvfb): the editor showing the field generated
+		# again and its verge repainted, the rule still chosen in the toolbar.
+		var shot: String = OS.get_environment("PROBE_GENERATE_SHOT")
+		if not shot.is_empty():
+			await _miniature_picture(field, shot)
 		rules_box.select(0)
 		rules_box.item_selected.emit(0)
 	var repainted: PackedByteArray = FileAccess.get_file_as_bytes(MAP_PATH)
@@ -310,10 +315,6 @@ func _generate_paint_move_generate(
 		)
 	)
 	painter.set_mode(0)
-	# With PROBE_GENERATE_SHOT set (a run under Xvfb): the editor showing the field generated again.
-	var shot: String = OS.get_environment("PROBE_GENERATE_SHOT")
-	if not shot.is_empty():
-		await _miniature_picture(field, shot)
 	# Undo each step.
 	for step: Array in [
 		[cleared, "the rule's stroke"],
