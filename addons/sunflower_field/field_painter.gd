@@ -6,16 +6,16 @@ extends RefCounted
 ## rules to follow ([code]rule_brush.gd[/code]: paint only where its filters let the plant grow). A
 ## circle follows the mouse on the
 ## field's ground; a stroke changes the map in the native core and shows it as it goes; on release
-## the [code].field[/code] file is written back in the canonical form (see fields/FORMAT.md),
-## reimported, and the stroke is one undo/redo action. Ctrl-drag erases.
+## the [code].field[/code] file is written back in the canonical form (see fields/FORMAT.md) by
+## [code]map_files.gd[/code], and the stroke is one undo/redo action. Ctrl-drag erases.
 
 ## What a drag does.
 enum Mode { OFF, PAINT, ERASE }
 
 const Native: GDScript = preload("native.gd")
 const NativeField: GDScript = preload("native_field.gd")
-const FieldLegend: GDScript = preload("field_legend.gd")
 const RuleBrush: GDScript = preload("rule_brush.gd")
+const MapFiles: GDScript = preload("map_files.gd")
 ## The stroke's preview is rebuilt at most this often, milliseconds.
 const PREVIEW_INTERVAL_MS: int = 60
 const CIRCLE_SEGMENTS: int = 48
@@ -30,6 +30,8 @@ var symbol: String = "*"
 var radius: float = 2.0
 ## The share of cells in reach a painting stroke fills, 0 to 1.
 var density: float = 1.0
+## New map, Resize map and the map file written back (see [code]map_files.gd[/code]).
+var map_files: MapFiles
 ## The layer of the field's placement rules a stroke follows (see [code]rule_brush.gd[/code]).
 var rule_brush: RuleBrush = RuleBrush.new()
 ## The toolbar (added to the 3D editor's menu by the plugin).
@@ -52,11 +54,11 @@ var _symbols: OptionButton
 var _radius_box: SpinBox
 var _density_box: SpinBox
 var _rules_box: OptionButton
-var _reimporting: bool = false  # a reimport is running, the editor's or ours (see _give_reimported)
 
 
 func _init(undo_redo: EditorUndoRedoManager) -> void:
 	_undo_redo = undo_redo
+	map_files = MapFiles.new(undo_redo)
 	active = self
 	toolbar = HBoxContainer.new()
 	toolbar.name = "SunflowerFieldPainter"
@@ -87,9 +89,6 @@ func _init(undo_redo: EditorUndoRedoManager) -> void:
 	toolbar.visible = false
 	if Engine.is_editor_hint():  # tools and tests also paint outside the editor
 		EditorInterface.get_inspector().property_edited.connect(_on_property_edited)
-		var filesystem: EditorFileSystem = EditorInterface.get_resource_filesystem()
-		filesystem.resources_reimporting.connect(func(_paths: PackedStringArray) -> void: _reimporting = true)
-		filesystem.resources_reimported.connect(func(_paths: PackedStringArray) -> void: _reimporting = false)
 
 
 ## Lets go of the editor (the plugin leaves): frees the toolbar; no painter is active any more.
@@ -304,41 +303,14 @@ func _begin_stroke(erasing: bool) -> bool:
 	return true
 
 
-## A map-only native simulation holding [param field]'s map, which must be a writable .field file
-## in the project; remembers the map and its bytes as they were. Null (with an error) otherwise.
+## A map-only native simulation holding [param field]'s map (see [code]map_files.gd[/code]);
+## remembers the map and its bytes as they were. Null (with [member last_error]) otherwise.
 func _open_map(field: SunflowerField) -> NativeField:
-	last_error = ""
-	var field_map: SunflowerFieldMap = field.map
-	if field_map == null:
-		_fail("SunflowerField painter: the field has no map to paint; give it one (a .field file)")
-		return null
-	var path: String = field_map.source_path
-	if not path.begins_with("res://") or not FileAccess.file_exists(path):
-		_fail("SunflowerField painter: %s is not a .field file in the project; nothing to write back" % path)
-		return null
-	var writable: FileAccess = FileAccess.open(path, FileAccess.READ_WRITE)
-	if writable == null:
-		_fail(
-			(
-				"SunflowerField painter: %s cannot be written (%s); the map stays as it is"
-				% [path, error_string(FileAccess.get_open_error())]
-			)
-		)
-		return null
-	writable.close()
-	var editor: NativeField = NativeField.create()
-	if editor == null:
-		return null
-	editor.set_ground_heights(PackedFloat32Array(), PackedFloat32Array(), 0.0)  # a map only: no plants laid out
-	var legend: Dictionary = field.legend
-	var message: String = editor.load_map(
-		field_map.text, path, FieldLegend.object_symbols(legend), FieldLegend.plant_symbols(legend), 0
-	)
-	if not message.is_empty():
-		_fail("SunflowerField painter: the map cannot be painted: " + message)
-		return null
-	_original = field_map.text
-	_original_map = field_map
+	var editor: NativeField = map_files.open(field)
+	last_error = map_files.last_error
+	if editor:
+		_original = field.map.text
+		_original_map = field.map
 	return editor
 
 
@@ -389,130 +361,9 @@ func _end_stroke(commit: bool) -> void:
 		field.map = _original_map
 		return
 	_undo_redo.create_action("Paint field map", UndoRedo.MERGE_DISABLE, field)
-	_undo_redo.add_do_method(self, &"write_map", field, path, painted)
-	_undo_redo.add_undo_method(self, &"write_map", field, path, _original)
+	_undo_redo.add_do_method(map_files, &"write_map", field, path, painted)
+	_undo_redo.add_undo_method(map_files, &"write_map", field, path, _original)
 	_undo_redo.commit_action()
-
-
-## A new map for [param field]: [param columns] × [param rows] cells, every one a sunflower when
-## [param filled], saved as a new [code].field[/code] beside the edited scene and given to the field
-## as one undo/redo action. Returns the file's path, or "" (with an error).
-func new_map(field: SunflowerField, columns: int, rows: int, filled: bool) -> String:
-	var editor: NativeField = NativeField.create()
-	if editor == null:
-		return ""
-	var lines: PackedStringArray = [
-		"# A field map made in the editor (see fields/FORMAT.md).", "%d %d" % [columns, rows]
-	]
-	for row: int in rows:
-		lines.append("*".repeat(columns) if filled else "")
-	var message: String = editor.load_map("\n".join(lines).to_utf8_buffer(), "new map", "", "", 0)
-	if not message.is_empty():
-		_fail("SunflowerField: cannot make a %d x %d map: %s" % [columns, rows, message])
-		return ""
-	var scene: Node = field.get_tree().edited_scene_root if field.is_inside_tree() else null
-	var folder: String = (
-		scene.scene_file_path.get_base_dir() if scene and not scene.scene_file_path.is_empty() else "res://"
-	)
-	var path: String = folder.path_join(str(field.name).to_snake_case() + ".field")
-	var serial: int = 2
-	while FileAccess.file_exists(path):
-		path = folder.path_join("%s_%d.field" % [str(field.name).to_snake_case(), serial])
-		serial += 1
-	var file: FileAccess = FileAccess.open(path, FileAccess.WRITE)
-	if file == null:
-		_fail("SunflowerField: cannot write %s (%s)" % [path, error_string(FileAccess.get_open_error())])
-		return ""
-	var bytes: PackedByteArray = editor.write_map()
-	file.store_buffer(bytes)
-	file.close()
-	var made: SunflowerFieldMap = _unimported(path, bytes)
-	_undo_redo.create_action("New field map", UndoRedo.MERGE_DISABLE, field)
-	_undo_redo.add_do_property(field, &"map", made)
-	_undo_redo.add_undo_property(field, &"map", field.map)
-	_undo_redo.commit_action()
-	return path
-
-
-## Gives [param field]'s map [param columns] × [param rows] cells, keeping the cells both sizes share,
-## written back to its file as one undo/redo action. False (with an error) when it cannot.
-func resize_map(field: SunflowerField, columns: int, rows: int) -> bool:
-	var editor: NativeField = _open_map(field)
-	if editor == null:
-		return false
-	if not editor.resize_map(columns, rows):
-		return _fail("SunflowerField: cannot resize the map to %d x %d" % [columns, rows])
-	var resized: PackedByteArray = editor.write_map()
-	if resized != _original:
-		_undo_redo.create_action("Resize field map", UndoRedo.MERGE_DISABLE, field)
-		_undo_redo.add_do_method(self, &"write_map", field, _original_map.source_path, resized)
-		_undo_redo.add_undo_method(self, &"write_map", field, _original_map.source_path, _original)
-		_undo_redo.commit_action()
-	return true
-
-
-## Writes [param bytes] to the map file [param path], gives [param field] that map at once (the next
-## stroke starts from it), and, once the frame's undo/redo step is over and no other import runs,
-## reimports the file and gives the field the imported map (a reimport inside an undo step leaves
-## the editor's undo history inconsistent). On failure (a read-only or vanished file) says so and
-## the field shows the file.
-func write_map(field: SunflowerField, path: String, bytes: PackedByteArray) -> void:
-	var file: FileAccess = FileAccess.open(path, FileAccess.WRITE)
-	if file == null:
-		_fail(
-			(
-				"SunflowerField painter: cannot write %s (%s); the map is unchanged"
-				% [path, error_string(FileAccess.get_open_error())]
-			)
-		)
-		field.map = load(path) as SunflowerFieldMap if ResourceLoader.exists(path) else field.map
-		return
-	file.store_buffer(bytes)
-	file.close()
-	var written: SunflowerFieldMap = SunflowerFieldMap.new()
-	written.source_path = path
-	written.text = bytes
-	written.check_format()
-	written.take_over_path(path)  # what load(path) gives until the reimport lands
-	field.map = written
-	_give_reimported(field, path)  # not awaited: it waits for the next frame and other imports
-
-
-## At the next frame, [param field] (when still there) takes the map file [param path] imported
-## anew. (Not by call_deferred: a reimport while deferred calls are flushed opens the editor's
-## progress dialog where it refuses to open, and it printed errors at every stroke under a display.)
-func _give_reimported(field: Object, path: String) -> void:
-	await Engine.get_main_loop().process_frame
-	# One import at a time: a reimport (the editor's, after a scan, or ours) keeps its progress task
-	# while it runs, and the frames it draws for it may resume this wait inside it.
-	var filesystem: EditorFileSystem = EditorInterface.get_resource_filesystem()
-	while _reimporting or filesystem.is_scanning():
-		await Engine.get_main_loop().process_frame
-	if is_instance_valid(field):
-		_reimporting = true
-		(field as SunflowerField).map = _reimported(path)
-		_reimporting = false
-
-
-## The map just written to the new file [param path] as [param bytes], as the resource the file's
-## import will give: the import itself runs when the editor next scans its files (a reimport now
-## redraws the whole editor for its progress dialog a few times: seconds under a software renderer).
-func _unimported(path: String, bytes: PackedByteArray) -> SunflowerFieldMap:
-	var made: SunflowerFieldMap = SunflowerFieldMap.new()
-	made.source_path = path
-	made.text = bytes
-	made.check_format()
-	made.take_over_path(path)
-	EditorInterface.get_resource_filesystem().update_file(path)
-	return made
-
-
-## The map file [param path] imported anew (just written), as the resource fields load.
-func _reimported(path: String) -> SunflowerFieldMap:
-	var filesystem: EditorFileSystem = EditorInterface.get_resource_filesystem()
-	filesystem.update_file(path)
-	filesystem.reimport_files(PackedStringArray([path]))
-	return ResourceLoader.load(path, "", ResourceLoader.CACHE_MODE_REPLACE) as SunflowerFieldMap
 
 
 func _fail(message: String) -> bool:

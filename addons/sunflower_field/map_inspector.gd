@@ -84,9 +84,9 @@ func _ask_size(field: SunflowerField, resizing: bool) -> void:
 	dialog.confirmed.connect(
 		func() -> void:
 			if resizing:
-				_painter.resize_map(field, int(columns.value), int(rows.value))
+				_painter.map_files.resize_map(field, int(columns.value), int(rows.value))
 			else:
-				_painter.new_map(field, int(columns.value), int(rows.value), filled.button_pressed)
+				_painter.map_files.new_map(field, int(columns.value), int(rows.value), filled.button_pressed)
 			dialog.queue_free()
 	)
 	dialog.canceled.connect(dialog.queue_free)

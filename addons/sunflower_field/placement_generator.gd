@@ -155,9 +155,9 @@ func _commit(field: SunflowerField, placement: RefCounted, cells: PackedByteArra
 		return _fail("SunflowerField %s: the generated map could not be written as text" % field.name)
 	_undo_redo.create_action("Generate field map from rules", UndoRedo.MERGE_DISABLE, field)
 	_undo_redo.add_do_method(self, &"_write_base", base_path, base)
-	_undo_redo.add_do_method(_painter, &"write_map", field, path, text)
+	_undo_redo.add_do_method(_painter.map_files, &"write_map", field, path, text)
 	_undo_redo.add_undo_method(self, &"_write_base", base_path, base_before)
-	_undo_redo.add_undo_method(_painter, &"write_map", field, path, original)
+	_undo_redo.add_undo_method(_painter.map_files, &"write_map", field, path, original)
 	_undo_redo.commit_action()
 	last_message = (
 		"SunflowerField %s: %s generated from its rules (%d x %d cells), %d cells painted by hand kept"

@@ -112,7 +112,7 @@ func _run() -> void:
 	# New map: an empty 30 x 20 map saved beside the scene, given to the field; undo gives the old.
 	field.map = load(MAP_PATH)
 	var start: int = Time.get_ticks_msec()
-	var made: String = painter.new_map(field, 30, 20, false)
+	var made: String = painter.map_files.new_map(field, 30, 20, false)
 	var took: int = Time.get_ticks_msec() - start
 	print("probe: New map took %d ms" % took)
 	_check(took < 2000, "New map answers within 2 s (%d ms)" % took)
@@ -141,7 +141,7 @@ func _run() -> void:
 	var kept: int = 0
 	for cell: Vector2i in _cells(before_resize):
 		kept += 1 if cell.y < 25 else 0
-	_check(painter.resize_map(field, 50, 25), "resized")
+	_check(painter.map_files.resize_map(field, 50, 25), "resized")
 	await _frames(2)
 	field.finish_build()
 	_check(FileAccess.get_file_as_string(MAP_PATH).contains("\n50 25\n"), "the header says 50 25")
