@@ -69,6 +69,9 @@ func problem(field: SunflowerField) -> String:
 		return ""
 	if field != _field or field.placement_rules == null or layer >= field.placement_rules.layers.size():
 		return "the field has no placement rule %d to follow; choose another in the toolbar" % (layer + 1)
+	var heights: PackedFloat32Array = _heights if _heights is PackedFloat32Array else PackedFloat32Array()
+	if not heights.is_empty() and field.map and heights.size() != field.map.columns * field.map.rows:
+		invalidate()  # the map was resized since: its ground is read again
 	if is_reading():
 		return (
 			"the field's ground is still being read for its rules (%d %%); paint again in a moment"

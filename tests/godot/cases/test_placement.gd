@@ -259,6 +259,14 @@ func test_a_brush_following_a_rule_paints_only_where_the_rule_lets_plants_grow()
 	check_eq(_cell(field, cells, 50, 30), 2, "the tree stays")
 	check_eq(_cell(field, cells, 52, 30), 0, "no sunflower 1 m from the tree")
 	check_eq(_cell(field, cells, 54, 30), 1, "one 2 m from it")
+	# The map resized since the ground was read: read again for the next stroke.
+	var bigger: SunflowerFieldMap = SunflowerFieldMap.new()
+	bigger.source_path = "rules.field"
+	bigger.text = "70 66\n".to_utf8_buffer()
+	field.map = bigger
+	check_eq(brush.begin(field, bigger.text), "", "a stroke on the resized map")
+	check_eq(brush.weights_at(Vector2(35.0, 33.0), 100.0)[1], Rect2i(0, 0, 70, 66), "the resized map's cells")
+	brush.end()
 	# A rule that is gone, and a ground that cannot be read, are refused with a reason.
 	field.placement_rules.layers = [trees]
 	check(brush.begin(field, editor.write_map()).contains("no placement rule 2"), "a layer that is gone")
