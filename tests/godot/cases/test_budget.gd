@@ -182,6 +182,18 @@ func test_the_controller_reaches_a_target_and_holds_it() -> void:
 		check(share > 0.5, "%s: not far below the target (%.2f)" % [target, share])
 
 
+## The viewport's GPU time at full quality (the target far above it), the middle two of four frames.
+func _gpu_ms_at_full_quality() -> float:
+	field.budget_gpu_ms = 9000.0  # measured, never reached
+	await frames(2)  # (the viewport's GPU time is measured from the frame after a budget is set)
+	var measured: Array = []
+	for frame: int in 4:
+		await frames(1)
+		measured.append(field.get_frame_stats()["gpu_ms"])
+	measured.sort()
+	return (measured[1] + measured[2]) * 0.5
+
+
 ## The GPU-time target under lavapipe (its "GPU" is the CPU, so only convergence and stability are
 ## checked): real frames at head height, the sun's shadows off (so that the near meshes are most of
 ## the frame), the target 70 % of the field's GPU time at full quality.
@@ -200,27 +212,32 @@ func test_the_field_holds_a_gpu_time_target_on_the_software_renderer() -> void:
 	stage.root.add_child(camera)
 	camera.make_current()
 	camera.look_at_from_position(Vector3(30.0, 1.7, 45.0), Vector3(30.0, 1.4, 20.0))
-	field.budget_gpu_ms = 9000.0  # measured, never reached
+	field.budget_gpu_ms = 9000.0
 	await frames(4)  # the first frames compile shaders
-	var measured: Array = []
-	for frame: int in 4:
-		await frames(1)
-		measured.append(field.get_frame_stats()["gpu_ms"])
-	measured.sort()
-	var full_ms: float = (measured[1] + measured[2]) * 0.5
-	if not check(full_ms > 0.0, "the engine measures the viewport's GPU time (%.2f ms)" % full_ms):
-		stage.root.free()
-		return
-	field.budget_gpu_ms = full_ms * 0.7
+	# The software "GPU" is the CPU: under the test command's second lane its time swings with that
+	# lane's load. When the frames after the measurement all come in under the target (the load fell
+	# meanwhile: 3 618 ms measured, then 2 359–2 527 ms for a target of 2 533 ms in one run), the
+	# controller is right to keep full quality and the field is measured again, up to three times.
+	var full_ms: float = 0.0
 	var qualities: PackedFloat32Array = []
 	var times: PackedFloat32Array = []
-	# 20 frames: under the test command's second lane the software GPU time swings, and after 12 frames
-	# the quality was still stepping down to the target once (0.830 → 0.723, at 1 818–2 039 ms for a
-	# target of 1 879 ms); alone it settles within 6.
-	for frame: int in 20:
-		await frames(1)
-		qualities.append(field.get_quality())
-		times.append(field.get_frame_stats()["gpu_ms"])
+	for attempt: int in 3:
+		full_ms = await _gpu_ms_at_full_quality()
+		if not check(full_ms > 0.0, "the engine measures the viewport's GPU time (%.2f ms)" % full_ms):
+			stage.root.free()
+			return
+		field.budget_gpu_ms = full_ms * 0.7
+		qualities.clear()
+		times.clear()
+		# 20 frames: under the second lane, after 12 frames the quality was still stepping down to the
+		# target once (0.830 → 0.723, at 1 818–2 039 ms for a target of 1 879 ms); alone it settles within 6.
+		for frame: int in 20:
+			await frames(1)
+			qualities.append(field.get_quality())
+			times.append(field.get_frame_stats()["gpu_ms"])
+		if field.get_quality() < 1.0 or Array(times).max() > field.budget_gpu_ms:
+			break
+		print("     every frame under the target (%.1f ms) at full quality: measured again" % Array(times).max())
 	var last: Array = Array(qualities.slice(-6))
 	var last_times: Array = Array(times.slice(-6))
 	var figures: Array = [full_ms, field.budget_gpu_ms, qualities.size(), field.get_quality()]
