@@ -73,6 +73,15 @@ void SunflowerSimulation::bind_methods() {
 	gdx::bind_method(CLASS, "get_chunk_count", &SunflowerSimulation::get_chunk_count);
 	gdx::bind_method(CLASS, "get_chunk_aabb", &SunflowerSimulation::get_chunk_aabb, { "chunk" });
 	gdx::bind_method(CLASS, "update", &SunflowerSimulation::update, { "delta" });
+	gdx::bind_method(CLASS, "change_cells", &SunflowerSimulation::change_cells, { "cells", "action", "now" });
+	gdx::bind_method(CLASS, "advance_changes", &SunflowerSimulation::advance_changes, { "now" });
+	gdx::bind_method(CLASS, "set_regrowth", &SunflowerSimulation::set_regrowth, { "species", "flattened_seconds", "cut_seconds" });
+	gdx::bind_method(CLASS, "get_cell_change", &SunflowerSimulation::get_cell_change, { "cell" });
+	gdx::bind_method(CLASS, "get_change_count", &SunflowerSimulation::get_change_count);
+	gdx::bind_method(CLASS, "get_cells_in_circle", &SunflowerSimulation::get_cells_in_circle, { "center", "radius" });
+	gdx::bind_method(CLASS, "save_changes", &SunflowerSimulation::save_changes, { "now" });
+	gdx::bind_method(CLASS, "load_changes", &SunflowerSimulation::load_changes, { "bytes" });
+	gdx::bind_method(CLASS, "get_loaded_clock", &SunflowerSimulation::get_loaded_clock);
 	gdx::bind_method(CLASS, "get_plant_count", &SunflowerSimulation::get_plant_count);
 	gdx::bind_method(CLASS, "get_lod_counts", &SunflowerSimulation::get_lod_counts);
 	gdx::bind_method(CLASS, "get_lod_counts_by_species", &SunflowerSimulation::get_lod_counts_by_species);

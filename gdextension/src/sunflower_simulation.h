@@ -95,6 +95,23 @@ public:
 
 	void update(double p_delta);
 
+	// Play's changes (core field_changes.h, FieldSimulation::change_cells): p_action (0 stand, 1
+	// flatten, 2 cut, 3 remove, 4 as the map has it) on map cells (row × columns + column) at the
+	// field's clock p_now; returns the cells changed. Shown at the next update, without a rebuild.
+	gdx::PackedInt32Array change_cells(const gdx::PackedInt32Array &p_cells, int64_t p_action, double p_now);
+	// Moves the changes' clock: returns the cells whose plants stood again.
+	gdx::PackedInt32Array advance_changes(double p_now);
+	void set_regrowth(int64_t p_species, double p_flattened_seconds, double p_cut_seconds);
+	// A cell after play: x its plant (0 none, 1 + plant type), y its state (0 standing, 1 flattened,
+	// 2 cut), z the clock when it took it.
+	gdx::Vector3 get_cell_change(int64_t p_cell) const;
+	int64_t get_change_count() const;
+	gdx::PackedInt32Array get_cells_in_circle(gdx::Vector2 p_center, double p_radius) const;
+	gdx::PackedByteArray save_changes(double p_now);
+	// "" (and get_loaded_clock() the save's clock) or what is wrong, nothing changed.
+	gdx::String load_changes(const gdx::PackedByteArray &p_bytes);
+	double get_loaded_clock() const { return _loaded_clock; }
+
 	int64_t get_plant_count() const;
 	gdx::PackedInt32Array get_lod_counts() const;
 	gdx::PackedInt32Array get_lod_counts_by_species() const;
@@ -126,6 +143,8 @@ private:
 	void _push_bucket(uint32_t p_bucket);
 	// Writes the tile's records (nearest the observer first) into its MultiMesh.
 	void _upload_tile(uint32_t p_tile);
+	// The tiles whose records play changed written again (once each).
+	void _upload_changed_tiles();
 
 	struct BucketTarget {
 		gdx::Rid multimesh;
@@ -155,4 +174,5 @@ private:
 	void _order_tiles();
 	std::vector<sunflower::Pusher> _pushers; // reused between frames
 	int64_t _last_update_usec = 0;
+	double _loaded_clock = 0.0;
 };

@@ -214,11 +214,8 @@ TEST_CASE("field changes: 10 000 changes in a million-plant field save in under 
 }
 
 TEST_CASE("field changes: circles and rectangles of cells") {
-	const FieldMap map = striped(20, 10);
-	FieldChanges changes;
-	changes.reset(map);
 	std::vector<uint32_t> cells;
-	changes.cells_in_circle(glm::vec2(2.0f, 2.0f), 1.0f, 0.5f, cells); // 4 cells of radius around (4, 4)
+	cells_in_circle(20, 10, 0.5f, glm::vec2(2.0f, 2.0f), 1.0f, cells); // 4 cells of radius around (4, 4)
 	for (uint32_t at : cells) {
 		const float dx = (float(at % 20) + 0.5f) * 0.5f - 2.0f;
 		const float dz = (float(at / 20) + 0.5f) * 0.5f - 2.0f;
@@ -226,12 +223,12 @@ TEST_CASE("field changes: circles and rectangles of cells") {
 	}
 	CHECK(cells.size() == 12); // the cells whose centres lie within two cells' length of a corner
 	cells.clear();
-	changes.cells_in_rect(glm::vec2(1.0f, 0.0f), glm::vec2(2.0f, 0.5f), 0.5f, cells); // columns 2–3, row 0
+	cells_in_rect(20, 10, 0.5f, glm::vec2(1.0f, 0.0f), glm::vec2(2.0f, 0.5f), cells); // columns 2–3, row 0
 	CHECK(cells == std::vector<uint32_t>{ 2, 3 });
 	cells.clear();
-	changes.cells_in_circle(glm::vec2(-50.0f, 0.0f), 3.0f, 0.5f, cells);
-	changes.cells_in_circle(glm::vec2(NAN, 0.0f), 3.0f, 0.5f, cells);
-	changes.cells_in_rect(glm::vec2(5.0f, 5.0f), glm::vec2(1.0f, 1.0f), 0.5f, cells);
+	cells_in_circle(20, 10, 0.5f, glm::vec2(-50.0f, 0.0f), 3.0f, cells);
+	cells_in_circle(20, 10, 0.5f, glm::vec2(NAN, 0.0f), 3.0f, cells);
+	cells_in_rect(20, 10, 0.5f, glm::vec2(5.0f, 5.0f), glm::vec2(1.0f, 1.0f), cells);
 	CHECK(cells.empty());
 }
 

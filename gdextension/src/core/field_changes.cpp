@@ -216,8 +216,8 @@ void FieldChanges::advance(double p_now, std::vector<uint32_t> &r_recovered) {
 	}
 }
 
-void FieldChanges::cells_in_circle(const glm::vec2 &p_center, float p_radius, float p_cell_size,
-		std::vector<uint32_t> &r_cells) const {
+void cells_in_circle(int p_columns, int p_rows, float p_cell_size, const glm::vec2 &p_center, float p_radius,
+		std::vector<uint32_t> &r_cells) {
 	if (!(p_radius >= 0.0f) || !(p_cell_size > 0.0f) || !std::isfinite(p_center.x) || !std::isfinite(p_center.y) ||
 			!std::isfinite(p_radius)) {
 		return;
@@ -225,34 +225,34 @@ void FieldChanges::cells_in_circle(const glm::vec2 &p_center, float p_radius, fl
 	const glm::vec2 centre = p_center / p_cell_size;
 	const float reach = p_radius / p_cell_size;
 	const int column0 = std::max(0, static_cast<int>(std::floor(centre.x - reach)));
-	const int column1 = std::min(_columns - 1, static_cast<int>(std::floor(centre.x + reach)));
+	const int column1 = std::min(p_columns - 1, static_cast<int>(std::floor(centre.x + reach)));
 	const int row0 = std::max(0, static_cast<int>(std::floor(centre.y - reach)));
-	const int row1 = std::min(_rows - 1, static_cast<int>(std::floor(centre.y + reach)));
+	const int row1 = std::min(p_rows - 1, static_cast<int>(std::floor(centre.y + reach)));
 	for (int row = row0; row <= row1; row++) {
 		for (int column = column0; column <= column1; column++) {
 			const float dx = static_cast<float>(column) + 0.5f - centre.x;
 			const float dz = static_cast<float>(row) + 0.5f - centre.y;
 			if (dx * dx + dz * dz <= reach * reach) {
-				r_cells.push_back(static_cast<uint32_t>(row) * static_cast<uint32_t>(_columns) + static_cast<uint32_t>(column));
+				r_cells.push_back(static_cast<uint32_t>(row) * static_cast<uint32_t>(p_columns) + static_cast<uint32_t>(column));
 			}
 		}
 	}
 }
 
-void FieldChanges::cells_in_rect(const glm::vec2 &p_min, const glm::vec2 &p_max, float p_cell_size,
-		std::vector<uint32_t> &r_cells) const {
+void cells_in_rect(int p_columns, int p_rows, float p_cell_size, const glm::vec2 &p_min, const glm::vec2 &p_max,
+		std::vector<uint32_t> &r_cells) {
 	if (!(p_cell_size > 0.0f) || !std::isfinite(p_min.x) || !std::isfinite(p_min.y) || !std::isfinite(p_max.x) ||
 			!std::isfinite(p_max.y)) {
 		return;
 	}
 	// Cell c's centre (c + 0.5)·s lies in [min, max] for c from ceil(min/s − 0.5) to floor(max/s − 0.5).
 	const int column0 = std::max(0, static_cast<int>(std::ceil(p_min.x / p_cell_size - 0.5f)));
-	const int column1 = std::min(_columns - 1, static_cast<int>(std::floor(p_max.x / p_cell_size - 0.5f)));
+	const int column1 = std::min(p_columns - 1, static_cast<int>(std::floor(p_max.x / p_cell_size - 0.5f)));
 	const int row0 = std::max(0, static_cast<int>(std::ceil(p_min.y / p_cell_size - 0.5f)));
-	const int row1 = std::min(_rows - 1, static_cast<int>(std::floor(p_max.y / p_cell_size - 0.5f)));
+	const int row1 = std::min(p_rows - 1, static_cast<int>(std::floor(p_max.y / p_cell_size - 0.5f)));
 	for (int row = row0; row <= row1; row++) {
 		for (int column = column0; column <= column1; column++) {
-			r_cells.push_back(static_cast<uint32_t>(row) * static_cast<uint32_t>(_columns) + static_cast<uint32_t>(column));
+			r_cells.push_back(static_cast<uint32_t>(row) * static_cast<uint32_t>(p_columns) + static_cast<uint32_t>(column));
 		}
 	}
 }

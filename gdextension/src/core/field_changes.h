@@ -49,6 +49,8 @@ public:
 	// The regrowth of each species; cells already flattened or cut recover on the new timing.
 	void set_regrowth(const std::array<Regrowth, FieldMap::MAX_SPECIES> &p_regrowth);
 
+	// The fingerprint of the map the changes are made to (map_fingerprint).
+	uint64_t fingerprint() const { return _fingerprint; }
 	int columns() const { return _columns; }
 	int rows() const { return _rows; }
 	// What cell p_cell (row × columns + column) holds now: its change, or the map's plant standing.
@@ -72,12 +74,6 @@ public:
 	// Moves the field's clock to p_now: every flattened or cut plant whose recovery is due stands
 	// again, its cell appended to r_recovered. Costs nothing but a comparison while none is due.
 	void advance(double p_now, std::vector<uint32_t> &r_recovered);
-
-	// The cells whose centre lies within p_radius metres of p_center (the field's x, z), in cell
-	// order; cells of p_cell_size metres.
-	void cells_in_circle(const glm::vec2 &p_center, float p_radius, float p_cell_size, std::vector<uint32_t> &r_cells) const;
-	// The cells whose centre lies in the rectangle from p_min to p_max (x, z metres), in cell order.
-	void cells_in_rect(const glm::vec2 &p_min, const glm::vec2 &p_max, float p_cell_size, std::vector<uint32_t> &r_cells) const;
 
 	// The save of the changes at the clock p_now (see save_field_changes).
 	std::vector<uint8_t> save(double p_now) const;
@@ -104,6 +100,14 @@ private:
 	std::array<Regrowth, FieldMap::MAX_SPECIES> _regrowth{};
 	std::priority_queue<Due, std::vector<Due>, std::greater<Due>> _due;
 };
+
+// The cells of a map of p_columns × p_rows cells of p_cell_size metres whose centre lies within
+// p_radius metres of p_center (the field's x, z), in cell order, appended to r_cells.
+void cells_in_circle(int p_columns, int p_rows, float p_cell_size, const glm::vec2 &p_center, float p_radius,
+		std::vector<uint32_t> &r_cells);
+// The same for the cells whose centre lies in the rectangle from p_min to p_max (x, z metres).
+void cells_in_rect(int p_columns, int p_rows, float p_cell_size, const glm::vec2 &p_min, const glm::vec2 &p_max,
+		std::vector<uint32_t> &r_cells);
 
 // A map's fingerprint: its size and every cell's plant byte, hashed (FNV-1a, 64 bits). Two maps with
 // one fingerprint have the same plants in the same cells (but for a one-in-2^64 accident).

@@ -48,6 +48,11 @@ glm::vec2 object_centre(const LayoutParams &p_params, const MapObject &p_object)
 
 } // namespace
 
+glm::vec2 plant_root_at(const FieldMap &p_map, const LayoutParams &p_params, int p_column, int p_row) {
+	float alpha = 0.0f;
+	return plant_root(p_params, cell_key(p_map, p_column, p_row), p_column, p_row, alpha);
+}
+
 void ground_points(const FieldMap &p_map, const LayoutParams &p_params, std::vector<glm::vec2> &r_points) {
 	r_points.clear();
 	r_points.reserve(size_t(p_map.plant_count) + p_map.objects.size());

@@ -130,6 +130,9 @@ struct FieldLayout {
 // cell centre. The HEIGHTS ground lists one height per point, in this order.
 void ground_points(const FieldMap &p_map, const LayoutParams &p_params, std::vector<glm::vec2> &r_points);
 
+// The root (x, z) of the plant of map cell (p_column, p_row), where build_layout places it.
+glm::vec2 plant_root_at(const FieldMap &p_map, const LayoutParams &p_params, int p_column, int p_row);
+
 // Fills r_layout from p_map on p_ground. Deterministic: the same map, params, seed and ground give the
 // same layout; a plant's randomness follows its cell's place in the map, so a hole or a painted cell
 // elsewhere changes no other plant.

@@ -106,6 +106,8 @@ void FieldPlants::_rebuild() {
 		}
 	}
 	_chunk_signatures.clear(); // the shape or variety may have changed too: computed anew
+	_plant_states.clear(); // every plant index may have changed: FieldSimulation sets them again
+	_plant_cells.clear();
 }
 
 ChunkBounds FieldPlants::get_chunk_bounds(uint32_t p_chunk) const {
@@ -191,6 +193,9 @@ void FieldPlants::write_records(uint32_t p_chunk, const uint32_t *p_plants, uint
 	const uint32_t species = _layout.chunks[p_chunk].species;
 	for (uint32_t k = 0; k < p_count; ++k) {
 		FarInstance instance = far_instance(_layout.plants[p_plants[k]], species);
+		if (get_plant_state(p_plants[k]) != PlantState::STANDING) {
+			instance.scale = 0.0f; // cut, or lying where an impostor would stand it up
+		}
 		instance.cell = _chunk_cells[p_chunk];
 		instance.levels_above = p_levels_above;
 		write_far_instance(r_out + size_t(k) * FAR_FLOATS_PER_INSTANCE, instance);
@@ -236,7 +241,44 @@ size_t FieldPlants::get_memory_bytes() const {
 	bytes += _layout.grid_chunks.capacity() * sizeof(uint32_t) + _layout.object_ground.capacity() * sizeof(float);
 	bytes += (_ground.grid.heights.capacity() + _ground.heights.capacity() + _ground.normals.capacity()) * sizeof(float);
 	bytes += _chunk_cells.capacity() * sizeof(uint32_t) + _chunk_signatures.capacity() * sizeof(uint64_t);
+	bytes += _plant_states.capacity() + _plant_cells.capacity() * sizeof(uint32_t);
 	return bytes;
+}
+
+void FieldPlants::set_plant_state(uint32_t p_plant, PlantState p_state) {
+	if (p_plant >= _layout.plants.size() || get_plant_state(p_plant) == p_state) {
+		return;
+	}
+	_plant_states.resize(_layout.plants.size(), static_cast<uint8_t>(PlantState::STANDING));
+	_plant_states[p_plant] = static_cast<uint8_t>(p_state);
+	const uint32_t chunk = _layout.plants[p_plant].chunk;
+	if (chunk < _chunk_signatures.size()) {
+		_chunk_signatures[chunk] = 0; // its records changed
+	}
+}
+
+uint32_t FieldPlants::plant_at_cell(uint32_t p_cell) const {
+	if (_plant_cells.size() != _layout.plants.size()) {
+		// The plants are the map's plant cells in map order, less those without ground: each plant is
+		// the next plant cell whose root is where the layout put it.
+		_plant_cells.clear();
+		_plant_cells.reserve(_layout.plants.size());
+		for (int row = 0; row < _map.rows && _plant_cells.size() < _layout.plants.size(); ++row) {
+			for (int column = 0; column < _map.columns && _plant_cells.size() < _layout.plants.size(); ++column) {
+				if (_map.has_plant(column, row) &&
+						_layout.plants[_plant_cells.size()].position == plant_root_at(_map, _layout_params, column, row)) {
+					_plant_cells.push_back(static_cast<uint32_t>(row) * static_cast<uint32_t>(_map.columns) +
+							static_cast<uint32_t>(column));
+				}
+			}
+		}
+		if (_plant_cells.size() != _layout.plants.size()) {
+			_plant_cells.clear();
+			return NO_PLANT; // (never: the layout is made from this map)
+		}
+	}
+	const auto found = std::lower_bound(_plant_cells.begin(), _plant_cells.end(), p_cell);
+	return found != _plant_cells.end() && *found == p_cell ? static_cast<uint32_t>(found - _plant_cells.begin()) : NO_PLANT;
 }
 
 } // namespace sunflower

@@ -4,6 +4,7 @@
 // and their signatures). The other units of the simulation (near_field.h, far_tiles.h) read the
 // plants from here; only FieldSimulation changes them, and rebuilds the others when a call here says
 // the layout was rebuilt (every plant index and chunk may then have changed).
+#include "field_changes.h"
 #include "field_layout.h"
 #include "field_map.h"
 #include "ground.h"
@@ -102,6 +103,18 @@ public:
 	uint64_t get_chunk_signature(uint32_t p_chunk) const;
 	void compute_chunk_signatures();
 
+	// What play did to a plant (field_changes.h): STANDING for every plant until one is set; a
+	// rebuilt layout forgets them (FieldSimulation sets them again). A plant that is not standing is
+	// left out of the far records (drawn with no size), and its chunk's signature is made anew.
+	void set_plant_state(uint32_t p_plant, PlantState p_state);
+	PlantState get_plant_state(uint32_t p_plant) const {
+		return p_plant < _plant_states.size() ? static_cast<PlantState>(_plant_states[p_plant]) : PlantState::STANDING;
+	}
+	// The plant of map cell p_cell (row × columns + column), or NO_PLANT: none there, or no ground
+	// under it. The cell of each plant is found once, at the first call after a rebuild.
+	static constexpr uint32_t NO_PLANT = UINT32_MAX;
+	uint32_t plant_at_cell(uint32_t p_cell) const;
+
 	// CPU memory held for the map, layout and ground, in bytes.
 	size_t get_memory_bytes() const;
 
@@ -116,6 +129,8 @@ private:
 	std::array<PlantShape, FieldMap::MAX_SPECIES> _shapes{};
 	std::vector<uint32_t> _chunk_cells;
 	std::vector<uint64_t> _chunk_signatures; // 0: not computed
+	std::vector<uint8_t> _plant_states; // PlantState a plant; empty until one is set
+	mutable std::vector<uint32_t> _plant_cells; // each plant's map cell, in plant order; made on first use
 };
 
 } // namespace sunflower

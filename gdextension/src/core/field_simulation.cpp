@@ -1,5 +1,6 @@
 #include "field_simulation.h"
 
+#include <algorithm>
 #include <utility>
 
 namespace sunflower {
@@ -67,6 +68,18 @@ void FieldSimulation::set_plant_height(float p_metres, uint32_t p_species) {
 }
 
 void FieldSimulation::_rebuilt() {
+	_changed_tiles.clear();
+	_tile_changed.clear();
+	if (_changes_ready && _changes.fingerprint() != map_fingerprint(_plants.get_map())) {
+		_changes_ready = false; // another map: its changes are gone
+		_changes = FieldChanges();
+	}
+	if (_changes_ready) {
+		std::vector<uint32_t> chunks;
+		for (const auto &change : _changes.changes()) {
+			_show_cell(change.first, chunks); // (the near field and tiles are made anew below)
+		}
+	}
 	_near.rebuild();
 	_tiles.build();
 	++_mask_version;
@@ -91,6 +104,144 @@ bool FieldSimulation::is_tile_drawn(uint32_t p_tile) const {
 
 size_t FieldSimulation::get_memory_bytes() const {
 	return _plants.get_memory_bytes() + _near.get_memory_bytes() + _tiles.get_memory_bytes();
+}
+
+void FieldSimulation::_ready_changes() {
+	if (!_changes_ready) {
+		_changes.reset(_plants.get_map());
+		_changes.set_regrowth(_regrowth);
+		_changes_ready = true;
+	}
+}
+
+const FieldChanges &FieldSimulation::changes() {
+	_ready_changes();
+	return _changes;
+}
+
+CellState FieldSimulation::get_cell_state(uint32_t p_cell) const {
+	if (_changes_ready) {
+		return _changes.get(p_cell);
+	}
+	CellState state;
+	const std::vector<uint8_t> &plants = _plants.get_map().plants;
+	state.plant = p_cell < plants.size() ? plants[p_cell] : 0;
+	return state;
+}
+
+void FieldSimulation::_show_cell(uint32_t p_cell, std::vector<uint32_t> &r_chunks) {
+	const uint32_t plant = _plants.plant_at_cell(p_cell);
+	if (plant == FieldPlants::NO_PLANT) {
+		return; // no plant of the map there (a plant put in an empty cell is not drawn yet)
+	}
+	const CellState state = _changes.get(p_cell);
+	_plants.set_plant_state(plant, state.plant == 0 ? PlantState::CUT : state.state);
+	r_chunks.push_back(_plants.get_layout().plants[plant].chunk);
+}
+
+void FieldSimulation::_restate_chunks(std::vector<uint32_t> &p_chunks) {
+	std::sort(p_chunks.begin(), p_chunks.end());
+	p_chunks.erase(std::unique(p_chunks.begin(), p_chunks.end()), p_chunks.end());
+	_tile_changed.resize(_tiles.get_tile_count(), 0);
+	std::vector<uint32_t> tiles;
+	for (uint32_t chunk : p_chunks) {
+		_near.restate(chunk);
+		tiles.clear();
+		_tiles.tiles_of_chunk(chunk, tiles);
+		for (uint32_t tile : tiles) {
+			if (!_tile_changed[tile]) {
+				_tile_changed[tile] = 1;
+				_changed_tiles.push_back(tile);
+			}
+		}
+	}
+}
+
+void FieldSimulation::change_cells(const std::vector<uint32_t> &p_cells, CellAction p_action, double p_now,
+		std::vector<uint32_t> &r_changed) {
+	_ready_changes();
+	std::vector<uint32_t> chunks;
+	for (uint32_t cell : p_cells) {
+		bool changed = false;
+		switch (p_action) {
+			case CellAction::STAND:
+				changed = _changes.set_state(cell, PlantState::STANDING, p_now);
+				break;
+			case CellAction::FLATTEN:
+				changed = _changes.set_state(cell, PlantState::FLATTENED, p_now);
+				break;
+			case CellAction::CUT:
+				changed = _changes.set_state(cell, PlantState::CUT, p_now);
+				break;
+			case CellAction::REMOVE:
+				changed = _changes.remove(cell);
+				break;
+			case CellAction::RESTORE:
+				changed = _changes.restore(cell);
+				break;
+		}
+		if (changed) {
+			r_changed.push_back(cell);
+			_show_cell(cell, chunks);
+		}
+	}
+	_restate_chunks(chunks);
+}
+
+void FieldSimulation::set_regrowth(const std::array<Regrowth, FieldMap::MAX_SPECIES> &p_regrowth) {
+	_regrowth = p_regrowth;
+	if (_changes_ready) {
+		_changes.set_regrowth(p_regrowth);
+	}
+}
+
+void FieldSimulation::advance_changes(double p_now, std::vector<uint32_t> &r_recovered) {
+	if (!_changes_ready) {
+		return;
+	}
+	const size_t before = r_recovered.size();
+	_changes.advance(p_now, r_recovered);
+	std::vector<uint32_t> chunks;
+	for (size_t i = before; i < r_recovered.size(); ++i) {
+		_show_cell(r_recovered[i], chunks);
+	}
+	_restate_chunks(chunks);
+}
+
+std::vector<uint8_t> FieldSimulation::save_changes(double p_now) {
+	_ready_changes();
+	return _changes.save(p_now);
+}
+
+std::string FieldSimulation::load_changes(const std::vector<uint8_t> &p_bytes, double &r_clock) {
+	_ready_changes();
+	std::vector<uint32_t> before;
+	for (const auto &change : _changes.changes()) {
+		before.push_back(change.first);
+	}
+	const std::string error = _changes.load(p_bytes, r_clock);
+	if (!error.empty()) {
+		return error;
+	}
+	std::vector<uint32_t> chunks;
+	for (uint32_t cell : before) {
+		if (!_changes.is_changed(cell)) {
+			_show_cell(cell, chunks); // back as the map has it
+		}
+	}
+	for (const auto &change : _changes.changes()) {
+		_show_cell(change.first, chunks);
+	}
+	_restate_chunks(chunks);
+	return "";
+}
+
+void FieldSimulation::take_changed_tiles(std::vector<uint32_t> &r_tiles) {
+	r_tiles.insert(r_tiles.end(), _changed_tiles.begin(), _changed_tiles.end());
+	for (uint32_t tile : _changed_tiles) {
+		_tile_changed[tile] = 0;
+	}
+	_changed_tiles.clear();
 }
 
 } // namespace sunflower

@@ -51,6 +51,35 @@ public:
 	// (param::PLANT_HEIGHT rules).
 	void set_plant_height(float p_metres, uint32_t p_species = 0);
 
+	// What play changes (field_changes.h), shown at the next update without a rebuild: a cut or
+	// removed plant is drawn nowhere, a flattened one lies bent near and is not drawn far; the chunks'
+	// near records are written anew and their far tiles listed for writing again (take_changed_tiles).
+	// A new map forgets the changes; a layout rebuilt for the same map keeps them.
+	enum class CellAction : uint8_t {
+		STAND, // a flattened or cut plant stands again
+		FLATTEN,
+		CUT,
+		REMOVE, // no plant there any more, and none grows back
+		RESTORE, // as the map has it
+	};
+	// Applies p_action at the field's clock p_now to each of p_cells (row × columns + column); appends
+	// the cells it changed to r_changed.
+	void change_cells(const std::vector<uint32_t> &p_cells, CellAction p_action, double p_now, std::vector<uint32_t> &r_changed);
+	// Each plant type's recovery; kept for the next map too.
+	void set_regrowth(const std::array<Regrowth, FieldMap::MAX_SPECIES> &p_regrowth);
+	const std::array<Regrowth, FieldMap::MAX_SPECIES> &get_regrowth() const { return _regrowth; }
+	// Moves the changes' clock to p_now: plants whose recovery is due stand again (appended to r_recovered).
+	void advance_changes(double p_now, std::vector<uint32_t> &r_recovered);
+	// The changes, read; what a cell holds after play (its map's plant where play changed nothing).
+	const FieldChanges &changes();
+	CellState get_cell_state(uint32_t p_cell) const;
+	size_t get_change_count() const { return _changes_ready ? _changes.changes().size() : 0; }
+	// The save of the changes (FieldChanges::save) and its load, shown at once; see FieldChanges::load.
+	std::vector<uint8_t> save_changes(double p_now);
+	std::string load_changes(const std::vector<uint8_t> &p_bytes, double &r_clock);
+	// The far tiles whose records changed by play since the last call, each once, into r_tiles.
+	void take_changed_tiles(std::vector<uint32_t> &r_tiles);
+
 	// One frame: the far tiles' counts follow the observer, then the near field moves (NearField::update).
 	void update(float p_delta);
 	// Whether a tile has a plant to draw now: false when all its chunks are active (its node is then
@@ -73,12 +102,23 @@ public:
 private:
 	// The near field and the tiles anew for the plants' new layout.
 	void _rebuilt();
+	// The changes made ready for the map (on first use: they cost nothing until then).
+	void _ready_changes();
+	// A changed cell's plant drawn as its change says; its chunk appended to r_chunks.
+	void _show_cell(uint32_t p_cell, std::vector<uint32_t> &r_chunks);
+	// The chunks' near records anew and their far tiles listed as changed.
+	void _restate_chunks(std::vector<uint32_t> &p_chunks);
 
 	FieldPlants _plants;
 	NearField _near{ _plants };
 	FarTiles _tiles{ _plants };
 	uint32_t _mask_version = 0;
 	uint32_t _records_version = 0;
+	FieldChanges _changes;
+	bool _changes_ready = false;
+	std::array<Regrowth, FieldMap::MAX_SPECIES> _regrowth{};
+	std::vector<uint8_t> _tile_changed; // per tile: listed in _changed_tiles
+	std::vector<uint32_t> _changed_tiles;
 };
 
 } // namespace sunflower

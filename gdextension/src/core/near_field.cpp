@@ -41,6 +41,12 @@ void NearField::reshape() {
 	}
 }
 
+void NearField::restate(uint32_t p_chunk) {
+	if (p_chunk < _chunk_active.size() && _chunk_active[p_chunk]) {
+		_write_records(p_chunk);
+	}
+}
+
 void NearField::_write_records(uint32_t p_chunk) {
 	std::vector<float> &records = _chunk_records[p_chunk];
 	records.resize(size_t(_plants.get_layout().chunks[p_chunk].count) * FAR_FLOATS_PER_INSTANCE);
@@ -190,6 +196,10 @@ void NearField::_move_chunks(size_t p_first, size_t p_last, float p_delta, Bucke
 		}
 		for (uint32_t k = 0; k < chunk.count; ++k) {
 			const uint32_t index = layout.chunk_plants[chunk.first + k];
+			const PlantState state = _plants.get_plant_state(index);
+			if (state == PlantState::CUT) {
+				continue;
+			}
 			const Plant &plant = layout.plants[index];
 			const uint8_t lod = _plant_lod[index];
 			const glm::vec3 middle = plant.root() + glm::vec3(0.0f, mid_height * plant.scale, 0.0f);
@@ -210,6 +220,7 @@ void NearField::_move_chunks(size_t p_first, size_t p_last, float p_delta, Bucke
 			if (!visible) {
 				continue;
 			}
+			const glm::vec2 bend = state == PlantState::FLATTENED ? _flat_bend(plant) : _plant_bend(wind, plant, moving);
 			// Mesh 3 near the sprite switch dithers into the impostor: both drawn, the impostor's
 			// share in its colour's alpha, the mesh's in the rest (complementary screen-door patterns).
 			// The plant's distance as FieldPlants::plant_distance_sq measures it: to its middle.
@@ -226,7 +237,7 @@ void NearField::_move_chunks(size_t p_first, size_t p_last, float p_delta, Bucke
 			glm::vec4 color = plant.color(variety);
 			color.w = 1.0f - share;
 			if (shape.whole) {
-				_wind.whole_plant(plant, _plant_bend(wind, plant, moving), shape, whole);
+				_wind.whole_plant(plant, bend, shape, whole);
 				// Drawn whole (by the addon's plant shader), mesh 1 and 2 near their switches dither into
 				// the next level the same way: the coarser mesh keeps the other pixels, which a negative
 				// alpha asks for (plant_surface.gdshaderinc).
@@ -245,7 +256,7 @@ void NearField::_move_chunks(size_t p_first, size_t p_last, float p_delta, Bucke
 				bucket.include(middle, reach);
 				continue;
 			}
-			_wind.part_transforms(plant, _plant_bend(wind, plant, moving), shape, parts);
+			_wind.part_transforms(plant, bend, shape, parts);
 			for (uint32_t part = 0; part < PART_COUNT; ++part) {
 				InstanceBuffer &bucket = buckets[mesh_bucket(lod, part)];
 				write_instance(bucket.push(), parts.basis[part], parts.origin[part], color);
@@ -253,6 +264,10 @@ void NearField::_move_chunks(size_t p_first, size_t p_last, float p_delta, Bucke
 			}
 		}
 	}
+}
+
+glm::vec2 NearField::_flat_bend(const Plant &p_plant) const {
+	return glm::vec2(std::sin(p_plant.yaw), std::cos(p_plant.yaw)) * _wind.get_bend_limit();
 }
 
 glm::vec2 NearField::_plant_bend(const PlantWind &p_wind, const Plant &p_plant, bool p_moving) const {
@@ -284,7 +299,9 @@ void NearField::get_plant_parts(uint32_t p_plant, PartTransforms &r_parts) const
 	const Plant &plant = layout.plants[p_plant];
 	glm::vec2 bend(0.0f);
 	const PlantWind *wind = _wind_of(p_plant);
-	if (wind != nullptr && _plant_lod[p_plant] < LOD_SPRITE) {
+	if (_plants.get_plant_state(p_plant) == PlantState::FLATTENED) {
+		bend = _flat_bend(plant);
+	} else if (wind != nullptr && _plant_lod[p_plant] < LOD_SPRITE) {
 		bend = _plant_bend(*wind, plant, _wind.get_effective_power() > 0.0f);
 	}
 	_wind.part_transforms(plant, bend, _plants.get_shape(_plants.species_of(plant)), r_parts);

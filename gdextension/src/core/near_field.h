@@ -72,6 +72,9 @@ public:
 	void request_lod_update() { _lod_due = true; }
 	// A plant type's shape changed (its impostors' size): the active chunks' impostor records anew.
 	void reshape();
+	// Plants of p_chunk changed state (FieldPlants::set_plant_state): its impostor records anew when
+	// it is active. (A cut plant is not drawn near; a flattened one lies bent by max_bend.)
+	void restate(uint32_t p_chunk);
 	// An observer that moved farther than this since the last LOD pass gets one at the next update,
 	// whatever the interval (a teleport; at 0.25 s intervals normal walking and flying stay below).
 	static constexpr float JUMP_DISTANCE = 4.0f;
@@ -121,6 +124,8 @@ private:
 	// Moves the plants of active chunks [p_first, p_last) and writes the visible ones into r_buckets.
 	void _move_chunks(size_t p_first, size_t p_last, float p_delta, BucketSet &r_buckets);
 	glm::vec2 _plant_bend(const PlantWind &p_wind, const Plant &p_plant, bool p_moving) const;
+	// A flattened plant's bend: by max_bend away from where it faces, whatever the wind.
+	glm::vec2 _flat_bend(const Plant &p_plant) const;
 	// Fills an active chunk's impostor records.
 	void _write_records(uint32_t p_chunk);
 	// The wind state of a plant of an active chunk (nullptr for any other plant).

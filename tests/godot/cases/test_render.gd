@@ -137,6 +137,40 @@ func test_thinning_keeps_the_same_plants_whatever_their_order_in_a_buffer() -> v
 	field.set_process(true)
 
 
+## Play's changes reach the far tiles at the next frames without a rebuild (SunflowerSimulation's
+## change_cells; the field's own node API is still to come): a round patch 75–125 m off cut, then given
+## back as the map has it.
+func test_plants_cut_at_run_time_leave_the_far_tiles_and_come_back() -> void:
+	var field: SunflowerField = _still_field(
+		"res://fields/large.field", Vector3(100.0, 25.0, 190.0), Vector3(100.0, 0.0, 60.0)
+	)
+	await _built_and_drawn(field)
+	var before: Image = tree.root.get_viewport().get_texture().get_image()
+	var simulation: RefCounted = field.get_simulation()
+	var cells: PackedInt32Array = simulation.get_cells_in_circle(Vector2(100.0, 90.0), 25.0)
+	var plants_before: int = field.get_plant_count()
+	var cut: PackedInt32Array = simulation.change_cells(cells, 2, 0.0)
+	check(cut.size() > 5000, "a patch of plants cut (%d of %d cells)" % [cut.size(), cells.size()])
+	await frames(2)
+	var after: Image = tree.root.get_viewport().get_texture().get_image()
+	after.save_png(artifact_path("render_play_cut.png"))
+	var changed: float = _changed_share(before, after)
+	print(
+		(
+			"     %d plants cut: plant pixels %.1f%% before, %.1f%% after; %.1f%% of the pixels changed"
+			% [cut.size(), 100.0 * _plant_pixels(before), 100.0 * _plant_pixels(after), 100.0 * changed]
+		)
+	)
+	check(_plant_pixels(after) < _plant_pixels(before) - 0.005, "the cut patch shows the ground (0.9 % of the picture)")
+	check_eq(field.get_plant_count(), plants_before, "no plant laid out again: nothing was rebuilt")
+	check_eq(simulation.get_change_count(), cut.size(), "the changes held")
+	simulation.change_cells(cut, 4, 1.0)
+	await frames(2)
+	var back: Image = tree.root.get_viewport().get_texture().get_image()
+	var left: float = _changed_share(before, back)
+	check(left < 0.002, "given back, the field is drawn as before (%.2f%% of the pixels differ)" % (100.0 * left))
+
+
 func test_empty_near_buckets_are_not_drawn() -> void:
 	# Far outside the field, looking at it: every plant is in a far tile, no near bucket holds one.
 	var field: SunflowerField = _still_field(

@@ -1,0 +1,106 @@
+// SunflowerSimulation's play: plants cut, flattened, removed and standing again at run time, their
+// regrowth and the save of what play changed (core field_changes.h through FieldSimulation).
+#include "sunflower_simulation.h"
+
+#include "binding/class_binder.h"
+#include "binding/convert.h"
+#include "binding/error_macros.h"
+
+#include <array>
+#include <cmath>
+
+using namespace sunflower;
+
+namespace {
+
+std::vector<uint32_t> cells_from(const gdx::PackedInt32Array &p_cells, size_t p_limit) {
+	std::vector<uint32_t> cells;
+	const int32_t *data = p_cells.data();
+	for (int64_t i = 0; i < p_cells.size(); ++i) {
+		if (data[i] >= 0 && static_cast<size_t>(data[i]) < p_limit) {
+			cells.push_back(static_cast<uint32_t>(data[i]));
+		}
+	}
+	return cells;
+}
+
+gdx::PackedInt32Array to_packed(const std::vector<uint32_t> &p_cells) {
+	gdx::PackedInt32Array out;
+	out.resize(int64_t(p_cells.size()));
+	int32_t *data = out.data();
+	for (size_t i = 0; i < p_cells.size(); ++i) {
+		data[i] = static_cast<int32_t>(p_cells[i]);
+	}
+	return out;
+}
+
+size_t cell_count(const FieldSimulation &p_sim) {
+	const FieldMap &map = p_sim.plants().get_map();
+	return static_cast<size_t>(map.columns) * static_cast<size_t>(map.rows);
+}
+
+} // namespace
+
+gdx::PackedInt32Array SunflowerSimulation::change_cells(const gdx::PackedInt32Array &p_cells, int64_t p_action, double p_now) {
+	SF_FAIL_COND_V_MSG(p_action < 0 || p_action > int64_t(FieldSimulation::CellAction::RESTORE), gdx::PackedInt32Array(),
+			"change_cells: the action must be 0 (stand), 1 (flatten), 2 (cut), 3 (remove) or 4 (restore); got " +
+					std::to_string(p_action));
+	SF_FAIL_COND_V_MSG(!std::isfinite(p_now), gdx::PackedInt32Array(), "change_cells: the field's clock is not a number");
+	std::vector<uint32_t> changed;
+	_sim.change_cells(cells_from(p_cells, cell_count(_sim)), static_cast<FieldSimulation::CellAction>(p_action), p_now, changed);
+	return to_packed(changed);
+}
+
+gdx::PackedInt32Array SunflowerSimulation::advance_changes(double p_now) {
+	std::vector<uint32_t> recovered;
+	if (std::isfinite(p_now)) {
+		_sim.advance_changes(p_now, recovered);
+	}
+	return to_packed(recovered);
+}
+
+void SunflowerSimulation::set_regrowth(int64_t p_species, double p_flattened_seconds, double p_cut_seconds) {
+	SF_FAIL_COND_MSG(!_is_species(p_species), "set_regrowth: no plant type " + std::to_string(p_species));
+	std::array<Regrowth, FieldMap::MAX_SPECIES> regrowth = _sim.get_regrowth();
+	regrowth[static_cast<size_t>(p_species)] = Regrowth{ std::isfinite(p_flattened_seconds) ? std::max(0.0, p_flattened_seconds) : 0.0,
+		std::isfinite(p_cut_seconds) ? std::max(0.0, p_cut_seconds) : 0.0 };
+	_sim.set_regrowth(regrowth);
+}
+
+gdx::Vector3 SunflowerSimulation::get_cell_change(int64_t p_cell) const {
+	if (p_cell < 0 || static_cast<size_t>(p_cell) >= cell_count(_sim)) {
+		return gdx::Vector3{ 0.0f, 0.0f, 0.0f };
+	}
+	const CellState state = _sim.get_cell_state(static_cast<uint32_t>(p_cell));
+	return gdx::Vector3{ float(state.plant), float(state.state), float(state.since) };
+}
+
+int64_t SunflowerSimulation::get_change_count() const {
+	return int64_t(_sim.get_change_count());
+}
+
+gdx::PackedInt32Array SunflowerSimulation::get_cells_in_circle(gdx::Vector2 p_center, double p_radius) const {
+	std::vector<uint32_t> cells;
+	const FieldMap &map = _sim.plants().get_map();
+	cells_in_circle(map.columns, map.rows, _sim.plants().get_layout_params().cell_size, gdx::to_core(p_center), float(p_radius),
+			cells);
+	return to_packed(cells);
+}
+
+gdx::PackedByteArray SunflowerSimulation::save_changes(double p_now) {
+	const std::vector<uint8_t> bytes = _sim.save_changes(std::isfinite(p_now) ? p_now : 0.0);
+	gdx::PackedByteArray out;
+	out.assign(bytes.data(), bytes.size());
+	return out;
+}
+
+gdx::String SunflowerSimulation::load_changes(const gdx::PackedByteArray &p_bytes) {
+	const uint8_t *data = p_bytes.data();
+	const std::vector<uint8_t> bytes = data ? std::vector<uint8_t>(data, data + p_bytes.size()) : std::vector<uint8_t>();
+	double clock = 0.0;
+	const std::string error = _sim.load_changes(bytes, clock);
+	if (error.empty()) {
+		_loaded_clock = clock;
+	}
+	return gdx::String(error);
+}

@@ -1,0 +1,177 @@
+// Core tests of play's changes drawn by the simulation: cut, flattened and removed plants at every
+// level of detail at the next update, without a rebuild; kept through a layout rebuilt for the same
+// map, forgotten with another map; regrowth and saves through the simulation.
+#include "field_test_support.h"
+
+using namespace sunflower_test;
+
+namespace {
+
+// How many instances of the near buckets (and, with p_tiles, of the far tiles' records) stand at
+// p_root with a size: a cut plant has none, an impostor record of no size draws nothing.
+int drawn_at(const FieldSimulation &p_sim, const glm::vec3 &p_root, bool p_tiles) {
+	int count = 0;
+	for (uint32_t level = 0; level < LOD_MESH_COUNT; ++level) {
+		const InstanceBuffer &bucket = p_sim.near().get_bucket(mesh_bucket(level, 0));
+		for (uint32_t i = 0; i < bucket.get_count(); ++i) {
+			count += glm::distance(placed(bucket, i).root, p_root) < 1e-4f ? 1 : 0;
+		}
+	}
+	const InstanceBuffer &impostors = p_sim.near().get_bucket(BUCKET_IMPOSTOR);
+	for (uint32_t i = 0; i < impostors.get_count(); ++i) {
+		const FarInstance record = read_far_instance(impostors.get_data() + size_t(i) * impostors.get_stride());
+		count += glm::distance(record.root, p_root) < 1e-4f && record.scale > 0.0f ? 1 : 0;
+	}
+	for (uint32_t t = 0; p_tiles && t < p_sim.tiles().get_tile_count(); ++t) {
+		std::vector<float> records(size_t(p_sim.tiles().get_tile(t).plants) * FAR_FLOATS_PER_INSTANCE);
+		p_sim.tiles().write_tile_instances(t, records.data());
+		for (size_t k = 0; k < p_sim.tiles().get_tile(t).plants; ++k) {
+			const FarInstance record = read_far_instance(records.data() + k * FAR_FLOATS_PER_INSTANCE);
+			count += glm::distance(record.root, p_root) < 1e-4f && record.scale > 0.0f ? 1 : 0;
+		}
+	}
+	return count;
+}
+
+uint32_t cell(int p_column, int p_row) {
+	return static_cast<uint32_t>(p_row * 200 + p_column);
+}
+
+} // namespace
+
+TEST_CASE("play: a cut plant is drawn nowhere from the next update on, without a rebuild") {
+	FieldSimulation sim;
+	load(sim, rect_map(200, 40)); // 100 × 20 m, chunks of 8 m
+	sim.near().set_observer({ 5.0f, 1.7f, 5.0f });
+	sim.near().request_lod_update();
+	sim.update(0.016f);
+	const uint32_t near_cell = cell(10, 10); // about 5 m off: a mesh
+	const uint32_t far_cell = cell(190, 35); // about 90 m off: a far tile
+	const uint32_t middle_cell = cell(55, 35); // about 26 m off: an impostor of an active chunk
+	const uint32_t middle_plant = sim.plants().plant_at_cell(middle_cell);
+	const uint32_t near_plant = sim.plants().plant_at_cell(near_cell);
+	const uint32_t far_plant = sim.plants().plant_at_cell(far_cell);
+	REQUIRE(near_plant != FieldPlants::NO_PLANT);
+	REQUIRE(far_plant != FieldPlants::NO_PLANT);
+	const glm::vec3 near_root = sim.plants().get_layout().plants[near_plant].root();
+	const glm::vec3 far_root = sim.plants().get_layout().plants[far_plant].root();
+	CHECK(glm::floor(near_root.x / 0.5f) == 10.0f); // the plant of that cell
+	CHECK(drawn_at(sim, near_root, false) == 1);
+	CHECK(drawn_at(sim, far_root, true) >= 1);
+	CHECK_FALSE(sim.near().is_chunk_active(sim.plants().get_layout().plants[far_plant].chunk));
+	const glm::vec3 middle_root = sim.plants().get_layout().plants[middle_plant].root();
+	REQUIRE(sim.near().is_chunk_active(sim.plants().get_layout().plants[middle_plant].chunk));
+	CHECK(sim.near().get_plant_lod(middle_plant) >= LOD_MESH_3);
+	CHECK(drawn_at(sim, middle_root, false) >= 1);
+	const uint32_t records_version = sim.get_records_version();
+
+	std::vector<uint32_t> changed;
+	sim.change_cells({ near_cell, far_cell, near_cell, middle_cell }, FieldSimulation::CellAction::CUT, 1.0, changed);
+	CHECK(changed == std::vector<uint32_t>{ near_cell, far_cell, middle_cell }); // a second cut of a cell is none
+	std::vector<uint32_t> tiles;
+	sim.take_changed_tiles(tiles);
+	CHECK_FALSE(tiles.empty());
+	std::vector<uint32_t> again;
+	sim.take_changed_tiles(again);
+	CHECK(again.empty()); // each tile listed once
+	sim.update(0.016f);
+	CHECK(drawn_at(sim, near_root, false) == 0);
+	CHECK(drawn_at(sim, far_root, true) == 0);
+	CHECK(drawn_at(sim, middle_root, false) == 0);
+	CHECK(sim.get_records_version() == records_version); // no rebuild, no tile written but its own
+	CHECK(sim.plants().get_plant_count() == 8000);
+	// Another plant of the same chunk is still drawn.
+	const uint32_t neighbour = sim.plants().plant_at_cell(cell(11, 10));
+	CHECK(drawn_at(sim, sim.plants().get_layout().plants[neighbour].root(), false) == 1);
+
+	// A layout rebuilt for the same map keeps the cut; another map forgets it.
+	LayoutParams params = sim.plants().get_layout_params();
+	params.chunk_size = 4.0f;
+	REQUIRE(sim.set_layout_params(params));
+	sim.near().request_lod_update();
+	sim.update(0.016f);
+	CHECK(sim.plants().get_plant_state(sim.plants().plant_at_cell(near_cell)) == PlantState::CUT);
+	CHECK(drawn_at(sim, near_root, true) == 0);
+	CHECK(sim.changes().changes().size() == 3);
+	std::vector<uint32_t> stood;
+	sim.change_cells({ near_cell }, FieldSimulation::CellAction::STAND, 2.0, stood);
+	sim.update(0.016f);
+	CHECK(drawn_at(sim, near_root, false) == 1);
+	MapError error;
+	REQUIRE(sim.load_map(rect_map(200, 41), U"", "other", MapLimits{}, error));
+	CHECK(sim.changes().changes().empty());
+}
+
+TEST_CASE("play: a flattened plant lies bent near and is not drawn far; it stands again when its time comes") {
+	FieldSimulation sim;
+	load(sim, rect_map(200, 40));
+	sim.near().set_observer({ 5.0f, 1.7f, 5.0f });
+	sim.near().request_lod_update();
+	sim.update(0.016f);
+	const uint32_t near_cell = cell(8, 10);
+	const uint32_t plant = sim.plants().plant_at_cell(near_cell);
+	PartTransforms upright;
+	sim.near().get_plant_parts(plant, upright);
+	std::array<Regrowth, FieldMap::MAX_SPECIES> regrowth{};
+	regrowth[0].flattened_seconds = 10.0;
+	sim.set_regrowth(regrowth);
+	std::vector<uint32_t> changed;
+	sim.change_cells({ near_cell }, FieldSimulation::CellAction::FLATTEN, 5.0, changed);
+	REQUIRE(changed.size() == 1);
+	sim.update(0.016f);
+	PartTransforms lying;
+	sim.near().get_plant_parts(plant, lying);
+	const glm::vec3 root = sim.plants().get_layout().plants[plant].root();
+	const auto lean = [&](const PartTransforms &p_parts) {
+		return glm::length(glm::vec2(p_parts.origin[2].x - root.x, p_parts.origin[2].z - root.z));
+	};
+	CHECK(lean(lying) > lean(upright) + 0.3f); // its head well away from above its root
+	CHECK(drawn_at(sim, root, false) == 1); // drawn near, lying
+	// An impostor of an active chunk: not drawn (an impostor would stand it up).
+	const uint32_t middle_cell = cell(55, 35);
+	const uint32_t middle = sim.plants().plant_at_cell(middle_cell);
+	REQUIRE(sim.near().is_chunk_active(sim.plants().get_layout().plants[middle].chunk));
+	REQUIRE(sim.near().get_plant_lod(middle) >= LOD_SPRITE);
+	const glm::vec3 middle_root = sim.plants().get_layout().plants[middle].root();
+	CHECK(drawn_at(sim, middle_root, false) == 1);
+	sim.change_cells({ middle_cell }, FieldSimulation::CellAction::FLATTEN, 5.0, changed);
+	sim.update(0.016f);
+	CHECK(drawn_at(sim, middle_root, false) == 0);
+	std::vector<uint32_t> recovered;
+	sim.advance_changes(14.9, recovered);
+	CHECK(recovered.empty());
+	sim.advance_changes(15.0, recovered);
+	CHECK(recovered == std::vector<uint32_t>{ near_cell, middle_cell });
+	CHECK(sim.plants().get_plant_state(plant) == PlantState::STANDING);
+	sim.update(0.016f);
+	PartTransforms standing;
+	sim.near().get_plant_parts(plant, standing);
+	CHECK(lean(standing) < lean(lying) - 0.3f);
+}
+
+TEST_CASE("play: a save loads back into the simulation, drawn at once; a bad one changes nothing") {
+	FieldSimulation sim;
+	load(sim, rect_map(200, 40));
+	sim.near().set_observer({ 5.0f, 1.7f, 5.0f });
+	sim.update(0.016f);
+	std::vector<uint32_t> changed;
+	sim.change_cells({ cell(10, 10), cell(12, 10) }, FieldSimulation::CellAction::REMOVE, 1.0, changed);
+	sim.change_cells({ cell(14, 10) }, FieldSimulation::CellAction::CUT, 2.0, changed);
+	const std::vector<uint8_t> saved = sim.save_changes(3.0);
+	sim.change_cells({ cell(10, 10), cell(12, 10), cell(14, 10) }, FieldSimulation::CellAction::RESTORE, 4.0, changed);
+	sim.change_cells({ cell(20, 20) }, FieldSimulation::CellAction::CUT, 4.0, changed);
+	sim.update(0.016f);
+	const glm::vec3 root = sim.plants().get_layout().plants[sim.plants().plant_at_cell(cell(12, 10))].root();
+	CHECK(drawn_at(sim, root, false) == 1);
+	double clock = 0.0;
+	CHECK(sim.load_changes(saved, clock) == "");
+	CHECK(clock == 3.0);
+	sim.update(0.016f);
+	CHECK(drawn_at(sim, root, false) == 0);
+	CHECK(sim.plants().get_plant_state(sim.plants().plant_at_cell(cell(20, 20))) == PlantState::STANDING);
+	CHECK(sim.changes().changes().size() == 3);
+	std::vector<uint8_t> corrupt = saved;
+	corrupt[corrupt.size() / 2] ^= 1;
+	CHECK(sim.load_changes(corrupt, clock).find("corrupt") != std::string::npos);
+	CHECK(sim.changes().changes().size() == 3);
+}
