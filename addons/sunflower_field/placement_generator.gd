@@ -10,8 +10,6 @@ const Native: GDScript = preload("native.gd")
 const FieldLegend: GDScript = preload("field_legend.gd")
 ## Added to a map's path for the last generation's cells.
 const GENERATED_SUFFIX: String = ".generated"
-## Main-thread time a frame spent reading the ground before the rules run (rays onto colliders).
-const PREPARE_BUDGET_USEC: int = 20_000
 ## What [member _running] holds for a field while its ground is read, and once that is cancelled.
 const PREPARING: StringName = &"preparing"
 const CANCELLED: StringName = &"cancelled"
@@ -57,7 +55,7 @@ func generate(field: SunflowerField, progress: Callable = Callable()) -> Error:
 	_running[field] = PREPARING
 	var placement: RefCounted = await field.placement_rules.prepare_in_steps(
 		field,
-		PREPARE_BUDGET_USEC,
+		SunflowerPlacementRules.GROUND_READ_BUDGET_USEC,
 		func(share: float) -> bool:
 			if progress.is_valid():
 				progress.call("reading the ground", share)

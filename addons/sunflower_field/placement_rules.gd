@@ -15,6 +15,9 @@ extends Resource
 const Native: GDScript = preload("native.gd")
 const FieldLegend: GDScript = preload("field_legend.gd")
 const FieldGround: GDScript = preload("field_ground.gd")
+## Main-thread time a frame the editor spends reading a field's ground for its rules (a ray a cell on
+## colliders), when Generate runs them or a brush follows one.
+const GROUND_READ_BUDGET_USEC: int = 20_000
 
 
 ## Reads the ground's height at every cell's centre (empty for flat ground): from the field's height
@@ -376,16 +379,10 @@ func _footprints(layer: SunflowerPlacementLayer, field: SunflowerField) -> Packe
 	return footprints
 
 
-## Points whose hull from above is [param shape]'s footprint: the corners of a box, the edges the
-## editor draws of any other shape (a sphere's, cylinder's or capsule's circles, a convex polygon's
-## corners). A concave shape's footprint is the hull of its outline.
+## Points whose hull from above is [param shape]'s footprint: the edges the editor draws of it (a
+## box's corners, a sphere's, cylinder's or capsule's circles, a convex polygon's corners). A concave
+## shape's footprint is the hull of its outline.
 static func _outline_points(shape: Shape3D) -> PackedVector3Array:
-	if shape is BoxShape3D:
-		var box: AABB = AABB(-0.5 * (shape as BoxShape3D).size, (shape as BoxShape3D).size)
-		var corners: PackedVector3Array = PackedVector3Array()
-		for corner: int in 8:
-			corners.append(box.get_endpoint(corner))
-		return corners
 	var mesh: ArrayMesh = shape.get_debug_mesh()
 	var points: PackedVector3Array = PackedVector3Array()
 	for surface: int in mesh.get_surface_count() if mesh else 0:

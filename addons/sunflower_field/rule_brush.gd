@@ -11,8 +11,6 @@ extends RefCounted
 ## every stroke, so an edited rule applies at the next stroke.
 
 const FieldLegend: GDScript = preload("field_legend.gd")
-## Main-thread time a frame spent reading the ground.
-const READ_BUDGET_USEC: int = 20_000
 
 ## The layer followed, counted from 0; -1: none (the brush paints anywhere).
 var layer: int = -1
@@ -42,7 +40,7 @@ func follow(field: SunflowerField, index: int) -> void:
 	_reading_now = true
 	var heights: Variant = await field.placement_rules.read_ground_in_steps(
 		field,
-		READ_BUDGET_USEC,
+		SunflowerPlacementRules.GROUND_READ_BUDGET_USEC,
 		func(share: float) -> bool:
 			_read_share = share
 			return _reading == reading and is_instance_valid(field)

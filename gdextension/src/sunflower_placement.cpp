@@ -16,6 +16,18 @@ std::vector<T> to_vector(const P &p_array) {
 	return data ? std::vector<T>(data, data + p_array.size()) : std::vector<T>();
 }
 
+// The rectangle of cells (p_column, p_row, p_columns, p_rows) GDScript asks for, when every number is
+// a map side's or less (the core checks it lies in the field).
+bool rect_from(int64_t p_column, int64_t p_row, int64_t p_columns, int64_t p_rows, sunflower::CellRect &r_rect) {
+	const int64_t limit = sunflower::MapLimits{}.max_side;
+	if (std::min({ p_column, p_row, p_columns, p_rows }) < 0 || std::max({ p_column, p_row, p_columns, p_rows }) > limit) {
+		return false;
+	}
+	r_rect = sunflower::CellRect{ static_cast<int>(p_column), static_cast<int>(p_row), static_cast<int>(p_columns),
+		static_cast<int>(p_rows) };
+	return true;
+}
+
 } // namespace
 
 void SunflowerPlacement::bind_methods() {
@@ -76,15 +88,13 @@ gdx::String SunflowerPlacement::check() const {
 gdx::PackedByteArray SunflowerPlacement::generate(int64_t p_column, int64_t p_row, int64_t p_columns, int64_t p_rows, int64_t p_threads) {
 	gdx::PackedByteArray out;
 	_cancel = false;
-	const int64_t limit = sunflower::MapLimits{}.max_side;
-	if (std::min({ p_column, p_row, p_columns, p_rows }) < 0 || std::max({ p_column, p_row, p_columns, p_rows }) > limit) {
+	sunflower::CellRect rect;
+	if (!rect_from(p_column, p_row, p_columns, p_rows, rect)) {
 		return out;
 	}
 	const uint32_t cores = std::max(1u, std::thread::hardware_concurrency());
 	sunflower::WorkerPool pool(p_threads > 0 ? static_cast<uint32_t>(std::min<int64_t>(p_threads, 64)) : std::min(cores, 8u));
 	std::vector<uint8_t> cells;
-	const sunflower::CellRect rect{ static_cast<int>(p_column), static_cast<int>(p_row), static_cast<int>(p_columns),
-		static_cast<int>(p_rows) };
 	if (sunflower::generate_placement(_rules, rect, &pool, cells, &_cancel)) {
 		out.assign(cells.data(), cells.size());
 	}
@@ -94,14 +104,11 @@ gdx::PackedByteArray SunflowerPlacement::generate(int64_t p_column, int64_t p_ro
 gdx::PackedFloat32Array SunflowerPlacement::layer_weights(int64_t p_layer, int64_t p_column, int64_t p_row, int64_t p_columns,
 		int64_t p_rows, const gdx::PackedByteArray &p_map) const {
 	gdx::PackedFloat32Array out;
-	const int64_t limit = sunflower::MapLimits{}.max_side;
-	if (p_layer < 0 || std::min({ p_column, p_row, p_columns, p_rows }) < 0 ||
-			std::max({ p_column, p_row, p_columns, p_rows }) > limit) {
+	sunflower::CellRect rect;
+	if (p_layer < 0 || !rect_from(p_column, p_row, p_columns, p_rows, rect)) {
 		return out;
 	}
 	std::vector<float> weights;
-	const sunflower::CellRect rect{ static_cast<int>(p_column), static_cast<int>(p_row), static_cast<int>(p_columns),
-		static_cast<int>(p_rows) };
 	if (sunflower::placement_layer_weights(_rules, static_cast<size_t>(p_layer), rect, to_vector<uint8_t>(p_map), weights)) {
 		out.assign(weights.data(), weights.size());
 	}

@@ -317,6 +317,12 @@ bool spaced_out(const PlacementRules &p_rules, const PreparedLayer &p_prepared, 
 	return false;
 }
 
+// Whether p_rect lies inside the field.
+bool inside(const PlacementRules &p_rules, const CellRect &p_rect) {
+	return p_rect.columns >= 0 && p_rect.rows >= 0 && p_rect.column >= 0 && p_rect.row >= 0 &&
+			p_rect.column + p_rect.columns <= p_rules.columns && p_rect.row + p_rect.rows <= p_rules.rows;
+}
+
 // Whether layer p_index takes cell (p_column, p_row), reading the owners before it (p_before, over
 // p_area) for its spacing.
 bool takes(const PlacementRules &p_rules, const PreparedLayer &p_prepared, size_t p_index, int p_column, int p_row,
@@ -575,8 +581,7 @@ std::string check_placement(const PlacementRules &p_rules) {
 
 bool generate_placement(const PlacementRules &p_rules, const CellRect &p_rect, WorkerPool *p_pool,
 		std::vector<uint8_t> &r_cells, const std::atomic<bool> *p_cancel) {
-	if (!check_placement(p_rules).empty() || p_rect.columns < 0 || p_rect.rows < 0 || p_rect.column < 0 || p_rect.row < 0 ||
-			p_rect.column + p_rect.columns > p_rules.columns || p_rect.row + p_rect.rows > p_rules.rows) {
+	if (!check_placement(p_rules).empty() || !inside(p_rules, p_rect)) {
 		return false;
 	}
 	// A cell's owner depends on the cells within the spacings' reach of it, through every layer
@@ -645,9 +650,7 @@ bool generate_placement(const PlacementRules &p_rules, const CellRect &p_rect, W
 
 bool placement_layer_weights(const PlacementRules &p_rules, size_t p_layer, const CellRect &p_rect,
 		const std::vector<uint8_t> &p_map, std::vector<float> &r_weights) {
-	if (p_layer >= p_rules.layers.size() || !check_placement(p_rules).empty() || p_rect.columns < 0 || p_rect.rows < 0 ||
-			p_rect.column < 0 || p_rect.row < 0 || p_rect.column + p_rect.columns > p_rules.columns ||
-			p_rect.row + p_rect.rows > p_rules.rows) {
+	if (p_layer >= p_rules.layers.size() || !check_placement(p_rules).empty() || !inside(p_rules, p_rect)) {
 		return false;
 	}
 	const PreparedLayer prepared = prepare(p_rules, p_layer);
