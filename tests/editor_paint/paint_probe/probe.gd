@@ -337,12 +337,17 @@ func _generate_paint_move_generate(
 	)
 
 
-## The inspector's "Generate from rules" button and its progress bar, or [] when not there.
+## The inspector's "Generate from rules" button and its progress bar (the control after it: found
+## by name, the bar of an inspector build not yet freed answered instead, as a new bar beside it is
+## renamed), or [] when not there.
 func _generate_controls() -> Array:
 	for node: Node in EditorInterface.get_inspector().find_children("*", "Button", true, false):
-		if (node as Button).text == "Generate from rules":
-			var bars: Array[Node] = node.get_parent().find_children("GenerateProgress", "ProgressBar", true, false)
-			return [node, bars[0]] if bars.size() == 1 else []
+		if (node as Button).text == "Generate from rules" and not node.is_queued_for_deletion():
+			var parent: Node = node.get_parent()
+			var next: Node = (
+				parent.get_child(node.get_index() + 1) if node.get_index() + 1 < parent.get_child_count() else null
+			)
+			return [node, next] if next is ProgressBar else []
 	return []
 
 
