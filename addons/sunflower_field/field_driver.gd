@@ -20,6 +20,7 @@ const NativeField: GDScript = preload("native_field.gd")
 const FieldBudget: GDScript = preload("field_budget.gd")
 const FieldBuild: GDScript = preload("field_build.gd")
 const FieldInteraction: GDScript = preload("field_interaction.gd")
+const FieldPlay: GDScript = preload("sunflower_field_play.gd")
 const FieldNodes: GDScript = preload("field_nodes.gd")
 const FieldObserver: GDScript = preload("field_observer.gd")
 const ImpostorSet: GDScript = preload("impostor_set.gd")
@@ -42,6 +43,7 @@ class FrameSettings:
 	var collision_reach: float = 0.0
 	var collision_layer: int = 1
 	var collision_mask: int = 1
+	var trample_share: float = 0.0
 
 
 ## Fields building in the background now, for progress displays.
@@ -56,6 +58,8 @@ var stats: Dictionary = {}
 var last_error: String = ""
 var rebuild_queued: bool = false
 var interaction: FieldInteraction
+## The running game's changes to the plants, their clock and events (SunflowerField.play).
+var play: FieldPlay
 ## What each frame follows, set by the node as its properties change.
 var frame: FrameSettings = FrameSettings.new()
 ## The far levels' look per species, shared by the field drawn and one being built.
@@ -86,6 +90,7 @@ var _field: Node3D
 func _init(field: Node3D) -> void:
 	_field = field
 	interaction = FieldInteraction.new(field)
+	play = FieldPlay.new(field)
 	_bucket_count = Native.constant(&"BUCKET_COUNT")
 	for level: int in PartMeshes.LEVELS:
 		_level_buckets.append(Native.mesh_bucket(level, 0))
@@ -177,6 +182,7 @@ func cancel_build() -> void:
 ## Draws [param nodes] (a completed build's) in place of the field drawn now, the legend's
 ## [param scenes] placed on cells of [param cell_size] metres; null draws nothing.
 func show(nodes: FieldNodes, scenes: Dictionary = {}, cell_size: float = 0.0) -> void:
+	var old: NativeField = simulation()
 	if drawn:
 		drawn.free_nodes()
 	drawn = nodes
@@ -188,6 +194,7 @@ func show(nodes: FieldNodes, scenes: Dictionary = {}, cell_size: float = 0.0) ->
 		tallest = maxf(tallest, species_plant.height * species_plant.scale_max)
 	drawn.finish(plants, scenes, cell_size, tallest * 0.5)
 	_configure_drawn()
+	play._carry(old, drawn.simulation)
 	FieldObserver.push(_field, frame.observer, frame.frustum_culling, drawn.simulation)
 	drawn.simulation.update(0.0)
 	drawn.show_filled_buckets()
@@ -214,6 +221,8 @@ func update_field(delta: float) -> void:
 	var native_simulation: NativeField = drawn.simulation
 	var observer: Node3D = FieldObserver.push(_field, frame.observer, frame.frustum_culling, native_simulation)
 	native_simulation.set_pushers(interaction.gather_pushers(frame.pusher_group, frame.pusher_radius))
+	if not Engine.is_editor_hint():
+		play._step(native_simulation, delta, interaction.pusher_nodes, frame.trample_share)
 	native_simulation.update(delta)
 	drawn.show_filled_buckets()
 	drawn.update_masks()
@@ -252,6 +261,8 @@ func configure_plants(species_plants: Array) -> bool:
 		key.append(plants[species].layout_key())
 		if drawn:
 			drawn.set_plant_meshes(species, plants[species])
+	if drawn:
+		play._send_regrowth(drawn.simulation, plants)
 	_send_near_shadows()
 	var changed: bool = key != _layout_key and not _layout_key.is_empty()
 	_layout_key = key
@@ -307,6 +318,7 @@ func _configure_drawn() -> void:
 	if not _push.is_empty():
 		drawn.simulation.set_push_params(_push[0], _push[1])
 	drawn.simulation.set_worker_threads(_threads)
+	play._send_regrowth(drawn.simulation, plants)
 
 
 ## Sends the LOD settings to the field drawn, its distances and fade at the budget's quality.

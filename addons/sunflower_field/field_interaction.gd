@@ -9,6 +9,8 @@ const NativeField: GDScript = preload("native_field.gd")
 ## Meta key a pusher may carry to set its own radius (metres); else the field's pusher_radius.
 const RADIUS_META: StringName = &"push_radius"
 
+## The pushers gathered last, in the order of their floats in [method gather_pushers].
+var pusher_nodes: Array[Node3D] = []
 var _field: Node3D
 var _bodies: Dictionary = {}  # plant index -> body RID
 var _plants_of_bodies: Dictionary = {}  # body RID -> plant index
@@ -22,6 +24,7 @@ func _init(field: Node3D) -> void:
 ## The pushers' positions in the field's space and their radii: 4 floats each (x, y, z, radius).
 func gather_pushers(group: StringName, default_radius: float) -> PackedFloat32Array:
 	_pushers.clear()
+	pusher_nodes.clear()
 	if group.is_empty() or not _field.is_inside_tree():
 		return _pushers
 	var to_local: Transform3D = _field.global_transform.affine_inverse()
@@ -32,12 +35,14 @@ func gather_pushers(group: StringName, default_radius: float) -> PackedFloat32Ar
 		var radius: float = float(body.get_meta(RADIUS_META, default_radius))
 		var local: Vector3 = to_local * body.global_position
 		_pushers.append_array([local.x, local.y, local.z, radius])
+		pusher_nodes.append(body)
 	return _pushers
 
 
 ## Keeps a capsule (the plant's stalk, as the core sizes it for its plant type and size) standing on
-## every plant within [param reach] of the gathered pushers and of [param observer] (if any), in the
-## field's physics space, with the given collision layer and mask. [param reach] 0 frees them all.
+## every standing plant (not one flattened, cut or removed at run time) within [param reach] of the
+## gathered pushers and of [param observer] (if any), in the field's physics space, with the given
+## collision layer and mask. [param reach] 0 frees them all.
 func update_colliders(simulation: NativeField, observer: Node3D, reach: float, layer: int, mask: int) -> void:
 	if reach <= 0.0 or not _field.is_inside_tree():
 		free_colliders()
@@ -49,7 +54,7 @@ func update_colliders(simulation: NativeField, observer: Node3D, reach: float, l
 	for i: int in range(0, _pushers.size(), 4):
 		centres.append(Vector3(_pushers[i], _pushers[i + 1], _pushers[i + 2]))
 	for centre: Vector3 in centres:
-		for plant: int in simulation.get_plants_near(centre, reach):
+		for plant: int in simulation.get_plants_near(centre, reach, true):
 			wanted[plant] = true
 	for plant: int in _bodies.keys():
 		if not wanted.has(plant):

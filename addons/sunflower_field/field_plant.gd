@@ -219,6 +219,24 @@ static var _default: FieldPlant
 			tint_variation = accepted
 			emit_changed()
 
+@export_group("Play")
+## Seconds on the field's clock until a plant of this type that was flattened (trampled, see
+## [member SunflowerField.trample_share], or [method SunflowerFieldPlay.change_plants]) stands again; 0:
+## it lies for good.
+@export_range(0.0, 3600.0, 0.1, "or_greater", "suffix:s") var recover_after: float = 0.0:
+	set(value):
+		var accepted: float = Native.accept("FieldPlant.recover_after", value, recover_after)
+		if accepted != recover_after:
+			recover_after = accepted
+			emit_changed()
+## Seconds on the field's clock until a cut plant of this type has grown again; 0: it stays cut.
+@export_range(0.0, 3600.0, 0.1, "or_greater", "suffix:s") var regrow_after: float = 0.0:
+	set(value):
+		var accepted: float = Native.accept("FieldPlant.regrow_after", value, regrow_after)
+		if accepted != regrow_after:
+			regrow_after = accepted
+			emit_changed()
+
 @export_group("Impostors")
 ## The far levels' views of the plant (colour and alpha), an atlas of [constant ATLAS_VIEWS] squares.
 @export var impostor_views: Texture2D:

@@ -234,9 +234,9 @@ func get_pushed_count() -> int:
 
 
 ## The plants whose roots lie within [param radius] metres of [param position] on the ground (its
-## height ignored).
-func get_plants_near(position: Vector3, radius: float) -> PackedInt32Array:
-	return native.get_plants_near(position, radius)
+## height ignored): not one cut or removed at run time, nor, with [param standing_only], one flattened.
+func get_plants_near(position: Vector3, radius: float, standing_only: bool = false) -> PackedInt32Array:
+	return native.get_plants_near(position, radius, standing_only)
 
 
 ## The MultiMesh that receives a dynamic bucket.

@@ -39,6 +39,7 @@ enum GroundSource {
 const Native: GDScript = preload("native.gd")
 const NativeField: GDScript = preload("native_field.gd")
 const FieldDriver: GDScript = preload("field_driver.gd")
+const FieldPlay: GDScript = preload("sunflower_field_play.gd")
 const FieldGround: GDScript = preload("field_ground.gd")
 const FieldLegend: GDScript = preload("field_legend.gd")
 const FieldNodes: GDScript = preload("field_nodes.gd")
@@ -380,6 +381,13 @@ const WIND_PROPERTIES: Dictionary = {
 	set(value):
 		pusher_radius = Native.accept("SunflowerField.pusher_radius", value, pusher_radius)
 		_tell_frame()
+## A pusher pushes over (tramples: flattens) the standing plants whose roots lie within this share of
+## its radius, and [signal plants_trampled] tells which (running game only). Trampled plants lie bent
+## until their type's [member FieldPlant.recover_after]. 0: pushers only bend plants.
+@export_range(0.0, 1.0, 0.01) var trample_share: float = 0.0:
+	set(value):
+		trample_share = Native.accept("SunflowerField.trample_share", value, trample_share)
+		_tell_frame()
 ## How far a pusher bends the plants at its centre (a bend, like the wind's: 0.8 tilts a plant about
 ## 45°); it falls to 0 at the pusher's radius.
 @export_range(0.0, 10.0, 0.01) var push_strength: float = 1.2:
@@ -458,6 +466,12 @@ const WIND_PROPERTIES: Dictionary = {
 		budget_min_quality = Native.accept("SunflowerField.budget_min_quality", value, budget_min_quality)
 		_tell_budget()
 
+## What the running game does to the plants: cut, flatten, remove and give back plants, its events
+## (trampled, changed, recovered, pushers in and out), regrowth's clock and the save (see
+## [SunflowerFieldPlay]).
+var play: SunflowerFieldPlay:
+	get:
+		return _driver.play
 ## The plant's height from root to head, metres: the [member plant]'s [member FieldPlant.height]
 ## (setting it gives the field its own copy of the plant).
 var plant_height: float:
@@ -544,6 +558,7 @@ func _tell_frame() -> void:
 	frame.collision_reach = collision_reach
 	frame.collision_layer = collision_layer
 	frame.collision_mask = collision_mask
+	frame.trample_share = trample_share
 
 
 func _on_built(plants: int) -> void:
@@ -791,7 +806,8 @@ func get_pushed_count() -> int:
 
 
 ## The plant whose root is nearest to [param point] (field space, on the ground) within
-## [param max_distance] metres, or -1.
+## [param max_distance] metres, or -1. A plant cut or removed at run time is not there; a flattened
+## one is (see [method SunflowerFieldPlay.get_cell_state]).
 func get_plant_at(point: Vector3, max_distance: float = 0.5) -> int:
 	var nearest: int = -1
 	var best: float = INF

@@ -54,7 +54,7 @@ void SunflowerSimulation::bind_methods() {
 	gdx::bind_method(CLASS, "set_pushers", &SunflowerSimulation::set_pushers, { "pushers" });
 	gdx::bind_method(CLASS, "set_push_params", &SunflowerSimulation::set_push_params, { "strength", "recovery_seconds" });
 	gdx::bind_method(CLASS, "get_pushed_count", &SunflowerSimulation::get_pushed_count);
-	gdx::bind_method(CLASS, "get_plants_near", &SunflowerSimulation::get_plants_near, { "position", "radius" });
+	gdx::bind_method(CLASS, "get_plants_near", &SunflowerSimulation::get_plants_near, { "position", "radius", "standing_only" });
 	gdx::bind_method(CLASS, "set_bucket_multimesh", &SunflowerSimulation::set_bucket_multimesh, { "bucket", "multimesh" });
 	gdx::bind_method(CLASS, "set_bucket_shadow_multimesh", &SunflowerSimulation::set_bucket_shadow_multimesh, { "bucket", "multimesh" });
 	gdx::bind_method(CLASS, "set_tile_multimesh", &SunflowerSimulation::set_tile_multimesh, { "tile", "multimesh" });
@@ -79,6 +79,9 @@ void SunflowerSimulation::bind_methods() {
 	gdx::bind_method(CLASS, "get_cell_change", &SunflowerSimulation::get_cell_change, { "cell" });
 	gdx::bind_method(CLASS, "get_change_count", &SunflowerSimulation::get_change_count);
 	gdx::bind_method(CLASS, "get_cells_in_circle", &SunflowerSimulation::get_cells_in_circle, { "center", "radius" });
+	gdx::bind_method(CLASS, "get_cells_in_rect", &SunflowerSimulation::get_cells_in_rect, { "min", "max" });
+	gdx::bind_method(CLASS, "trample", &SunflowerSimulation::trample, { "share", "now" });
+	gdx::bind_method(CLASS, "get_plant_cell", &SunflowerSimulation::get_plant_cell, { "plant" });
 	gdx::bind_method(CLASS, "save_changes", &SunflowerSimulation::save_changes, { "now" });
 	gdx::bind_method(CLASS, "load_changes", &SunflowerSimulation::load_changes, { "bytes" });
 	gdx::bind_method(CLASS, "get_loaded_clock", &SunflowerSimulation::get_loaded_clock);

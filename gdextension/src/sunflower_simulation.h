@@ -63,7 +63,7 @@ public:
 	void set_pushers(const gdx::PackedFloat32Array &p_pushers);
 	void set_push_params(double p_strength, double p_recovery_seconds);
 	int64_t get_pushed_count() const;
-	gdx::PackedInt32Array get_plants_near(gdx::Vector3 p_position, double p_radius) const;
+	gdx::PackedInt32Array get_plants_near(gdx::Vector3 p_position, double p_radius, bool p_standing_only) const;
 
 	void set_bucket_multimesh(int64_t p_bucket, gdx::Rid p_multimesh);
 	// A second MultiMesh for a bucket that gets the same instances every frame: the node that casts
@@ -107,6 +107,12 @@ public:
 	gdx::Vector3 get_cell_change(int64_t p_cell) const;
 	int64_t get_change_count() const;
 	gdx::PackedInt32Array get_cells_in_circle(gdx::Vector2 p_center, double p_radius) const;
+	gdx::PackedInt32Array get_cells_in_rect(gdx::Vector2 p_min, gdx::Vector2 p_max) const;
+	// The pushers flatten the standing plants within p_share of their radius (FieldSimulation::trample):
+	// two ints each trampled plant, its cell and the pusher's index in set_pushers' order.
+	gdx::PackedInt32Array trample(double p_share, double p_now);
+	// A plant's map cell, or -1.
+	int64_t get_plant_cell(int64_t p_plant) const;
 	gdx::PackedByteArray save_changes(double p_now);
 	// "" (and get_loaded_clock() the save's clock) or what is wrong, nothing changed.
 	gdx::String load_changes(const gdx::PackedByteArray &p_bytes);

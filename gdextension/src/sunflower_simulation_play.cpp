@@ -13,15 +13,18 @@ using namespace sunflower;
 
 namespace {
 
-std::vector<uint32_t> cells_from(const gdx::PackedInt32Array &p_cells, size_t p_limit) {
-	std::vector<uint32_t> cells;
+// The cells of p_cells, or an error naming the first that is not one of the map's p_limit cells.
+std::string cells_from(const gdx::PackedInt32Array &p_cells, size_t p_limit, std::vector<uint32_t> &r_cells) {
 	const int32_t *data = p_cells.data();
+	r_cells.reserve(size_t(p_cells.size()));
 	for (int64_t i = 0; i < p_cells.size(); ++i) {
-		if (data[i] >= 0 && static_cast<size_t>(data[i]) < p_limit) {
-			cells.push_back(static_cast<uint32_t>(data[i]));
+		if (data[i] < 0 || static_cast<size_t>(data[i]) >= p_limit) {
+			return "change_cells: cell " + std::to_string(data[i]) + " (at " + std::to_string(i) +
+					" in the list) is not one of the map's " + std::to_string(p_limit) + " cells; nothing was changed";
 		}
+		r_cells.push_back(static_cast<uint32_t>(data[i]));
 	}
-	return cells;
+	return "";
 }
 
 gdx::PackedInt32Array to_packed(const std::vector<uint32_t> &p_cells) {
@@ -46,8 +49,11 @@ gdx::PackedInt32Array SunflowerSimulation::change_cells(const gdx::PackedInt32Ar
 			"change_cells: the action must be 0 (stand), 1 (flatten), 2 (cut), 3 (remove) or 4 (restore); got " +
 					std::to_string(p_action));
 	SF_FAIL_COND_V_MSG(!std::isfinite(p_now), gdx::PackedInt32Array(), "change_cells: the field's clock is not a number");
+	std::vector<uint32_t> cells;
+	const std::string error = cells_from(p_cells, cell_count(_sim), cells);
+	SF_FAIL_COND_V_MSG(!error.empty(), gdx::PackedInt32Array(), error);
 	std::vector<uint32_t> changed;
-	_sim.change_cells(cells_from(p_cells, cell_count(_sim)), static_cast<FieldSimulation::CellAction>(p_action), p_now, changed);
+	_sim.change_cells(cells, static_cast<FieldSimulation::CellAction>(p_action), p_now, changed);
 	return to_packed(changed);
 }
 
@@ -62,8 +68,9 @@ gdx::PackedInt32Array SunflowerSimulation::advance_changes(double p_now) {
 void SunflowerSimulation::set_regrowth(int64_t p_species, double p_flattened_seconds, double p_cut_seconds) {
 	SF_FAIL_COND_MSG(!_is_species(p_species), "set_regrowth: no plant type " + std::to_string(p_species));
 	std::array<Regrowth, FieldMap::MAX_SPECIES> regrowth = _sim.get_regrowth();
-	regrowth[static_cast<size_t>(p_species)] = Regrowth{ std::isfinite(p_flattened_seconds) ? std::max(0.0, p_flattened_seconds) : 0.0,
-		std::isfinite(p_cut_seconds) ? std::max(0.0, p_cut_seconds) : 0.0 };
+	Regrowth &changed = regrowth[static_cast<size_t>(p_species)];
+	changed.flattened_seconds = sanitize(param::PLANT_RECOVER_AFTER, p_flattened_seconds, changed.flattened_seconds);
+	changed.cut_seconds = sanitize(param::PLANT_REGROW_AFTER, p_cut_seconds, changed.cut_seconds);
 	_sim.set_regrowth(regrowth);
 }
 
@@ -85,6 +92,33 @@ gdx::PackedInt32Array SunflowerSimulation::get_cells_in_circle(gdx::Vector2 p_ce
 	cells_in_circle(map.columns, map.rows, _sim.plants().get_layout_params().cell_size, gdx::to_core(p_center), float(p_radius),
 			cells);
 	return to_packed(cells);
+}
+
+gdx::PackedInt32Array SunflowerSimulation::get_cells_in_rect(gdx::Vector2 p_min, gdx::Vector2 p_max) const {
+	std::vector<uint32_t> cells;
+	const FieldMap &map = _sim.plants().get_map();
+	cells_in_rect(map.columns, map.rows, _sim.plants().get_layout_params().cell_size, gdx::to_core(p_min), gdx::to_core(p_max), cells);
+	return to_packed(cells);
+}
+
+gdx::PackedInt32Array SunflowerSimulation::trample(double p_share, double p_now) {
+	std::vector<FieldSimulation::Trampled> trampled;
+	if (std::isfinite(p_now)) {
+		_sim.trample(float(p_share), p_now, trampled);
+	}
+	gdx::PackedInt32Array out;
+	out.resize(int64_t(trampled.size() * 2));
+	int32_t *data = out.data();
+	for (size_t i = 0; i < trampled.size(); ++i) {
+		data[2 * i] = static_cast<int32_t>(trampled[i].cell);
+		data[2 * i + 1] = static_cast<int32_t>(trampled[i].pusher);
+	}
+	return out;
+}
+
+int64_t SunflowerSimulation::get_plant_cell(int64_t p_plant) const {
+	const uint32_t cell = p_plant >= 0 && p_plant < int64_t(UINT32_MAX) ? _sim.plants().cell_of_plant(uint32_t(p_plant)) : FieldPlants::NO_CELL;
+	return cell == FieldPlants::NO_CELL ? -1 : int64_t(cell);
 }
 
 gdx::PackedByteArray SunflowerSimulation::save_changes(double p_now) {

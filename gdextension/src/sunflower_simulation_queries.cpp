@@ -104,9 +104,15 @@ int64_t SunflowerSimulation::get_pushed_count() const {
 	return _sim.near().get_pushes().get_pushed_count();
 }
 
-gdx::PackedInt32Array SunflowerSimulation::get_plants_near(gdx::Vector3 p_position, double p_radius) const {
+gdx::PackedInt32Array SunflowerSimulation::get_plants_near(gdx::Vector3 p_position, double p_radius, bool p_standing_only) const {
 	std::vector<uint32_t> plants;
 	_sim.plants().find_plants_near(gdx::to_core_ground(p_position), float(p_radius), plants);
+	// A cut or removed plant is not there; a flattened one lies there, not standing.
+	const auto gone = [&](uint32_t p_plant) {
+		const PlantState state = _sim.plants().get_plant_state(p_plant);
+		return state == PlantState::CUT || (p_standing_only && state == PlantState::FLATTENED);
+	};
+	plants.erase(std::remove_if(plants.begin(), plants.end(), gone), plants.end());
 	return gdx::to_godot_indices(plants);
 }
 

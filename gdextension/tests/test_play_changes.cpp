@@ -175,3 +175,51 @@ TEST_CASE("play: a save loads back into the simulation, drawn at once; a bad one
 	CHECK(sim.load_changes(corrupt, clock).find("corrupt") != std::string::npos);
 	CHECK(sim.changes().changes().size() == 3);
 }
+
+TEST_CASE("play: pushers trample the standing plants within their share of the radius, each once") {
+	FieldSimulation sim;
+	load(sim, rect_map(200, 40));
+	sim.near().set_observer({ 5.0f, 1.7f, 5.0f });
+	sim.update(0.016f);
+	for (uint32_t plant = 0; plant < sim.plants().get_plant_count(); plant += 97) {
+		CHECK(sim.plants().plant_at_cell(sim.plants().cell_of_plant(plant)) == plant);
+	}
+	CHECK(sim.plants().cell_of_plant(sim.plants().get_plant_count()) == FieldPlants::NO_CELL);
+
+	const Pusher pushers[2] = { { { 10.0f, 0.5f, 10.0f }, 1.0f }, { { 10.4f, 0.5f, 10.0f }, 1.0f } };
+	sim.near().get_pushes().set_pushers(pushers, 2);
+	std::vector<FieldSimulation::Trampled> trampled;
+	sim.trample(0.0f, 1.0, trampled);
+	CHECK(trampled.empty()); // share 0: pushers only bend plants
+	sim.trample(0.5f, 1.0, trampled);
+	REQUIRE(!trampled.empty());
+	std::vector<uint32_t> cells;
+	for (const FieldSimulation::Trampled &each : trampled) {
+		const uint32_t plant = sim.plants().plant_at_cell(each.cell);
+		REQUIRE(plant != FieldPlants::NO_PLANT);
+		const glm::vec2 root = sim.plants().get_layout().plants[plant].position;
+		CHECK(glm::distance(root, glm::vec2(pushers[each.pusher].position.x, pushers[each.pusher].position.z)) < 0.5f);
+		CHECK(sim.get_cell_state(each.cell).state == PlantState::FLATTENED);
+		CHECK(sim.get_cell_state(each.cell).since == 1.0);
+		cells.push_back(each.cell);
+	}
+	std::sort(cells.begin(), cells.end());
+	CHECK(std::unique(cells.begin(), cells.end()) == cells.end()); // each plant once, by one pusher
+	// Every standing plant within reach of either pusher was trampled.
+	std::vector<uint32_t> near;
+	for (const Pusher &pusher : pushers) {
+		sim.plants().find_plants_near(glm::vec2(pusher.position.x, pusher.position.z), 0.5f, near);
+	}
+	std::sort(near.begin(), near.end());
+	near.erase(std::unique(near.begin(), near.end()), near.end());
+	CHECK(near.size() == cells.size());
+	// Again: they lie already, nothing new.
+	trampled.clear();
+	sim.trample(0.5f, 2.0, trampled);
+	CHECK(trampled.empty());
+	// A pusher above the plants' heads tramples nothing.
+	const Pusher high{ { 30.0f, 40.0f, 10.0f }, 1.0f };
+	sim.near().get_pushes().set_pushers(&high, 1);
+	sim.trample(1.0f, 3.0, trampled);
+	CHECK(trampled.empty());
+}

@@ -257,28 +257,40 @@ void FieldPlants::set_plant_state(uint32_t p_plant, PlantState p_state) {
 	}
 }
 
-uint32_t FieldPlants::plant_at_cell(uint32_t p_cell) const {
-	if (_plant_cells.size() != _layout.plants.size()) {
-		// The plants are the map's plant cells in map order, less those without ground: each plant is
-		// the next plant cell whose root is where the layout put it.
-		_plant_cells.clear();
-		_plant_cells.reserve(_layout.plants.size());
-		for (int row = 0; row < _map.rows && _plant_cells.size() < _layout.plants.size(); ++row) {
-			for (int column = 0; column < _map.columns && _plant_cells.size() < _layout.plants.size(); ++column) {
-				if (_map.has_plant(column, row) &&
-						_layout.plants[_plant_cells.size()].position == plant_root_at(_map, _layout_params, column, row)) {
-					_plant_cells.push_back(static_cast<uint32_t>(row) * static_cast<uint32_t>(_map.columns) +
-							static_cast<uint32_t>(column));
-				}
+bool FieldPlants::_index_cells() const {
+	if (_plant_cells.size() == _layout.plants.size()) {
+		return true;
+	}
+	// The plants are the map's plant cells in map order, less those without ground: each plant is
+	// the next plant cell whose root is where the layout put it.
+	_plant_cells.clear();
+	_plant_cells.reserve(_layout.plants.size());
+	for (int row = 0; row < _map.rows && _plant_cells.size() < _layout.plants.size(); ++row) {
+		for (int column = 0; column < _map.columns && _plant_cells.size() < _layout.plants.size(); ++column) {
+			if (_map.has_plant(column, row) &&
+					_layout.plants[_plant_cells.size()].position == plant_root_at(_map, _layout_params, column, row)) {
+				_plant_cells.push_back(static_cast<uint32_t>(row) * static_cast<uint32_t>(_map.columns) +
+						static_cast<uint32_t>(column));
 			}
 		}
-		if (_plant_cells.size() != _layout.plants.size()) {
-			_plant_cells.clear();
-			return NO_PLANT; // (never: the layout is made from this map)
-		}
+	}
+	if (_plant_cells.size() != _layout.plants.size()) {
+		_plant_cells.clear();
+		return false; // (never: the layout is made from this map)
+	}
+	return true;
+}
+
+uint32_t FieldPlants::plant_at_cell(uint32_t p_cell) const {
+	if (!_index_cells()) {
+		return NO_PLANT;
 	}
 	const auto found = std::lower_bound(_plant_cells.begin(), _plant_cells.end(), p_cell);
 	return found != _plant_cells.end() && *found == p_cell ? static_cast<uint32_t>(found - _plant_cells.begin()) : NO_PLANT;
+}
+
+uint32_t FieldPlants::cell_of_plant(uint32_t p_plant) const {
+	return p_plant < _layout.plants.size() && _index_cells() ? _plant_cells[p_plant] : NO_CELL;
 }
 
 } // namespace sunflower

@@ -114,12 +114,17 @@ public:
 	// under it. The cell of each plant is found once, at the first call after a rebuild.
 	static constexpr uint32_t NO_PLANT = UINT32_MAX;
 	uint32_t plant_at_cell(uint32_t p_cell) const;
+	// The map cell of plant p_plant (row × columns + column), or NO_CELL for an index past the plants.
+	static constexpr uint32_t NO_CELL = UINT32_MAX;
+	uint32_t cell_of_plant(uint32_t p_plant) const;
 
 	// CPU memory held for the map, layout and ground, in bytes.
 	size_t get_memory_bytes() const;
 
 private:
 	void _rebuild();
+	// Makes _plant_cells for the layout if it is not (false: the layout is not this map's, never).
+	bool _index_cells() const;
 
 	FieldMap _map;
 	std::u32string _plant_symbols;

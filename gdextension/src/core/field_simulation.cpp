@@ -188,6 +188,38 @@ void FieldSimulation::change_cells(const std::vector<uint32_t> &p_cells, CellAct
 	_restate_chunks(chunks);
 }
 
+void FieldSimulation::trample(float p_share, double p_now, std::vector<Trampled> &r_trampled) {
+	const float share = sanitize(param::TRAMPLE_SHARE, p_share, 0.0f);
+	const std::vector<Pusher> &pushers = _near.get_pushes().get_pushers();
+	if (share <= 0.0f || pushers.empty() || _plants.get_plant_count() == 0) {
+		return;
+	}
+	_ready_changes();
+	std::vector<uint32_t> near;
+	std::vector<uint32_t> chunks;
+	for (size_t i = 0; i < pushers.size(); ++i) {
+		const Pusher &pusher = pushers[i];
+		near.clear();
+		_plants.find_plants_near(glm::vec2(pusher.position.x, pusher.position.z), pusher.radius * share, near);
+		for (uint32_t plant : near) {
+			if (_plants.get_plant_state(plant) != PlantState::STANDING) {
+				continue;
+			}
+			const float ground = _plants.get_layout().plants[plant].ground;
+			const float head = ground + _plants.get_stalk(plant).y;
+			if (pusher.position.y + pusher.radius < ground || pusher.position.y - pusher.radius > head) {
+				continue; // above or below the plant
+			}
+			const uint32_t cell = _plants.cell_of_plant(plant);
+			if (cell != FieldPlants::NO_CELL && _changes.set_state(cell, PlantState::FLATTENED, p_now)) {
+				r_trampled.push_back(Trampled{ cell, static_cast<uint32_t>(i) });
+				_show_cell(cell, chunks);
+			}
+		}
+	}
+	_restate_chunks(chunks);
+}
+
 void FieldSimulation::set_regrowth(const std::array<Regrowth, FieldMap::MAX_SPECIES> &p_regrowth) {
 	_regrowth = p_regrowth;
 	if (_changes_ready) {

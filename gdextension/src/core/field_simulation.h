@@ -65,6 +65,16 @@ public:
 	// Applies p_action at the field's clock p_now to each of p_cells (row × columns + column); appends
 	// the cells it changed to r_changed.
 	void change_cells(const std::vector<uint32_t> &p_cells, CellAction p_action, double p_now, std::vector<uint32_t> &r_changed);
+	// A standing plant pushed over by a pusher (trample) and the pusher's index (in set_pushers' order).
+	struct Trampled {
+		uint32_t cell = 0;
+		uint32_t pusher = 0;
+	};
+	// The pushers (the near field's, as set last) flatten, at the clock p_now, every standing plant
+	// whose root lies within p_share × their radius (param::TRAMPLE_SHARE) while they are within
+	// their radius of its stalk's height span (from its root to its head), each plant once, by the
+	// first pusher in order that reaches it; appends them to r_trampled. p_share 0: none.
+	void trample(float p_share, double p_now, std::vector<Trampled> &r_trampled);
 	// Each plant type's recovery; kept for the next map too.
 	void set_regrowth(const std::array<Regrowth, FieldMap::MAX_SPECIES> &p_regrowth);
 	const std::array<Regrowth, FieldMap::MAX_SPECIES> &get_regrowth() const { return _regrowth; }

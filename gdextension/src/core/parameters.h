@@ -117,6 +117,13 @@ inline constexpr ParameterSpec BUDGET_MIN_QUALITY{ "SunflowerField.budget_min_qu
 inline constexpr ParameterSpec PUSH_STRENGTH{ "SunflowerField.push_strength", 1.2, 0.0, 10.0, ParameterSpec::CLAMP, 1.2 };
 inline constexpr ParameterSpec PUSH_RECOVERY{ "SunflowerField.push_recovery_time", 1.5, 0.05, 60.0, ParameterSpec::CLAMP, 1.5 };
 inline constexpr ParameterSpec PUSHER_RADIUS{ "SunflowerField.pusher_radius", 0.6, 0.01, 20.0, ParameterSpec::CLAMP, 0.6 };
+// Pushers push over (trample: flatten) the standing plants whose roots lie within this share of their
+// radius; 0: they only bend them.
+inline constexpr ParameterSpec TRAMPLE_SHARE{ "SunflowerField.trample_share", 0.0, 0.0, 1.0, ParameterSpec::CLAMP, 0.0 };
+// A plant type's recovery on the field's clock: seconds until a flattened plant stands again and
+// until a cut one has grown again; 0: never.
+inline constexpr ParameterSpec PLANT_RECOVER_AFTER{ "FieldPlant.recover_after", 0.0, 0.0, 1.0e7, ParameterSpec::CLAMP, 0.0 };
+inline constexpr ParameterSpec PLANT_REGROW_AFTER{ "FieldPlant.regrow_after", 0.0, 0.0, 1.0e7, ParameterSpec::CLAMP, 0.0 };
 
 // Stalk colliders stand within this reach of each pusher and of the observer; 0: none.
 inline constexpr ParameterSpec COLLISION_REACH{ "SunflowerField.collision_reach", 0.0, 0.0, 1000.0, ParameterSpec::CLAMP, 0.0 };
@@ -126,15 +133,15 @@ inline constexpr ParameterSpec GROUND_TILT{ "SunflowerField.ground_tilt", 0.0, 0
 inline constexpr ParameterSpec GROUND_RAY_ABOVE{ "SunflowerField.ground_ray_above", 100.0, 0.0, NO_MAX, ParameterSpec::CLAMP, 100.0 };
 inline constexpr ParameterSpec GROUND_RAY_BELOW{ "SunflowerField.ground_ray_below", 100.0, 0.0, NO_MAX, ParameterSpec::CLAMP, 100.0 };
 
-inline constexpr std::array<const ParameterSpec *, 49> ALL{ { &WIND_MODEL, &WIND_POWER, &WIND_INCREMENT, &WIND_STIFFNESS_MIDDLE,
+inline constexpr std::array<const ParameterSpec *, 52> ALL{ { &WIND_MODEL, &WIND_POWER, &WIND_INCREMENT, &WIND_STIFFNESS_MIDDLE,
 		&WIND_STIFFNESS_BOTTOM, &WIND_BEND_PER_POWER, &WIND_MAX_BEND, &WIND_FLIP_INTERVAL, &WIND_FLIP_CHANCE,
 		&WIND_GUST_SPEED, &WIND_GUST_SHARE, &CELL_SIZE, &PLANT_HEIGHT, &CHUNK_SIZE, &MAX_PLANTS, &LOD_HYSTERESIS,
 		&LOD_INTERVAL, &LOD_FADE, &FORCE_LOD, &ALPHA_SCISSOR, &THINNING_DISTANCE, &THINNING_MIN_DENSITY, &TILE_MERGE_DISTANCE, &MAX_DRAW_DISTANCE,
-		&BUILD_BUDGET_MS, &WORKER_THREADS, &BUDGET_PRIMITIVES, &BUDGET_GPU_MS, &BUDGET_MIN_QUALITY, &PUSH_STRENGTH, &PUSH_RECOVERY, &PUSHER_RADIUS,
+		&BUILD_BUDGET_MS, &WORKER_THREADS, &BUDGET_PRIMITIVES, &BUDGET_GPU_MS, &BUDGET_MIN_QUALITY, &PUSH_STRENGTH, &PUSH_RECOVERY, &PUSHER_RADIUS, &TRAMPLE_SHARE,
 		&COLLISION_REACH, &GROUND_TILT, &GROUND_RAY_ABOVE, &GROUND_RAY_BELOW, &PLANT_YAW_RANGE, &PLANT_SCALE_MIN, &PLANT_SCALE_MAX,
 		&PLANT_MIDDLE_VARIATION, &PLANT_BRIGHTNESS_VARIATION, &PLANT_TINT_VARIATION, &PLANT_STIFFNESS, &PLANT_FLUTTER,
 		&PLANT_IMPOSTOR_SHADOW_SHIFT, &PLANT_IMPOSTOR_EMISSION_RANGE, &PLANT_PART_LENGTH, &PLANT_HEIGHT_UNITS,
-		&PLANT_CULL_RADIUS_UNITS } };
+		&PLANT_CULL_RADIUS_UNITS, &PLANT_RECOVER_AFTER, &PLANT_REGROW_AFTER } };
 
 } // namespace param
 

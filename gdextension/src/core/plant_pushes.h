@@ -31,6 +31,7 @@ public:
 
 	// Bodies from the next update on.
 	void set_pushers(const Pusher *p_pushers, size_t p_count) { _pushers.assign(p_pushers, p_pushers + p_count); }
+	const std::vector<Pusher> &get_pushers() const { return _pushers; }
 	// Invalid values keep the current ones (param::PUSH_STRENGTH, param::PUSH_RECOVERY).
 	void set_params(float p_strength, float p_recovery_seconds);
 	// Plants pushed now or springing back.

@@ -59,7 +59,7 @@ func test_stalk_colliders_stand_within_reach_and_ray_casts_hit_the_plant() -> vo
 	field.collision_reach = 2.0
 	field.collision_layer = 4
 	field.advance(1.0 / 60.0)
-	var expected: int = field.get_simulation().get_plants_near(observer.position, 2.0).size()
+	var expected: int = field.get_simulation().get_plants_near(observer.position, 2.0, true).size()
 	check(expected > 10, "plants within 2 m of the observer (%d)" % expected)
 	check_eq(field.get_collider_count(), expected, "a collider per plant within reach, none outside")
 	await tree.physics_frame

@@ -1,0 +1,253 @@
+@tool
+class_name SunflowerFieldPlay
+extends RefCounted
+## What a running game does to a [SunflowerField]'s plants: cut, flatten, remove and give back
+## plants at run time, the events of it, regrowth, and a save that remembers.
+##
+## Every field has one, as [member SunflowerField.play]. Changes show at once at every level of
+## detail, without a rebuild, and never change the map file; a rebuild of the same map keeps them, a
+## new map forgets them. Cells are the map's (row × columns + column): find them with
+## [method get_cells_in_circle], [method get_cells_in_rect], [method get_cell_at] or, for a plant a ray
+## or a body hit, [method get_cell_of_plant]. The manual: [code]docs/play.md[/code].
+## [codeblock]
+## # A scythe: cut what stands within 1.5 m in front of the player.
+## var centre: Vector3 = field.to_local(player.global_position - player.global_basis.z * 1.5)
+## field.play.change_plants(field.play.get_cells_in_circle(centre, 1.5), SunflowerFieldPlay.Change.CUT)
+## [/codeblock]
+
+## Emitted when [param pusher] pushed over the standing plants of [param cells] this frame (see
+## [member SunflowerField.trample_share]); each plant once each time it is trampled.
+signal plants_trampled(cells: PackedInt32Array, pusher: Node3D)
+## Emitted when [method change_plants] changed the plants of [param cells] by [param change] (a
+## [enum Change]).
+signal plants_changed(cells: PackedInt32Array, change: int)
+## Emitted when flattened or cut plants of [param cells] stood again by their plant type's regrowth
+## ([member FieldPlant.recover_after], [member FieldPlant.regrow_after]).
+signal plants_recovered(cells: PackedInt32Array)
+## Emitted when a pusher (see [member SunflowerField.pusher_group]) comes over the field's map.
+signal pusher_entered(pusher: Node3D)
+## Emitted when a pusher leaves the field's map or its group.
+signal pusher_exited(pusher: Node3D)
+
+## What [method change_plants] does to a cell's plant.
+enum Change {
+	STAND,  ## A flattened or cut plant stands again.
+	FLATTEN,  ## It lies bent (until its type's [member FieldPlant.recover_after], if any).
+	CUT,  ## It is drawn nowhere (until its type's [member FieldPlant.regrow_after], if any).
+	REMOVE,  ## No plant there any more; nothing grows back.
+	RESTORE,  ## The cell as the map has it.
+}
+## A cell's plant after play ([method get_cell_state]).
+enum State { STANDING, FLATTENED, CUT, NONE }
+
+## A save file's suffix while it is written (renamed over the save once complete).
+const PARTIAL_SUFFIX: String = ".partial"
+
+var _field: Node3D
+var _clock: float = 0.0
+var _over_field: Dictionary = {}  # pusher node -> true while it stands over the field's map
+
+
+func _init(field: Node3D) -> void:
+	_field = field
+
+
+## Applies [param change] to the plants of [param cells] at once; returns the cells whose plant
+## changed (a cell with no plant, or in that state already, is not) and tells
+## [signal plants_changed]. A cell that is not the map's is an error, and nothing changes.
+func change_plants(cells: PackedInt32Array, change: Change) -> PackedInt32Array:
+	var native: Object = _native()
+	if native == null:
+		return PackedInt32Array()
+	var changed: PackedInt32Array = native.change_cells(cells, change, _clock)
+	if not changed.is_empty():
+		plants_changed.emit(changed, change)
+	return changed
+
+
+## The map cells whose centres lie within [param radius] metres of [param center] (the field's space;
+## its height ignored).
+func get_cells_in_circle(center: Vector3, radius: float) -> PackedInt32Array:
+	var native: Object = _native()
+	return native.get_cells_in_circle(Vector2(center.x, center.z), radius) if native else PackedInt32Array()
+
+
+## The map cells whose centres lie in [param area] (the field's x, z: position and size in metres).
+func get_cells_in_rect(area: Rect2) -> PackedInt32Array:
+	var native: Object = _native()
+	return native.get_cells_in_rect(area.position, area.end) if native else PackedInt32Array()
+
+
+## The map cell under [param point] (the field's space), or -1 off the map.
+func get_cell_at(point: Vector3) -> int:
+	var native: Object = _native()
+	var cell_size: float = _field.cell_size
+	if native == null or cell_size <= 0.0:
+		return -1
+	var column: int = floori(point.x / cell_size)
+	var row: int = floori(point.z / cell_size)
+	if column < 0 or row < 0 or column >= native.get_map_columns() or row >= native.get_map_rows():
+		return -1
+	return row * native.get_map_columns() + column
+
+
+## The map cell of plant [param plant] (as [method SunflowerField.get_plant_at] and
+## [method SunflowerField.get_plant_for_body] give), or -1.
+func get_cell_of_plant(plant: int) -> int:
+	var native: Object = _native()
+	return native.get_plant_cell(plant) if native else -1
+
+
+## What a cell holds after play: [code]plant_type[/code] (its index in
+## [method SunflowerField.get_plant_types], -1 for none), [code]state[/code] (a [enum State]) and
+## [code]since[/code] (the clock, [method get_clock], when it took that state).
+func get_cell_state(cell: int) -> Dictionary:
+	var native: Object = _native()
+	var change: Vector3 = native.get_cell_change(cell) if native else Vector3.ZERO
+	var plant_type: int = int(change.x) - 1
+	var state: State = State.NONE if plant_type < 0 else int(change.y) as State
+	return {"plant_type": plant_type, "state": state, "since": change.z}
+
+
+## How many cells differ from the map by play.
+func get_change_count() -> int:
+	var native: Object = _native()
+	return native.get_change_count() if native else 0
+
+
+## Seconds the field's play clock has run: it runs while the game does; regrowth follows it and a
+## save keeps it.
+func get_clock() -> float:
+	return _clock
+
+
+## The changes and the clock, compact (3–7 bytes a changed cell), versioned and bound to the map: put
+## them in your game's save and give them back to [method load_changes].
+func save_changes() -> PackedByteArray:
+	var native: Object = _native()
+	return native.save_changes(_clock) if native else PackedByteArray()
+
+
+## Replaces the changes and the clock by a save of [method save_changes], shown at once. A save of
+## another map, a corrupt or a newer one is refused with an error naming what does not match, and
+## nothing changes ([constant ERR_INVALID_DATA]).
+func load_changes(bytes: PackedByteArray) -> Error:
+	return _load(bytes, "the changes")
+
+
+## [method save_changes] written to the file [param path] so that a crash midway leaves the save it
+## replaces whole: the bytes go to a file beside it first ([constant PARTIAL_SUFFIX]), which is then
+## renamed over it.
+func save_changes_to_file(path: String) -> Error:
+	var written: Error = write_atomically(path, save_changes())
+	if written != OK:
+		push_error(
+			"SunflowerField '%s': cannot write the changes to %s: %s" % [_field.name, path, error_string(written)]
+		)
+	return written
+
+
+## [method load_changes] from the file [param path].
+func load_changes_from_file(path: String) -> Error:
+	var bytes: PackedByteArray = FileAccess.get_file_as_bytes(path)
+	var opened: Error = FileAccess.get_open_error()
+	if opened != OK:
+		push_error(
+			"SunflowerField '%s': cannot read the changes from %s: %s" % [_field.name, path, error_string(opened)]
+		)
+		return opened
+	return _load(bytes, "the changes in " + path)
+
+
+## Writes [param bytes] to [param path] so that a crash midway leaves the previous file whole.
+static func write_atomically(path: String, bytes: PackedByteArray) -> Error:
+	var partial: String = path + PARTIAL_SUFFIX
+	var file: FileAccess = FileAccess.open(partial, FileAccess.WRITE)
+	if file == null:
+		return FileAccess.get_open_error()
+	file.store_buffer(bytes)
+	file.flush()
+	var written: Error = file.get_error()
+	file.close()
+	if written != OK:
+		DirAccess.remove_absolute(partial)
+		return written
+	return DirAccess.rename_absolute(partial, path)
+
+
+## (The field calls this.) One frame of play on [param simulation] (a NativeField): the clock moves
+## by [param delta], plants due recover, the [param pushers] trample within [param trample_share] of
+## their radius and are followed in and out of the field.
+func _step(simulation: RefCounted, delta: float, pushers: Array[Node3D], trample_share: float) -> void:
+	if simulation == null:
+		return
+	_clock += delta
+	var recovered: PackedInt32Array = simulation.native.advance_changes(_clock)
+	if not recovered.is_empty():
+		plants_recovered.emit(recovered)
+	if trample_share > 0.0 and not pushers.is_empty():
+		_tell_trampled(simulation.native.trample(trample_share, _clock), pushers)
+	_follow_pushers(simulation.native, pushers)
+
+
+## (The field calls this.) Each plant type of [param plants] (FieldPlant per species) gets its
+## recovery times in [param simulation].
+func _send_regrowth(simulation: RefCounted, plants: Array) -> void:
+	for species: int in plants.size():
+		simulation.native.set_regrowth(species, plants[species].recover_after, plants[species].regrow_after)
+
+
+## (The field calls this.) The changes of [param old] carried to [param new] (a rebuild): kept when
+## both read the same map, forgotten for another map.
+func _carry(old: RefCounted, new: RefCounted) -> void:
+	if old == null or new == null or old == new or old.native.get_change_count() == 0:
+		return
+	new.native.load_changes(old.native.save_changes(_clock))  # another map's save is refused: forgotten
+
+
+func _native() -> Object:  # the field's SunflowerSimulation, once it has plants drawn
+	return _field.get_simulation() if _field.get_plant_count() > 0 else null
+
+
+func _load(bytes: PackedByteArray, what: String) -> Error:
+	var native: Object = _native()
+	var message: String = (
+		native.load_changes(bytes)
+		if native
+		else "the field has no plants drawn yet (load changes once it is built: see field_built)"
+	)
+	if message.is_empty():
+		_clock = native.get_loaded_clock()
+		return OK
+	push_error("SunflowerField '%s': %s cannot be loaded: %s" % [_field.name, what, message])
+	return ERR_INVALID_DATA
+
+
+func _tell_trampled(pairs: PackedInt32Array, pushers: Array[Node3D]) -> void:
+	var by_pusher: Dictionary = {}  # pusher index -> its cells
+	for i: int in range(0, pairs.size(), 2):
+		if not by_pusher.has(pairs[i + 1]):
+			by_pusher[pairs[i + 1]] = PackedInt32Array()
+		by_pusher[pairs[i + 1]].append(pairs[i])
+	for index: int in by_pusher:
+		plants_trampled.emit(by_pusher[index], pushers[index] if index < pushers.size() else null)
+
+
+func _follow_pushers(native: Object, pushers: Array[Node3D]) -> void:
+	if pushers.is_empty() and _over_field.is_empty():
+		return
+	var size: Vector2 = Vector2(native.get_map_columns(), native.get_map_rows()) * _field.cell_size
+	var now: Dictionary = {}
+	for pusher: Node3D in pushers:
+		var local: Vector3 = _field.to_local(pusher.global_position)
+		if local.x >= 0.0 and local.z >= 0.0 and local.x < size.x and local.z < size.y:
+			now[pusher] = true
+	for pusher: Variant in _over_field.keys():  # (a pusher freed since is no Node3D)
+		if not now.has(pusher):
+			_over_field.erase(pusher)
+			if is_instance_valid(pusher):
+				pusher_exited.emit(pusher)
+	for pusher: Node3D in now:
+		if not _over_field.has(pusher):
+			_over_field[pusher] = true
+			pusher_entered.emit(pusher)
