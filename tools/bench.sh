@@ -40,6 +40,9 @@ echo "## 1. The core alone"
 echo
 echo "## 13. Placement by rules, the core alone"
 "$repo/build/bench/placement_bench"
+echo
+echo "## 14. Play's changes, the core alone"
+"$repo/build/bench/play_bench"
 
 "$repo/tools/make_field.py" 50 30 "$out/fields/thesis1500.field" >/dev/null
 "$repo/tools/make_field.py" 1000 1000 "$out/fields/million.field" >/dev/null

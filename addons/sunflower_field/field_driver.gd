@@ -199,6 +199,7 @@ func show(nodes: FieldNodes, scenes: Dictionary = {}, cell_size: float = 0.0) ->
 	drawn.simulation.update(0.0)
 	drawn.show_filled_buckets()
 	drawn.update_masks()
+	drawn.update_hidden_cells()
 
 
 ## Places the far impostors where the field node stands now (their records are in its frame).
@@ -226,6 +227,7 @@ func update_field(delta: float) -> void:
 	native_simulation.update(delta)
 	drawn.show_filled_buckets()
 	drawn.update_masks()
+	drawn.update_hidden_cells()
 	drawn.follow_sun()
 	if not Engine.is_editor_hint():
 		_step_budgets(delta)

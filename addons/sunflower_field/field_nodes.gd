@@ -23,6 +23,8 @@ const PartMeshes: GDScript = preload("part_meshes.gd")
 const SUN_SHADOW_DISTANCE: float = 100.0
 ## The name of the child of each impostor node that draws its shadows.
 const CASTER_NAME: String = "ShadowCaster"
+## The hidden cells' texture is this many bytes wide (the shader's HIDDEN_TEXTURE_WIDTH).
+const HIDDEN_TEXTURE_WIDTH: int = 4096
 ## The parts of a plant, bottom to top, as node names use them.
 const PART_NAMES: PackedStringArray = PartMeshes.PART_NAMES
 
@@ -53,6 +55,9 @@ var _mesh_node_species: PackedInt32Array = []
 var _whole: Array[bool] = []  # per species: its near plants drawn whole (one node per level)
 var _masks: Array[ImageTexture] = []  # per species: which chunk cells the near buckets draw
 var _mask_version: int = -1  # the simulation's mask version the textures show
+var _hidden: ImageTexture  # the cells whose plant play took down, once there are any
+var _hidden_version: int = -1  # the simulation's hidden-cells version it shows
+var _cell_size: float = 0.0
 ## The field drawn before this one: tiles that draw the same here take its nodes and GPU buffers.
 var _previous: RefCounted
 var _previous_by_key: Dictionary = {}  # tile key → the previous field's tile
@@ -234,6 +239,7 @@ func get_tile_progress() -> float:
 ## level ([code]Mesh1[/code]…), any other one per level and part ([code]Mesh1Bottom[/code]…). The
 ## near plants' bounds reach [param sway_margin] metres past the chunks' (a swaying plant's lean).
 func finish(species_plants: Array, legend: Dictionary, cell_size: float, sway_margin: float) -> void:
+	_cell_size = cell_size
 	var aabb: AABB = _field_aabb().grow(sway_margin)
 	var per_species: int = Native.constant(&"BUCKET_COUNT")
 	for species: int in simulation.get_species_count():
@@ -309,6 +315,32 @@ func update_masks() -> void:
 		else:
 			_masks[species].update(image)
 		_impostors[species].set_active_chunks(_masks[species], grid[0])
+
+
+## Hides the impostors of the plants play took down (the simulation's hidden cells), when they
+## changed: a bit a cell, laid out in rows of [constant HIDDEN_TEXTURE_WIDTH] bytes for the shader.
+func update_hidden_cells() -> void:
+	var version: int = simulation.get_hidden_version()
+	if version == _hidden_version:
+		return
+	_hidden_version = version
+	var bytes: PackedByteArray = simulation.get_hidden_cells()
+	if bytes.is_empty():
+		for impostors: ImpostorSet in _impostors:
+			impostors.set_shared(&"hidden_cell_size", 0.0)  # nothing hidden
+		return
+	var width: int = mini(bytes.size(), HIDDEN_TEXTURE_WIDTH)
+	var height: int = ceili(float(bytes.size()) / width)
+	bytes.resize(width * height)
+	var image: Image = Image.create_from_data(width, height, false, Image.FORMAT_R8, bytes)
+	if _hidden == null or _hidden.get_size() != Vector2(width, height):
+		_hidden = ImageTexture.create_from_image(image)
+	else:
+		_hidden.update(image)
+	for impostors: ImpostorSet in _impostors:
+		impostors.set_shared(&"hidden_cells", _hidden)
+		impostors.set_shared(&"hidden_row_bytes", (simulation.get_map_columns() + 7) / 8)
+		impostors.set_shared(&"hidden_cell_size", _cell_size)
 
 
 ## Near plants of species s from mesh [code]levels[s][/code] on cast no mesh shadows (the far tiles'

@@ -287,6 +287,17 @@ func get_active_mask(species: int) -> PackedByteArray:
 	return native.get_active_mask(species)
 
 
+## The cells whose plant play took down, a bit each: rows of ceil(columns / 8) bytes (empty until
+## the first change); the impostors hide their plants.
+func get_hidden_cells() -> PackedByteArray:
+	return native.get_hidden_cells()
+
+
+## Changes whenever a bit of [method get_hidden_cells] does.
+func get_hidden_version() -> int:
+	return native.get_hidden_version()
+
+
 ## Per tile, 1 when it has a plant to draw now, 0 when all its chunks are active (hide its node.
 func get_tiles_drawn() -> PackedByteArray:
 	return native.get_tiles_drawn()

@@ -82,6 +82,8 @@ void SunflowerSimulation::bind_methods() {
 	gdx::bind_method(CLASS, "get_cells_in_rect", &SunflowerSimulation::get_cells_in_rect, { "min", "max" });
 	gdx::bind_method(CLASS, "trample", &SunflowerSimulation::trample, { "share", "now" });
 	gdx::bind_method(CLASS, "get_plant_cell", &SunflowerSimulation::get_plant_cell, { "plant" });
+	gdx::bind_method(CLASS, "get_hidden_cells", &SunflowerSimulation::get_hidden_cells);
+	gdx::bind_method(CLASS, "get_hidden_version", &SunflowerSimulation::get_hidden_version);
 	gdx::bind_method(CLASS, "save_changes", &SunflowerSimulation::save_changes, { "now" });
 	gdx::bind_method(CLASS, "load_changes", &SunflowerSimulation::load_changes, { "bytes" });
 	gdx::bind_method(CLASS, "get_loaded_clock", &SunflowerSimulation::get_loaded_clock);

@@ -117,6 +117,10 @@ public:
 	// "" (and get_loaded_clock() the save's clock) or what is wrong, nothing changed.
 	gdx::String load_changes(const gdx::PackedByteArray &p_bytes);
 	double get_loaded_clock() const { return _loaded_clock; }
+	// The cells whose plant play took down, a bit each (FieldSimulation::get_hidden_cells), and the
+	// version that changes with them.
+	gdx::PackedByteArray get_hidden_cells() const;
+	int64_t get_hidden_version() const { return _sim.get_hidden_version(); }
 
 	int64_t get_plant_count() const;
 	gdx::PackedInt32Array get_lod_counts() const;
@@ -149,8 +153,6 @@ private:
 	void _push_bucket(uint32_t p_bucket);
 	// Writes the tile's records (nearest the observer first) into its MultiMesh.
 	void _upload_tile(uint32_t p_tile);
-	// The tiles whose records play changed written again (once each).
-	void _upload_changed_tiles();
 
 	struct BucketTarget {
 		gdx::Rid multimesh;

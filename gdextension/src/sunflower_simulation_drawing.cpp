@@ -188,20 +188,6 @@ void SunflowerSimulation::_upload_tile(uint32_t p_tile) {
 	}
 }
 
-void SunflowerSimulation::_upload_changed_tiles() {
-	std::vector<uint32_t> changed;
-	_sim.take_changed_tiles(changed);
-	for (uint32_t tile : changed) {
-		if (tile >= _tiles.size() || tile >= _tile_counts.size() || _tile_counts[tile] != _sim.tiles().get_tile(tile).plants) {
-			continue; // not given yet, or of another layout: the driver gives it anew
-		}
-		if (_reorder.get_tile() == tile) {
-			_reorder.cancel(); // (it would write the records of before)
-		}
-		_upload_tile(tile);
-	}
-}
-
 void SunflowerSimulation::_order_tiles() {
 	// One tile at a time has its records written again, nearest the observer first, once the observer
 	// has moved on from where they were ordered (TileReorder), a few chunks a frame.
@@ -281,7 +267,6 @@ void SunflowerSimulation::update(double p_delta) {
 	for (uint32_t b = 0; b < _buckets.size(); ++b) {
 		_push_bucket(b);
 	}
-	_upload_changed_tiles();
 	_order_tiles();
 	// Each tile draws only its records kept at the nearest level its plants may be given.
 	for (size_t t = 0; t < _tiles.size() && t < _tile_visible.size(); ++t) {

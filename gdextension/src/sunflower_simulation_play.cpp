@@ -138,3 +138,9 @@ gdx::String SunflowerSimulation::load_changes(const gdx::PackedByteArray &p_byte
 	}
 	return gdx::String(error);
 }
+
+gdx::PackedByteArray SunflowerSimulation::get_hidden_cells() const {
+	gdx::PackedByteArray out;
+	out.assign(_sim.get_hidden_cells().data(), _sim.get_hidden_cells().size());
+	return out;
+}

@@ -7,8 +7,18 @@ using namespace sunflower_test;
 
 namespace {
 
-// How many instances of the near buckets (and, with p_tiles, of the far tiles' records) stand at
-// p_root with a size: a cut plant has none, an impostor record of no size draws nothing.
+// Whether the hidden-cells mask hides a far record rooted at p_root, as the impostor shader reads it
+// (cells of 0.5 m, 200 columns).
+bool hidden_at(const FieldSimulation &p_sim, const glm::vec3 &p_root) {
+	const std::vector<uint8_t> &hidden = p_sim.get_hidden_cells();
+	const int column = int(std::floor(p_root.x / 0.5f + 0.25f));
+	const int row = int(std::floor(p_root.z / 0.5f + 0.25f));
+	const size_t byte = size_t(row) * p_sim.hidden_row_bytes() + size_t(column / 8);
+	return byte < hidden.size() && ((hidden[byte] >> (column % 8)) & 1) != 0;
+}
+
+// How many instances of the near buckets (and, with p_tiles, of the far tiles' records the hidden-cells
+// mask leaves) stand at p_root with a size: a cut plant has none.
 int drawn_at(const FieldSimulation &p_sim, const glm::vec3 &p_root, bool p_tiles) {
 	int count = 0;
 	for (uint32_t level = 0; level < LOD_MESH_COUNT; ++level) {
@@ -27,7 +37,7 @@ int drawn_at(const FieldSimulation &p_sim, const glm::vec3 &p_root, bool p_tiles
 		p_sim.tiles().write_tile_instances(t, records.data());
 		for (size_t k = 0; k < p_sim.tiles().get_tile(t).plants; ++k) {
 			const FarInstance record = read_far_instance(records.data() + k * FAR_FLOATS_PER_INSTANCE);
-			count += glm::distance(record.root, p_root) < 1e-4f && record.scale > 0.0f ? 1 : 0;
+			count += glm::distance(record.root, p_root) < 1e-4f && record.scale > 0.0f && !hidden_at(p_sim, record.root) ? 1 : 0;
 		}
 	}
 	return count;
@@ -68,17 +78,11 @@ TEST_CASE("play: a cut plant is drawn nowhere from the next update on, without a
 	std::vector<uint32_t> changed;
 	sim.change_cells({ near_cell, far_cell, near_cell, middle_cell }, FieldSimulation::CellAction::CUT, 1.0, changed);
 	CHECK(changed == std::vector<uint32_t>{ near_cell, far_cell, middle_cell }); // a second cut of a cell is none
-	std::vector<uint32_t> tiles;
-	sim.take_changed_tiles(tiles);
-	CHECK_FALSE(tiles.empty());
-	std::vector<uint32_t> again;
-	sim.take_changed_tiles(again);
-	CHECK(again.empty()); // each tile listed once
 	sim.update(0.016f);
 	CHECK(drawn_at(sim, near_root, false) == 0);
 	CHECK(drawn_at(sim, far_root, true) == 0);
 	CHECK(drawn_at(sim, middle_root, false) == 0);
-	CHECK(sim.get_records_version() == records_version); // no rebuild, no tile written but its own
+	CHECK(sim.get_records_version() == records_version); // no rebuild, no tile written
 	CHECK(sim.plants().get_plant_count() == 8000);
 	// Another plant of the same chunk is still drawn.
 	const uint32_t neighbour = sim.plants().plant_at_cell(cell(11, 10));
@@ -222,4 +226,54 @@ TEST_CASE("play: pushers trample the standing plants within their share of the r
 	sim.near().get_pushes().set_pushers(&high, 1);
 	sim.trample(1.0f, 3.0, trampled);
 	CHECK(trampled.empty());
+}
+
+TEST_CASE("play: the far tiles never change; the hidden-cells mask hides exactly the plants play took down") {
+	FieldSimulation sim;
+	load(sim, rect_map(200, 40));
+	CHECK(sim.get_hidden_cells().empty()); // nothing until the first change
+	std::vector<std::vector<float>> before(sim.tiles().get_tile_count());
+	for (uint32_t t = 0; t < sim.tiles().get_tile_count(); ++t) {
+		before[t].resize(size_t(sim.tiles().get_tile(t).plants) * FAR_FLOATS_PER_INSTANCE);
+		sim.tiles().write_tile_instances(t, before[t].data());
+	}
+	std::vector<uint32_t> cut;
+	cells_in_circle(200, 40, 0.5f, glm::vec2(70.0f, 10.0f), 3.0f, cut);
+	std::vector<uint32_t> flat = { cell(3, 3), cell(199, 39) };
+	std::vector<uint32_t> changed;
+	const uint32_t version = sim.get_hidden_version();
+	sim.change_cells(cut, FieldSimulation::CellAction::CUT, 1.0, changed);
+	sim.change_cells(flat, FieldSimulation::CellAction::FLATTEN, 1.0, changed);
+	sim.change_cells({ cell(4, 3) }, FieldSimulation::CellAction::REMOVE, 1.0, changed);
+	REQUIRE(changed.size() == cut.size() + 3);
+	CHECK(sim.get_hidden_version() != version);
+	CHECK(sim.hidden_row_bytes() == 25);
+	REQUIRE(sim.get_hidden_cells().size() == size_t(25 * 40));
+	// The tiles' records are as before, and every plant's cell from its root (as the impostor shader
+	// finds it) is hidden exactly when play took the plant down.
+	size_t hidden = 0;
+	size_t wrong = 0;
+	for (uint32_t t = 0; t < sim.tiles().get_tile_count(); ++t) {
+		std::vector<float> now(before[t].size());
+		sim.tiles().write_tile_instances(t, now.data());
+		CHECK(now == before[t]);
+		for (size_t k = 0; k < sim.tiles().get_tile(t).plants; ++k) {
+			const FarInstance record = read_far_instance(now.data() + k * FAR_FLOATS_PER_INSTANCE);
+			const int column = int(std::floor(record.root.x / 0.5f + 0.25f));
+			const int row = int(std::floor(record.root.z / 0.5f + 0.25f));
+			const bool bit = (sim.get_hidden_cells()[size_t(row) * 25 + size_t(column / 8)] >> (column % 8)) & 1;
+			const uint32_t own = cell(column, row);
+			const bool taken = sim.plants().get_plant_state(sim.plants().plant_at_cell(own)) != PlantState::STANDING;
+			wrong += bit != taken ? 1 : 0;
+			hidden += bit ? 1 : 0;
+		}
+	}
+	CHECK(wrong == 0);
+	CHECK(hidden >= cut.size() + 3); // (merged levels hold some plants twice)
+	// Standing again: its bit goes.
+	changed.clear();
+	sim.change_cells(flat, FieldSimulation::CellAction::STAND, 2.0, changed);
+	CHECK(((sim.get_hidden_cells()[3 * 25] >> 3) & 1) == 0);
+	CHECK(((sim.get_hidden_cells()[39 * 25 + 24] >> 7) & 1) == 0);
+	CHECK(((sim.get_hidden_cells()[3 * 25] >> 4) & 1) == 1); // (the removed one stays hidden)
 }

@@ -193,9 +193,6 @@ void FieldPlants::write_records(uint32_t p_chunk, const uint32_t *p_plants, uint
 	const uint32_t species = _layout.chunks[p_chunk].species;
 	for (uint32_t k = 0; k < p_count; ++k) {
 		FarInstance instance = far_instance(_layout.plants[p_plants[k]], species);
-		if (get_plant_state(p_plants[k]) != PlantState::STANDING) {
-			instance.scale = 0.0f; // cut, or lying where an impostor would stand it up
-		}
 		instance.cell = _chunk_cells[p_chunk];
 		instance.levels_above = p_levels_above;
 		write_far_instance(r_out + size_t(k) * FAR_FLOATS_PER_INSTANCE, instance);
@@ -251,10 +248,6 @@ void FieldPlants::set_plant_state(uint32_t p_plant, PlantState p_state) {
 	}
 	_plant_states.resize(_layout.plants.size(), static_cast<uint8_t>(PlantState::STANDING));
 	_plant_states[p_plant] = static_cast<uint8_t>(p_state);
-	const uint32_t chunk = _layout.plants[p_plant].chunk;
-	if (chunk < _chunk_signatures.size()) {
-		_chunk_signatures[chunk] = 0; // its records changed
-	}
 }
 
 bool FieldPlants::_index_cells() const {

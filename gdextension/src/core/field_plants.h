@@ -104,8 +104,8 @@ public:
 	void compute_chunk_signatures();
 
 	// What play did to a plant (field_changes.h): STANDING for every plant until one is set; a
-	// rebuilt layout forgets them (FieldSimulation sets them again). A plant that is not standing is
-	// left out of the far records (drawn with no size), and its chunk's signature is made anew.
+	// rebuilt layout forgets them (FieldSimulation sets them again). The far records do not depend on
+	// it (FieldSimulation::get_hidden_cells hides a plant's impostors).
 	void set_plant_state(uint32_t p_plant, PlantState p_state);
 	PlantState get_plant_state(uint32_t p_plant) const {
 		return p_plant < _plant_states.size() ? static_cast<PlantState>(_plant_states[p_plant]) : PlantState::STANDING;

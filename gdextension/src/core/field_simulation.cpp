@@ -68,16 +68,15 @@ void FieldSimulation::set_plant_height(float p_metres, uint32_t p_species) {
 }
 
 void FieldSimulation::_rebuilt() {
-	_changed_tiles.clear();
-	_tile_changed.clear();
 	if (_changes_ready && _changes.fingerprint() != map_fingerprint(_plants.get_map())) {
 		_changes_ready = false; // another map: its changes are gone
 		_changes = FieldChanges();
+		_hidden.clear();
+		++_hidden_version;
 	}
 	if (_changes_ready) {
-		std::vector<uint32_t> chunks;
 		for (const auto &change : _changes.changes()) {
-			_show_cell(change.first, chunks); // (the near field and tiles are made anew below)
+			_show_cell(change.first); // (the plants' states are new with the layout)
 		}
 	}
 	_near.rebuild();
@@ -111,6 +110,9 @@ void FieldSimulation::_ready_changes() {
 		_changes.reset(_plants.get_map());
 		_changes.set_regrowth(_regrowth);
 		_changes_ready = true;
+		const FieldMap &map = _plants.get_map();
+		_hidden.assign(size_t(hidden_row_bytes()) * size_t(map.rows), 0);
+		++_hidden_version;
 	}
 }
 
@@ -129,38 +131,26 @@ CellState FieldSimulation::get_cell_state(uint32_t p_cell) const {
 	return state;
 }
 
-void FieldSimulation::_show_cell(uint32_t p_cell, std::vector<uint32_t> &r_chunks) {
+void FieldSimulation::_show_cell(uint32_t p_cell) {
 	const uint32_t plant = _plants.plant_at_cell(p_cell);
 	if (plant == FieldPlants::NO_PLANT) {
 		return; // no plant of the map there (a plant put in an empty cell is not drawn yet)
 	}
 	const CellState state = _changes.get(p_cell);
-	_plants.set_plant_state(plant, state.plant == 0 ? PlantState::CUT : state.state);
-	r_chunks.push_back(_plants.get_layout().plants[plant].chunk);
-}
-
-void FieldSimulation::_restate_chunks(std::vector<uint32_t> &p_chunks) {
-	std::sort(p_chunks.begin(), p_chunks.end());
-	p_chunks.erase(std::unique(p_chunks.begin(), p_chunks.end()), p_chunks.end());
-	_tile_changed.resize(_tiles.get_tile_count(), 0);
-	std::vector<uint32_t> tiles;
-	for (uint32_t chunk : p_chunks) {
-		_near.restate(chunk);
-		tiles.clear();
-		_tiles.tiles_of_chunk(chunk, tiles);
-		for (uint32_t tile : tiles) {
-			if (!_tile_changed[tile]) {
-				_tile_changed[tile] = 1;
-				_changed_tiles.push_back(tile);
-			}
-		}
+	const PlantState shown = state.plant == 0 ? PlantState::CUT : state.state;
+	_plants.set_plant_state(plant, shown);
+	const uint32_t columns = uint32_t(_plants.get_map().columns);
+	const size_t byte = size_t(p_cell / columns) * hidden_row_bytes() + (p_cell % columns) / 8;
+	const uint8_t bit = uint8_t(1u << ((p_cell % columns) % 8));
+	if (byte < _hidden.size() && bool(_hidden[byte] & bit) != (shown != PlantState::STANDING)) {
+		_hidden[byte] ^= bit;
+		++_hidden_version;
 	}
 }
 
 void FieldSimulation::change_cells(const std::vector<uint32_t> &p_cells, CellAction p_action, double p_now,
 		std::vector<uint32_t> &r_changed) {
 	_ready_changes();
-	std::vector<uint32_t> chunks;
 	for (uint32_t cell : p_cells) {
 		bool changed = false;
 		switch (p_action) {
@@ -182,10 +172,9 @@ void FieldSimulation::change_cells(const std::vector<uint32_t> &p_cells, CellAct
 		}
 		if (changed) {
 			r_changed.push_back(cell);
-			_show_cell(cell, chunks);
+			_show_cell(cell);
 		}
 	}
-	_restate_chunks(chunks);
 }
 
 void FieldSimulation::trample(float p_share, double p_now, std::vector<Trampled> &r_trampled) {
@@ -196,7 +185,6 @@ void FieldSimulation::trample(float p_share, double p_now, std::vector<Trampled>
 	}
 	_ready_changes();
 	std::vector<uint32_t> near;
-	std::vector<uint32_t> chunks;
 	for (size_t i = 0; i < pushers.size(); ++i) {
 		const Pusher &pusher = pushers[i];
 		near.clear();
@@ -213,11 +201,10 @@ void FieldSimulation::trample(float p_share, double p_now, std::vector<Trampled>
 			const uint32_t cell = _plants.cell_of_plant(plant);
 			if (cell != FieldPlants::NO_CELL && _changes.set_state(cell, PlantState::FLATTENED, p_now)) {
 				r_trampled.push_back(Trampled{ cell, static_cast<uint32_t>(i) });
-				_show_cell(cell, chunks);
+				_show_cell(cell);
 			}
 		}
 	}
-	_restate_chunks(chunks);
 }
 
 void FieldSimulation::set_regrowth(const std::array<Regrowth, FieldMap::MAX_SPECIES> &p_regrowth) {
@@ -233,11 +220,9 @@ void FieldSimulation::advance_changes(double p_now, std::vector<uint32_t> &r_rec
 	}
 	const size_t before = r_recovered.size();
 	_changes.advance(p_now, r_recovered);
-	std::vector<uint32_t> chunks;
 	for (size_t i = before; i < r_recovered.size(); ++i) {
-		_show_cell(r_recovered[i], chunks);
+		_show_cell(r_recovered[i]);
 	}
-	_restate_chunks(chunks);
 }
 
 std::vector<uint8_t> FieldSimulation::save_changes(double p_now) {
@@ -255,25 +240,16 @@ std::string FieldSimulation::load_changes(const std::vector<uint8_t> &p_bytes, d
 	if (!error.empty()) {
 		return error;
 	}
-	std::vector<uint32_t> chunks;
 	for (uint32_t cell : before) {
 		if (!_changes.is_changed(cell)) {
-			_show_cell(cell, chunks); // back as the map has it
+			_show_cell(cell); // back as the map has it
 		}
 	}
 	for (const auto &change : _changes.changes()) {
-		_show_cell(change.first, chunks);
+		_show_cell(change.first);
 	}
-	_restate_chunks(chunks);
 	return "";
 }
 
-void FieldSimulation::take_changed_tiles(std::vector<uint32_t> &r_tiles) {
-	r_tiles.insert(r_tiles.end(), _changed_tiles.begin(), _changed_tiles.end());
-	for (uint32_t tile : _changed_tiles) {
-		_tile_changed[tile] = 0;
-	}
-	_changed_tiles.clear();
-}
 
 } // namespace sunflower

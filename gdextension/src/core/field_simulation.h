@@ -52,9 +52,11 @@ public:
 	void set_plant_height(float p_metres, uint32_t p_species = 0);
 
 	// What play changes (field_changes.h), shown at the next update without a rebuild: a cut or
-	// removed plant is drawn nowhere, a flattened one lies bent near and is not drawn far; the chunks'
-	// near records are written anew and their far tiles listed for writing again (take_changed_tiles).
-	// A new map forgets the changes; a layout rebuilt for the same map keeps them.
+	// removed plant is drawn nowhere, a flattened one lies bent near and is not drawn far. The near
+	// field reads each plant's state every frame; the far tiles' records never change by play (no
+	// tile is written again): their impostors are hidden by the hidden-cells mask (get_hidden_cells),
+	// which the impostor shader reads. A new map forgets the changes; a layout rebuilt for the same
+	// map keeps them.
 	enum class CellAction : uint8_t {
 		STAND, // a flattened or cut plant stands again
 		FLATTEN,
@@ -87,8 +89,14 @@ public:
 	// The save of the changes (FieldChanges::save) and its load, shown at once; see FieldChanges::load.
 	std::vector<uint8_t> save_changes(double p_now);
 	std::string load_changes(const std::vector<uint8_t> &p_bytes, double &r_clock);
-	// The far tiles whose records changed by play since the last call, each once, into r_tiles.
-	void take_changed_tiles(std::vector<uint32_t> &r_tiles);
+	// The map's cells whose plant is not standing (cut, flattened or removed by play): a bit a cell,
+	// row after row of hidden_row_bytes() bytes, bit (column % 8) of byte column / 8; empty until the
+	// first change. The impostor shader finds a plant's cell from its root (x, z) / cell size: the
+	// layout keeps each root in the first half of its cell (α < 0.5), so the cell is exact.
+	const std::vector<uint8_t> &get_hidden_cells() const { return _hidden; }
+	uint32_t hidden_row_bytes() const { return (uint32_t(_plants.get_map().columns) + 7u) / 8u; }
+	// Changes whenever a bit of get_hidden_cells does.
+	uint32_t get_hidden_version() const { return _hidden_version; }
 
 	// One frame: the far tiles' counts follow the observer, then the near field moves (NearField::update).
 	void update(float p_delta);
@@ -114,10 +122,8 @@ private:
 	void _rebuilt();
 	// The changes made ready for the map (on first use: they cost nothing until then).
 	void _ready_changes();
-	// A changed cell's plant drawn as its change says; its chunk appended to r_chunks.
-	void _show_cell(uint32_t p_cell, std::vector<uint32_t> &r_chunks);
-	// The chunks' near records anew and their far tiles listed as changed.
-	void _restate_chunks(std::vector<uint32_t> &p_chunks);
+	// A changed cell's plant drawn as its change says: its state and its hidden-cells bit.
+	void _show_cell(uint32_t p_cell);
 
 	FieldPlants _plants;
 	NearField _near{ _plants };
@@ -127,8 +133,8 @@ private:
 	FieldChanges _changes;
 	bool _changes_ready = false;
 	std::array<Regrowth, FieldMap::MAX_SPECIES> _regrowth{};
-	std::vector<uint8_t> _tile_changed; // per tile: listed in _changed_tiles
-	std::vector<uint32_t> _changed_tiles;
+	std::vector<uint8_t> _hidden; // get_hidden_cells
+	uint32_t _hidden_version = 0;
 };
 
 } // namespace sunflower

@@ -41,12 +41,6 @@ void NearField::reshape() {
 	}
 }
 
-void NearField::restate(uint32_t p_chunk) {
-	if (p_chunk < _chunk_active.size() && _chunk_active[p_chunk]) {
-		_write_records(p_chunk);
-	}
-}
-
 void NearField::_write_records(uint32_t p_chunk) {
 	std::vector<float> &records = _chunk_records[p_chunk];
 	records.resize(size_t(_plants.get_layout().chunks[p_chunk].count) * FAR_FLOATS_PER_INSTANCE);
@@ -207,7 +201,7 @@ void NearField::_move_chunks(size_t p_first, size_t p_last, float p_delta, Bucke
 			const bool visible = overlap == Frustum::INSIDE || crossing.intersects_sphere(middle, reach);
 			const float *record = records + size_t(k) * FAR_FLOATS_PER_INSTANCE;
 			if (lod >= LOD_SPRITE) {
-				if (visible) {
+				if (visible && state == PlantState::STANDING) { // (a flattened plant lies: no impostor stands it up)
 					write_impostor(buckets[BUCKET_IMPOSTOR], record, 1.0f);
 					buckets[BUCKET_IMPOSTOR].include(middle, reach);
 				}
@@ -226,7 +220,7 @@ void NearField::_move_chunks(size_t p_first, size_t p_last, float p_delta, Bucke
 			// The plant's distance as FieldPlants::plant_distance_sq measures it: to its middle.
 			const glm::vec3 to_eye = _observer - middle;
 			const float distance_sq = fading ? shape.lod_distance_sq(glm::dot(to_eye, to_eye)) : 0.0f;
-			const float share = lod == LOD_MESH_3 && fading ? _lod.impostor_share(distance_sq) : 0.0f;
+			const float share = lod == LOD_MESH_3 && fading && state == PlantState::STANDING ? _lod.impostor_share(distance_sq) : 0.0f;
 			if (share > 0.0f) {
 				write_impostor(buckets[BUCKET_IMPOSTOR], record, share);
 				buckets[BUCKET_IMPOSTOR].include(middle, reach);

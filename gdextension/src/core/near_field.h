@@ -72,9 +72,6 @@ public:
 	void request_lod_update() { _lod_due = true; }
 	// A plant type's shape changed (its impostors' size): the active chunks' impostor records anew.
 	void reshape();
-	// Plants of p_chunk changed state (FieldPlants::set_plant_state): its impostor records anew when
-	// it is active. (A cut plant is not drawn near; a flattened one lies bent by max_bend.)
-	void restate(uint32_t p_chunk);
 	// An observer that moved farther than this since the last LOD pass gets one at the next update,
 	// whatever the interval (a teleport; at 0.25 s intervals normal walking and flying stay below).
 	static constexpr float JUMP_DISTANCE = 4.0f;
