@@ -361,6 +361,29 @@ if runs demo; then
     else
       grep '^demo:' "$artifacts/hillside.log" | tail -n 5; record 0 1 "hillside render"
     fi
+    echo "== the demo's play: a trail walked and the scythe swung, saved at quit, restored by --load-changes"
+    play_dir=$(mktemp -d)
+    printf '1 1.7 7.5 6 1.0 7.5\n19 1.7 7.5 24 1.0 7.5\n' >"$play_dir/walk.path"
+    printf '10 12 11 10 0 7.5\n10 12 11 10 0 7.5\n' >"$play_dir/look.path"
+    play_run() { # $1 = log, rest = demo arguments
+      local log=$1
+      shift
+      timeout 300 "${xvfb[@]}" "$godot" --audio-driver Dummy --resolution 640x360 --path "$repo/demo_project" -- \
+        --map res://fields/demo.field --shadows off --no-hud "$@" >"$log" 2>&1
+    }
+    play_run "$artifacts/play_walk.log" --path "$play_dir/walk.path" --frames 24 --cut-every 6
+    play_run "$artifacts/play_loaded.log" --path "$play_dir/look.path" --frames 3 --wind 0 --load-changes \
+      --screenshot "$artifacts/play_loaded.png"
+    play_run "$artifacts/play_plain.log" --path "$play_dir/look.path" --frames 3 --wind 0 \
+      --screenshot "$artifacts/play_plain.png"
+    rm -rf "$play_dir"
+    if timeout 120 "$godot" --headless --path "$repo/demo_project" --script res://tests/cases/check_play.gd -- \
+      "$artifacts/play_plain.png" "$artifacts/play_loaded.png" "$artifacts/play_walk.log" "$artifacts/play_loaded.log" 2>&1 |
+      tee "$artifacts/play_check.log" | grep '^play:' && grep -q '^play: ok$' "$artifacts/play_check.log"; then
+      record 1 0 "demo play restored"
+    else
+      grep '^demo:' "$artifacts/play_walk.log" "$artifacts/play_loaded.log" | tail -n 6; record 0 1 "demo play restored"
+    fi
     echo "== tools/demo.sh fails, saying why, on a broken map and on a missing library"
     broken=$(mktemp -d)
     printf '4 2\n****\n*?**\n' >"$broken/broken.field"

@@ -26,6 +26,8 @@ extends Node3D
 ##   --budget-primitives N    hold the near meshes to N triangles a frame (SunflowerField.budget_primitives)
 ##   --budget-gpu-ms MS       hold the frame's GPU time to MS milliseconds (SunflowerField.budget_gpu_ms)
 ##   --no-hud                 hide the heads-up display (pictures for measurements)
+##   --load-changes           restore the plants as the last run left them (trampled, cut: saved at quit)
+##   --cut-every K            recording mode: swing the scythe (X) every K-th frame
 
 const MAP_NAMES: PackedStringArray = [
 	"Demo field (40 x 30)",
@@ -58,6 +60,10 @@ var _stats_timer: float = 0.0
 var _draw_distance: float = NativeBaseline.CUT_OFF
 ## The recording mode (the benchmark harness), configured from the command line.
 var _recording: DemoRecording = DemoRecording.new()
+## Trampling, the scythe, the events' counts and the save of the changes.
+var _play: DemoPlay = DemoPlay.new()
+var _load_changes: bool = false
+var _cut_every: int = 0
 
 @onready var _field: SunflowerField = $Field
 @onready var _camera: FlyCamera = $Camera
@@ -72,6 +78,10 @@ func _ready() -> void:
 	_hud.map_chosen.connect(load_map)
 	_recording.name = "Recording"
 	add_child(_recording)
+	_recording.before_quit = func() -> void: _play.save(_map_path)
+	_play.name = "Play"
+	add_child(_play)
+	_play.setup(_field, _camera)
 	var parts: PackedStringArray = []
 	var args: PackedStringArray = OS.get_cmdline_user_args()
 	var i: int = 0
@@ -125,6 +135,11 @@ func _ready() -> void:
 			"--no-hud":
 				_hud.visible = false
 				i -= 1
+			"--load-changes":
+				_load_changes = true
+				i -= 1
+			"--cut-every":
+				_cut_every = value.to_int()
 			_:
 				_fail("unknown argument '%s' (see demo.gd for the options)" % args[i])
 				i -= 1
@@ -160,6 +175,10 @@ func _ready() -> void:
 	print("demo: %s built in %.0f ms; %s" % [_map_path, _recording.build_ms, _field.get_build_stats()])
 	for argument: String in parts:
 		apply_part_argument(argument)
+	if _load_changes:
+		var problem: String = _play.load_saved(_map_path)
+		if not problem.is_empty():
+			_fail(problem)
 	if _recording.frames_total >= 0:
 		_recording.start(_field, _camera)
 
@@ -261,10 +280,13 @@ func _unhandled_input(event: InputEvent) -> void:
 		load_map(MAP_PATHS[(MAP_PATHS.find(_map_path) + 1) % MAP_PATHS.size()])
 	elif event.is_action_pressed("load_part"):
 		_open_part_dialog()
+	elif event.is_action_pressed("cut_plants"):
+		_hud.show_message("scythe: %d plants cut" % _play.swing_scythe())
 	elif event.is_action_pressed("quit"):
 		if Input.mouse_mode == Input.MOUSE_MODE_CAPTURED:
 			Input.mouse_mode = Input.MOUSE_MODE_VISIBLE
 		else:
+			_play.save(_map_path)
 			get_tree().quit()
 
 
@@ -282,6 +304,8 @@ func _process(delta: float) -> void:
 		_stats_timer = 0.25
 		_hud.set_stats(_stats_text())
 	if _recording.is_running():  # recording starts once the field is built
+		if _cut_every > 0 and _recording.get_frame() % _cut_every == _cut_every - 1:
+			_play.swing_scythe()
 		_recording.record_frame()
 
 
@@ -318,7 +342,7 @@ func _stats_text() -> String:
 			+ "%d plants: mesh 1 %d, mesh 2 %d, mesh 3 %d, sprite %d, billboard %d\n"
 			+ "triangles drawn ~%.2f M\n"
 			+ "wind %.1f m/s towards (%.2f, %.2f), increment %.1f, %s model (F9)\n"
-			+ "%s, %d plants pushed%s"
+			+ "%s, %d pushed; %s%s"
 		)
 		% [
 			fps,
@@ -338,6 +362,7 @@ func _stats_text() -> String:
 			_wind_model_name(),
 			"walking (F8)" if _camera.walking else "flying (F8 walks)",
 			_field.get_pushed_count(),
+			_play.stats_text(),
 			_budget_text(costs),
 		]
 	)

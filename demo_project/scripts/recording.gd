@@ -25,6 +25,8 @@ var build_ms: float = 0.0
 var buffer_memory: Dictionary = {}
 ## The baseline's node, for its chunk count (or null).
 var baseline_node: Node
+## Called once the recording is done, before the demo quits.
+var before_quit: Callable
 
 var _field: SunflowerField
 var _camera: FlyCamera
@@ -84,6 +86,11 @@ static func field_size(map: SunflowerFieldMap, cell_size: float) -> Vector2:
 	return Vector2(map.columns, map.rows) * cell_size
 
 
+## The recorded frames so far.
+func get_frame() -> int:
+	return _frame
+
+
 ## One recorded frame: the last frame's figures, then the camera moved for the next.
 func record_frame() -> void:
 	var now: int = Time.get_ticks_usec()
@@ -137,6 +144,8 @@ func _finish() -> void:
 	)
 	if not stats_path.is_empty():
 		_write_stats()
+	if before_quit.is_valid():
+		before_quit.call()
 	# A recording ends a few frames after its first: the renderer may still compile a pipeline in the
 	# background, and quitting then can deadlock the engine's exit (godot#117064).
 	await get_tree().create_timer(EXIT_SETTLE_SECONDS).timeout
