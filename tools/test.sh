@@ -26,7 +26,7 @@ SUITES=(
   "demo|the demo's own tests, its recording mode, and tools/demo.sh failing on a broken map or a missing library"
   "dropin|the release zip in a new project; an exported game's map; a project with no library"
   "editor|the editor: scenes with fields, painting, baking impostors, a malformed map's import"
-  "fuzz|libFuzzer (ASan + UBSan) over the map parser, the layout and a simulation step"
+  "fuzz|libFuzzer (ASan + UBSan) over the map parser, the layout and a simulation step, and over play's changes"
 )
 # The engine tests that need no renderer: the "headless" suite runs them alone (the others read back
 # what the renderer holds or draw pictures; the "engine" suite runs every test).
@@ -188,10 +188,15 @@ if runs fuzz; then
   fuzz_seconds=${FUZZ_SECONDS:-60}
   (
     corpus=$(mktemp -d)
+    changes_corpus=$(mktemp -d)
+    # Two thirds of the time to the map parser and layout, a third to sequences of play's changes.
     "$repo/.cache/venv/bin/scons" -Q -j1 fuzz >"$artifacts/fuzz_build.log" 2>&1 &&
-      "$repo/build/fuzz/fuzz_field_map" -max_total_time="$fuzz_seconds" -max_len=4096 -print_final_stats=1 \
-        -artifact_prefix="$artifacts/fuzz-" "$corpus" "$repo/gdextension/fuzz/corpus" >"$artifacts/fuzz.log" 2>&1
+      "$repo/build/fuzz/fuzz_field_map" -max_total_time=$((fuzz_seconds * 2 / 3)) -max_len=4096 -print_final_stats=1 \
+        -artifact_prefix="$artifacts/fuzz-" "$corpus" "$repo/gdextension/fuzz/corpus" >"$artifacts/fuzz.log" 2>&1 &&
+      "$repo/build/fuzz/fuzz_field_changes" -max_total_time=$((fuzz_seconds / 3)) -max_len=2048 -print_final_stats=1 \
+        -artifact_prefix="$artifacts/fuzz-changes-" "$changes_corpus" >"$artifacts/fuzz_changes.log" 2>&1
     status=$?
+    rm -rf "$changes_corpus"
     rm -rf "$corpus"
     exit $status
   ) &
@@ -264,12 +269,12 @@ fi
 # --- The fuzzer, which ran beside the first suites, ends before the engine suites begin ----------
 if runs fuzz; then
   suite_start=$SECONDS
-  echo "== fuzzing the map parser and layout for ${fuzz_seconds} s (libFuzzer, ASan + UBSan; run beside the first suites)"
+  echo "== fuzzing the map parser and layout, then play's changes against a model, ${fuzz_seconds} s (libFuzzer, ASan + UBSan; run beside the first suites)"
   if wait "$fuzz_pid"; then
-    grep -E "^Done|stat::number_of_executed_units" "$artifacts/fuzz.log" | head -n 2
+    grep -E "^Done" "$artifacts/fuzz.log" "$artifacts/fuzz_changes.log"
     record 1 0 "fuzzing"
   else
-    tail -n 30 "$artifacts/fuzz_build.log" "$artifacts/fuzz.log"; record 0 1 "fuzzing"
+    tail -n 30 "$artifacts/fuzz_build.log" "$artifacts/fuzz.log" "$artifacts/fuzz_changes.log" 2>/dev/null; record 0 1 "fuzzing"
   fi
   suite_done fuzz
 fi
