@@ -147,8 +147,12 @@ func save_changes_to_file(path: String) -> Error:
 	return written
 
 
-## [method load_changes] from the file [param path].
+## [method load_changes] from the file [param path]. When it is missing but its partial file is
+## there (a crash between a rename's removing the old save and placing the new, where a platform's
+## rename does both), the partial one is read: its checksum says whether it is whole.
 func load_changes_from_file(path: String) -> Error:
+	if not FileAccess.file_exists(path) and FileAccess.file_exists(path + PARTIAL_SUFFIX):
+		path += PARTIAL_SUFFIX
 	var bytes: PackedByteArray = FileAccess.get_file_as_bytes(path)
 	var opened: Error = FileAccess.get_open_error()
 	if opened != OK:

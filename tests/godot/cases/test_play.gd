@@ -211,6 +211,14 @@ func test_a_save_loads_back_cell_for_cell_and_a_bad_one_changes_nothing() -> voi
 	other.free()
 	check_eq(field.play.get_change_count(), count, "nothing changed")
 	check_eq(field.play.get_cell_state(cut[0]), states[cut[0]], "the cut cell as it was")
+	# A crash between the rename's removing the save and placing the new one: the partial file is read.
+	field.play.change_plants(cut, SunflowerFieldPlay.Change.RESTORE)
+	DirAccess.remove_absolute(ProjectSettings.globalize_path(path))
+	partial = FileAccess.open(path + SunflowerFieldPlay.PARTIAL_SUFFIX, FileAccess.WRITE)
+	partial.store_buffer(saved)
+	partial.close()
+	check_eq(field.play.load_changes_from_file(path), OK, "the whole partial file read in the save's place")
+	check_eq(field.play.get_change_count(), count, "with every change")
 	DirAccess.remove_absolute(ProjectSettings.globalize_path(path))
 	DirAccess.remove_absolute(ProjectSettings.globalize_path(path + SunflowerFieldPlay.PARTIAL_SUFFIX))
 
