@@ -287,6 +287,68 @@ func get_active_mask(species: int) -> PackedByteArray:
 	return native.get_active_mask(species)
 
 
+## Play's [param action] (0 stand, 1 flatten, 2 cut, 3 remove, 4 as the map) on map cells at the
+## field's clock [param now]; the cells changed.
+func change_cells(cells: PackedInt32Array, action: int, now: float) -> PackedInt32Array:
+	return native.change_cells(cells, action, now)
+
+
+## The clock moved to [param now]: the cells whose plants stood again by regrowth.
+func advance_changes(now: float) -> PackedInt32Array:
+	return native.advance_changes(now)
+
+
+## A plant type's regrowth: seconds until a flattened plant stands, until a cut one has grown.
+func set_regrowth(species: int, flattened_seconds: float, cut_seconds: float) -> void:
+	native.set_regrowth(species, flattened_seconds, cut_seconds)
+
+
+## A cell after play: x its plant (0 none, 1 + type), y its state, z the clock when it took it.
+func get_cell_change(cell: int) -> Vector3:
+	return native.get_cell_change(cell)
+
+
+## How many cells differ from the map.
+func get_change_count() -> int:
+	return native.get_change_count()
+
+
+## The map cells whose centres lie within [param radius] of [param center] (x, z).
+func get_cells_in_circle(center: Vector2, radius: float) -> PackedInt32Array:
+	return native.get_cells_in_circle(center, radius)
+
+
+## The map cells whose centres lie between [param min] and [param max] (x, z).
+func get_cells_in_rect(min: Vector2, max: Vector2) -> PackedInt32Array:
+	return native.get_cells_in_rect(min, max)
+
+
+## The pushers push over the standing plants within [param share] of their radius: cell and pusher
+## index, two ints a plant.
+func trample(share: float, now: float) -> PackedInt32Array:
+	return native.trample(share, now)
+
+
+## A plant's map cell, or -1.
+func get_plant_cell(plant: int) -> int:
+	return native.get_plant_cell(plant)
+
+
+## The save of the changes at the clock [param now].
+func save_changes(now: float) -> PackedByteArray:
+	return native.save_changes(now)
+
+
+## Loads a save of [method save_changes]: "" or what is wrong (nothing changed then).
+func load_changes(bytes: PackedByteArray) -> String:
+	return native.load_changes(bytes)
+
+
+## The clock of the save loaded last.
+func get_loaded_clock() -> float:
+	return native.get_loaded_clock()
+
+
 ## The cells whose plant play took down, a bit each: rows of ceil(columns / 8) bytes (empty until
 ## the first change); the impostors hide their plants.
 func get_hidden_cells() -> PackedByteArray:

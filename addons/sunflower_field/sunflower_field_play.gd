@@ -42,24 +42,27 @@ enum State { STANDING, FLATTENED, CUT, NONE }
 
 ## A save file's suffix while it is written (renamed over the save once complete).
 const PARTIAL_SUFFIX: String = ".partial"
+const NativeField: GDScript = preload("native_field.gd")
 
 var _field: Node3D
+var _simulation: Callable  # the field's NativeField drawn now, or null
 var _clock: float = 0.0
 var _over_field: Dictionary = {}  # pusher node -> true while it stands over the field's map
 
 
-func _init(field: Node3D) -> void:
+func _init(field: Node3D, simulation: Callable) -> void:
 	_field = field
+	_simulation = simulation
 
 
 ## Applies [param change] to the plants of [param cells] at once; returns the cells whose plant
 ## changed (a cell with no plant, or in that state already, is not) and tells
 ## [signal plants_changed]. A cell that is not the map's is an error, and nothing changes.
 func change_plants(cells: PackedInt32Array, change: Change) -> PackedInt32Array:
-	var native: Object = _native()
-	if native == null:
+	var simulation: NativeField = _drawn()
+	if simulation == null:
 		return PackedInt32Array()
-	var changed: PackedInt32Array = native.change_cells(cells, change, _clock)
+	var changed: PackedInt32Array = simulation.change_cells(cells, change, _clock)
 	if not changed.is_empty():
 		plants_changed.emit(changed, change)
 	return changed
@@ -68,42 +71,42 @@ func change_plants(cells: PackedInt32Array, change: Change) -> PackedInt32Array:
 ## The map cells whose centres lie within [param radius] metres of [param center] (the field's space;
 ## its height ignored).
 func get_cells_in_circle(center: Vector3, radius: float) -> PackedInt32Array:
-	var native: Object = _native()
-	return native.get_cells_in_circle(Vector2(center.x, center.z), radius) if native else PackedInt32Array()
+	var simulation: NativeField = _drawn()
+	return simulation.get_cells_in_circle(Vector2(center.x, center.z), radius) if simulation else PackedInt32Array()
 
 
 ## The map cells whose centres lie in [param area] (the field's x, z: position and size in metres).
 func get_cells_in_rect(area: Rect2) -> PackedInt32Array:
-	var native: Object = _native()
-	return native.get_cells_in_rect(area.position, area.end) if native else PackedInt32Array()
+	var simulation: NativeField = _drawn()
+	return simulation.get_cells_in_rect(area.position, area.end) if simulation else PackedInt32Array()
 
 
 ## The map cell under [param point] (the field's space), or -1 off the map.
 func get_cell_at(point: Vector3) -> int:
-	var native: Object = _native()
+	var simulation: NativeField = _drawn()
 	var cell_size: float = _field.cell_size
-	if native == null or cell_size <= 0.0:
+	if simulation == null or cell_size <= 0.0:
 		return -1
 	var column: int = floori(point.x / cell_size)
 	var row: int = floori(point.z / cell_size)
-	if column < 0 or row < 0 or column >= native.get_map_columns() or row >= native.get_map_rows():
+	if column < 0 or row < 0 or column >= simulation.get_map_columns() or row >= simulation.get_map_rows():
 		return -1
-	return row * native.get_map_columns() + column
+	return row * simulation.get_map_columns() + column
 
 
 ## The map cell of plant [param plant] (as [method SunflowerField.get_plant_at] and
 ## [method SunflowerField.get_plant_for_body] give), or -1.
 func get_cell_of_plant(plant: int) -> int:
-	var native: Object = _native()
-	return native.get_plant_cell(plant) if native else -1
+	var simulation: NativeField = _drawn()
+	return simulation.get_plant_cell(plant) if simulation else -1
 
 
 ## What a cell holds after play: [code]plant_type[/code] (its index in
 ## [method SunflowerField.get_plant_types], -1 for none), [code]state[/code] (a [enum State]) and
 ## [code]since[/code] (the clock, [method get_clock], when it took that state).
 func get_cell_state(cell: int) -> Dictionary:
-	var native: Object = _native()
-	var change: Vector3 = native.get_cell_change(cell) if native else Vector3.ZERO
+	var simulation: NativeField = _drawn()
+	var change: Vector3 = simulation.get_cell_change(cell) if simulation else Vector3.ZERO
 	var plant_type: int = int(change.x) - 1
 	var state: State = State.NONE if plant_type < 0 else int(change.y) as State
 	return {"plant_type": plant_type, "state": state, "since": change.z}
@@ -111,8 +114,8 @@ func get_cell_state(cell: int) -> Dictionary:
 
 ## How many cells differ from the map by play.
 func get_change_count() -> int:
-	var native: Object = _native()
-	return native.get_change_count() if native else 0
+	var simulation: NativeField = _drawn()
+	return simulation.get_change_count() if simulation else 0
 
 
 ## Seconds the field's play clock has run: it runs while the game does; regrowth follows it and a
@@ -124,8 +127,8 @@ func get_clock() -> float:
 ## The changes and the clock, compact (3–7 bytes a changed cell), versioned and bound to the map: put
 ## them in your game's save and give them back to [method load_changes].
 func save_changes() -> PackedByteArray:
-	var native: Object = _native()
-	return native.save_changes(_clock) if native else PackedByteArray()
+	var simulation: NativeField = _drawn()
+	return simulation.save_changes(_clock) if simulation else PackedByteArray()
 
 
 ## Replaces the changes and the clock by a save of [method save_changes], shown at once. A save of
@@ -179,49 +182,50 @@ static func write_atomically(path: String, bytes: PackedByteArray) -> Error:
 	return DirAccess.rename_absolute(partial, path)
 
 
-## (The field calls this.) One frame of play on [param simulation] (a NativeField): the clock moves
+## (The field calls this.) One frame of play on [param simulation]: the clock moves
 ## by [param delta], plants due recover, the [param pushers] trample within [param trample_share] of
 ## their radius and are followed in and out of the field.
-func _step(simulation: RefCounted, delta: float, pushers: Array[Node3D], trample_share: float) -> void:
+func _step(simulation: NativeField, delta: float, pushers: Array[Node3D], trample_share: float) -> void:
 	if simulation == null:
 		return
 	_clock += delta
-	var recovered: PackedInt32Array = simulation.native.advance_changes(_clock)
+	var recovered: PackedInt32Array = simulation.advance_changes(_clock)
 	if not recovered.is_empty():
 		plants_recovered.emit(recovered)
 	if trample_share > 0.0 and not pushers.is_empty():
-		_tell_trampled(simulation.native.trample(trample_share, _clock), pushers)
-	_follow_pushers(simulation.native, pushers)
+		_tell_trampled(simulation.trample(trample_share, _clock), pushers)
+	_follow_pushers(simulation, pushers)
 
 
 ## (The field calls this.) Each plant type of [param plants] (FieldPlant per species) gets its
 ## recovery times in [param simulation].
-func _send_regrowth(simulation: RefCounted, plants: Array) -> void:
+func _send_regrowth(simulation: NativeField, plants: Array) -> void:
 	for species: int in plants.size():
-		simulation.native.set_regrowth(species, plants[species].recover_after, plants[species].regrow_after)
+		simulation.set_regrowth(species, plants[species].recover_after, plants[species].regrow_after)
 
 
 ## (The field calls this.) The changes of [param old] carried to [param new] (a rebuild): kept when
 ## both read the same map, forgotten for another map.
-func _carry(old: RefCounted, new: RefCounted) -> void:
-	if old == null or new == null or old == new or old.native.get_change_count() == 0:
+func _carry(old: NativeField, new: NativeField) -> void:
+	if old == null or new == null or old == new or old.get_change_count() == 0:
 		return
-	new.native.load_changes(old.native.save_changes(_clock))  # another map's save is refused: forgotten
+	new.load_changes(old.save_changes(_clock))  # another map's save is refused: forgotten
 
 
-func _native() -> Object:  # the field's SunflowerSimulation, once it has plants drawn
-	return _field.get_simulation() if _field.get_plant_count() > 0 else null
+func _drawn() -> NativeField:  # the field's simulation, once it has plants drawn
+	var simulation: NativeField = _simulation.call()
+	return simulation if simulation and simulation.get_plant_count() > 0 else null
 
 
 func _load(bytes: PackedByteArray, what: String) -> Error:
-	var native: Object = _native()
+	var simulation: NativeField = _drawn()
 	var message: String = (
-		native.load_changes(bytes)
-		if native
+		simulation.load_changes(bytes)
+		if simulation
 		else "the field has no plants drawn yet (load changes once it is built: see field_built)"
 	)
 	if message.is_empty():
-		_clock = native.get_loaded_clock()
+		_clock = simulation.get_loaded_clock()
 		return OK
 	push_error("SunflowerField '%s': %s cannot be loaded: %s" % [_field.name, what, message])
 	return ERR_INVALID_DATA
@@ -237,10 +241,10 @@ func _tell_trampled(pairs: PackedInt32Array, pushers: Array[Node3D]) -> void:
 		plants_trampled.emit(by_pusher[index], pushers[index] if index < pushers.size() else null)
 
 
-func _follow_pushers(native: Object, pushers: Array[Node3D]) -> void:
+func _follow_pushers(simulation: NativeField, pushers: Array[Node3D]) -> void:
 	if pushers.is_empty() and _over_field.is_empty():
 		return
-	var size: Vector2 = Vector2(native.get_map_columns(), native.get_map_rows()) * _field.cell_size
+	var size: Vector2 = Vector2(simulation.get_map_columns(), simulation.get_map_rows()) * _field.cell_size
 	var now: Dictionary = {}
 	for pusher: Node3D in pushers:
 		var local: Vector3 = _field.to_local(pusher.global_position)
