@@ -373,7 +373,7 @@ if runs demo; then
     play_run() { # $1 = log, rest = demo arguments
       local log=$1
       shift
-      timeout 300 "${xvfb[@]}" "$godot" --audio-driver Dummy --resolution 640x360 --path "$repo/demo_project" -- \
+      timeout 300 "${xvfb[@]}" "$godot" --audio-driver Dummy --resolution 320x180 --path "$repo/demo_project" -- \
         --map res://fields/demo.field --shadows off --no-hud "$@" >"$log" 2>&1
     }
     play_run "$artifacts/play_walk.log" --path "$play_dir/walk.path" --frames 24 --cut-every 6

@@ -309,11 +309,8 @@ func update_masks() -> void:
 			grid[0], grid[1], false, Image.FORMAT_R8, simulation.get_active_mask(species)
 		)
 		if species >= _masks.size():
-			_masks.append(ImageTexture.create_from_image(image))
-		elif _masks[species].get_size() != Vector2(grid[0], grid[1]):
-			_masks[species].set_image(image)
-		else:
-			_masks[species].update(image)
+			_masks.append(null)
+		_masks[species] = _show_image(_masks[species], image)
 		_impostors[species].set_active_chunks(_masks[species], grid[0])
 
 
@@ -332,15 +329,23 @@ func update_hidden_cells() -> void:
 	var width: int = mini(bytes.size(), HIDDEN_TEXTURE_WIDTH)
 	var height: int = ceili(float(bytes.size()) / width)
 	bytes.resize(width * height)
-	var image: Image = Image.create_from_data(width, height, false, Image.FORMAT_R8, bytes)
-	if _hidden == null or _hidden.get_size() != Vector2(width, height):
-		_hidden = ImageTexture.create_from_image(image)
-	else:
-		_hidden.update(image)
+	_hidden = _show_image(_hidden, Image.create_from_data(width, height, false, Image.FORMAT_R8, bytes))
 	for impostors: ImpostorSet in _impostors:
 		impostors.set_shared(&"hidden_cells", _hidden)
 		impostors.set_shared(&"hidden_row_bytes", (simulation.get_map_columns() + 7) / 8)
 		impostors.set_shared(&"hidden_cell_size", _cell_size)
+
+
+## [param texture] showing [param image] now: updated in place when it has the image's size, else
+## made (or given the image) anew.
+static func _show_image(texture: ImageTexture, image: Image) -> ImageTexture:
+	if texture == null:
+		return ImageTexture.create_from_image(image)
+	if texture.get_size() != Vector2(image.get_size()):
+		texture.set_image(image)
+	else:
+		texture.update(image)
+	return texture
 
 
 ## Near plants of species s from mesh [code]levels[s][/code] on cast no mesh shadows (the far tiles'

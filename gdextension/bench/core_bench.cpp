@@ -1,5 +1,6 @@
 // Core benchmark, no engine: per-frame update time (wind + LOD + buffer writes) along a scripted
 // walk over fields of several sizes. Prints medians and 99th percentiles, not pass/fail.
+#include "bench_maps.h"
 #include "field_simulation.h"
 #include "tile_reorder.h"
 
@@ -12,18 +13,9 @@
 #include <vector>
 
 using namespace sunflower;
+using sunflower_bench::rect_map;
 
 namespace {
-
-std::string rect_map(int p_columns, int p_rows) {
-	std::string text = std::to_string(p_columns) + " " + std::to_string(p_rows) + "\n";
-	const std::string row(static_cast<size_t>(p_columns), '*');
-	for (int r = 0; r < p_rows; ++r) {
-		text += row;
-		text += '\n';
-	}
-	return text;
-}
 
 double percentile(std::vector<double> p_values, double p_q) {
 	std::sort(p_values.begin(), p_values.end());

@@ -5,6 +5,7 @@
 // update. Four shapes of change: a scythe's circle by the observer, a trail across the field, cells
 // scattered over all of it, one cell far away. Prints medians of 21 runs (cut, then given back: each
 // run changes every plant listed).
+#include "bench_maps.h"
 #include "field_simulation.h"
 
 #include <algorithm>
@@ -16,21 +17,12 @@
 #include <vector>
 
 using namespace sunflower;
+using sunflower_bench::rect_map;
 
 namespace {
 
 constexpr int SIDE = 1000;
 constexpr int RUNS = 21;
-
-std::string rect_map(int p_columns, int p_rows) {
-	std::string text = std::to_string(p_columns) + " " + std::to_string(p_rows) + "\n";
-	const std::string row(static_cast<size_t>(p_columns), '*');
-	for (int r = 0; r < p_rows; ++r) {
-		text += row;
-		text += '\n';
-	}
-	return text;
-}
 
 double median(std::vector<double> p_values) {
 	std::sort(p_values.begin(), p_values.end());
