@@ -35,10 +35,9 @@ uint64_t cell_key(const FieldMap &p_map, int p_column, int p_row) {
 
 // The root (x, z) of the plant of a map's plant cell, and its α: the thesis' rule, seeded per cell.
 glm::vec2 plant_root(const LayoutParams &p_params, uint64_t p_key, int p_column, int p_row, float &r_alpha) {
-	r_alpha = unit_float(hash_plant(p_params.seed, p_key, STREAM_ALPHA)) * p_params.jitter;
-	const float alpha_z = p_params.independent_jitter
-			? unit_float(hash_plant(p_params.seed, p_key, STREAM_ALPHA_Z)) * p_params.jitter
-			: r_alpha;
+	const float jitter = std::clamp(p_params.jitter, 0.0f, LayoutParams::MAX_JITTER);
+	r_alpha = unit_float(hash_plant(p_params.seed, p_key, STREAM_ALPHA)) * jitter;
+	const float alpha_z = p_params.independent_jitter ? unit_float(hash_plant(p_params.seed, p_key, STREAM_ALPHA_Z)) * jitter : r_alpha;
 	return glm::vec2((float(p_column) + r_alpha) * p_params.cell_size, (float(p_row) + alpha_z) * p_params.cell_size);
 }
 

@@ -37,7 +37,11 @@ struct LayoutParams {
 	float cell_size = float(param::CELL_SIZE.default_value); // metres per map character (thesis: 0.5 m)
 	uint64_t seed = 1;
 	bool independent_jitter = false; // false: the same α on x and z, as in the thesis
-	float jitter = 0.5f; // α ∈ [0, jitter) in cells (thesis: 0.5)
+	// α ∈ [0, jitter) in cells (thesis: 0.5), at most MAX_JITTER.
+	float jitter = MAX_JITTER;
+	// Every root lies in the first half of its cell: the impostor shader finds a plant's map cell from
+	// its root (FieldSimulation::get_hidden_cells).
+	static constexpr float MAX_JITTER = 0.5f;
 	// Each species' variety (index: species).
 	std::array<PlantVariety, FieldMap::MAX_SPECIES> varieties{};
 	// Metres; the far representations are grouped in square chunks.
