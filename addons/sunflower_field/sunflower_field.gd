@@ -822,9 +822,13 @@ func get_plant_at(point: Vector3, max_distance: float = 0.5) -> int:
 
 
 ## The plant whose stalk collider is [param body] (a ray cast's or a collision's [code]rid[/code],
-## see [member collision_reach]), or -1.
+## see [member collision_reach]), or -1; -1 too for a plant flattened, cut or removed since (its
+## collider goes at the field's next frame).
 func get_plant_for_body(body: RID) -> int:
-	return _driver.interaction.get_plant_of_body(body)
+	var plant: int = _driver.interaction.get_plant_of_body(body)
+	if plant < 0 or play.get_cell_state(play.get_cell_of_plant(plant))["state"] != SunflowerFieldPlay.State.STANDING:
+		return -1
+	return plant
 
 
 ## How many stalk colliders stand now (see [member collision_reach]).

@@ -73,6 +73,10 @@ func test_stalk_colliders_stand_within_reach_and_ray_casts_hit_the_plant() -> vo
 	if check(not hit.is_empty(), "the ray across plant %d's stalk hits something" % target):
 		check(hit["collider"] == field, "the field is the collider's object")
 		check_eq(field.get_plant_for_body(hit["rid"]), target, "the collider tells which plant was hit")
+		var cell: PackedInt32Array = [field.play.get_cell_of_plant(target)]
+		field.play.change_plants(cell, SunflowerFieldPlay.Change.CUT)
+		check_eq(field.get_plant_for_body(hit["rid"]), -1, "a plant cut since its collider stood is no plant")
+		field.play.change_plants(cell, SunflowerFieldPlay.Change.RESTORE)
 	# The capsule reaches the head's root, as the core stacks this plant's parts, and no higher.
 	var stalk: Vector2 = field.get_simulation().get_plant_stalk(target)
 	var parts: Array = field.get_plant_info(target)["parts"]
