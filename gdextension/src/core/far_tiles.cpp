@@ -13,35 +13,7 @@
 
 namespace sunflower {
 
-void FarTiles::tiles_of_chunk(uint32_t p_chunk, std::vector<uint32_t> &r_tiles) const {
-	const size_t chunk_count = _plants.get_layout().chunks.size();
-	if (_chunk_tiles_first.size() != chunk_count + 1) {
-		std::vector<uint32_t> counts(chunk_count + 1, 0);
-		for (uint32_t t = 0; t < _tiles.size(); ++t) {
-			for (uint32_t k = 0; k < _tiles[t].count; ++k) {
-				++counts[get_tile_chunk(t, k) + 1];
-			}
-		}
-		for (size_t c = 0; c < chunk_count; ++c) {
-			counts[c + 1] += counts[c];
-		}
-		_chunk_tiles_first = counts;
-		_chunk_tiles.assign(counts[chunk_count], 0);
-		for (uint32_t t = 0; t < _tiles.size(); ++t) {
-			for (uint32_t k = 0; k < _tiles[t].count; ++k) {
-				_chunk_tiles[counts[get_tile_chunk(t, k)]++] = t;
-			}
-		}
-	}
-	if (p_chunk < chunk_count) {
-		r_tiles.insert(r_tiles.end(), _chunk_tiles.begin() + _chunk_tiles_first[p_chunk],
-				_chunk_tiles.begin() + _chunk_tiles_first[p_chunk + 1]);
-	}
-}
-
 void FarTiles::build() {
-	_chunk_tiles_first.clear();
-	_chunk_tiles.clear();
 	const FieldLayout &layout = _plants.get_layout();
 	const size_t chunk_count = layout.chunks.size();
 	// Each chunk's tile key, then the chunks grouped by key (in chunk order within a tile).

@@ -84,9 +84,6 @@ public:
 	// The k-th chunk of a tile (k < Tile::count), in chunk order within each child.
 	uint32_t get_tile_chunk(uint32_t p_tile, uint32_t p_k) const { return _tile_chunks[_tiles[p_tile].first + p_k]; }
 	ChunkBounds get_tile_bounds(uint32_t p_tile) const;
-	// The tiles that hold a chunk's plants (one a tile level), appended to r_tiles. The first call
-	// after a build indexes every chunk's tiles.
-	void tiles_of_chunk(uint32_t p_chunk, std::vector<uint32_t> &r_tiles) const;
 	// The tile's plants' records: Tile::plants × FAR_FLOATS_PER_INSTANCE floats; while tiles merge,
 	// level by level, highest first (chunk after chunk within a level), else chunk after chunk.
 	// Given an observer (the field's frame), each level's chunks come nearest it first (by their
@@ -153,9 +150,6 @@ private:
 	std::vector<uint32_t> _merged_first;
 	std::vector<uint32_t> _merged_plants;
 	std::vector<uint32_t> _tile_visible; // per tile: get_tile_visible_count
-	// Per chunk, the range of its tiles in _chunk_tiles (tiles_of_chunk); empty until first asked.
-	mutable std::vector<uint32_t> _chunk_tiles_first;
-	mutable std::vector<uint32_t> _chunk_tiles;
 	glm::vec3 _tile_count_observer{ 0.0f }; // where the observer was when they were counted
 	bool _tile_counts_due = true;
 };
