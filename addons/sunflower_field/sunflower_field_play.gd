@@ -38,7 +38,12 @@ enum Change {
 	RESTORE,  ## The cell as the map has it.
 }
 ## A cell's plant after play ([method get_cell_state]).
-enum State { STANDING, FLATTENED, CUT, NONE }
+enum State {
+	STANDING,  ## It stands (as the map has it, or stood up again).
+	FLATTENED,  ## It lies bent: trampled or flattened.
+	CUT,  ## It is cut down.
+	NONE,  ## The cell holds no plant: none in the map, or removed.
+}
 
 ## A save file's suffix while it is written (renamed over the save once complete).
 const PARTIAL_SUFFIX: String = ".partial"
