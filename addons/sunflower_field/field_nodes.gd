@@ -326,13 +326,14 @@ func update_hidden_cells() -> void:
 		for impostors: ImpostorSet in _impostors:
 			impostors.set_shared(&"hidden_cell_size", 0.0)  # nothing hidden
 		return
+	var row_bytes: int = bytes.size() / simulation.get_map_rows()  # (the simulation's rows of bits)
 	var width: int = mini(bytes.size(), HIDDEN_TEXTURE_WIDTH)
 	var height: int = ceili(float(bytes.size()) / width)
 	bytes.resize(width * height)
 	_hidden = _show_image(_hidden, Image.create_from_data(width, height, false, Image.FORMAT_R8, bytes))
 	for impostors: ImpostorSet in _impostors:
 		impostors.set_shared(&"hidden_cells", _hidden)
-		impostors.set_shared(&"hidden_row_bytes", (simulation.get_map_columns() + 7) / 8)
+		impostors.set_shared(&"hidden_row_bytes", row_bytes)
 		impostors.set_shared(&"hidden_cell_size", _cell_size)
 
 

@@ -39,7 +39,6 @@ enum GroundSource {
 const Native: GDScript = preload("native.gd")
 const NativeField: GDScript = preload("native_field.gd")
 const FieldDriver: GDScript = preload("field_driver.gd")
-const FieldPlay: GDScript = preload("sunflower_field_play.gd")
 const FieldGround: GDScript = preload("field_ground.gd")
 const FieldLegend: GDScript = preload("field_legend.gd")
 const FieldNodes: GDScript = preload("field_nodes.gd")
@@ -382,7 +381,7 @@ const WIND_PROPERTIES: Dictionary = {
 		pusher_radius = Native.accept("SunflowerField.pusher_radius", value, pusher_radius)
 		_tell_frame()
 ## A pusher pushes over (tramples: flattens) the standing plants whose roots lie within this share of
-## its radius, and [signal plants_trampled] tells which (running game only). Trampled plants lie bent
+## its radius, and [signal SunflowerFieldPlay.plants_trampled] tells which (running game only). Trampled plants lie bent
 ## until their type's [member FieldPlant.recover_after]. 0: pushers only bend plants.
 @export_range(0.0, 1.0, 0.01) var trample_share: float = 0.0:
 	set(value):

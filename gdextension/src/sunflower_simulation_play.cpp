@@ -27,16 +27,6 @@ std::string cells_from(const gdx::PackedInt32Array &p_cells, size_t p_limit, std
 	return "";
 }
 
-gdx::PackedInt32Array to_packed(const std::vector<uint32_t> &p_cells) {
-	gdx::PackedInt32Array out;
-	out.resize(int64_t(p_cells.size()));
-	int32_t *data = out.data();
-	for (size_t i = 0; i < p_cells.size(); ++i) {
-		data[i] = static_cast<int32_t>(p_cells[i]);
-	}
-	return out;
-}
-
 size_t cell_count(const FieldSimulation &p_sim) {
 	const FieldMap &map = p_sim.plants().get_map();
 	return static_cast<size_t>(map.columns) * static_cast<size_t>(map.rows);
@@ -54,7 +44,7 @@ gdx::PackedInt32Array SunflowerSimulation::change_cells(const gdx::PackedInt32Ar
 	SF_FAIL_COND_V_MSG(!error.empty(), gdx::PackedInt32Array(), error);
 	std::vector<uint32_t> changed;
 	_sim.change_cells(cells, static_cast<FieldSimulation::CellAction>(p_action), p_now, changed);
-	return to_packed(changed);
+	return gdx::to_godot_indices(changed);
 }
 
 gdx::PackedInt32Array SunflowerSimulation::advance_changes(double p_now) {
@@ -62,7 +52,7 @@ gdx::PackedInt32Array SunflowerSimulation::advance_changes(double p_now) {
 	if (std::isfinite(p_now)) {
 		_sim.advance_changes(p_now, recovered);
 	}
-	return to_packed(recovered);
+	return gdx::to_godot_indices(recovered);
 }
 
 void SunflowerSimulation::set_regrowth(int64_t p_species, double p_flattened_seconds, double p_cut_seconds) {
@@ -91,14 +81,14 @@ gdx::PackedInt32Array SunflowerSimulation::get_cells_in_circle(gdx::Vector2 p_ce
 	const FieldMap &map = _sim.plants().get_map();
 	cells_in_circle(map.columns, map.rows, _sim.plants().get_layout_params().cell_size, gdx::to_core(p_center), float(p_radius),
 			cells);
-	return to_packed(cells);
+	return gdx::to_godot_indices(cells);
 }
 
 gdx::PackedInt32Array SunflowerSimulation::get_cells_in_rect(gdx::Vector2 p_min, gdx::Vector2 p_max) const {
 	std::vector<uint32_t> cells;
 	const FieldMap &map = _sim.plants().get_map();
 	cells_in_rect(map.columns, map.rows, _sim.plants().get_layout_params().cell_size, gdx::to_core(p_min), gdx::to_core(p_max), cells);
-	return to_packed(cells);
+	return gdx::to_godot_indices(cells);
 }
 
 gdx::PackedInt32Array SunflowerSimulation::trample(double p_share, double p_now) {

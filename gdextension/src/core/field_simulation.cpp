@@ -1,6 +1,5 @@
 #include "field_simulation.h"
 
-#include <algorithm>
 #include <utility>
 
 namespace sunflower {
