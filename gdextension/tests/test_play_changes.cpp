@@ -17,20 +17,22 @@ bool hidden_at(const FieldSimulation &p_sim, const glm::vec3 &p_root) {
 	return byte < hidden.size() && ((hidden[byte] >> (column % 8)) & 1) != 0;
 }
 
-// How many instances of the near buckets (and, with p_tiles, of the far tiles' records the hidden-cells
+// How many instances of the near buckets of every species (and, with p_tiles, of the far tiles' records the hidden-cells
 // mask leaves) stand at p_root with a size: a cut plant has none.
 int drawn_at(const FieldSimulation &p_sim, const glm::vec3 &p_root, bool p_tiles) {
 	int count = 0;
-	for (uint32_t level = 0; level < LOD_MESH_COUNT; ++level) {
-		const InstanceBuffer &bucket = p_sim.near().get_bucket(mesh_bucket(level, 0));
-		for (uint32_t i = 0; i < bucket.get_count(); ++i) {
-			count += glm::distance(placed(bucket, i).root, p_root) < 1e-4f ? 1 : 0;
+	for (uint32_t species = 0; species < p_sim.plants().get_species_count(); ++species) {
+		for (uint32_t level = 0; level < LOD_MESH_COUNT; ++level) {
+			const InstanceBuffer &bucket = p_sim.near().get_bucket(species * BUCKET_COUNT + mesh_bucket(level, 0));
+			for (uint32_t i = 0; i < bucket.get_count(); ++i) {
+				count += glm::distance(placed(bucket, i).root, p_root) < 1e-4f ? 1 : 0;
+			}
 		}
-	}
-	const InstanceBuffer &impostors = p_sim.near().get_bucket(BUCKET_IMPOSTOR);
-	for (uint32_t i = 0; i < impostors.get_count(); ++i) {
-		const FarInstance record = read_far_instance(impostors.get_data() + size_t(i) * impostors.get_stride());
-		count += glm::distance(record.root, p_root) < 1e-4f && record.scale > 0.0f ? 1 : 0;
+		const InstanceBuffer &impostors = p_sim.near().get_bucket(species * BUCKET_COUNT + BUCKET_IMPOSTOR);
+		for (uint32_t i = 0; i < impostors.get_count(); ++i) {
+			const FarInstance record = read_far_instance(impostors.get_data() + size_t(i) * impostors.get_stride());
+			count += glm::distance(record.root, p_root) < 1e-4f && record.scale > 0.0f ? 1 : 0;
+		}
 	}
 	for (uint32_t t = 0; p_tiles && t < p_sim.tiles().get_tile_count(); ++t) {
 		std::vector<float> records(size_t(p_sim.tiles().get_tile(t).plants) * FAR_FLOATS_PER_INSTANCE);
@@ -276,4 +278,137 @@ TEST_CASE("play: the far tiles never change; the hidden-cells mask hides exactly
 	CHECK(((sim.get_hidden_cells()[3 * 25] >> 3) & 1) == 0);
 	CHECK(((sim.get_hidden_cells()[39 * 25 + 24] >> 7) & 1) == 0);
 	CHECK(((sim.get_hidden_cells()[3 * 25] >> 4) & 1) == 1); // (the removed one stays hidden)
+}
+
+TEST_CASE("play: a plant put in an empty cell, or of another type, is drawn at every distance at once; restored, it goes") {
+	// 200 × 40 cells of '*' (species 0) with empty rows 20 and 21, and an 'm' (species 1) at (150, 5).
+	std::string text = "200 40\n";
+	for (int row = 0; row < 40; ++row) {
+		std::string line(200, row == 20 || row == 21 ? '.' : '*');
+		if (row == 5) {
+			line[150] = 'm';
+		}
+		text += line + "\n";
+	}
+	FieldSimulation sim;
+	MapError error;
+	REQUIRE(sim.load_map(text, U"m", U"m", "put", MapLimits{}, error));
+	LayoutParams params;
+	params.chunk_size = 8.0f;
+	sim.set_layout_params(params);
+	sim.near().set_observer({ 5.0f, 1.7f, 10.0f });
+	sim.near().request_lod_update();
+	sim.update(0.016f);
+	const uint32_t map_plants = sim.plants().get_plant_count();
+	const uint32_t map_chunks = sim.plants().get_chunk_count();
+	const uint32_t records_version = sim.get_records_version();
+	const uint32_t near_empty = cell(12, 20); // about 7 m off: a mesh
+	const uint32_t far_empty = cell(190, 21); // about 93 m off: where only far tiles draw
+	const uint32_t far_other = cell(180, 30); // a '*' to become an 'm', far
+	const uint32_t near_other = cell(8, 12); // a '*' to become an 'm', near
+	REQUIRE(sim.plants().plant_at_cell(near_empty) == FieldPlants::NO_PLANT);
+	const glm::vec3 far_other_root = sim.plants().get_layout().plants[sim.plants().plant_at_cell(far_other)].root();
+	CHECK(drawn_at(sim, far_other_root, true) >= 1);
+
+	std::vector<uint32_t> changed;
+	sim.put_cells({ near_empty, far_empty, far_other, near_other, near_other }, 1, 1.0, changed);
+	CHECK(changed == std::vector<uint32_t>{ near_empty, far_empty, far_other, near_other }); // the second put is none
+	CHECK(sim.get_records_version() == records_version); // no rebuild, no tile written
+	CHECK(sim.plants().get_map_plant_count() == map_plants);
+	CHECK(sim.plants().get_plant_count() == map_plants + 4); // appended: no map plant's index moved
+	CHECK(sim.plants().get_map_chunk_count() == map_chunks);
+	sim.update(0.016f);
+	for (uint32_t put : changed) {
+		const uint32_t plant = sim.plants().added_plant_at_cell(put);
+		REQUIRE(plant != FieldPlants::NO_PLANT);
+		CHECK(plant >= map_plants);
+		CHECK(sim.plants().cell_of_plant(plant) == put);
+		const Plant &added = sim.plants().get_layout().plants[plant];
+		CHECK(sim.plants().species_of(added) == 1);
+		// Where the layout would lay out a plant of that cell: the randomness follows the cell.
+		CHECK(added.position == plant_root_at(sim.plants().get_map(), sim.plants().get_layout_params(), int(put % 200), int(put / 200)));
+		CHECK(sim.near().is_chunk_active(added.chunk));
+		CHECK(drawn_at(sim, added.root(), true) == 1); // once: near or as a near impostor, never twice
+		CHECK(sim.get_cell_state(put).plant == 2);
+	}
+	CHECK(sim.near().get_plant_lod(sim.plants().added_plant_at_cell(near_empty)) <= LOD_MESH_2);
+	CHECK(sim.near().get_plant_lod(sim.plants().added_plant_at_cell(far_empty)) >= LOD_SPRITE);
+	// The map's plant of a cell given another type is hidden everywhere (its far record by the mask).
+	CHECK(drawn_at(sim, far_other_root, true) == 1); // the added 'm' alone (it stands where the '*' stood)
+	CHECK(sim.plants().get_plant_state(sim.plants().plant_at_cell(far_other)) == PlantState::CUT);
+	CHECK(hidden_at(sim, far_other_root));
+	// The far tiles' active mask does not take the added plants' chunks for the map's: an 'm' put
+	// beside the map's far 'm' leaves that one to its far tile.
+	const glm::vec3 map_m_root = sim.plants().get_layout().plants[sim.plants().plant_at_cell(cell(150, 5))].root();
+	CHECK(drawn_at(sim, map_m_root, true) == 1);
+	changed.clear();
+	sim.put_cells({ cell(151, 5) }, 1, 1.0, changed);
+	sim.update(0.016f);
+	CHECK(drawn_at(sim, map_m_root, true) == 1);
+	std::vector<uint8_t> active(size_t(sim.plants().get_layout().grid_x) * size_t(sim.plants().get_layout().grid_z));
+	sim.near().write_active_mask(1, active.data());
+	const uint32_t map_m_chunk = sim.plants().get_layout().plants[sim.plants().plant_at_cell(cell(150, 5))].chunk;
+	CHECK(active[sim.plants().get_chunk_cell(map_m_chunk)] == 0);
+	changed.clear();
+	sim.change_cells({ cell(151, 5) }, FieldSimulation::CellAction::RESTORE, 1.0, changed);
+	// Queries find the added plants; they can be trampled, cut, and restored.
+	std::vector<uint32_t> near;
+	const glm::vec3 near_root = sim.plants().get_layout().plants[sim.plants().added_plant_at_cell(near_empty)].root();
+	sim.plants().find_plants_near(glm::vec2(near_root.x, near_root.z), 0.1f, near);
+	CHECK(near == std::vector<uint32_t>{ sim.plants().added_plant_at_cell(near_empty) });
+	changed.clear();
+	sim.change_cells({ near_empty }, FieldSimulation::CellAction::CUT, 2.0, changed);
+	sim.update(0.016f);
+	CHECK(drawn_at(sim, near_root, false) == 0);
+	changed.clear();
+	sim.change_cells({ near_empty, far_other }, FieldSimulation::CellAction::RESTORE, 3.0, changed);
+	CHECK(changed.size() == 2);
+	sim.update(0.016f);
+	CHECK(drawn_at(sim, near_root, true) == 0);
+	CHECK(sim.plants().added_plant_at_cell(near_empty) == FieldPlants::NO_PLANT);
+	CHECK(sim.plants().cell_of_plant(map_plants) == FieldPlants::NO_CELL); // its index is not used again
+	near.clear();
+	sim.plants().find_plants_near(glm::vec2(near_root.x, near_root.z), 0.1f, near);
+	CHECK(near.empty());
+	CHECK(drawn_at(sim, far_other_root, true) >= 1); // the map's '*' back, as a far record
+	CHECK_FALSE(hidden_at(sim, far_other_root));
+
+	// A layout rebuilt for the same map adds them again; every plant is drawn exactly once.
+	params.chunk_size = 4.0f;
+	REQUIRE(sim.set_layout_params(params));
+	sim.near().request_lod_update();
+	sim.update(0.016f);
+	CHECK(sim.plants().get_plant_count() == sim.plants().get_map_plant_count() + 2);
+	const uint32_t far_put = sim.plants().added_plant_at_cell(far_empty);
+	REQUIRE(far_put != FieldPlants::NO_PLANT);
+	CHECK(drawn_at(sim, sim.plants().get_layout().plants[far_put].root(), true) == 1);
+	CHECK(total(sim.near().get_lod_counts()) == int64_t(sim.plants().get_plant_count()));
+
+	// The map's own type put back in a cell whose plant was removed stands it again, as the map has it.
+	changed.clear();
+	sim.change_cells({ cell(30, 30) }, FieldSimulation::CellAction::REMOVE, 4.0, changed);
+	sim.put_cells({ cell(30, 30) }, 0, 5.0, changed);
+	CHECK(changed.size() == 2);
+	CHECK_FALSE(sim.changes().is_changed(cell(30, 30)));
+}
+
+TEST_CASE("play: a plant put where the ground is not known waits for a height, then stands on it") {
+	FieldSimulation sim;
+	load(sim, "4 1\n*..*\n");
+	Ground ground;
+	ground.kind = Ground::HEIGHTS;
+	ground.heights = { 1.0f, 2.0f }; // the two map plants' ground points
+	sim.set_ground(ground);
+	std::vector<uint32_t> changed;
+	sim.put_cells({ 0, 1 }, 0, 1.0, changed);
+	CHECK(changed == std::vector<uint32_t>{ 1 }); // (cell 0 holds a '*' already)
+	CHECK(sim.get_unplaced_cells() == std::vector<uint32_t>{ 1 });
+	CHECK(sim.plants().added_plant_at_cell(1) == FieldPlants::NO_PLANT);
+	sim.set_cell_heights({ 1 }, { 1.5f });
+	CHECK(sim.get_unplaced_cells().empty());
+	const uint32_t plant = sim.plants().added_plant_at_cell(1);
+	REQUIRE(plant != FieldPlants::NO_PLANT);
+	CHECK(sim.plants().get_layout().plants[plant].ground == 1.5f);
+	sim.update(0.016f);
+	CHECK(drawn_at(sim, sim.plants().get_layout().plants[plant].root(), false) == 1);
 }

@@ -15,7 +15,7 @@ namespace sunflower {
 
 void FarTiles::build() {
 	const FieldLayout &layout = _plants.get_layout();
-	const size_t chunk_count = layout.chunks.size();
+	const size_t chunk_count = _plants.get_map_chunk_count(); // (not the chunks of plants play added)
 	// Each chunk's tile key, then the chunks grouped by key (in chunk order within a tile).
 	const uint64_t tiles_x = uint64_t((layout.grid_x + TILE_CHUNKS - 1) / TILE_CHUNKS);
 	std::vector<std::pair<uint64_t, uint32_t>> keyed(chunk_count);
@@ -92,11 +92,11 @@ void FarTiles::_merge_tiles() {
 	// level 1 or above ordered by tile level, highest first (map order within a level), so that a
 	// merged tile of level L writes the first kept[c][L] of each chunk's.
 	std::vector<std::array<uint32_t, MAX_TILE_LEVELS>> &kept = _chunk_kept;
-	kept.assign(layout.chunks.size(), {});
-	_merged_first.assign(layout.chunks.size(), 0);
+	kept.assign(_plants.get_map_chunk_count(), {});
+	_merged_first.assign(_plants.get_map_chunk_count(), 0);
 	_merged_plants.clear();
 	std::vector<std::pair<uint32_t, uint32_t>> ordered; // (MAX_TILE_LEVELS − level, plant)
-	for (size_t c = 0; c < layout.chunks.size(); ++c) {
+	for (size_t c = 0; c < _plants.get_map_chunk_count(); ++c) {
 		const Chunk &chunk = layout.chunks[c];
 		ordered.clear();
 		for (uint32_t k = 0; k < chunk.count; ++k) {

@@ -52,6 +52,19 @@ glm::vec2 plant_root_at(const FieldMap &p_map, const LayoutParams &p_params, int
 	return plant_root(p_params, cell_key(p_map, p_column, p_row), p_column, p_row, alpha);
 }
 
+Plant lay_plant(const FieldMap &p_map, const LayoutParams &p_params, uint32_t p_species, int p_column, int p_row) {
+	const PlantVariety &variety = p_params.varieties[p_species % FieldMap::MAX_SPECIES];
+	Plant plant;
+	const uint64_t key = cell_key(p_map, p_column, p_row);
+	float alpha = 0.0f;
+	plant.position = plant_root(p_params, key, p_column, p_row, alpha);
+	plant.set_alpha(alpha);
+	plant.yaw = (unit_float(hash_plant(p_params.seed, key, STREAM_YAW)) * 2.0f - 1.0f) * variety.yaw_range;
+	plant.scale = variety.scale_min +
+			(variety.scale_max - variety.scale_min) * unit_float(hash_plant(p_params.seed, key, STREAM_SCALE));
+	return plant;
+}
+
 void ground_points(const FieldMap &p_map, const LayoutParams &p_params, std::vector<glm::vec2> &r_points) {
 	r_points.clear();
 	r_points.reserve(size_t(p_map.plant_count) + p_map.objects.size());
@@ -103,12 +116,7 @@ void build_layout(const FieldMap &p_map, const LayoutParams &p_params, const Gro
 				continue;
 			}
 			const uint32_t species = std::min(uint32_t(p_map.species_at(column, row)), species_count - 1);
-			const PlantVariety &variety = p_params.varieties[species];
-			Plant plant;
-			const uint64_t key = cell_key(p_map, column, row);
-			float alpha = 0.0f;
-			plant.position = plant_root(p_params, key, column, row, alpha);
-			plant.set_alpha(alpha);
+			Plant plant = lay_plant(p_map, p_params, species, column, row);
 			plant.ground = ground_fits ? p_ground.height_at(uint32_t(index), plant.position) : NAN;
 			if (!std::isfinite(plant.ground)) {
 				++r_layout.cells_without_ground;
@@ -116,9 +124,6 @@ void build_layout(const FieldMap &p_map, const LayoutParams &p_params, const Gro
 				continue;
 			}
 			plant.set_lean(p_ground.lean_at(uint32_t(index), plant.position));
-			plant.yaw = (unit_float(hash_plant(p_params.seed, key, STREAM_YAW)) * 2.0f - 1.0f) * variety.yaw_range;
-			plant.scale = variety.scale_min +
-					(variety.scale_max - variety.scale_min) * unit_float(hash_plant(p_params.seed, key, STREAM_SCALE));
 			const int cx = std::min(chunks_x - 1, static_cast<int>(plant.position.x / chunk_size));
 			const int cz = std::min(chunks_z - 1, static_cast<int>(plant.position.y / chunk_size));
 			plant.chunk = static_cast<uint32_t>(cz * chunks_x + cx) * species_count + species; // key for now

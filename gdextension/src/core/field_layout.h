@@ -137,6 +137,10 @@ void ground_points(const FieldMap &p_map, const LayoutParams &p_params, std::vec
 // The root (x, z) of the plant of map cell (p_column, p_row), where build_layout places it.
 glm::vec2 plant_root_at(const FieldMap &p_map, const LayoutParams &p_params, int p_column, int p_row);
 
+// The plant of species p_species in map cell (p_column, p_row) as build_layout lays it out, but for
+// its ground (0, upright) and its chunk (0): its randomness follows the cell, whatever its species.
+Plant lay_plant(const FieldMap &p_map, const LayoutParams &p_params, uint32_t p_species, int p_column, int p_row);
+
 // Fills r_layout from p_map on p_ground. Deterministic: the same map, params, seed and ground give the
 // same layout; a plant's randomness follows its cell's place in the map, so a hole or a painted cell
 // elsewhere changes no other plant.

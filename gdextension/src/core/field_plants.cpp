@@ -108,6 +108,12 @@ void FieldPlants::_rebuild() {
 	_chunk_signatures.clear(); // the shape or variety may have changed too: computed anew
 	_plant_states.clear(); // every plant index may have changed: FieldSimulation sets them again
 	_plant_cells.clear();
+	_map_plant_count = static_cast<uint32_t>(_layout.plants.size());
+	_map_chunk_count = static_cast<uint32_t>(_layout.chunks.size());
+	_added_cells.clear();
+	_added_species.clear();
+	_added_at_cell.clear();
+	_added_grouped = true;
 }
 
 ChunkBounds FieldPlants::get_chunk_bounds(uint32_t p_chunk) const {
@@ -132,7 +138,7 @@ GridRange FieldPlants::grid_range(const glm::vec2 &p_center, float p_reach) cons
 }
 
 void FieldPlants::find_plants_near(const glm::vec2 &p_center, float p_radius, std::vector<uint32_t> &r_plants) const {
-	if (_layout.grid_chunks.empty() || !(p_radius >= 0.0f) || !std::isfinite(p_radius) || !std::isfinite(p_center.x) ||
+	if (_layout.chunks.empty() || !(p_radius >= 0.0f) || !std::isfinite(p_radius) || !std::isfinite(p_center.x) ||
 			!std::isfinite(p_center.y)) {
 		return;
 	}
@@ -150,6 +156,20 @@ void FieldPlants::find_plants_near(const glm::vec2 &p_center, float p_radius, st
 						r_plants.push_back(index);
 					}
 				}
+			}
+		}
+	}
+	for (uint32_t c = _map_chunk_count; c < _layout.chunks.size(); ++c) {
+		const Chunk &chunk = _layout.chunks[c];
+		const glm::vec2 nearest = glm::clamp(p_center, chunk.min, chunk.max);
+		if (glm::dot(nearest - p_center, nearest - p_center) >= radius_sq) {
+			continue;
+		}
+		for (uint32_t k = 0; k < chunk.count; ++k) {
+			const uint32_t index = _layout.chunk_plants[chunk.first + k];
+			const glm::vec2 d = _layout.plants[index].position - p_center;
+			if (glm::dot(d, d) < radius_sq) {
+				r_plants.push_back(index);
 			}
 		}
 	}
@@ -239,6 +259,7 @@ size_t FieldPlants::get_memory_bytes() const {
 	bytes += (_ground.grid.heights.capacity() + _ground.heights.capacity() + _ground.normals.capacity()) * sizeof(float);
 	bytes += _chunk_cells.capacity() * sizeof(uint32_t) + _chunk_signatures.capacity() * sizeof(uint64_t);
 	bytes += _plant_states.capacity() + _plant_cells.capacity() * sizeof(uint32_t);
+	bytes += (_added_cells.capacity() + _added_species.capacity()) * sizeof(uint32_t) + _added_at_cell.size() * 32;
 	return bytes;
 }
 
@@ -251,15 +272,15 @@ void FieldPlants::set_plant_state(uint32_t p_plant, PlantState p_state) {
 }
 
 bool FieldPlants::_index_cells() const {
-	if (_plant_cells.size() == _layout.plants.size()) {
+	if (_plant_cells.size() == _map_plant_count) {
 		return true;
 	}
 	// The plants are the map's plant cells in map order, less those without ground: each plant is
 	// the next plant cell whose root is where the layout put it.
 	_plant_cells.clear();
-	_plant_cells.reserve(_layout.plants.size());
-	for (int row = 0; row < _map.rows && _plant_cells.size() < _layout.plants.size(); ++row) {
-		for (int column = 0; column < _map.columns && _plant_cells.size() < _layout.plants.size(); ++column) {
+	_plant_cells.reserve(_map_plant_count);
+	for (int row = 0; row < _map.rows && _plant_cells.size() < _map_plant_count; ++row) {
+		for (int column = 0; column < _map.columns && _plant_cells.size() < _map_plant_count; ++column) {
 			if (_map.has_plant(column, row) &&
 					_layout.plants[_plant_cells.size()].position == plant_root_at(_map, _layout_params, column, row)) {
 				_plant_cells.push_back(static_cast<uint32_t>(row) * static_cast<uint32_t>(_map.columns) +
@@ -267,7 +288,7 @@ bool FieldPlants::_index_cells() const {
 			}
 		}
 	}
-	if (_plant_cells.size() != _layout.plants.size()) {
+	if (_plant_cells.size() != _map_plant_count) {
 		_plant_cells.clear();
 		return false; // (never: the layout is made from this map)
 	}
@@ -283,7 +304,124 @@ uint32_t FieldPlants::plant_at_cell(uint32_t p_cell) const {
 }
 
 uint32_t FieldPlants::cell_of_plant(uint32_t p_plant) const {
-	return p_plant < _layout.plants.size() && _index_cells() ? _plant_cells[p_plant] : NO_CELL;
+	if (p_plant >= _map_plant_count) {
+		return p_plant - _map_plant_count < _added_cells.size() ? _added_cells[p_plant - _map_plant_count] : NO_CELL;
+	}
+	return _index_cells() ? _plant_cells[p_plant] : NO_CELL;
+}
+
+uint32_t FieldPlants::added_plant_at_cell(uint32_t p_cell) const {
+	const auto found = _added_at_cell.find(p_cell);
+	return found != _added_at_cell.end() ? found->second : NO_PLANT;
+}
+
+uint32_t FieldPlants::add_plant(uint32_t p_cell, uint32_t p_species, float p_height) {
+	const uint32_t columns = uint32_t(std::max(_map.columns, 0));
+	if (columns == 0 || p_cell >= columns * uint32_t(std::max(_map.rows, 0)) || p_species >= get_species_count()) {
+		return NO_PLANT;
+	}
+	const uint32_t existing = added_plant_at_cell(p_cell);
+	if (existing != NO_PLANT && _added_species[existing - _map_plant_count] == p_species) {
+		set_plant_state(existing, PlantState::STANDING);
+		return existing;
+	}
+	if (existing != NO_PLANT) {
+		take_plant(existing);
+	}
+	const int column = int(p_cell % columns);
+	const int row = int(p_cell / columns);
+	Plant plant = lay_plant(_map, _layout_params, p_species, column, row);
+	const uint32_t map_plant = plant_at_cell(p_cell);
+	if (std::isfinite(p_height)) {
+		plant.ground = p_height;
+	} else if (map_plant != NO_PLANT) {
+		plant.ground = _layout.plants[map_plant].ground; // the map's plant stood there: its ground and lean
+		plant.set_lean(_layout.plants[map_plant].lean());
+	} else if (_ground.kind != Ground::HEIGHTS) {
+		plant.ground = _ground.height_at(0, plant.position);
+		plant.set_lean(_ground.lean_at(0, plant.position));
+	} else {
+		plant.ground = NAN; // measured ground points only: none there
+	}
+	if (!std::isfinite(plant.ground)) {
+		return NO_PLANT;
+	}
+	plant.chunk = NO_CHUNK; // until group_added()
+	const uint32_t index = static_cast<uint32_t>(_layout.plants.size());
+	_layout.plants.push_back(plant);
+	if (!_plant_states.empty()) {
+		_plant_states.push_back(static_cast<uint8_t>(PlantState::STANDING));
+	}
+	_added_cells.push_back(p_cell);
+	_added_species.push_back(p_species);
+	_added_at_cell[p_cell] = index;
+	_added_grouped = false;
+	return index;
+}
+
+void FieldPlants::take_plant(uint32_t p_plant) {
+	if (p_plant < _map_plant_count || p_plant - _map_plant_count >= _added_cells.size() ||
+			_added_cells[p_plant - _map_plant_count] == NO_CELL) {
+		return;
+	}
+	set_plant_state(p_plant, PlantState::CUT);
+	_added_at_cell.erase(_added_cells[p_plant - _map_plant_count]);
+	_added_cells[p_plant - _map_plant_count] = NO_CELL;
+	_added_grouped = false;
+}
+
+bool FieldPlants::group_added() {
+	if (_added_grouped) {
+		return false;
+	}
+	_added_grouped = true;
+	_layout.chunks.resize(_map_chunk_count);
+	_layout.chunk_plants.resize(_map_plant_count);
+	_chunk_cells.resize(_map_chunk_count);
+	// The added plants that are there, by (grid cell, species), then index: a chunk lists its plants in
+	// index order (NearField finds a plant's place in its chunk by bisection).
+	std::vector<std::pair<uint64_t, uint32_t>> keyed;
+	keyed.reserve(_added_at_cell.size());
+	const float size = _layout.chunk_size;
+	for (uint32_t i = 0; i < _added_cells.size(); ++i) {
+		Plant &plant = _layout.plants[_map_plant_count + i];
+		plant.chunk = NO_CHUNK;
+		if (_added_cells[i] == NO_CELL) {
+			continue;
+		}
+		const int cx = std::clamp(static_cast<int>(plant.position.x / size), 0, std::max(_layout.grid_x - 1, 0));
+		const int cz = std::clamp(static_cast<int>(plant.position.y / size), 0, std::max(_layout.grid_z - 1, 0));
+		const uint64_t cell = uint64_t(cz) * uint64_t(std::max(_layout.grid_x, 1)) + uint64_t(cx);
+		keyed.push_back({ cell * FieldMap::MAX_SPECIES + _added_species[i], _map_plant_count + i });
+	}
+	std::sort(keyed.begin(), keyed.end());
+	for (size_t k = 0; k < keyed.size(); ++k) {
+		if (k == 0 || keyed[k].first != keyed[k - 1].first) {
+			Chunk chunk;
+			chunk.first = static_cast<uint32_t>(_layout.chunk_plants.size());
+			chunk.species = static_cast<uint32_t>(keyed[k].first % FieldMap::MAX_SPECIES);
+			chunk.min = glm::vec2(INFINITY);
+			chunk.max = glm::vec2(-INFINITY);
+			chunk.ground_min = INFINITY;
+			chunk.ground_max = -INFINITY;
+			_layout.chunks.push_back(chunk);
+			_chunk_cells.push_back(static_cast<uint32_t>(keyed[k].first / FieldMap::MAX_SPECIES));
+		}
+		Plant &plant = _layout.plants[keyed[k].second];
+		plant.chunk = static_cast<uint32_t>(_layout.chunks.size() - 1);
+		Chunk &chunk = _layout.chunks.back();
+		_layout.chunk_plants.push_back(keyed[k].second);
+		++chunk.count;
+		chunk.min = glm::min(chunk.min, plant.position);
+		chunk.max = glm::max(chunk.max, plant.position);
+		chunk.ground_min = std::min(chunk.ground_min, plant.ground);
+		chunk.ground_max = std::max(chunk.ground_max, plant.ground);
+		chunk.scale_max = std::max(chunk.scale_max, plant.scale);
+	}
+	if (!_chunk_signatures.empty()) {
+		_chunk_signatures.resize(_layout.chunks.size(), 0);
+	}
+	return true;
 }
 
 } // namespace sunflower

@@ -17,6 +17,7 @@
 #include <array>
 #include <cstdint>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 namespace sunflower {
@@ -67,10 +68,17 @@ public:
 	const FieldLayout &get_layout() const { return _layout; }
 	const PlantShape &get_shape(uint32_t p_species = 0) const { return _shapes[p_species % _shapes.size()]; }
 	uint32_t get_species_count() const { return uint32_t(_map.species_count); }
+	// Plants and chunks: the map's, then those play added (add_plant).
 	uint32_t get_plant_count() const { return static_cast<uint32_t>(_layout.plants.size()); }
 	uint32_t get_chunk_count() const { return static_cast<uint32_t>(_layout.chunks.size()); }
-	// The species of a plant: its chunk's (a chunk holds one species).
-	uint32_t species_of(const Plant &p_plant) const { return _layout.chunks[p_plant.chunk].species; }
+	// The map's plants and chunks: indices [0, count). The far tiles draw these chunks only.
+	uint32_t get_map_plant_count() const { return _map_plant_count; }
+	uint32_t get_map_chunk_count() const { return _map_chunk_count; }
+	// The species of a plant: its chunk's (a chunk holds one species); 0 for an added plant taken since.
+	uint32_t species_of(const Plant &p_plant) const {
+		return p_plant.chunk < _layout.chunks.size() ? _layout.chunks[p_plant.chunk].species : 0;
+	}
+	static constexpr uint32_t NO_CHUNK = UINT32_MAX;
 
 	// The box that holds a chunk's plants at any bend (their culling spheres, up to their heads).
 	ChunkBounds get_chunk_bounds(uint32_t p_chunk) const;
@@ -110,13 +118,35 @@ public:
 	PlantState get_plant_state(uint32_t p_plant) const {
 		return p_plant < _plant_states.size() ? static_cast<PlantState>(_plant_states[p_plant]) : PlantState::STANDING;
 	}
-	// The plant of map cell p_cell (row × columns + column), or NO_PLANT: none there, or no ground
-	// under it. The cell of each plant is found once, at the first call after a rebuild.
+	// The map's plant of map cell p_cell (row × columns + column), or NO_PLANT: none there, or no
+	// ground under it. The cell of each plant is found once, at the first call after a rebuild.
 	static constexpr uint32_t NO_PLANT = UINT32_MAX;
 	uint32_t plant_at_cell(uint32_t p_cell) const;
-	// The map cell of plant p_plant (row × columns + column), or NO_CELL for an index past the plants.
+	// The map cell of plant p_plant (row × columns + column), or NO_CELL for an index past the plants
+	// or an added plant taken since.
 	static constexpr uint32_t NO_CELL = UINT32_MAX;
 	uint32_t cell_of_plant(uint32_t p_plant) const;
+
+	// Plants play puts where the map has none of their species (FieldSimulation). Each is laid out
+	// as the map's would be (lay_plant: its randomness follows the cell) and appended after the
+	// plants there are, so no other plant's index changes; group_added() gives them chunks of their
+	// own after the map's, which the near field keeps active at every distance (the far tiles, built
+	// from the map, never draw them). A rebuilt layout forgets them (FieldSimulation adds them again).
+	// Adds a standing plant of p_species to cell p_cell standing at the height p_height (NaN: the map's
+	// plant's ground there, else the ground's), taking the one added there before; returns its index,
+	// or NO_PLANT (and nothing added) for a cell or species not the map's or a cell with no ground
+	// known (a ground of measured points knows only the map's plants' cells). Ungrouped until
+	// group_added().
+	uint32_t add_plant(uint32_t p_cell, uint32_t p_species, float p_height);
+	// The added plant of a cell, or NO_PLANT.
+	uint32_t added_plant_at_cell(uint32_t p_cell) const;
+	// An added plant gone (drawn nowhere, found by no query; its index is not used again until the
+	// layout is rebuilt). Ungrouped until group_added().
+	void take_plant(uint32_t p_plant);
+	// The added plants' chunks anew if plants were added or taken since; returns whether they were
+	// (the near field must then take the new chunks: NearField::regroup).
+	bool group_added();
+	bool added_grouped() const { return _added_grouped; }
 
 	// CPU memory held for the map, layout and ground, in bytes.
 	size_t get_memory_bytes() const;
@@ -135,7 +165,13 @@ private:
 	std::vector<uint32_t> _chunk_cells;
 	std::vector<uint64_t> _chunk_signatures; // 0: not computed
 	std::vector<uint8_t> _plant_states; // PlantState a plant; empty until one is set
-	mutable std::vector<uint32_t> _plant_cells; // each plant's map cell, in plant order; made on first use
+	mutable std::vector<uint32_t> _plant_cells; // each map plant's map cell, in plant order; made on first use
+	uint32_t _map_plant_count = 0;
+	uint32_t _map_chunk_count = 0;
+	std::vector<uint32_t> _added_cells; // per added plant (index − map plants): its cell, NO_CELL once taken
+	std::vector<uint32_t> _added_species; // per added plant: its species
+	std::unordered_map<uint32_t, uint32_t> _added_at_cell; // cell → its added plant
+	bool _added_grouped = true;
 };
 
 } // namespace sunflower

@@ -1,5 +1,7 @@
 #include "field_simulation.h"
 
+#include <algorithm>
+#include <cmath>
 #include <utility>
 
 namespace sunflower {
@@ -70,18 +72,31 @@ void FieldSimulation::_rebuilt() {
 	if (_changes_ready && _changes.fingerprint() != map_fingerprint(_plants.get_map())) {
 		_changes_ready = false; // another map: its changes are gone
 		_changes = FieldChanges();
+		_cell_heights.clear();
+		_unplaced.clear();
 		_hidden.clear();
 		++_hidden_version;
 	}
-	if (_changes_ready) {
-		for (const auto &change : _changes.changes()) {
-			_show_cell(change.first); // (the plants' states are new with the layout)
-		}
-	}
 	_near.rebuild();
-	_tiles.build();
+	_tiles.build(); // (from the map's plants: before those play added)
+	if (_changes_ready) {
+		_unplaced.clear();
+		for (const auto &change : _changes.changes()) {
+			_show_cell(change.first); // (the plants' states are new with the layout, the added plants gone)
+		}
+		_group_added();
+	}
 	++_mask_version;
 	++_records_version;
+}
+
+void FieldSimulation::_group_added() {
+	if (_plants.added_grouped()) {
+		return;
+	}
+	_near.drop_added();
+	_plants.group_added();
+	_near.take_added();
 }
 
 void FieldSimulation::update(float p_delta) {
@@ -131,20 +146,69 @@ CellState FieldSimulation::get_cell_state(uint32_t p_cell) const {
 }
 
 void FieldSimulation::_show_cell(uint32_t p_cell) {
-	const uint32_t plant = _plants.plant_at_cell(p_cell);
-	if (plant == FieldPlants::NO_PLANT) {
-		return; // no plant of the map there (a plant put in an empty cell is not drawn yet)
-	}
 	const CellState state = _changes.get(p_cell);
-	const PlantState shown = state.plant == 0 ? PlantState::CUT : state.state;
-	_plants.set_plant_state(plant, shown);
-	const uint32_t columns = uint32_t(_plants.get_map().columns);
-	const size_t byte = size_t(p_cell / columns) * hidden_row_bytes() + (p_cell % columns) / 8;
-	const uint8_t bit = uint8_t(1u << ((p_cell % columns) % 8));
-	if (byte < _hidden.size() && bool(_hidden[byte] & bit) != (shown != PlantState::STANDING)) {
-		_hidden[byte] ^= bit;
-		++_hidden_version;
+	const std::vector<uint8_t> &map_plants = _plants.get_map().plants;
+	// The map's own plant type there (or none, as the map has it): its plant shows the state. Another:
+	// the map's plant is hidden and an added plant stands in.
+	const bool map_type = p_cell < map_plants.size() && state.plant == map_plants[p_cell];
+	const uint32_t plant = _plants.plant_at_cell(p_cell);
+	if (plant != FieldPlants::NO_PLANT) {
+		const PlantState shown = map_type && state.plant != 0 ? state.state : PlantState::CUT;
+		_plants.set_plant_state(plant, shown);
+		const uint32_t columns = uint32_t(_plants.get_map().columns);
+		const size_t byte = size_t(p_cell / columns) * hidden_row_bytes() + (p_cell % columns) / 8;
+		const uint8_t bit = uint8_t(1u << ((p_cell % columns) % 8));
+		if (byte < _hidden.size() && bool(_hidden[byte] & bit) != (shown != PlantState::STANDING)) {
+			_hidden[byte] ^= bit;
+			++_hidden_version;
+		}
 	}
+	_unplaced.erase(p_cell);
+	if (map_type || state.plant == 0) {
+		_plants.take_plant(_plants.added_plant_at_cell(p_cell));
+		return;
+	}
+	const auto height = _cell_heights.find(p_cell);
+	const uint32_t added = _plants.add_plant(p_cell, uint32_t(state.plant - 1), height != _cell_heights.end() ? height->second : NAN);
+	if (added == FieldPlants::NO_PLANT) {
+		_unplaced.insert(p_cell); // no ground known there: see set_cell_heights
+		return;
+	}
+	_plants.set_plant_state(added, state.state);
+}
+
+void FieldSimulation::put_cells(const std::vector<uint32_t> &p_cells, uint32_t p_species, double p_now,
+		std::vector<uint32_t> &r_changed) {
+	(void)p_now; // (a plant put stands: its regrowth has no start)
+	_ready_changes();
+	for (uint32_t cell : p_cells) {
+		if (_changes.put(cell, int(p_species))) {
+			r_changed.push_back(cell);
+			_show_cell(cell);
+		}
+	}
+	_group_added();
+}
+
+void FieldSimulation::set_cell_heights(const std::vector<uint32_t> &p_cells, const std::vector<float> &p_heights) {
+	_ready_changes();
+	for (size_t i = 0; i < p_cells.size() && i < p_heights.size(); ++i) {
+		if (std::isfinite(p_heights[i])) {
+			_cell_heights[p_cells[i]] = p_heights[i];
+		} else {
+			_cell_heights.erase(p_cells[i]);
+		}
+		if (_changes.is_changed(p_cells[i])) {
+			_show_cell(p_cells[i]);
+		}
+	}
+	_group_added();
+}
+
+std::vector<uint32_t> FieldSimulation::get_unplaced_cells() const {
+	std::vector<uint32_t> cells(_unplaced.begin(), _unplaced.end());
+	std::sort(cells.begin(), cells.end());
+	return cells;
 }
 
 void FieldSimulation::change_cells(const std::vector<uint32_t> &p_cells, CellAction p_action, double p_now,
@@ -174,6 +238,7 @@ void FieldSimulation::change_cells(const std::vector<uint32_t> &p_cells, CellAct
 			_show_cell(cell);
 		}
 	}
+	_group_added();
 }
 
 void FieldSimulation::trample(float p_share, double p_now, std::vector<Trampled> &r_trampled) {
@@ -222,6 +287,7 @@ void FieldSimulation::advance_changes(double p_now, std::vector<uint32_t> &r_rec
 	for (size_t i = before; i < r_recovered.size(); ++i) {
 		_show_cell(r_recovered[i]);
 	}
+	_group_added();
 }
 
 std::vector<uint8_t> FieldSimulation::save_changes(double p_now) {
@@ -247,6 +313,7 @@ std::string FieldSimulation::load_changes(const std::vector<uint8_t> &p_bytes, d
 	for (const auto &change : _changes.changes()) {
 		_show_cell(change.first);
 	}
+	_group_added();
 	return "";
 }
 

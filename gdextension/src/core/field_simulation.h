@@ -17,6 +17,8 @@
 #include <array>
 #include <cstdint>
 #include <string>
+#include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 namespace sunflower {
@@ -67,6 +69,18 @@ public:
 	// Applies p_action at the field's clock p_now to each of p_cells (row × columns + column); appends
 	// the cells it changed to r_changed.
 	void change_cells(const std::vector<uint32_t> &p_cells, CellAction p_action, double p_now, std::vector<uint32_t> &r_changed);
+	// Puts a standing plant of species p_species in each of p_cells (the map's own type gives the map's
+	// plant back, standing), over what is there, and appends the cells it changed to r_changed. A plant
+	// of a type the map does not have there is added (FieldPlants::add_plant): it stands on the map's
+	// plant's ground, else on the ground's height there, else on a height set_cell_heights gave; a
+	// cell with none of those (a ground of measured points, a cell the map left empty) waits for one:
+	// get_unplaced_cells.
+	void put_cells(const std::vector<uint32_t> &p_cells, uint32_t p_species, double p_now, std::vector<uint32_t> &r_changed);
+	// The ground's height (the field's space) under cells the ground does not know (NaN: forget it),
+	// kept for the next layout of the map too; their plants are added now.
+	void set_cell_heights(const std::vector<uint32_t> &p_cells, const std::vector<float> &p_heights);
+	// Cells given a plant that stands nowhere yet for want of a ground height, in cell order.
+	std::vector<uint32_t> get_unplaced_cells() const;
 	// A standing plant pushed over by a pusher (trample) and the pusher's index (in set_pushers' order).
 	struct Trampled {
 		uint32_t cell = 0;
@@ -122,8 +136,10 @@ private:
 	void _rebuilt();
 	// The changes made ready for the map (on first use: they cost nothing until then).
 	void _ready_changes();
-	// A changed cell's plant drawn as its change says: its state and its hidden-cells bit.
+	// A changed cell's plant drawn as its change says: the map's plant's state and hidden-cells bit,
+	// or an added plant (its chunks made by _group_added once a batch of changes is done).
 	void _show_cell(uint32_t p_cell);
+	void _group_added();
 
 	FieldPlants _plants;
 	NearField _near{ _plants };
@@ -133,6 +149,8 @@ private:
 	FieldChanges _changes;
 	bool _changes_ready = false;
 	std::array<Regrowth, FieldMap::MAX_SPECIES> _regrowth{};
+	std::unordered_map<uint32_t, float> _cell_heights; // set_cell_heights
+	std::unordered_set<uint32_t> _unplaced; // get_unplaced_cells
 	std::vector<uint8_t> _hidden; // get_hidden_cells
 	uint32_t _hidden_version = 0;
 };

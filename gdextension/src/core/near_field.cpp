@@ -35,6 +35,39 @@ void NearField::rebuild() {
 	_lod_due = true;
 }
 
+void NearField::drop_added() {
+	const FieldLayout &layout = _plants.get_layout();
+	const uint32_t map_chunks = _plants.get_map_chunk_count();
+	for (uint32_t c = map_chunks; c < _chunk_active.size() && c < layout.chunks.size(); ++c) {
+		if (_chunk_active[c]) {
+			_pushes.drop_chunk(c, layout, _wind_lookup);
+			++_changed_chunks;
+		}
+	}
+	const auto added = [map_chunks](uint32_t p_chunk) { return p_chunk >= map_chunks; };
+	for (uint32_t c : _active_chunks) {
+		if (added(c)) {
+			_active_plants -= layout.chunks[c].count;
+		}
+	}
+	_active_chunks.erase(std::remove_if(_active_chunks.begin(), _active_chunks.end(), added), _active_chunks.end());
+	_previous_active.erase(std::remove_if(_previous_active.begin(), _previous_active.end(), added), _previous_active.end());
+	_chunk_wind.resize(std::min<size_t>(_chunk_wind.size(), map_chunks));
+	_chunk_records.resize(std::min<size_t>(_chunk_records.size(), map_chunks));
+	_chunk_active.resize(std::min<size_t>(_chunk_active.size(), map_chunks));
+	_visit_mark.resize(std::min<size_t>(_visit_mark.size(), map_chunks));
+}
+
+void NearField::take_added() {
+	const size_t chunks = _plants.get_chunk_count();
+	_chunk_wind.resize(chunks);
+	_chunk_records.resize(chunks);
+	_chunk_active.resize(chunks, 0);
+	_visit_mark.resize(chunks, 0);
+	_plant_lod.resize(_plants.get_plant_count(), LOD_BILLBOARD);
+	_lod_due = true; // the added chunks turn active at the next update
+}
+
 void NearField::reshape() {
 	for (uint32_t c : _active_chunks) {
 		_write_records(c);
@@ -56,7 +89,7 @@ void NearField::write_active_mask(uint32_t p_species, uint8_t *r_out) const {
 	const FieldLayout &layout = _plants.get_layout();
 	std::fill_n(r_out, size_t(layout.grid_x) * size_t(layout.grid_z), uint8_t(0));
 	for (uint32_t c : _active_chunks) {
-		if (layout.chunks[c].species == p_species) {
+		if (layout.chunks[c].species == p_species && c < _plants.get_map_chunk_count()) {
 			r_out[_plants.get_chunk_cell(c)] = 255;
 		}
 	}
@@ -278,7 +311,7 @@ glm::vec2 NearField::_plant_bend(const PlantWind &p_wind, const Plant &p_plant, 
 const PlantWind *NearField::_wind_of(uint32_t p_plant) const {
 	const FieldLayout &layout = _plants.get_layout();
 	const uint32_t chunk = layout.plants[p_plant].chunk;
-	if (!_chunk_active[chunk]) {
+	if (chunk >= _chunk_active.size() || !_chunk_active[chunk]) {
 		return nullptr;
 	}
 	// A chunk lists its plants in map order, so the plant's place among them is found by bisection.

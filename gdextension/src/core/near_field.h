@@ -70,6 +70,11 @@ public:
 	bool update(float p_delta);
 	// Makes the next update re-select LODs regardless of the interval.
 	void request_lod_update() { _lod_due = true; }
+	// The chunks of plants play added (FieldPlants::add_plant) change: drop_added() forgets them
+	// before FieldPlants::group_added() makes them anew (their plants' wind and pushes start again),
+	// take_added() takes the new ones after; they are active at every distance.
+	void drop_added();
+	void take_added();
 	// A plant type's shape changed (its impostors' size): the active chunks' impostor records anew.
 	void reshape();
 	// An observer that moved farther than this since the last LOD pass gets one at the next update,

@@ -49,6 +49,12 @@ void NearField::_select_lods() {
 	for (uint32_t c : _previous_active) {
 		_select_chunk_lods(c, false, enter, leave);
 	}
+	// The chunks of plants play added are active at every distance (no far tile draws them).
+	for (uint32_t c = _plants.get_map_chunk_count(); c < layout.chunks.size(); ++c) {
+		if (_visit_mark[c] != _lod_pass) {
+			_select_chunk_lods(c, false, enter, leave);
+		}
+	}
 	float largest_scale = 0.0f; // of the plant types' switch distances
 	for (uint32_t species = 0; species < _plants.get_species_count(); ++species) {
 		largest_scale = std::max(largest_scale, _plants.get_shape(species).lod_scale);
@@ -97,7 +103,9 @@ void NearField::_select_chunk_lods(uint32_t p_chunk, bool p_forced, float p_ente
 	// Distances as the field's switch distances see them for this plant type (PlantShape::lod_scale).
 	const float distance_sq = p_forced ? 0.0f : shape.lod_distance_sq(_chunk_distance_sq(p_chunk));
 	const bool was_active = _chunk_active[p_chunk] != 0;
-	const bool active = p_forced || (was_active ? distance_sq < p_leave * p_leave : distance_sq < p_enter * p_enter);
+	const bool added = p_chunk >= _plants.get_map_chunk_count();
+	const bool active =
+			p_forced || added || (was_active ? distance_sq < p_leave * p_leave : distance_sq < p_enter * p_enter);
 	if (active != was_active) {
 		_chunk_active[p_chunk] = active ? 1 : 0;
 		++_changed_chunks;
@@ -137,6 +145,9 @@ void NearField::_select_chunk_lods(uint32_t p_chunk, bool p_forced, float p_ente
 uint8_t NearField::get_plant_lod(uint32_t p_plant) const {
 	const FieldLayout &layout = _plants.get_layout();
 	const uint32_t chunk = layout.plants[p_plant].chunk;
+	if (chunk >= _chunk_active.size()) {
+		return LOD_BILLBOARD; // an added plant taken since, or not drawn yet
+	}
 	return _chunk_active[chunk] ? _plant_lod[p_plant] : _static_chunk_lod(chunk);
 }
 
