@@ -90,7 +90,7 @@ var _field: Node3D
 func _init(field: Node3D) -> void:
 	_field = field
 	interaction = FieldInteraction.new(field)
-	play = FieldPlay.new(field, simulation)
+	play = FieldPlay.new(field, simulation, interaction.get_body_rids)
 	_bucket_count = Native.constant(&"BUCKET_COUNT")
 	for level: int in PartMeshes.LEVELS:
 		_level_buckets.append(Native.mesh_bucket(level, 0))

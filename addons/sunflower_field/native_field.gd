@@ -293,6 +293,27 @@ func change_cells(cells: PackedInt32Array, action: int, now: float) -> PackedInt
 	return native.change_cells(cells, action, now)
 
 
+## Puts a standing plant of type [param species] in each of [param cells] at the clock [param now];
+## the cells changed. Those with no ground height known wait: [method get_unplaced_cells].
+func put_cells(cells: PackedInt32Array, species: int, now: float) -> PackedInt32Array:
+	return native.put_cells(cells, species, now)
+
+
+## Cells given a plant that stands nowhere yet for want of a ground height, in cell order.
+func get_unplaced_cells() -> PackedInt32Array:
+	return native.get_unplaced_cells()
+
+
+## Where the plants of [param cells] stand: x, z pairs in the field's space.
+func get_cell_roots(cells: PackedInt32Array) -> PackedFloat32Array:
+	return native.get_cell_roots(cells)
+
+
+## The ground's [param heights] under [param cells] (NaN: not known); their plants put stand there.
+func set_cell_heights(cells: PackedInt32Array, heights: PackedFloat32Array) -> void:
+	native.set_cell_heights(cells, heights)
+
+
 ## The clock moved to [param now]: the cells whose plants stood again by regrowth.
 func advance_changes(now: float) -> PackedInt32Array:
 	return native.advance_changes(now)

@@ -21,6 +21,8 @@ signal plants_trampled(cells: PackedInt32Array, pusher: Node3D)
 ## Emitted when [method change_plants] changed the plants of [param cells] by [param change] (a
 ## [enum Change]).
 signal plants_changed(cells: PackedInt32Array, change: int)
+## Emitted when [method put_plants] put plants of type [param plant_type] in [param cells].
+signal plants_put(cells: PackedInt32Array, plant_type: int)
 ## Emitted when flattened or cut plants of [param cells] stood again by their plant type's regrowth
 ## ([member FieldPlant.recover_after], [member FieldPlant.regrow_after]).
 signal plants_recovered(cells: PackedInt32Array)
@@ -48,16 +50,19 @@ enum State {
 ## A save file's suffix while it is written (renamed over the save once complete).
 const PARTIAL_SUFFIX: String = ".partial"
 const NativeField: GDScript = preload("native_field.gd")
+const FieldGround: GDScript = preload("field_ground.gd")
 
 var _field: Node3D
 var _simulation: Callable  # the field's NativeField drawn now, or null
+var _own_bodies: Callable  # the field's stalk colliders (Array[RID]), which rays for the ground miss
 var _clock: float = 0.0
 var _over_field: Dictionary = {}  # pusher node -> true while it stands over the field's map
 
 
-func _init(field: Node3D, simulation: Callable) -> void:
+func _init(field: Node3D, simulation: Callable, own_bodies: Callable) -> void:
 	_field = field
 	_simulation = simulation
+	_own_bodies = own_bodies
 
 
 ## Applies [param change] to the plants of [param cells] at once; returns the cells whose plant
@@ -70,6 +75,28 @@ func change_plants(cells: PackedInt32Array, change: Change) -> PackedInt32Array:
 	var changed: PackedInt32Array = simulation.change_cells(cells, change, _clock)
 	if not changed.is_empty():
 		plants_changed.emit(changed, change)
+	return changed
+
+
+## Puts a standing plant of type [param plant_type] (its index in [method SunflowerField.get_plant_types])
+## in each of [param cells], over what is there, at once; returns the cells changed and tells
+## [signal plants_put]. The plant stands where the map would have stood one of that cell (its place,
+## turn and size follow the cell), on the ground the field stands on; the map's own type puts the
+## map's plant back. A cell or plant type that is not the field's is an error, and nothing changes; a
+## cell with no ground under it (a hole, a ray that hits no collider) is left empty with a warning.
+## [codeblock]
+## # Sow a row of the second plant type along the field's tenth row of cells.
+## var row: PackedInt32Array = field.play.get_cells_in_rect(Rect2(0.0, 4.5, 20.0, 0.5))
+## field.play.put_plants(row, 1)
+## [/codeblock]
+func put_plants(cells: PackedInt32Array, plant_type: int) -> PackedInt32Array:
+	var simulation: NativeField = _drawn()
+	if simulation == null:
+		return PackedInt32Array()
+	var changed: PackedInt32Array = simulation.put_cells(cells, plant_type, _clock)
+	_place_unplaced(simulation)
+	if not changed.is_empty():
+		plants_put.emit(changed, plant_type)
 	return changed
 
 
@@ -215,6 +242,7 @@ func _carry(old: NativeField, new: NativeField) -> void:
 	if old == null or new == null or old == new or old.get_change_count() == 0:
 		return
 	new.load_changes(old.save_changes(_clock))  # another map's save is refused: forgotten
+	_place_unplaced(new)
 
 
 func _drawn() -> NativeField:  # the field's simulation, once it has plants drawn
@@ -231,6 +259,7 @@ func _load(bytes: PackedByteArray, what: String) -> Error:
 	)
 	if message.is_empty():
 		_clock = simulation.get_loaded_clock()
+		_place_unplaced(simulation)
 		return OK
 	push_error("SunflowerField '%s': %s cannot be loaded: %s" % [_field.name, what, message])
 	return ERR_INVALID_DATA
@@ -264,3 +293,29 @@ func _follow_pushers(simulation: NativeField, pushers: Array[Node3D]) -> void:
 		if not _over_field.has(pusher):
 			_over_field[pusher] = true
 			pusher_entered.emit(pusher)
+
+
+# Plants put where the ground's height is not known (a field on colliders knows it only under the
+# map's plants): rays cast now under their roots give it; a cell no ray finds ground under is told.
+func _place_unplaced(simulation: NativeField) -> void:
+	var cells: PackedInt32Array = simulation.get_unplaced_cells()
+	if cells.is_empty():
+		return
+	var ground: RefCounted = FieldGround.for_field(_field)
+	if ground.needs_rays() and _field.is_inside_tree():
+		ground.set_ray_points(simulation.get_cell_roots(cells))
+		ground.start_rays(_field, _field.ground_ray_above, _field.ground_ray_below, _field.ground_collision_mask)
+		ground.cast_rays(-1, _own_bodies.call())
+		simulation.set_cell_heights(cells, ground.get_ray_heights())
+		cells = simulation.get_unplaced_cells()
+	if not cells.is_empty():
+		var columns: int = simulation.get_map_columns()
+		push_warning(
+			(
+				(
+					"SunflowerField '%s': no ground under %d cell(s) given a plant (the first: column %d, row %d); "
+					+ "they stay empty until the field is built on ground there"
+				)
+				% [_field.name, cells.size(), cells[0] % columns, cells[0] / columns]
+			)
+		)

@@ -99,6 +99,14 @@ public:
 	// flatten, 2 cut, 3 remove, 4 as the map has it) on map cells (row × columns + column) at the
 	// field's clock p_now; returns the cells changed. Shown at the next update, without a rebuild.
 	gdx::PackedInt32Array change_cells(const gdx::PackedInt32Array &p_cells, int64_t p_action, double p_now);
+	// Puts a standing plant of type p_species in each of p_cells (FieldSimulation::put_cells); returns
+	// the cells changed. Cells whose ground height is not known wait: get_unplaced_cells, whose roots
+	// (get_cell_roots: x, z pairs in the field's space) a caller casts rays under and hands back to
+	// set_cell_heights.
+	gdx::PackedInt32Array put_cells(const gdx::PackedInt32Array &p_cells, int64_t p_species, double p_now);
+	gdx::PackedInt32Array get_unplaced_cells() const;
+	gdx::PackedFloat32Array get_cell_roots(const gdx::PackedInt32Array &p_cells) const;
+	void set_cell_heights(const gdx::PackedInt32Array &p_cells, const gdx::PackedFloat32Array &p_heights);
 	// Moves the changes' clock: returns the cells whose plants stood again.
 	gdx::PackedInt32Array advance_changes(double p_now);
 	void set_regrowth(int64_t p_species, double p_flattened_seconds, double p_cut_seconds);

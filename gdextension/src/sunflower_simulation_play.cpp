@@ -13,13 +13,13 @@ using namespace sunflower;
 
 namespace {
 
-// The cells of p_cells, or an error naming the first that is not one of the map's p_limit cells.
-std::string cells_from(const gdx::PackedInt32Array &p_cells, size_t p_limit, std::vector<uint32_t> &r_cells) {
+// The cells of p_cells, or an error (of p_method) naming the first that is not one of the map's p_limit cells.
+std::string cells_from(const char *p_method, const gdx::PackedInt32Array &p_cells, size_t p_limit, std::vector<uint32_t> &r_cells) {
 	const int32_t *data = p_cells.data();
 	r_cells.reserve(size_t(p_cells.size()));
 	for (int64_t i = 0; i < p_cells.size(); ++i) {
 		if (data[i] < 0 || static_cast<size_t>(data[i]) >= p_limit) {
-			return "change_cells: cell " + std::to_string(data[i]) + " (at " + std::to_string(i) +
+			return std::string(p_method) + ": cell " + std::to_string(data[i]) + " (at " + std::to_string(i) +
 					" in the list) is not one of the map's " + std::to_string(p_limit) + " cells; nothing was changed";
 		}
 		r_cells.push_back(static_cast<uint32_t>(data[i]));
@@ -40,11 +40,53 @@ gdx::PackedInt32Array SunflowerSimulation::change_cells(const gdx::PackedInt32Ar
 					std::to_string(p_action));
 	SF_FAIL_COND_V_MSG(!std::isfinite(p_now), gdx::PackedInt32Array(), "change_cells: the field's clock is not a number");
 	std::vector<uint32_t> cells;
-	const std::string error = cells_from(p_cells, cell_count(_sim), cells);
+	const std::string error = cells_from("change_cells", p_cells, cell_count(_sim), cells);
 	SF_FAIL_COND_V_MSG(!error.empty(), gdx::PackedInt32Array(), error);
 	std::vector<uint32_t> changed;
 	_sim.change_cells(cells, static_cast<FieldSimulation::CellAction>(p_action), p_now, changed);
 	return gdx::to_godot_indices(changed);
+}
+
+gdx::PackedInt32Array SunflowerSimulation::put_cells(const gdx::PackedInt32Array &p_cells, int64_t p_species, double p_now) {
+	SF_FAIL_COND_V_MSG(p_species < 0 || p_species >= int64_t(_sim.plants().get_species_count()), gdx::PackedInt32Array(),
+			"put_cells: the field has no plant type " + std::to_string(p_species) + " (its map has " +
+					std::to_string(_sim.plants().get_species_count()) + "); nothing was changed");
+	SF_FAIL_COND_V_MSG(!std::isfinite(p_now), gdx::PackedInt32Array(), "put_cells: the field's clock is not a number");
+	std::vector<uint32_t> cells;
+	const std::string error = cells_from("put_cells", p_cells, cell_count(_sim), cells);
+	SF_FAIL_COND_V_MSG(!error.empty(), gdx::PackedInt32Array(), error);
+	std::vector<uint32_t> changed;
+	_sim.put_cells(cells, uint32_t(p_species), p_now, changed);
+	return gdx::to_godot_indices(changed);
+}
+
+gdx::PackedInt32Array SunflowerSimulation::get_unplaced_cells() const {
+	return gdx::to_godot_indices(_sim.get_unplaced_cells());
+}
+
+gdx::PackedFloat32Array SunflowerSimulation::get_cell_roots(const gdx::PackedInt32Array &p_cells) const {
+	gdx::PackedFloat32Array out;
+	const FieldMap &map = _sim.plants().get_map();
+	out.resize(p_cells.size() * 2);
+	float *data = out.data();
+	for (int64_t i = 0; i < p_cells.size(); ++i) {
+		const int32_t cell = p_cells.data()[i];
+		const bool valid = cell >= 0 && static_cast<size_t>(cell) < cell_count(_sim);
+		const glm::vec2 root = valid ? plant_root_at(map, _sim.plants().get_layout_params(), cell % map.columns, cell / map.columns)
+									 : glm::vec2(NAN);
+		data[2 * i] = root.x;
+		data[2 * i + 1] = root.y;
+	}
+	return out;
+}
+
+void SunflowerSimulation::set_cell_heights(const gdx::PackedInt32Array &p_cells, const gdx::PackedFloat32Array &p_heights) {
+	SF_FAIL_COND_MSG(p_cells.size() != p_heights.size(), "set_cell_heights: " + std::to_string(p_cells.size()) + " cells but " +
+					std::to_string(p_heights.size()) + " heights");
+	std::vector<uint32_t> cells;
+	const std::string error = cells_from("set_cell_heights", p_cells, cell_count(_sim), cells);
+	SF_FAIL_COND_MSG(!error.empty(), error);
+	_sim.set_cell_heights(cells, std::vector<float>(p_heights.data(), p_heights.data() + p_heights.size()));
 }
 
 gdx::PackedInt32Array SunflowerSimulation::advance_changes(double p_now) {

@@ -233,3 +233,74 @@ func test_changes_stay_through_a_rebuild_of_the_same_map_and_go_with_another() -
 	field.map = Maps.filled(41, 20, "res://play_test_2.field")
 	field.finish_build()
 	check_eq(field.play.get_change_count(), 0, "forgotten with another map")
+
+
+## A 40 × 20 map (20 × 10 m) whose row 10 (z 5 to 5.5 m) is empty.
+func _map_with_an_empty_row(path: String) -> SunflowerFieldMap:
+	var field_map: SunflowerFieldMap = Maps.filled(40, 20, path)
+	var lines: PackedStringArray = field_map.text.get_string_from_utf8().split("\n")
+	lines[11] = ".".repeat(40)
+	field_map.text = "\n".join(lines).to_utf8_buffer()
+	return field_map
+
+
+func test_plants_put_in_empty_cells_stand_there_found_by_queries_colliders_and_saves() -> void:
+	var sown: Array[Array] = []
+	field.play.plants_put.connect(func(cells: PackedInt32Array, type: int) -> void: sown.append([cells, type]))
+	field.map = _map_with_an_empty_row("res://play_put.field")
+	field.collision_reach = 2.0
+	field.advance(1.0 / 60.0)
+	var plants: int = field.get_plant_count()
+	check_eq(plants, 40 * 19, "the row is empty")
+	var colliders: int = field.get_collider_count()
+	var cells: PackedInt32Array = field.play.get_cells_in_rect(Rect2(3.0, 5.0, 4.0, 0.5))  # 8 cells of row 10
+	check_eq(cells.size(), 8, "eight cells of the empty row")
+	var spot: Vector3 = Vector3(5.1, 0.0, 5.1)  # in cell (10, 10), by the observer
+	check_eq(field.get_plant_at(spot, 0.2), -1, "no plant there yet")
+	var put: PackedInt32Array = field.play.put_plants(cells, 0)
+	check_eq(put, cells, "every cell given a plant")
+	check_eq(sown.size(), 1, "told once")
+	check_eq(sown[0], [cells, 0], "with the cells and the plant type")
+	check_eq(field.play.put_plants(cells, 0).size(), 0, "a second put puts nothing")
+	check_eq(sown.size(), 1, "and tells nothing")
+	check_eq(field.get_plant_count(), plants + 8, "eight plants added, none laid out again")
+	var found: int = field.get_plant_at(spot, 0.4)
+	check(found >= plants, "the plant put is found where it stands (plant %d)" % found)
+	check_eq(field.play.get_cell_of_plant(found), 10 * 40 + 10, "in its cell")
+	var state: Dictionary = field.play.get_cell_state(10 * 40 + 10)
+	check_eq([state["plant_type"], state["state"]], [0, SunflowerFieldPlay.State.STANDING], "standing, of type 0")
+	var info: Dictionary = field.get_plant_info(found)
+	check_near((info["position"] as Vector3).y, 0.0, 1e-5, "on the flat ground")
+	check_eq(info["position"].x >= 5.0 and info["position"].x < 5.25, true, "in the first half of its cell")
+	field.advance(1.0 / 60.0)
+	check(field.get_collider_count() > colliders, "stalk colliders for the plants put near the observer")
+	var bytes: PackedByteArray = field.play.save_changes()
+	field.play.change_plants(cells, SunflowerFieldPlay.Change.RESTORE)
+	field.advance(1.0 / 60.0)
+	check_eq(field.get_plant_at(spot, 0.4), -1, "given back as the map has it: no plant")
+	check_eq(field.get_collider_count(), colliders, "nor its collider")
+	check_eq(field.play.load_changes(bytes), OK, "the save with the plants put loads")
+	check_eq(field.play.get_cell_of_plant(field.get_plant_at(spot, 0.4)), 10 * 40 + 10, "and they stand again")
+	allow_error("has no plant type 3")
+	check_eq(field.play.put_plants(cells, 3).size(), 0, "a plant type the field does not grow is an error")
+
+
+func test_a_plant_put_on_a_field_on_colliders_stands_on_the_collider() -> void:
+	var body: StaticBody3D = StaticBody3D.new()
+	var shape: CollisionShape3D = CollisionShape3D.new()
+	var box: BoxShape3D = BoxShape3D.new()
+	box.size = Vector3(40.0, 1.0, 40.0)
+	shape.shape = box
+	body.add_child(shape)
+	body.position = Vector3(10.0, 0.2, 5.0)  # its top at 0.7 m
+	tree.root.add_child(body)
+	field.ground_source = SunflowerField.GroundSource.COLLIDERS
+	field.map = _map_with_an_empty_row("res://play_put_colliders.field")
+	check(await frames_until(func() -> bool: return not field.is_building(), 300) < 300, "built on the collider")
+	var cell: int = 10 * 40 + 10
+	check_eq(field.play.put_plants(PackedInt32Array([cell]), 0), PackedInt32Array([cell]), "a plant put")
+	var found: int = field.get_plant_at(Vector3(5.1, 0.7, 5.1), 0.4)
+	check(found >= 0, "it stands")
+	if found >= 0:
+		check_near((field.get_plant_info(found)["position"] as Vector3).y, 0.7, 1e-3, "on the collider's top")
+	body.free()

@@ -171,6 +171,60 @@ func test_plants_cut_at_run_time_leave_the_far_tiles_and_come_back() -> void:
 	check(left < 0.002, "given back, the field is drawn as before (%.2f%% of the pixels differ)" % (100.0 * left))
 
 
+## Plants put at run time where the map has none are drawn far away at once, without a rebuild, as
+## the map would draw them there: a round patch 75–125 m off, empty in the map, sown
+## (SunflowerFieldPlay.put_plants), against the same view of the map without the hole.
+func test_plants_put_at_run_time_fill_a_far_hole_as_the_map_would() -> void:
+	var field: SunflowerField = _still_field(
+		"res://fields/large.field", Vector3(100.0, 25.0, 190.0), Vector3(100.0, 0.0, 60.0)
+	)
+	field.map = Maps.filled(400, 300, "res://put_whole.field")
+	await _built_and_drawn(field)
+	var whole: Image = tree.root.get_viewport().get_texture().get_image()
+	var cells: PackedInt32Array = field.play.get_cells_in_circle(Vector3(100.0, 0.0, 90.0), 25.0)
+	var text: PackedByteArray = field.map.text.duplicate()
+	var row_start: int = text.find(10) + 1  # the rows follow the size line, 401 bytes each
+	for cell: int in cells:
+		text[row_start + (cell / 400) * 401 + cell % 400] = 46  # "."
+	var holed: SunflowerFieldMap = SunflowerFieldMap.new()
+	holed.source_path = "res://put_holed.field"
+	holed.text = text
+	field.map = holed
+	await _built_and_drawn(field)
+	var hole: Image = tree.root.get_viewport().get_texture().get_image()
+	var plants: int = field.get_plant_count()
+	var put: PackedInt32Array = field.play.put_plants(cells, 0)
+	check_eq(put.size(), cells.size(), "every cell of the hole given a plant")
+	await frames(2)
+	var sown: Image = tree.root.get_viewport().get_texture().get_image()
+	sown.save_png(artifact_path("render_play_put.png"))
+	hole.save_png(artifact_path("render_play_hole.png"))
+	var hole_differs: float = _changed_share(hole, whole)
+	var sown_differs: float = _changed_share(sown, whole)
+	print(
+		(
+			"     %d plants put: plant pixels %.1f%% whole, %.1f%% with the hole, %.1f%% sown; %.2f%% / %.2f%% differ"
+			% [
+				put.size(),
+				100.0 * _plant_pixels(whole),
+				100.0 * _plant_pixels(hole),
+				100.0 * _plant_pixels(sown),
+				100.0 * hole_differs,
+				100.0 * sown_differs
+			]
+		)
+	)
+	check(_plant_pixels(hole) < _plant_pixels(whole) - 0.005, "the hole shows the ground")
+	check_eq(field.get_plant_count(), plants + put.size(), "the plants added, none laid out again")
+	check(
+		sown_differs < 0.25 * hole_differs,
+		(
+			"sown, the field is drawn as the map without the hole (%.2f%% of the pixels differ, %.2f%% with the hole)"
+			% [100.0 * sown_differs, 100.0 * hole_differs]
+		)
+	)
+
+
 func test_empty_near_buckets_are_not_drawn() -> void:
 	# Far outside the field, looking at it: every plant is in a far tile, no near bucket holds one.
 	var field: SunflowerField = _still_field(
