@@ -196,7 +196,7 @@ if runs fuzz; then
       "$repo/build/fuzz/fuzz_field_map" -max_total_time=$((fuzz_seconds * 2 / 3)) -max_len=4096 -print_final_stats=1 \
         -artifact_prefix="$artifacts/fuzz-" "$corpus" "$repo/gdextension/fuzz/corpus" >"$artifacts/fuzz.log" 2>&1 &&
       "$repo/build/fuzz/fuzz_field_changes" -max_total_time=$((fuzz_seconds / 3)) -max_len=2048 -print_final_stats=1 \
-        -artifact_prefix="$artifacts/fuzz-changes-" "$changes_corpus" >"$artifacts/fuzz_changes.log" 2>&1
+        -artifact_prefix="$artifacts/fuzz-changes-" "$changes_corpus" "$repo/gdextension/fuzz/corpus_changes" >"$artifacts/fuzz_changes.log" 2>&1
     status=$?
     rm -rf "$changes_corpus"
     rm -rf "$corpus"

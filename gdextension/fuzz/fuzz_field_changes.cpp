@@ -1,6 +1,6 @@
 // libFuzzer target: sequences of play's changes (field_changes.h through FieldSimulation) checked
-// against a plain reference model after every step: stand, flatten, cut, remove, restore and
-// trample by cells; regrowth on the clock (its timings changed midway too); saves loaded back into a
+// against a plain reference model after every step: stand, flatten, cut, remove, restore, put and
+// trample by cells (each plant of another type than the map's an added plant of that type); regrowth on the clock (its timings changed midway too); saves loaded back into a
 // fresh simulation cell for cell, a save with one bit flipped and one of another map refused with
 // nothing changed; the hidden-cells mask in step with the plants' states. Under ASan + UBSan; any
 // crash, sanitizer report or difference from the model is a finding.
@@ -48,6 +48,12 @@ struct Model {
 		cells[p_cell] = CellState{};
 		return true;
 	}
+	bool put(uint32_t p_cell, uint8_t p_species) {
+		const CellState put{ uint8_t(p_species + 1), PlantState::STANDING, 0.0 };
+		const bool changed = !(cells[p_cell] == put);
+		cells[p_cell] = put;
+		return changed;
+	}
 	bool restore(uint32_t p_cell) {
 		const CellState as_map{ map[p_cell], PlantState::STANDING, 0.0 };
 		const bool changed = !(cells[p_cell] == as_map);
@@ -82,10 +88,22 @@ void check_cells(const FieldSimulation &p_sim, const Model &p_model, int p_colum
 	const std::vector<uint8_t> &hidden = p_sim.get_hidden_cells();
 	for (uint32_t c = 0; c < p_model.cells.size(); ++c) {
 		check(p_sim.get_cell_state(c) == p_model.cells[c]);
+		const CellState &cell = p_model.cells[c];
+		const bool map_type = cell.plant == p_model.map[c];
 		if (!hidden.empty() && p_model.map[c] != 0) {
 			const size_t byte = size_t(c / uint32_t(p_columns)) * p_sim.hidden_row_bytes() + (c % uint32_t(p_columns)) / 8;
 			const bool bit = (hidden[byte] >> ((c % uint32_t(p_columns)) % 8)) & 1;
-			check(bit == (p_model.cells[c].state != PlantState::STANDING || p_model.cells[c].plant == 0));
+			check(bit == (cell.state != PlantState::STANDING || !map_type));
+		}
+		// A plant of another type than the map's is an added plant of that type, in that state.
+		const uint32_t added = p_sim.plants().added_plant_at_cell(c);
+		if (map_type || cell.plant == 0) {
+			check(added == FieldPlants::NO_PLANT);
+		} else {
+			check(added != FieldPlants::NO_PLANT);
+			check(p_sim.plants().cell_of_plant(added) == c);
+			check(p_sim.plants().species_of(p_sim.plants().get_layout().plants[added]) == uint32_t(cell.plant - 1));
+			check(p_sim.plants().get_plant_state(added) == cell.state);
 		}
 	}
 }
@@ -122,7 +140,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *p_data, size_t p_size) {
 		const uint32_t cell = in.next() % cells;
 		std::vector<uint32_t> changed;
 		std::vector<uint32_t> expected;
-		switch (op % 9) {
+		switch (op % 10) {
 			case 0:
 			case 1:
 			case 2: { // stand, flatten, cut: a cell and its neighbour (a list, repeats and all)
@@ -173,6 +191,19 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *p_data, size_t p_size) {
 					check(model.cells[each.cell].plant != 0 && model.cells[each.cell].state == PlantState::STANDING);
 					model.set_state(each.cell, PlantState::FLATTENED, now);
 				}
+				break;
+			}
+			case 9: { // a plant of a type put in the cell and its neighbour, then a frame drawn
+				const uint8_t species = in.next() % 3;
+				const std::vector<uint32_t> list = { cell, (cell + 1) % cells };
+				sim.put_cells(list, species, now, changed);
+				for (uint32_t c : list) {
+					if (model.put(c, species)) {
+						expected.push_back(c);
+					}
+				}
+				check(changed == expected);
+				sim.update(0.016f);
 				break;
 			}
 			case 8: { // the save, into a fresh simulation; one bit flipped and another map's, refused

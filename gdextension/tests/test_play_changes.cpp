@@ -366,7 +366,17 @@ TEST_CASE("play: a plant put in an empty cell, or of another type, is drawn at e
 	sim.update(0.016f);
 	CHECK(drawn_at(sim, near_root, true) == 0);
 	CHECK(sim.plants().added_plant_at_cell(near_empty) == FieldPlants::NO_PLANT);
-	CHECK(sim.plants().cell_of_plant(map_plants) == FieldPlants::NO_CELL); // its index is not used again
+	CHECK(sim.plants().cell_of_plant(map_plants) == FieldPlants::NO_CELL);
+	// Sowing and harvesting again and again uses the slots of the plants taken: the field does not grow.
+	const uint32_t slots = sim.plants().get_plant_count();
+	for (int round = 0; round < 3; ++round) {
+		changed.clear();
+		sim.put_cells({ near_empty, cell(13, 20) }, 1, 3.0, changed);
+		sim.update(0.016f);
+		CHECK(drawn_at(sim, near_root, false) == 1);
+		sim.change_cells({ near_empty, cell(13, 20) }, FieldSimulation::CellAction::RESTORE, 3.0, changed);
+	}
+	CHECK(sim.plants().get_plant_count() == slots);
 	near.clear();
 	sim.plants().find_plants_near(glm::vec2(near_root.x, near_root.z), 0.1f, near);
 	CHECK(near.empty());

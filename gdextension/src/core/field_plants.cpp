@@ -112,6 +112,7 @@ void FieldPlants::_rebuild() {
 	_map_chunk_count = static_cast<uint32_t>(_layout.chunks.size());
 	_added_cells.clear();
 	_added_species.clear();
+	_free_added.clear();
 	_added_at_cell.clear();
 	_added_grouped = true;
 }
@@ -259,7 +260,8 @@ size_t FieldPlants::get_memory_bytes() const {
 	bytes += (_ground.grid.heights.capacity() + _ground.heights.capacity() + _ground.normals.capacity()) * sizeof(float);
 	bytes += _chunk_cells.capacity() * sizeof(uint32_t) + _chunk_signatures.capacity() * sizeof(uint64_t);
 	bytes += _plant_states.capacity() + _plant_cells.capacity() * sizeof(uint32_t);
-	bytes += (_added_cells.capacity() + _added_species.capacity()) * sizeof(uint32_t) + _added_at_cell.size() * 32;
+	bytes += (_added_cells.capacity() + _added_species.capacity() + _free_added.capacity()) * sizeof(uint32_t) +
+			_added_at_cell.size() * 32;
 	return bytes;
 }
 
@@ -347,13 +349,24 @@ uint32_t FieldPlants::add_plant(uint32_t p_cell, uint32_t p_species, float p_hei
 		return NO_PLANT;
 	}
 	plant.chunk = NO_CHUNK; // until group_added()
-	const uint32_t index = static_cast<uint32_t>(_layout.plants.size());
-	_layout.plants.push_back(plant);
-	if (!_plant_states.empty()) {
-		_plant_states.push_back(static_cast<uint8_t>(PlantState::STANDING));
+	uint32_t index = static_cast<uint32_t>(_layout.plants.size());
+	if (!_free_added.empty()) { // the slot of a plant taken before: sowing and harvesting do not grow the field
+		index = _free_added.back();
+		_free_added.pop_back();
+		_layout.plants[index] = plant;
+		_added_cells[index - _map_plant_count] = p_cell;
+		_added_species[index - _map_plant_count] = p_species;
+		if (!_plant_states.empty()) {
+			_plant_states[index] = static_cast<uint8_t>(PlantState::STANDING);
+		}
+	} else {
+		_layout.plants.push_back(plant);
+		_added_cells.push_back(p_cell);
+		_added_species.push_back(p_species);
+		if (!_plant_states.empty()) {
+			_plant_states.push_back(static_cast<uint8_t>(PlantState::STANDING));
+		}
 	}
-	_added_cells.push_back(p_cell);
-	_added_species.push_back(p_species);
 	_added_at_cell[p_cell] = index;
 	_added_grouped = false;
 	return index;
@@ -367,6 +380,7 @@ void FieldPlants::take_plant(uint32_t p_plant) {
 	set_plant_state(p_plant, PlantState::CUT);
 	_added_at_cell.erase(_added_cells[p_plant - _map_plant_count]);
 	_added_cells[p_plant - _map_plant_count] = NO_CELL;
+	_free_added.push_back(p_plant);
 	_added_grouped = false;
 }
 

@@ -140,8 +140,8 @@ public:
 	uint32_t add_plant(uint32_t p_cell, uint32_t p_species, float p_height);
 	// The added plant of a cell, or NO_PLANT.
 	uint32_t added_plant_at_cell(uint32_t p_cell) const;
-	// An added plant gone (drawn nowhere, found by no query; its index is not used again until the
-	// layout is rebuilt). Ungrouped until group_added().
+	// An added plant gone (drawn nowhere, found by no query; its index is given to the next plant
+	// added, so a game that sows and harvests does not grow the field). Ungrouped until group_added().
 	void take_plant(uint32_t p_plant);
 	// The added plants' chunks anew if plants were added or taken since; returns whether they were
 	// (the near field must then take the new chunks: NearField::regroup).
@@ -170,6 +170,7 @@ private:
 	uint32_t _map_chunk_count = 0;
 	std::vector<uint32_t> _added_cells; // per added plant (index − map plants): its cell, NO_CELL once taken
 	std::vector<uint32_t> _added_species; // per added plant: its species
+	std::vector<uint32_t> _free_added; // the indices of added plants taken: used again first
 	std::unordered_map<uint32_t, uint32_t> _added_at_cell; // cell → its added plant
 	bool _added_grouped = true;
 };

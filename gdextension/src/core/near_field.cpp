@@ -38,11 +38,10 @@ void NearField::rebuild() {
 void NearField::drop_added() {
 	const FieldLayout &layout = _plants.get_layout();
 	const uint32_t map_chunks = _plants.get_map_chunk_count();
+	// (By index: an added plant's slot may already hold a plant added since, not yet in a chunk.)
+	_pushes.drop_plants_from(_plants.get_map_plant_count(), _wind_lookup);
 	for (uint32_t c = map_chunks; c < _chunk_active.size() && c < layout.chunks.size(); ++c) {
-		if (_chunk_active[c]) {
-			_pushes.drop_chunk(c, layout, _wind_lookup);
-			++_changed_chunks;
-		}
+		_changed_chunks += _chunk_active[c] ? 1u : 0u;
 	}
 	const auto added = [map_chunks](uint32_t p_chunk) { return p_chunk >= map_chunks; };
 	for (uint32_t c : _active_chunks) {
@@ -65,7 +64,7 @@ void NearField::take_added() {
 	_chunk_active.resize(chunks, 0);
 	_visit_mark.resize(chunks, 0);
 	_plant_lod.resize(_plants.get_plant_count(), LOD_BILLBOARD);
-	_lod_due = true; // the added chunks turn active at the next update
+	_select_added_lods(); // active now, each plant at its level (no whole LOD pass)
 }
 
 void NearField::reshape() {

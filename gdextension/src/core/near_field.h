@@ -121,6 +121,10 @@ private:
 	// LOD selection and chunk activation (near_field_lod.cpp).
 	void _select_lods();
 	void _select_chunk_lods(uint32_t p_chunk, bool p_forced, float p_enter, float p_leave);
+	// Whether a representation is forced, and the distances at which chunks turn active and static.
+	void _activation_bounds(bool &r_forced, float &r_enter, float &r_leave) const;
+	// The added plants' chunks (FieldPlants::add_plant) active, their plants' levels selected.
+	void _select_added_lods();
 	uint8_t _static_chunk_lod(uint32_t p_chunk) const;
 	float _chunk_distance_sq(uint32_t p_chunk) const;
 	// Moves the plants of active chunks [p_first, p_last) and writes the visible ones into r_buckets.

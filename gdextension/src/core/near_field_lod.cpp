@@ -25,14 +25,31 @@ uint8_t NearField::_static_chunk_lod(uint32_t p_chunk) const {
 	return distance <= get_billboard_distance() * scale ? LOD_SPRITE : LOD_BILLBOARD;
 }
 
-void NearField::_select_lods() {
-	const FieldLayout &layout = _plants.get_layout();
+void NearField::_activation_bounds(bool &r_forced, float &r_enter, float &r_leave) const {
 	const LodParams &params = _lod.get_params();
 	// A chunk becomes active once any of it could need a mesh; it goes static again a margin later.
 	// A forced representation makes every chunk active, so every plant is drawn in it.
-	const bool forced = params.force_level >= 0 && params.force_level < LOD_COUNT;
-	const float enter = params.distances[2] + 2.0f * params.hysteresis;
-	const float leave = enter + 2.0f * params.hysteresis + 1.0f;
+	r_forced = params.force_level >= 0 && params.force_level < LOD_COUNT;
+	r_enter = params.distances[2] + 2.0f * params.hysteresis;
+	r_leave = r_enter + 2.0f * params.hysteresis + 1.0f;
+}
+
+void NearField::_select_added_lods() {
+	bool forced = false;
+	float enter = 0.0f;
+	float leave = 0.0f;
+	_activation_bounds(forced, enter, leave);
+	for (uint32_t c = _plants.get_map_chunk_count(); c < _plants.get_chunk_count(); ++c) {
+		_select_chunk_lods(c, forced, enter, leave);
+	}
+}
+
+void NearField::_select_lods() {
+	const FieldLayout &layout = _plants.get_layout();
+	bool forced = false;
+	float enter = 0.0f;
+	float leave = 0.0f;
+	_activation_bounds(forced, enter, leave);
 	_changed_chunks = 0;
 	_previous_active.swap(_active_chunks);
 	_active_chunks.clear();

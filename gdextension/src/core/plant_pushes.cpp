@@ -27,6 +27,21 @@ void PlantPushes::drop_chunk(uint32_t p_chunk, const FieldLayout &p_layout, cons
 	}
 }
 
+void PlantPushes::drop_plants_from(uint32_t p_first, const WindOf &p_wind_of) {
+	size_t kept = 0;
+	for (size_t i = 0; i < _pushed.size(); ++i) {
+		if (_pushed[i].plant >= p_first) {
+			continue;
+		}
+		if (kept != i) {
+			_pushed[kept] = _pushed[i];
+			p_wind_of(_pushed[kept].plant)->push_slot = static_cast<uint16_t>(kept + 1);
+		}
+		++kept;
+	}
+	_pushed.resize(kept);
+}
+
 void PlantPushes::update(float p_delta, const FieldPlants &p_plants, const WindOf &p_wind_of) {
 	const FieldLayout &layout = p_plants.get_layout();
 	if (_pushers.empty() && _pushed.empty()) {

@@ -45,6 +45,9 @@ public:
 	void update(float p_delta, const FieldPlants &p_plants, const WindOf &p_wind_of);
 	// Lets go of a chunk's plants (it turns inactive: their wind states go).
 	void drop_chunk(uint32_t p_chunk, const FieldLayout &p_layout, const WindOf &p_wind_of);
+	// Lets go of every plant of index p_first or above (the plants play added: their chunks are made
+	// anew, their wind states go), whatever chunk they are in now.
+	void drop_plants_from(uint32_t p_first, const WindOf &p_wind_of);
 	// Lets go of every plant, without touching their wind states (the layout was rebuilt).
 	void clear() { _pushed.clear(); }
 
