@@ -217,3 +217,35 @@ TEST_CASE("a plant's stalk reaches from its root to its head, for each species' 
 		}
 	}
 }
+
+TEST_CASE("field plants: the plant of every cell is found, in maps dense, sparse and clustered") {
+	for (const int kind : { 0, 1, 2 }) {
+		std::string text = "97 61\n";
+		uint64_t state = 12345;
+		for (int row = 0; row < 61; ++row) {
+			for (int column = 0; column < 97; ++column) {
+				state = state * 6364136223846793005ull + 1442695040888963407ull;
+				const bool plant = kind == 0 ? (state >> 60) != 0 // dense: 15 of 16
+						: kind == 1      ? (state >> 61) == 0 // sparse: 1 of 8
+										 : row > 40 && column < 30; // one corner
+				text += plant ? '*' : '.';
+			}
+			text += '\n';
+		}
+		FieldPlants plants;
+		MapError error;
+		REQUIRE(plants.load_map(text, U"", U"", "cells", MapLimits{}, error));
+		uint32_t found = 0;
+		for (uint32_t cell = 0; cell < 97u * 61u; ++cell) {
+			const uint32_t plant = plants.plant_at_cell(cell);
+			const bool has = plants.get_map().plants[cell] != 0;
+			CHECK((plant != FieldPlants::NO_PLANT) == has);
+			if (plant != FieldPlants::NO_PLANT) {
+				CHECK(plants.cell_of_plant(plant) == cell);
+				++found;
+			}
+		}
+		CHECK(found == plants.get_plant_count());
+		CHECK(plants.plant_at_cell(97u * 61u) == FieldPlants::NO_PLANT);
+	}
+}

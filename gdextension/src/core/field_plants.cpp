@@ -301,7 +301,27 @@ uint32_t FieldPlants::plant_at_cell(uint32_t p_cell) const {
 	if (!_index_cells()) {
 		return NO_PLANT;
 	}
-	const auto found = std::lower_bound(_plant_cells.begin(), _plant_cells.end(), p_cell);
+	// The cells are sorted and, in most maps, nearly every cell holds a plant: start where the cell's
+	// share of the map puts it and widen by doubling steps (a few memory reads where a bisection of a
+	// million plants takes twenty, each likely a cache miss once the frame has been drawn).
+	const size_t count = _plant_cells.size();
+	const uint64_t cells = uint64_t(std::max(_map.columns, 1)) * uint64_t(std::max(_map.rows, 1));
+	if (count == 0 || p_cell >= cells) {
+		return NO_PLANT;
+	}
+	const size_t guess = std::min<size_t>(count - 1, size_t(uint64_t(p_cell) * count / cells));
+	size_t low = guess;
+	size_t high = guess + 1; // the cell lies in [low, high) if anywhere
+	for (size_t step = 1; low > 0 && _plant_cells[low] > p_cell; step *= 2) {
+		high = low;
+		low = low > step ? low - step : 0;
+	}
+	for (size_t step = 1; high < count && _plant_cells[high - 1] < p_cell; step *= 2) {
+		low = high;
+		high = std::min(count, high + step);
+	}
+	const auto first = _plant_cells.begin() + std::ptrdiff_t(low);
+	const auto found = std::lower_bound(first, _plant_cells.begin() + std::ptrdiff_t(high), p_cell);
 	return found != _plant_cells.end() && *found == p_cell ? static_cast<uint32_t>(found - _plant_cells.begin()) : NO_PLANT;
 }
 
@@ -317,7 +337,7 @@ uint32_t FieldPlants::added_plant_at_cell(uint32_t p_cell) const {
 	return found != _added_at_cell.end() ? found->second : NO_PLANT;
 }
 
-uint32_t FieldPlants::add_plant(uint32_t p_cell, uint32_t p_species, float p_height) {
+uint32_t FieldPlants::add_plant(uint32_t p_cell, uint32_t p_species, float p_height, uint32_t p_map_plant) {
 	const uint32_t columns = uint32_t(std::max(_map.columns, 0));
 	if (columns == 0 || p_cell >= columns * uint32_t(std::max(_map.rows, 0)) || p_species >= get_species_count()) {
 		return NO_PLANT;
@@ -333,7 +353,7 @@ uint32_t FieldPlants::add_plant(uint32_t p_cell, uint32_t p_species, float p_hei
 	const int column = int(p_cell % columns);
 	const int row = int(p_cell / columns);
 	Plant plant = lay_plant(_map, _layout_params, p_species, column, row);
-	const uint32_t map_plant = plant_at_cell(p_cell);
+	const uint32_t map_plant = p_map_plant;
 	if (std::isfinite(p_height)) {
 		plant.ground = p_height;
 	} else if (map_plant != NO_PLANT) {

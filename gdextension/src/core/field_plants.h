@@ -132,12 +132,13 @@ public:
 	// plants there are, so no other plant's index changes; group_added() gives them chunks of their
 	// own after the map's, which the near field keeps active at every distance (the far tiles, built
 	// from the map, never draw them). A rebuilt layout forgets them (FieldSimulation adds them again).
-	// Adds a standing plant of p_species to cell p_cell standing at the height p_height (NaN: the map's
-	// plant's ground there, else the ground's), taking the one added there before; returns its index,
+	// Adds a standing plant of p_species to cell p_cell standing at the height p_height (NaN: the
+	// ground of p_map_plant, the map's plant there (plant_at_cell), else the ground's), taking the one
+	// added there before; returns its index,
 	// or NO_PLANT (and nothing added) for a cell or species not the map's or a cell with no ground
 	// known (a ground of measured points knows only the map's plants' cells). Ungrouped until
 	// group_added().
-	uint32_t add_plant(uint32_t p_cell, uint32_t p_species, float p_height);
+	uint32_t add_plant(uint32_t p_cell, uint32_t p_species, float p_height, uint32_t p_map_plant);
 	// The added plant of a cell, or NO_PLANT.
 	uint32_t added_plant_at_cell(uint32_t p_cell) const;
 	// An added plant gone (drawn nowhere, found by no query; its index is given to the next plant

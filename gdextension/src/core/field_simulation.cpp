@@ -169,7 +169,8 @@ void FieldSimulation::_show_cell(uint32_t p_cell) {
 		return;
 	}
 	const auto height = _cell_heights.find(p_cell);
-	const uint32_t added = _plants.add_plant(p_cell, uint32_t(state.plant - 1), height != _cell_heights.end() ? height->second : NAN);
+	const uint32_t added =
+			_plants.add_plant(p_cell, uint32_t(state.plant - 1), height != _cell_heights.end() ? height->second : NAN, plant);
 	if (added == FieldPlants::NO_PLANT) {
 		_unplaced.insert(p_cell); // no ground known there: see set_cell_heights
 		return;

@@ -3,7 +3,8 @@ extends SceneTree
 ## Vulkan lavapipe, so that the far tiles' hidden-cells texture is really uploaded): a million-plant
 ## field (1000 x 1000 cells, 500 x 500 m), the camera in its middle. Each measured frame either lands
 ## 1 000 changes (a scythe's circle beside the camera, a trail across the field, cells scattered over
-## it: SunflowerField.play.change_plants, then the field's frame) or none. Prints the main thread's
+## it: SunflowerField.play.change_plants; and plants of another type put by the camera and scattered:
+## put_plants; then the field's frame) or none. Prints the main thread's
 ## time of such frames as medians, and what the changes added.
 
 const RUNS: int = 15
@@ -27,6 +28,7 @@ func _run() -> void:
 	camera.global_transform = Transform3D(Basis.from_euler(Vector3(-0.3, 0.0, 0.0)), Vector3(250.0, 1.7, 250.0))
 	camera.current = true
 	var field: SunflowerField = SunflowerField.new()
+	field.legend = {"m": FieldPlant.default_plant().duplicate()}  # a second plant type, for the plants put
 	field.map = field_map
 	root.add_child(field)
 	await process_frame
@@ -40,6 +42,9 @@ func _run() -> void:
 		field.play.get_cells_in_circle(Vector3(254.0, 0.0, 250.0), 8.92).slice(0, 1000),
 		"a trail across the field": PackedInt32Array(range(700 * SIDE, 701 * SIDE)),
 		"scattered over the whole field": _scattered(),
+		"plants of another type put by the camera":
+		field.play.get_cells_in_circle(Vector3(254.0, 0.0, 250.0), 8.92).slice(0, 1000),
+		"plants of another type put, scattered": _scattered(),
 	}
 	print("| changes | cells | frame ms (median) | frame without changes ms | added ms |")
 	print("|---|---|---|---|---|")
@@ -49,7 +54,10 @@ func _run() -> void:
 		var without: PackedFloat64Array = []
 		for run: int in RUNS:
 			var start: int = Time.get_ticks_usec()
-			field.play.change_plants(cells, SunflowerFieldPlay.Change.CUT)
+			if shape.begins_with("plants"):
+				field.play.put_plants(cells, 1)
+			else:
+				field.play.change_plants(cells, SunflowerFieldPlay.Change.CUT)
 			field.advance(1.0 / 60.0)
 			with_changes.append((Time.get_ticks_usec() - start) / 1000.0)
 			await process_frame
