@@ -236,6 +236,16 @@ static var _default: FieldPlant
 		if accepted != regrow_after:
 			regrow_after = accepted
 			emit_changed()
+## What a cut plant of this type leaves: a stump this many metres tall (its bottom part, upright,
+## shortened to that height — at most that part's length — drawn near as a mesh); 0: nothing. A plant
+## of one part (a tree or a bush from a scene: no middle or head in [member part_lengths]) has no
+## bottom part of its own and leaves nothing (the field warns).
+@export_range(0.0, 2.0, 0.01, "or_greater", "suffix:m") var stump_height: float = 0.0:
+	set(value):
+		var accepted: float = Native.accept("FieldPlant.stump_height", value, stump_height)
+		if accepted != stump_height:
+			stump_height = accepted
+			emit_changed()
 
 @export_group("Impostors")
 ## The far levels' views of the plant (colour and alpha), an atlas of [constant ATLAS_VIEWS] squares.

@@ -319,9 +319,10 @@ func advance_changes(now: float) -> PackedInt32Array:
 	return native.advance_changes(now)
 
 
-## A plant type's regrowth: seconds until a flattened plant stands, until a cut one has grown.
-func set_regrowth(species: int, flattened_seconds: float, cut_seconds: float) -> void:
-	native.set_regrowth(species, flattened_seconds, cut_seconds)
+## A plant type's play: seconds until a flattened plant stands, until a cut one has grown, and the
+## height in metres of the stump a cut one leaves (0: none).
+func set_play_type(species: int, flattened_seconds: float, cut_seconds: float, stump_height: float) -> void:
+	native.set_play_type(species, flattened_seconds, cut_seconds, stump_height)
 
 
 ## A cell after play: x its plant (0 none, 1 + type), y its state, z the clock when it took it.

@@ -871,6 +871,16 @@ func _get_configuration_warnings() -> PackedStringArray:
 		warnings.append("Keep the field's scale at 1; size it with 'cell_size' and 'plant_height'.")
 	for grown: FieldPlant in _species_plants():
 		warnings.append_array(grown.stacking_problems())
+		if grown.stump_height > 0.0 and grown.drawn_whole():
+			warnings.append(
+				(
+					(
+						"FieldPlant '%s': stump_height is set, but the plant is drawn whole (no bottom part of its "
+						+ "own): its cut plants leave no stump."
+					)
+					% grown.name
+				)
+			)
 	return warnings
 
 

@@ -230,10 +230,11 @@ func _step(simulation: NativeField, delta: float, pushers: Array[Node3D], trampl
 
 
 ## (The field calls this.) Each plant type of [param plants] (FieldPlant per species) gets its
-## recovery times in [param simulation].
+## recovery times and stump in [param simulation].
 func _send_regrowth(simulation: NativeField, plants: Array) -> void:
 	for species: int in plants.size():
-		simulation.set_regrowth(species, plants[species].recover_after, plants[species].regrow_after)
+		var grown: FieldPlant = plants[species]
+		simulation.set_play_type(species, grown.recover_after, grown.regrow_after, grown.stump_height)
 
 
 ## (The field calls this.) The changes of [param old] carried to [param new] (a rebuild): kept when

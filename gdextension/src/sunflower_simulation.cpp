@@ -79,7 +79,8 @@ void SunflowerSimulation::bind_methods() {
 	gdx::bind_method(CLASS, "get_cell_roots", &SunflowerSimulation::get_cell_roots, { "cells" });
 	gdx::bind_method(CLASS, "set_cell_heights", &SunflowerSimulation::set_cell_heights, { "cells", "heights" });
 	gdx::bind_method(CLASS, "advance_changes", &SunflowerSimulation::advance_changes, { "now" });
-	gdx::bind_method(CLASS, "set_regrowth", &SunflowerSimulation::set_regrowth, { "species", "flattened_seconds", "cut_seconds" });
+	gdx::bind_method(CLASS, "set_play_type", &SunflowerSimulation::set_play_type,
+			{ "species", "flattened_seconds", "cut_seconds", "stump_height" });
 	gdx::bind_method(CLASS, "get_cell_change", &SunflowerSimulation::get_cell_change, { "cell" });
 	gdx::bind_method(CLASS, "get_change_count", &SunflowerSimulation::get_change_count);
 	gdx::bind_method(CLASS, "get_cells_in_circle", &SunflowerSimulation::get_cells_in_circle, { "center", "radius" });

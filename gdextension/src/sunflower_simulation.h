@@ -109,7 +109,9 @@ public:
 	void set_cell_heights(const gdx::PackedInt32Array &p_cells, const gdx::PackedFloat32Array &p_heights);
 	// Moves the changes' clock: returns the cells whose plants stood again.
 	gdx::PackedInt32Array advance_changes(double p_now);
-	void set_regrowth(int64_t p_species, double p_flattened_seconds, double p_cut_seconds);
+	// A plant type's play: its regrowth (FieldSimulation::set_regrowth) and the stump its cut plants
+	// leave (NearField::set_stump_height).
+	void set_play_type(int64_t p_species, double p_flattened_seconds, double p_cut_seconds, double p_stump_height);
 	// A cell after play: x its plant (0 none, 1 + plant type), y its state (0 standing, 1 flattened,
 	// 2 cut), z the clock when it took it.
 	gdx::Vector3 get_cell_change(int64_t p_cell) const;

@@ -110,7 +110,7 @@ gdx::PackedInt32Array SunflowerSimulation::get_plants_near(gdx::Vector3 p_positi
 	// A cut or removed plant is not there; a flattened one lies there, not standing.
 	const auto gone = [&](uint32_t p_plant) {
 		const PlantState state = _sim.plants().get_plant_state(p_plant);
-		return state == PlantState::CUT || (p_standing_only && state == PlantState::FLATTENED);
+		return state == PlantState::CUT || state == PlantState::GONE || (p_standing_only && state == PlantState::FLATTENED);
 	};
 	plants.erase(std::remove_if(plants.begin(), plants.end(), gone), plants.end());
 	return gdx::to_godot_indices(plants);

@@ -335,7 +335,7 @@ TEST_CASE("play: a plant put in an empty cell, or of another type, is drawn at e
 	CHECK(sim.near().get_plant_lod(sim.plants().added_plant_at_cell(far_empty)) >= LOD_SPRITE);
 	// The map's plant of a cell given another type is hidden everywhere (its far record by the mask).
 	CHECK(drawn_at(sim, far_other_root, true) == 1); // the added 'm' alone (it stands where the '*' stood)
-	CHECK(sim.plants().get_plant_state(sim.plants().plant_at_cell(far_other)) == PlantState::CUT);
+	CHECK(sim.plants().get_plant_state(sim.plants().plant_at_cell(far_other)) == PlantState::GONE);
 	CHECK(hidden_at(sim, far_other_root));
 	// The far tiles' active mask does not take the added plants' chunks for the map's: an 'm' put
 	// beside the map's far 'm' leaves that one to its far tile.
@@ -421,4 +421,68 @@ TEST_CASE("play: a plant put where the ground is not known waits for a height, t
 	CHECK(sim.plants().get_layout().plants[plant].ground == 1.5f);
 	sim.update(0.016f);
 	CHECK(drawn_at(sim, sim.plants().get_layout().plants[plant].root(), false) == 1);
+}
+
+TEST_CASE("play: a cut plant leaves the stump its type says, part by part or drawn whole; a removed one none") {
+	for (const bool whole : { false, true }) {
+		FieldSimulation sim;
+		load(sim, rect_map(200, 40));
+		PlantShape shape = sim.plants().get_shape(0);
+		shape.whole = whole;
+		sim.set_shape(shape);
+		sim.set_plant_height(2.0f);
+		sim.near().set_stump_height(0, 0.3f);
+		sim.near().set_observer({ 5.0f, 1.7f, 5.0f });
+		sim.near().request_lod_update();
+		sim.update(0.016f);
+		const uint32_t cut_cell = cell(10, 10);
+		const uint32_t removed_cell = cell(12, 10);
+		const glm::vec3 cut_root = sim.plants().get_layout().plants[sim.plants().plant_at_cell(cut_cell)].root();
+		const glm::vec3 removed_root = sim.plants().get_layout().plants[sim.plants().plant_at_cell(removed_cell)].root();
+		std::vector<uint32_t> changed;
+		sim.change_cells({ cut_cell }, FieldSimulation::CellAction::CUT, 1.0, changed);
+		sim.change_cells({ removed_cell }, FieldSimulation::CellAction::REMOVE, 1.0, changed);
+		sim.update(0.016f);
+		const PlantShape &drawn = sim.plants().get_shape(0);
+		const float size = drawn.part_scale * sim.plants().get_layout().plants[sim.plants().plant_at_cell(cut_cell)].scale;
+		int stumps = 0;
+		int others = 0;
+		for (uint32_t level = 0; level < LOD_MESH_COUNT; ++level) {
+			for (uint32_t part = 0; part < PART_COUNT; ++part) {
+				const InstanceBuffer &bucket = sim.near().get_bucket(mesh_bucket(level, part));
+				for (uint32_t i = 0; i < bucket.get_count(); ++i) {
+					const float *instance = bucket.get_data() + size_t(i) * bucket.get_stride();
+					const glm::vec3 root = placed(bucket, i).root;
+					others += glm::distance(root, removed_root) < 1e-4f ? 1 : 0;
+					if (glm::distance(root, cut_root) > 1e-4f) {
+						continue;
+					}
+					++stumps;
+					CHECK(part == 0);
+					if (whole) {
+						CHECK(read_whole_instance(instance).middle == doctest::Approx(-0.3f / size)); // model units
+					} else {
+						// The bottom part's up axis, shortened: its length times the part's model length.
+						const glm::vec3 up(instance[1], instance[5], instance[9]);
+						CHECK(glm::length(up) * drawn.part_lengths[0] == doctest::Approx(0.3f).epsilon(1e-3));
+						CHECK(up.y > 0.999f * glm::length(up)); // upright
+					}
+				}
+			}
+		}
+		CHECK(stumps == 1);
+		CHECK(others == 0); // a removed plant leaves nothing
+		// A plant of one part has no bottom part of its own to leave.
+		shape.part_lengths = glm::vec3(1.0f, 0.0f, 0.0f);
+		sim.set_shape(shape);
+		sim.update(0.016f);
+		stumps = 0;
+		for (uint32_t level = 0; level < LOD_MESH_COUNT; ++level) {
+			const InstanceBuffer &bucket = sim.near().get_bucket(mesh_bucket(level, 0));
+			for (uint32_t i = 0; i < bucket.get_count(); ++i) {
+				stumps += glm::distance(placed(bucket, i).root, cut_root) < 1e-4f ? 1 : 0;
+			}
+		}
+		CHECK(stumps == 0);
+	}
 }

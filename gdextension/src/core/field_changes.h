@@ -21,6 +21,9 @@ enum class PlantState : uint8_t {
 	STANDING = 0,
 	FLATTENED = 1, // lies bent: pushed over (trampled), until it recovers
 	CUT = 2, // cut down (a stump or nothing, as its plant type says), until it regrows
+	// Drawn nowhere, found by nothing, no stump: a plant removed, the map's plant of a cell given
+	// another type, a plant put and taken again. How FieldPlants shows such a plant; never a cell's.
+	GONE = 3,
 };
 
 // What a cell holds after play.

@@ -397,7 +397,7 @@ void FieldPlants::take_plant(uint32_t p_plant) {
 			_added_cells[p_plant - _map_plant_count] == NO_CELL) {
 		return;
 	}
-	set_plant_state(p_plant, PlantState::CUT);
+	set_plant_state(p_plant, PlantState::GONE);
 	_added_at_cell.erase(_added_cells[p_plant - _map_plant_count]);
 	_added_cells[p_plant - _map_plant_count] = NO_CELL;
 	_free_added.push_back(p_plant);

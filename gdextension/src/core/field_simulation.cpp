@@ -153,7 +153,7 @@ void FieldSimulation::_show_cell(uint32_t p_cell) {
 	const bool map_type = p_cell < map_plants.size() && state.plant == map_plants[p_cell];
 	const uint32_t plant = _plants.plant_at_cell(p_cell);
 	if (plant != FieldPlants::NO_PLANT) {
-		const PlantState shown = map_type && state.plant != 0 ? state.state : PlantState::CUT;
+		const PlantState shown = map_type && state.plant != 0 ? state.state : PlantState::GONE;
 		_plants.set_plant_state(plant, shown);
 		const uint32_t columns = uint32_t(_plants.get_map().columns);
 		const size_t byte = size_t(p_cell / columns) * hidden_row_bytes() + (p_cell % columns) / 8;

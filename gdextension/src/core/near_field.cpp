@@ -79,6 +79,34 @@ void NearField::_write_records(uint32_t p_chunk) {
 	_plants.write_chunk_instances(p_chunk, records.data());
 }
 
+void NearField::set_stump_height(uint32_t p_species, float p_metres) {
+	if (p_species < _stump_heights.size()) {
+		_stump_heights[p_species] = sanitize(param::PLANT_STUMP_HEIGHT, p_metres, _stump_heights[p_species]);
+	}
+}
+
+void NearField::_write_stump(const Plant &p_plant, const PlantShape &p_shape, float p_stump, const glm::vec4 &p_color,
+		InstanceBuffer &r_bucket) const {
+	const float size = p_shape.part_scale * p_plant.scale; // metres a model unit
+	if (p_shape.whole) {
+		// The whole-plant shader draws only the bottom part of a record whose middle stretch is
+		// negative, upright and that many model units tall (plant_bend.gdshaderinc).
+		WholePlant whole;
+		_wind.whole_plant(p_plant, glm::vec2(0.0f), p_shape, whole);
+		whole.middle = -std::min(p_stump / size, p_shape.part_lengths[0]);
+		write_whole_instance(r_bucket.push(), whole, p_color);
+		return;
+	}
+	PartTransforms parts;
+	_wind.part_transforms(p_plant, glm::vec2(0.0f), p_shape, parts);
+	const float bottom = p_shape.part_lengths[0] * size; // metres
+	glm::mat3 basis = parts.basis[0];
+	if (bottom > p_stump) {
+		basis[1] *= p_stump / bottom; // shortened along the part's own up axis
+	}
+	write_instance(r_bucket.push(), basis, parts.origin[0], p_color);
+}
+
 void NearField::set_lod(const LodParams &p_params) {
 	_lod.configure(p_params);
 	_lod_due = true;
@@ -201,6 +229,8 @@ void NearField::_move_chunks(size_t p_first, size_t p_last, float p_delta, Bucke
 		InstanceBuffer *buckets = r_buckets.data() + size_t(chunk.species) * BUCKET_COUNT;
 		const float radius = shape.cull_radius * shape.part_scale;
 		const float mid_height = 0.5f * shape.height * shape.part_scale;
+		// (A plant of one part has no bottom part of its own to leave.)
+		const float stump = shape.part_lengths[1] + shape.part_lengths[2] > 0.0f ? _stump_heights[chunk.species] : 0.0f;
 		// The chunk against the frustum first, by a box that holds its plants' culling spheres: a
 		// chunk out of view only keeps its mesh plants' wind going, one fully in view skips the
 		// plants' own tests. Either way each plant ends as its own test would have it.
@@ -223,7 +253,7 @@ void NearField::_move_chunks(size_t p_first, size_t p_last, float p_delta, Bucke
 		for (uint32_t k = 0; k < chunk.count; ++k) {
 			const uint32_t index = layout.chunk_plants[chunk.first + k];
 			const PlantState state = _plants.get_plant_state(index);
-			if (state == PlantState::CUT) {
+			if (state == PlantState::GONE || (state == PlantState::CUT && stump <= 0.0f)) {
 				continue;
 			}
 			const Plant &plant = layout.plants[index];
@@ -231,6 +261,14 @@ void NearField::_move_chunks(size_t p_first, size_t p_last, float p_delta, Bucke
 			const glm::vec3 middle = plant.root() + glm::vec3(0.0f, mid_height * plant.scale, 0.0f);
 			const float reach = radius * plant.scale; // the culling sphere's radius
 			const bool visible = overlap == Frustum::INSIDE || crossing.intersects_sphere(middle, reach);
+			if (state == PlantState::CUT) {
+				if (visible && lod < LOD_SPRITE) {
+					InstanceBuffer &bucket = buckets[mesh_bucket(lod, 0)];
+					_write_stump(plant, shape, stump, plant.color(variety), bucket);
+					bucket.include(middle, reach);
+				}
+				continue;
+			}
 			const float *record = records + size_t(k) * FAR_FLOATS_PER_INSTANCE;
 			if (lod >= LOD_SPRITE) {
 				if (visible && state == PlantState::STANDING) { // (a flattened plant lies: no impostor stands it up)

@@ -55,6 +55,12 @@ public:
 	void set_wind(const WindParams &p_params) { _wind.configure(p_params); }
 	const WindModel &get_wind() const { return _wind; }
 	void set_lod(const LodParams &p_params);
+	// The stump a cut plant of p_species leaves, metres (param::PLANT_STUMP_HEIGHT; 0: none): its
+	// bottom part, upright, shortened to that height, drawn at its mesh level (drawn whole: the
+	// plant's record with a negative middle stretch, which the shader draws so). A plant of one part
+	// (no middle or head) has no bottom part of its own: its cut plants leave nothing.
+	void set_stump_height(uint32_t p_species, float p_metres);
+	float get_stump_height(uint32_t p_species) const { return _stump_heights[p_species % _stump_heights.size()]; }
 	const LodSelector &get_lod() const { return _lod; }
 	// The distance at which a static chunk switches from sprite to billboard (engine visibility range).
 	float get_billboard_distance() const { return _lod.get_params().distances[3]; }
@@ -132,6 +138,9 @@ private:
 	glm::vec2 _plant_bend(const PlantWind &p_wind, const Plant &p_plant, bool p_moving) const;
 	// A flattened plant's bend: by max_bend away from where it faces, whatever the wind.
 	glm::vec2 _flat_bend(const Plant &p_plant) const;
+	// A cut plant's stump (set_stump_height) into r_bucket, when its type leaves one.
+	void _write_stump(const Plant &p_plant, const PlantShape &p_shape, float p_stump, const glm::vec4 &p_color,
+			InstanceBuffer &r_bucket) const;
 	// Fills an active chunk's impostor records.
 	void _write_records(uint32_t p_chunk);
 	// The wind state of a plant of an active chunk (nullptr for any other plant).
@@ -145,6 +154,7 @@ private:
 	Frustum _frustum;
 	PlantPushes _pushes;
 	glm::vec3 _observer{ 0.0f };
+	std::array<float, FieldMap::MAX_SPECIES> _stump_heights{};
 
 	std::vector<uint8_t> _plant_lod;
 	// The wind state of the plants of active chunks (only they are drawn as meshes), per chunk in

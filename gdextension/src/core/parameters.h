@@ -124,6 +124,9 @@ inline constexpr ParameterSpec TRAMPLE_SHARE{ "SunflowerField.trample_share", 0.
 // until a cut one has grown again; 0: never.
 inline constexpr ParameterSpec PLANT_RECOVER_AFTER{ "FieldPlant.recover_after", 0.0, 0.0, 1.0e7, ParameterSpec::CLAMP, 0.0 };
 inline constexpr ParameterSpec PLANT_REGROW_AFTER{ "FieldPlant.regrow_after", 0.0, 0.0, 1.0e7, ParameterSpec::CLAMP, 0.0 };
+// What a cut plant of a type leaves: a stump this many metres tall (its bottom part, shortened; at
+// most that part's length), drawn near as a mesh; 0: nothing.
+inline constexpr ParameterSpec PLANT_STUMP_HEIGHT{ "FieldPlant.stump_height", 0.0, 0.0, 100.0, ParameterSpec::CLAMP, 0.0 };
 
 // Stalk colliders stand within this reach of each pusher and of the observer; 0: none.
 inline constexpr ParameterSpec COLLISION_REACH{ "SunflowerField.collision_reach", 0.0, 0.0, 1000.0, ParameterSpec::CLAMP, 0.0 };
@@ -133,7 +136,7 @@ inline constexpr ParameterSpec GROUND_TILT{ "SunflowerField.ground_tilt", 0.0, 0
 inline constexpr ParameterSpec GROUND_RAY_ABOVE{ "SunflowerField.ground_ray_above", 100.0, 0.0, NO_MAX, ParameterSpec::CLAMP, 100.0 };
 inline constexpr ParameterSpec GROUND_RAY_BELOW{ "SunflowerField.ground_ray_below", 100.0, 0.0, NO_MAX, ParameterSpec::CLAMP, 100.0 };
 
-inline constexpr std::array<const ParameterSpec *, 52> ALL{ { &WIND_MODEL, &WIND_POWER, &WIND_INCREMENT, &WIND_STIFFNESS_MIDDLE,
+inline constexpr std::array<const ParameterSpec *, 53> ALL{ { &WIND_MODEL, &WIND_POWER, &WIND_INCREMENT, &WIND_STIFFNESS_MIDDLE,
 		&WIND_STIFFNESS_BOTTOM, &WIND_BEND_PER_POWER, &WIND_MAX_BEND, &WIND_FLIP_INTERVAL, &WIND_FLIP_CHANCE,
 		&WIND_GUST_SPEED, &WIND_GUST_SHARE, &CELL_SIZE, &PLANT_HEIGHT, &CHUNK_SIZE, &MAX_PLANTS, &LOD_HYSTERESIS,
 		&LOD_INTERVAL, &LOD_FADE, &FORCE_LOD, &ALPHA_SCISSOR, &THINNING_DISTANCE, &THINNING_MIN_DENSITY, &TILE_MERGE_DISTANCE, &MAX_DRAW_DISTANCE,
@@ -141,7 +144,7 @@ inline constexpr std::array<const ParameterSpec *, 52> ALL{ { &WIND_MODEL, &WIND
 		&COLLISION_REACH, &GROUND_TILT, &GROUND_RAY_ABOVE, &GROUND_RAY_BELOW, &PLANT_YAW_RANGE, &PLANT_SCALE_MIN, &PLANT_SCALE_MAX,
 		&PLANT_MIDDLE_VARIATION, &PLANT_BRIGHTNESS_VARIATION, &PLANT_TINT_VARIATION, &PLANT_STIFFNESS, &PLANT_FLUTTER,
 		&PLANT_IMPOSTOR_SHADOW_SHIFT, &PLANT_IMPOSTOR_EMISSION_RANGE, &PLANT_PART_LENGTH, &PLANT_HEIGHT_UNITS,
-		&PLANT_CULL_RADIUS_UNITS, &PLANT_RECOVER_AFTER, &PLANT_REGROW_AFTER } };
+		&PLANT_CULL_RADIUS_UNITS, &PLANT_RECOVER_AFTER, &PLANT_REGROW_AFTER, &PLANT_STUMP_HEIGHT } };
 
 } // namespace param
 

@@ -225,6 +225,50 @@ func test_plants_put_at_run_time_fill_a_far_hole_as_the_map_would() -> void:
 	)
 
 
+## A cut plant leaves the stump its type says (FieldPlant.stump_height), drawn whole as the built-in
+## sunflower is, and part by part: a patch in front of the camera cut with stumps of 0.3 m and without.
+func test_cut_plants_leave_the_stumps_their_type_says() -> void:
+	var shares: Dictionary = {}
+	for whole: bool in [true, false]:
+		var field: SunflowerField = _still_field(
+			"res://fields/demo.field", Vector3(5.0, 5.0, 11.0), Vector3(5.0, 0.0, 5.0)
+		)
+		field.map = Maps.filled(40, 20, "res://stumps.field")
+		var plant: FieldPlant = FieldPlant.default_plant().duplicate()
+		plant.draw_whole = whole
+		plant.stump_height = 0.3
+		field.plant = plant
+		await _built_and_drawn(field)
+		var standing: Image = tree.root.get_viewport().get_texture().get_image()
+		var cells: PackedInt32Array = field.play.get_cells_in_rect(Rect2(2.0, 4.0, 6.0, 4.0))
+		field.play.change_plants(cells, SunflowerFieldPlay.Change.CUT)
+		await frames(2)
+		var stumps: Image = tree.root.get_viewport().get_texture().get_image()
+		stumps.save_png(artifact_path("render_stumps_%s.png" % ("whole" if whole else "parts")))
+		plant.stump_height = 0.0
+		await frames(2)
+		var bare: Image = tree.root.get_viewport().get_texture().get_image()
+		var stump_share: float = _changed_share(bare, stumps)
+		print(
+			(
+				"     drawn %s: %d plants cut; %.1f%% of the pixels differ between the patch with stumps and without"
+				% ["whole" if whole else "part by part", cells.size(), 100.0 * stump_share]
+			)
+		)
+		check(_changed_share(standing, stumps) > 0.02, "the cut patch shows (drawn whole: %s)" % whole)
+		check(stump_share > 0.003, "stumps stand in the cut patch (drawn whole: %s)" % whole)
+		shares[whole] = stump_share
+		field.queue_free()
+		await frames(1)
+	check(
+		absf(shares[true] - shares[false]) < 0.5 * maxf(shares[true], shares[false]),
+		(
+			"the stumps look alike drawn whole and part by part (%.2f%% / %.2f%%)"
+			% [100.0 * shares[true], 100.0 * shares[false]]
+		)
+	)
+
+
 func test_empty_near_buckets_are_not_drawn() -> void:
 	# Far outside the field, looking at it: every plant is in a far tile, no near bucket holds one.
 	var field: SunflowerField = _still_field(
