@@ -293,10 +293,10 @@ func change_cells(cells: PackedInt32Array, action: int, now: float) -> PackedInt
 	return native.change_cells(cells, action, now)
 
 
-## Puts a standing plant of type [param species] in each of [param cells] at the clock [param now];
-## the cells changed. Those with no ground height known wait: [method get_unplaced_cells].
-func put_cells(cells: PackedInt32Array, species: int, now: float) -> PackedInt32Array:
-	return native.put_cells(cells, species, now)
+## Puts a standing plant of type [param species] in each of [param cells]; the cells changed. Those
+## with no ground height known wait: [method get_unplaced_cells].
+func put_cells(cells: PackedInt32Array, species: int) -> PackedInt32Array:
+	return native.put_cells(cells, species)
 
 
 ## Cells given a plant that stands nowhere yet for want of a ground height, in cell order.

@@ -93,7 +93,7 @@ func put_plants(cells: PackedInt32Array, plant_type: int) -> PackedInt32Array:
 	var simulation: NativeField = _drawn()
 	if simulation == null:
 		return PackedInt32Array()
-	var changed: PackedInt32Array = simulation.put_cells(cells, plant_type, _clock)
+	var changed: PackedInt32Array = simulation.put_cells(cells, plant_type)
 	_place_unplaced(simulation)
 	if not changed.is_empty():
 		plants_put.emit(changed, plant_type)

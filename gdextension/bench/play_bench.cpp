@@ -88,7 +88,8 @@ void measure_puts(FieldSimulation &r_sim, const char *p_name, const std::vector<
 		quiet.push_back(since(start));
 		start = std::chrono::steady_clock::now();
 		std::vector<uint32_t> changed;
-		r_sim.put_cells(p_cells, 1, now += 1.0, changed);
+		r_sim.put_cells(p_cells, 1, changed);
+		now += 1.0;
 		r_sim.update(1.0f / 60.0f);
 		frames.push_back(since(start));
 		start = std::chrono::steady_clock::now();

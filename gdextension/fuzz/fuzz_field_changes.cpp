@@ -196,7 +196,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *p_data, size_t p_size) {
 			case 9: { // a plant of a type put in the cell and its neighbour, then a frame drawn
 				const uint8_t species = in.next() % 3;
 				const std::vector<uint32_t> list = { cell, (cell + 1) % cells };
-				sim.put_cells(list, species, now, changed);
+				sim.put_cells(list, species, changed);
 				for (uint32_t c : list) {
 					if (model.put(c, species)) {
 						expected.push_back(c);

@@ -74,7 +74,7 @@ void SunflowerSimulation::bind_methods() {
 	gdx::bind_method(CLASS, "get_chunk_aabb", &SunflowerSimulation::get_chunk_aabb, { "chunk" });
 	gdx::bind_method(CLASS, "update", &SunflowerSimulation::update, { "delta" });
 	gdx::bind_method(CLASS, "change_cells", &SunflowerSimulation::change_cells, { "cells", "action", "now" });
-	gdx::bind_method(CLASS, "put_cells", &SunflowerSimulation::put_cells, { "cells", "species", "now" });
+	gdx::bind_method(CLASS, "put_cells", &SunflowerSimulation::put_cells, { "cells", "species" });
 	gdx::bind_method(CLASS, "get_unplaced_cells", &SunflowerSimulation::get_unplaced_cells);
 	gdx::bind_method(CLASS, "get_cell_roots", &SunflowerSimulation::get_cell_roots, { "cells" });
 	gdx::bind_method(CLASS, "set_cell_heights", &SunflowerSimulation::set_cell_heights, { "cells", "heights" });

@@ -103,7 +103,7 @@ public:
 	// the cells changed. Cells whose ground height is not known wait: get_unplaced_cells, whose roots
 	// (get_cell_roots: x, z pairs in the field's space) a caller casts rays under and hands back to
 	// set_cell_heights.
-	gdx::PackedInt32Array put_cells(const gdx::PackedInt32Array &p_cells, int64_t p_species, double p_now);
+	gdx::PackedInt32Array put_cells(const gdx::PackedInt32Array &p_cells, int64_t p_species);
 	gdx::PackedInt32Array get_unplaced_cells() const;
 	gdx::PackedFloat32Array get_cell_roots(const gdx::PackedInt32Array &p_cells) const;
 	void set_cell_heights(const gdx::PackedInt32Array &p_cells, const gdx::PackedFloat32Array &p_heights);

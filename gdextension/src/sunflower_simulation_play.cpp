@@ -47,16 +47,15 @@ gdx::PackedInt32Array SunflowerSimulation::change_cells(const gdx::PackedInt32Ar
 	return gdx::to_godot_indices(changed);
 }
 
-gdx::PackedInt32Array SunflowerSimulation::put_cells(const gdx::PackedInt32Array &p_cells, int64_t p_species, double p_now) {
+gdx::PackedInt32Array SunflowerSimulation::put_cells(const gdx::PackedInt32Array &p_cells, int64_t p_species) {
 	SF_FAIL_COND_V_MSG(p_species < 0 || p_species >= int64_t(_sim.plants().get_species_count()), gdx::PackedInt32Array(),
 			"put_cells: the field has no plant type " + std::to_string(p_species) + " (its map has " +
 					std::to_string(_sim.plants().get_species_count()) + "); nothing was changed");
-	SF_FAIL_COND_V_MSG(!std::isfinite(p_now), gdx::PackedInt32Array(), "put_cells: the field's clock is not a number");
 	std::vector<uint32_t> cells;
 	const std::string error = cells_from("put_cells", p_cells, cell_count(_sim), cells);
 	SF_FAIL_COND_V_MSG(!error.empty(), gdx::PackedInt32Array(), error);
 	std::vector<uint32_t> changed;
-	_sim.put_cells(cells, uint32_t(p_species), p_now, changed);
+	_sim.put_cells(cells, uint32_t(p_species), changed);
 	return gdx::to_godot_indices(changed);
 }
 

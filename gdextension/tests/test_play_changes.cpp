@@ -311,7 +311,7 @@ TEST_CASE("play: a plant put in an empty cell, or of another type, is drawn at e
 	CHECK(drawn_at(sim, far_other_root, true) >= 1);
 
 	std::vector<uint32_t> changed;
-	sim.put_cells({ near_empty, far_empty, far_other, near_other, near_other }, 1, 1.0, changed);
+	sim.put_cells({ near_empty, far_empty, far_other, near_other, near_other }, 1, changed);
 	CHECK(changed == std::vector<uint32_t>{ near_empty, far_empty, far_other, near_other }); // the second put is none
 	CHECK(sim.get_records_version() == records_version); // no rebuild, no tile written
 	CHECK(sim.plants().get_map_plant_count() == map_plants);
@@ -342,7 +342,7 @@ TEST_CASE("play: a plant put in an empty cell, or of another type, is drawn at e
 	const glm::vec3 map_m_root = sim.plants().get_layout().plants[sim.plants().plant_at_cell(cell(150, 5))].root();
 	CHECK(drawn_at(sim, map_m_root, true) == 1);
 	changed.clear();
-	sim.put_cells({ cell(151, 5) }, 1, 1.0, changed);
+	sim.put_cells({ cell(151, 5) }, 1, changed);
 	sim.update(0.016f);
 	CHECK(drawn_at(sim, map_m_root, true) == 1);
 	std::vector<uint8_t> active(size_t(sim.plants().get_layout().grid_x) * size_t(sim.plants().get_layout().grid_z));
@@ -371,7 +371,7 @@ TEST_CASE("play: a plant put in an empty cell, or of another type, is drawn at e
 	const uint32_t slots = sim.plants().get_plant_count();
 	for (int round = 0; round < 3; ++round) {
 		changed.clear();
-		sim.put_cells({ near_empty, cell(13, 20) }, 1, 3.0, changed);
+		sim.put_cells({ near_empty, cell(13, 20) }, 1, changed);
 		sim.update(0.016f);
 		CHECK(drawn_at(sim, near_root, false) == 1);
 		sim.change_cells({ near_empty, cell(13, 20) }, FieldSimulation::CellAction::RESTORE, 3.0, changed);
@@ -397,7 +397,7 @@ TEST_CASE("play: a plant put in an empty cell, or of another type, is drawn at e
 	// The map's own type put back in a cell whose plant was removed stands it again, as the map has it.
 	changed.clear();
 	sim.change_cells({ cell(30, 30) }, FieldSimulation::CellAction::REMOVE, 4.0, changed);
-	sim.put_cells({ cell(30, 30) }, 0, 5.0, changed);
+	sim.put_cells({ cell(30, 30) }, 0, changed);
 	CHECK(changed.size() == 2);
 	CHECK_FALSE(sim.changes().is_changed(cell(30, 30)));
 }
@@ -410,7 +410,7 @@ TEST_CASE("play: a plant put where the ground is not known waits for a height, t
 	ground.heights = { 1.0f, 2.0f }; // the two map plants' ground points
 	sim.set_ground(ground);
 	std::vector<uint32_t> changed;
-	sim.put_cells({ 0, 1 }, 0, 1.0, changed);
+	sim.put_cells({ 0, 1 }, 0, changed);
 	CHECK(changed == std::vector<uint32_t>{ 1 }); // (cell 0 holds a '*' already)
 	CHECK(sim.get_unplaced_cells() == std::vector<uint32_t>{ 1 });
 	CHECK(sim.plants().added_plant_at_cell(1) == FieldPlants::NO_PLANT);

@@ -178,9 +178,7 @@ void FieldSimulation::_show_cell(uint32_t p_cell) {
 	_plants.set_plant_state(added, state.state);
 }
 
-void FieldSimulation::put_cells(const std::vector<uint32_t> &p_cells, uint32_t p_species, double p_now,
-		std::vector<uint32_t> &r_changed) {
-	(void)p_now; // (a plant put stands: its regrowth has no start)
+void FieldSimulation::put_cells(const std::vector<uint32_t> &p_cells, uint32_t p_species, std::vector<uint32_t> &r_changed) {
 	_ready_changes();
 	for (uint32_t cell : p_cells) {
 		if (_changes.put(cell, int(p_species))) {

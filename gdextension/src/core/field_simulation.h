@@ -75,7 +75,8 @@ public:
 	// plant's ground, else on the ground's height there, else on a height set_cell_heights gave; a
 	// cell with none of those (a ground of measured points, a cell the map left empty) waits for one:
 	// get_unplaced_cells.
-	void put_cells(const std::vector<uint32_t> &p_cells, uint32_t p_species, double p_now, std::vector<uint32_t> &r_changed);
+	// (A plant put stands: it needs no time on the field's clock.)
+	void put_cells(const std::vector<uint32_t> &p_cells, uint32_t p_species, std::vector<uint32_t> &r_changed);
 	// The ground's height (the field's space) under cells the ground does not know (NaN: forget it),
 	// kept for the next layout of the map too; their plants are added now.
 	void set_cell_heights(const std::vector<uint32_t> &p_cells, const std::vector<float> &p_heights);
