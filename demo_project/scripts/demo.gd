@@ -282,6 +282,8 @@ func _unhandled_input(event: InputEvent) -> void:
 		_open_part_dialog()
 	elif event.is_action_pressed("cut_plants"):
 		_hud.show_message("scythe: %d plants cut" % _play.swing_scythe())
+	elif event.is_action_pressed("sow_plants"):
+		_hud.show_message("sown: %d plants" % _play.sow())
 	elif event.is_action_pressed("quit"):
 		if Input.mouse_mode == Input.MOUSE_MODE_CAPTURED:
 			Input.mouse_mode = Input.MOUSE_MODE_VISIBLE

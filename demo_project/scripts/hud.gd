@@ -9,7 +9,7 @@ const HELP: String = """W/S forward/back   A/D strafe   E/Space up   Q/C down   
 Mouse look (click to capture)   R start position   F1 wireframe
 F2/F3 wind +/- increment   F4/F5 wind direction x/z   F6 increment 0.1 <-> 10
 F7 load a part mesh (glTF)   F8 walk among the flowers   F9 wind model (natural/thesis)
-X scythe   M next map   F10/H hide this help   Esc quit (saves the field: --load-changes)"""
+X scythe   V sow   M next map   F10/H hide this help   Esc quit (saves the field: --load-changes)"""
 ## How long a message stays, in wall time (a recording's frames are slow: 6 s of them were minutes).
 const MESSAGE_MSEC: int = 6000
 

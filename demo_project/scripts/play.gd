@@ -1,8 +1,9 @@
 class_name DemoPlay
 extends Node
 ## The demo's play with the field (SunflowerField.play): walking low tramples a trail that stands
-## up again, X cuts what stands in front of you (a scythe), the HUD counts the events, and the
-## changes are saved when the demo quits; --load-changes restores them at the next start.
+## up again, X cuts what stands in front of you (a scythe), V sows there (the map's plant type, in
+## cut and empty cells alike), the HUD counts the events, and the changes are saved when the demo
+## quits; --load-changes restores them at the next start.
 
 ## Plants within this share of the walker's push radius are trampled.
 const TRAMPLE_SHARE: float = 0.45
@@ -18,6 +19,7 @@ const SCYTHE_AHEAD: float = 2.0
 var trampled: int = 0
 var cut: int = 0
 var recovered: int = 0
+var sown: int = 0
 var _field: SunflowerField
 var _played: bool = false  # the field changed (or changes were loaded) in this run
 var _camera: Node3D
@@ -30,6 +32,7 @@ func setup(field: SunflowerField, camera: Node3D) -> void:
 	_field.play.plants_trampled.connect(_on_trampled)
 	_field.play.plants_changed.connect(_on_changed)
 	_field.play.plants_recovered.connect(_on_recovered)
+	_field.play.plants_put.connect(_on_put)
 	_field.field_built.connect(_on_built)
 
 
@@ -43,18 +46,27 @@ func _process(_delta: float) -> void:
 ## Cuts what stands within SCYTHE_RADIUS of the ground SCYTHE_AHEAD metres in front of the camera;
 ## returns how many plants.
 func swing_scythe() -> int:
+	return _field.play.change_plants(_cells_ahead(), SunflowerFieldPlay.Change.CUT).size()
+
+
+## Sows the cells the scythe reaches with the map's plant type (0): cut plants stand again, empty
+## cells (the path, the clearing) get a plant; returns how many cells changed.
+func sow() -> int:
+	return _field.play.put_plants(_cells_ahead(), 0).size()
+
+
+func _cells_ahead() -> PackedInt32Array:
 	var ahead: Vector3 = -_camera.global_basis.z
 	ahead.y = 0.0
 	var centre: Vector3 = _camera.global_position + ahead.normalized() * SCYTHE_AHEAD
-	var cells: PackedInt32Array = _field.play.get_cells_in_circle(_field.to_local(centre), SCYTHE_RADIUS)
-	return _field.play.change_plants(cells, SunflowerFieldPlay.Change.CUT).size()
+	return _field.play.get_cells_in_circle(_field.to_local(centre), SCYTHE_RADIUS)
 
 
 ## The HUD's words on play.
 func stats_text() -> String:
 	return (
-		"%d trampled, %d cut (X), %d stood again, %d changed"
-		% [trampled, cut, recovered, _field.play.get_change_count()]
+		"%d trampled, %d cut (X), %d sown (V), %d stood again, %d changed"
+		% [trampled, cut, sown, recovered, _field.play.get_change_count()]
 	)
 
 
@@ -97,6 +109,11 @@ func _on_trampled(cells: PackedInt32Array, _by: Node3D) -> void:
 func _on_changed(cells: PackedInt32Array, change: int) -> void:
 	if change == SunflowerFieldPlay.Change.CUT:
 		cut += cells.size()
+	_played = true
+
+
+func _on_put(cells: PackedInt32Array, _plant_type: int) -> void:
+	sown += cells.size()
 	_played = true
 
 

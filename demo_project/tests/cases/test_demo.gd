@@ -155,6 +155,29 @@ func test_walk_mode_puts_the_camera_among_the_flowers_and_they_part() -> void:
 	check_eq(field.wind.model, SunflowerWind.Model.NATURAL, "and back")
 
 
+func test_x_cuts_in_front_and_v_sows_there_the_path_too() -> void:
+	await frames(3)
+	var camera: FlyCamera = demo.get_node("Camera") as FlyCamera
+	var plants: int = field.get_plant_count()
+	# Over the path (columns 19 and 20 of the map are empty), looking along it.
+	camera.global_transform = field.global_transform * Transform3D(Basis(), Vector3(10.0, 1.7, 12.0))
+	await frames(1)
+	var ahead: PackedInt32Array = field.play.get_cells_in_circle(Vector3(10.0, 0.0, 10.0), 1.5)
+	var empty: int = 0
+	for cell: int in ahead:
+		empty += 1 if field.play.get_cell_state(cell)["plant_type"] < 0 else 0
+	check(empty > 0, "the path lies ahead (%d empty cells of %d)" % [empty, ahead.size()])
+	await _press("cut_plants")  # X
+	check_eq(field.play.get_change_count(), ahead.size() - empty, "X cut every plant ahead")
+	await _press("sow_plants")  # V
+	for cell: int in ahead:
+		var state: Dictionary = field.play.get_cell_state(cell)
+		check_eq([state["plant_type"], state["state"]], [0, SunflowerFieldPlay.State.STANDING], "cell %d sown" % cell)
+	check_eq(field.get_plant_count(), plants + empty, "the path's cells got plants")
+	check_eq(field.play.get_change_count(), empty, "the cut plants stand as the map has them again")
+	check(demo.call("_stats_text").contains("%d sown (V)" % ahead.size()), "the HUD counts what was sown")
+
+
 func test_the_hills_map_stands_the_field_on_the_terrain() -> void:
 	await frames(2)
 	demo.call("load_map", "res://fields/hills.field")
