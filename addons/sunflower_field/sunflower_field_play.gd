@@ -246,9 +246,9 @@ func _carry(old: NativeField, new: NativeField) -> void:
 	_place_unplaced(new)
 
 
-func _drawn() -> NativeField:  # the field's simulation, once it has plants drawn
+func _drawn() -> NativeField:  # the field's simulation, once its map is built (with plants or none)
 	var simulation: NativeField = _simulation.call()
-	return simulation if simulation and simulation.get_plant_count() > 0 else null
+	return simulation if simulation and simulation.get_map_columns() > 0 else null
 
 
 func _load(bytes: PackedByteArray, what: String) -> Error:

@@ -304,3 +304,23 @@ func test_a_plant_put_on_a_field_on_colliders_stands_on_the_collider() -> void:
 	if found >= 0:
 		check_near((field.get_plant_info(found)["position"] as Vector3).y, 0.7, 1e-3, "on the collider's top")
 	body.free()
+
+
+func test_a_field_whose_map_has_no_plant_takes_plants_put() -> void:
+	var empty: SunflowerFieldMap = SunflowerFieldMap.new()
+	empty.source_path = "res://play_empty.field"
+	var lines: PackedStringArray = ["20 10"]
+	for row: int in 10:
+		lines.append(".".repeat(20))
+	empty.text = "\n".join(lines).to_utf8_buffer()
+	field.map = empty
+	field.advance(1.0 / 60.0)
+	check_eq(field.get_plant_count(), 0, "no plant in the map")
+	var cells: PackedInt32Array = field.play.get_cells_in_circle(Vector3(5.0, 0.0, 2.5), 1.0)
+	check(cells.size() > 10, "cells by the observer (%d)" % cells.size())
+	check_eq(field.play.put_plants(cells, 0), cells, "every cell sown")
+	field.advance(1.0 / 60.0)
+	check_eq(field.get_plant_count(), cells.size(), "the plants put are the field's")
+	var counts: PackedInt32Array = field.get_lod_counts()
+	check_eq(counts[0] + counts[1] + counts[2] + counts[3] + counts[4], cells.size(), "each drawn: %s" % counts)
+	check(field.get_plant_at(Vector3(5.1, 0.0, 2.6), 0.5) >= 0, "and found where it stands")

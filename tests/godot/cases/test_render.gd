@@ -231,6 +231,33 @@ func test_cut_plants_leave_the_stumps_their_type_says() -> void:
 	)
 
 
+## A field whose map has no plant at all draws the plants a game puts in it (a farm sown at run time).
+func test_an_empty_field_sown_at_run_time_draws_its_plants() -> void:
+	var field: SunflowerField = _still_field("res://fields/demo.field", Vector3(5.0, 4.0, 12.0), Vector3(5.0, 0.0, 4.0))
+	var lines: PackedStringArray = ["20 16"]
+	for row: int in 16:
+		lines.append(".".repeat(20))
+	var empty: SunflowerFieldMap = SunflowerFieldMap.new()
+	empty.source_path = "res://sown.field"
+	empty.text = "\n".join(lines).to_utf8_buffer()
+	field.map = empty
+	await _built_and_drawn(field)
+	var bare: Image = tree.root.get_viewport().get_texture().get_image()
+	var put: PackedInt32Array = field.play.put_plants(field.play.get_cells_in_rect(Rect2(2.0, 2.0, 6.0, 4.0)), 0)
+	await frames(2)
+	var sown: Image = tree.root.get_viewport().get_texture().get_image()
+	sown.save_png(artifact_path("render_sown_empty_field.png"))
+	print(
+		(
+			"     %d plants sown: plant pixels %.1f%% before, %.1f%% after"
+			% [put.size(), 100.0 * _plant_pixels(bare), 100.0 * _plant_pixels(sown)]
+		)
+	)
+	check_eq(put.size(), 96, "a 6 × 4 m patch sown")
+	check(_plant_pixels(bare) < 0.001, "nothing drawn before")
+	check(_plant_pixels(sown) > 0.03, "the sown patch is drawn (5.6 % of the picture here)")
+
+
 func test_empty_near_buckets_are_not_drawn() -> void:
 	# Far outside the field, looking at it: every plant is in a far tile, no near bucket holds one.
 	var field: SunflowerField = _still_field(
