@@ -121,7 +121,7 @@ public:
 	// The pushers flatten the standing plants within p_share of their radius (FieldSimulation::trample):
 	// two ints each trampled plant, its cell and the pusher's index in set_pushers' order.
 	gdx::PackedInt32Array trample(double p_share, double p_now);
-	// A plant's map cell, or -1.
+	// A plant's map cell, or -1 (also for a plant gone: removed, or under a plant of another type).
 	int64_t get_plant_cell(int64_t p_plant) const;
 	gdx::PackedByteArray save_changes(double p_now);
 	// "" (and get_loaded_clock() the save's clock) or what is wrong, nothing changed.

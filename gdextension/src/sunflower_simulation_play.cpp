@@ -149,7 +149,11 @@ gdx::PackedInt32Array SunflowerSimulation::trample(double p_share, double p_now)
 }
 
 int64_t SunflowerSimulation::get_plant_cell(int64_t p_plant) const {
-	const uint32_t cell = p_plant >= 0 && p_plant < int64_t(UINT32_MAX) ? _sim.plants().cell_of_plant(uint32_t(p_plant)) : FieldPlants::NO_CELL;
+	if (p_plant < 0 || p_plant >= int64_t(_sim.plants().get_plant_count()) ||
+			_sim.plants().get_plant_state(uint32_t(p_plant)) == PlantState::GONE) {
+		return -1; // (a plant gone, e.g. the map's under a plant of another type put there, has no cell)
+	}
+	const uint32_t cell = _sim.plants().cell_of_plant(uint32_t(p_plant));
 	return cell == FieldPlants::NO_CELL ? -1 : int64_t(cell);
 }
 

@@ -154,6 +154,7 @@ func test_cut_plants_are_gone_from_queries_and_colliders_and_come_back() -> void
 	check_near(state["since"], field.play.get_clock() - 1.0 / 60.0, 1e-4, "cut a frame ago on the field's clock")
 	field.play.change_plants(cells, SunflowerFieldPlay.Change.REMOVE)
 	check_eq(field.play.get_cell_state(cells[0])["state"], SunflowerFieldPlay.State.NONE, "removed: no plant")
+	check_eq(field.play.get_cell_of_plant(near_plant), -1, "a removed plant has no cell")
 	field.play.change_plants(cells, SunflowerFieldPlay.Change.RESTORE)
 	field.advance(1.0 / 60.0)
 	check_eq(field.get_plant_at(observer.position, 0.6), near_plant, "given back as the map has it")
