@@ -124,9 +124,7 @@ void build_layout(const FieldMap &p_map, const LayoutParams &p_params, const Gro
 				continue;
 			}
 			plant.set_lean(p_ground.lean_at(uint32_t(index), plant.position));
-			const int cx = std::min(chunks_x - 1, static_cast<int>(plant.position.x / chunk_size));
-			const int cz = std::min(chunks_z - 1, static_cast<int>(plant.position.y / chunk_size));
-			plant.chunk = static_cast<uint32_t>(cz * chunks_x + cx) * species_count + species; // key for now
+			plant.chunk = r_layout.grid_cell(plant.position) * species_count + species; // key for now
 			++key_count[plant.chunk];
 			r_layout.plants.push_back(plant);
 			++index;
@@ -146,14 +144,7 @@ void build_layout(const FieldMap &p_map, const LayoutParams &p_params, const Gro
 	for (size_t key = 0; key < key_count.size(); ++key) {
 		if (key_count[key] != 0) {
 			key_to_chunk[key] = static_cast<uint32_t>(r_layout.chunks.size());
-			Chunk chunk;
-			chunk.first = offset;
-			chunk.species = static_cast<uint32_t>(key % species_count);
-			chunk.min = glm::vec2(INFINITY);
-			chunk.max = glm::vec2(-INFINITY);
-			chunk.ground_min = INFINITY;
-			chunk.ground_max = -INFINITY;
-			r_layout.chunks.push_back(chunk);
+			r_layout.chunks.push_back(Chunk::empty(static_cast<uint32_t>(key % species_count), offset));
 			offset += key_count[key];
 		}
 		r_layout.grid_chunks[key / species_count + 1] = static_cast<uint32_t>(r_layout.chunks.size());
@@ -164,11 +155,7 @@ void build_layout(const FieldMap &p_map, const LayoutParams &p_params, const Gro
 		plant.chunk = key_to_chunk[plant.chunk];
 		Chunk &chunk = r_layout.chunks[plant.chunk];
 		r_layout.chunk_plants[chunk.first + chunk.count++] = i;
-		chunk.min = glm::min(chunk.min, plant.position);
-		chunk.max = glm::max(chunk.max, plant.position);
-		chunk.ground_min = std::min(chunk.ground_min, plant.ground);
-		chunk.ground_max = std::max(chunk.ground_max, plant.ground);
-		chunk.scale_max = std::max(chunk.scale_max, plant.scale);
+		chunk.include(plant);
 	}
 }
 

@@ -12,7 +12,9 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -106,6 +108,26 @@ struct Chunk {
 	uint32_t species = 0; // every plant of a chunk is of one species
 	uint32_t first = 0; // range in FieldLayout::chunk_plants
 	uint32_t count = 0;
+
+	// A chunk of p_species whose plants start at p_first in chunk_plants, holding none yet.
+	static Chunk empty(uint32_t p_species, uint32_t p_first) {
+		Chunk chunk;
+		chunk.species = p_species;
+		chunk.first = p_first;
+		chunk.min = glm::vec2(INFINITY);
+		chunk.max = glm::vec2(-INFINITY);
+		chunk.ground_min = INFINITY;
+		chunk.ground_max = -INFINITY;
+		return chunk;
+	}
+	// Widens the bounds and the largest size to take p_plant in (its count is the caller's).
+	void include(const Plant &p_plant) {
+		min = glm::min(min, p_plant.position);
+		max = glm::max(max, p_plant.position);
+		ground_min = std::min(ground_min, p_plant.ground);
+		ground_max = std::max(ground_max, p_plant.ground);
+		scale_max = std::max(scale_max, p_plant.scale);
+	}
 };
 
 struct FieldLayout {
@@ -123,6 +145,12 @@ struct FieldLayout {
 	int grid_z = 0;
 	float chunk_size = 16.0f;
 	std::vector<uint32_t> grid_chunks;
+	// The grid cell (z·grid_x + x) a root (x, z) lies in; the last row or column for one on the far edge.
+	uint32_t grid_cell(const glm::vec2 &p_root) const {
+		const int x = std::clamp(static_cast<int>(p_root.x / chunk_size), 0, std::max(grid_x - 1, 0));
+		const int z = std::clamp(static_cast<int>(p_root.y / chunk_size), 0, std::max(grid_z - 1, 0));
+		return static_cast<uint32_t>(z * std::max(grid_x, 1) + x);
+	}
 	// Plant cells of the map with no ground under their plant (so no plant).
 	uint32_t cells_without_ground = 0;
 	// The ground's height under each of the map's objects (its cell's centre), in map order; NaN where

@@ -143,35 +143,31 @@ void FieldPlants::find_plants_near(const glm::vec2 &p_center, float p_radius, st
 			!std::isfinite(p_center.y)) {
 		return;
 	}
-	const GridRange cells = grid_range(p_center, p_radius);
 	const float radius_sq = p_radius * p_radius;
-	for (int z = cells.z0; z <= cells.z1; ++z) {
-		for (int x = cells.x0; x <= cells.x1; ++x) {
-			const size_t cell = static_cast<size_t>(z) * size_t(_layout.grid_x) + size_t(x);
-			for (uint32_t c = _layout.grid_chunks[cell]; c < _layout.grid_chunks[cell + 1]; ++c) {
-				const Chunk &chunk = _layout.chunks[c];
-				for (uint32_t k = 0; k < chunk.count; ++k) {
-					const uint32_t index = _layout.chunk_plants[chunk.first + k];
-					const glm::vec2 d = _layout.plants[index].position - p_center;
-					if (glm::dot(d, d) < radius_sq) {
-						r_plants.push_back(index);
-					}
-				}
-			}
-		}
-	}
-	for (uint32_t c = _map_chunk_count; c < _layout.chunks.size(); ++c) {
-		const Chunk &chunk = _layout.chunks[c];
-		const glm::vec2 nearest = glm::clamp(p_center, chunk.min, chunk.max);
-		if (glm::dot(nearest - p_center, nearest - p_center) >= radius_sq) {
-			continue;
-		}
-		for (uint32_t k = 0; k < chunk.count; ++k) {
-			const uint32_t index = _layout.chunk_plants[chunk.first + k];
+	const auto gather = [&](const Chunk &p_chunk) {
+		for (uint32_t k = 0; k < p_chunk.count; ++k) {
+			const uint32_t index = _layout.chunk_plants[p_chunk.first + k];
 			const glm::vec2 d = _layout.plants[index].position - p_center;
 			if (glm::dot(d, d) < radius_sq) {
 				r_plants.push_back(index);
 			}
+		}
+	};
+	const GridRange cells = grid_range(p_center, p_radius);
+	for (int z = cells.z0; z <= cells.z1; ++z) {
+		for (int x = cells.x0; x <= cells.x1; ++x) {
+			const size_t cell = static_cast<size_t>(z) * size_t(_layout.grid_x) + size_t(x);
+			for (uint32_t c = _layout.grid_chunks[cell]; c < _layout.grid_chunks[cell + 1]; ++c) {
+				gather(_layout.chunks[c]);
+			}
+		}
+	}
+	// The added plants' chunks lie outside the grid's lists: each by its bounds.
+	for (uint32_t c = _map_chunk_count; c < _layout.chunks.size(); ++c) {
+		const Chunk &chunk = _layout.chunks[c];
+		const glm::vec2 nearest = glm::clamp(p_center, chunk.min, chunk.max);
+		if (glm::dot(nearest - p_center, nearest - p_center) < radius_sq) {
+			gather(chunk);
 		}
 	}
 }
@@ -353,12 +349,11 @@ uint32_t FieldPlants::add_plant(uint32_t p_cell, uint32_t p_species, float p_hei
 	const int column = int(p_cell % columns);
 	const int row = int(p_cell / columns);
 	Plant plant = lay_plant(_map, _layout_params, p_species, column, row);
-	const uint32_t map_plant = p_map_plant;
 	if (std::isfinite(p_height)) {
 		plant.ground = p_height;
-	} else if (map_plant != NO_PLANT) {
-		plant.ground = _layout.plants[map_plant].ground; // the map's plant stood there: its ground and lean
-		plant.set_lean(_layout.plants[map_plant].lean());
+	} else if (p_map_plant != NO_PLANT) {
+		plant.ground = _layout.plants[p_map_plant].ground; // the map's plant stood there: its ground and lean
+		plant.set_lean(_layout.plants[p_map_plant].lean());
 	} else if (_ground.kind != Ground::HEIGHTS) {
 		plant.ground = _ground.height_at(0, plant.position);
 		plant.set_lean(_ground.lean_at(0, plant.position));
@@ -416,41 +411,26 @@ bool FieldPlants::group_added() {
 	// index order (NearField finds a plant's place in its chunk by bisection).
 	std::vector<std::pair<uint64_t, uint32_t>> keyed;
 	keyed.reserve(_added_at_cell.size());
-	const float size = _layout.chunk_size;
 	for (uint32_t i = 0; i < _added_cells.size(); ++i) {
 		Plant &plant = _layout.plants[_map_plant_count + i];
 		plant.chunk = NO_CHUNK;
-		if (_added_cells[i] == NO_CELL) {
-			continue;
+		if (_added_cells[i] != NO_CELL) {
+			const uint64_t cell = _layout.grid_cell(plant.position);
+			keyed.push_back({ cell * FieldMap::MAX_SPECIES + _added_species[i], _map_plant_count + i });
 		}
-		const int cx = std::clamp(static_cast<int>(plant.position.x / size), 0, std::max(_layout.grid_x - 1, 0));
-		const int cz = std::clamp(static_cast<int>(plant.position.y / size), 0, std::max(_layout.grid_z - 1, 0));
-		const uint64_t cell = uint64_t(cz) * uint64_t(std::max(_layout.grid_x, 1)) + uint64_t(cx);
-		keyed.push_back({ cell * FieldMap::MAX_SPECIES + _added_species[i], _map_plant_count + i });
 	}
 	std::sort(keyed.begin(), keyed.end());
 	for (size_t k = 0; k < keyed.size(); ++k) {
 		if (k == 0 || keyed[k].first != keyed[k - 1].first) {
-			Chunk chunk;
-			chunk.first = static_cast<uint32_t>(_layout.chunk_plants.size());
-			chunk.species = static_cast<uint32_t>(keyed[k].first % FieldMap::MAX_SPECIES);
-			chunk.min = glm::vec2(INFINITY);
-			chunk.max = glm::vec2(-INFINITY);
-			chunk.ground_min = INFINITY;
-			chunk.ground_max = -INFINITY;
-			_layout.chunks.push_back(chunk);
+			_layout.chunks.push_back(Chunk::empty(static_cast<uint32_t>(keyed[k].first % FieldMap::MAX_SPECIES),
+					static_cast<uint32_t>(_layout.chunk_plants.size())));
 			_chunk_cells.push_back(static_cast<uint32_t>(keyed[k].first / FieldMap::MAX_SPECIES));
 		}
 		Plant &plant = _layout.plants[keyed[k].second];
 		plant.chunk = static_cast<uint32_t>(_layout.chunks.size() - 1);
-		Chunk &chunk = _layout.chunks.back();
 		_layout.chunk_plants.push_back(keyed[k].second);
-		++chunk.count;
-		chunk.min = glm::min(chunk.min, plant.position);
-		chunk.max = glm::max(chunk.max, plant.position);
-		chunk.ground_min = std::min(chunk.ground_min, plant.ground);
-		chunk.ground_max = std::max(chunk.ground_max, plant.ground);
-		chunk.scale_max = std::max(chunk.scale_max, plant.scale);
+		++_layout.chunks.back().count;
+		_layout.chunks.back().include(plant);
 	}
 	if (!_chunk_signatures.empty()) {
 		_chunk_signatures.resize(_layout.chunks.size(), 0);

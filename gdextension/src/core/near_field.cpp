@@ -40,13 +40,11 @@ void NearField::drop_added() {
 	const uint32_t map_chunks = _plants.get_map_chunk_count();
 	// (By index: an added plant's slot may already hold a plant added since, not yet in a chunk.)
 	_pushes.drop_plants_from(_plants.get_map_plant_count(), _wind_lookup);
-	for (uint32_t c = map_chunks; c < _chunk_active.size() && c < layout.chunks.size(); ++c) {
-		_changed_chunks += _chunk_active[c] ? 1u : 0u;
-	}
 	const auto added = [map_chunks](uint32_t p_chunk) { return p_chunk >= map_chunks; };
-	for (uint32_t c : _active_chunks) {
+	for (uint32_t c : _active_chunks) { // (the added chunks are all active: each turns static here)
 		if (added(c)) {
 			_active_plants -= layout.chunks[c].count;
+			++_changed_chunks;
 		}
 	}
 	_active_chunks.erase(std::remove_if(_active_chunks.begin(), _active_chunks.end(), added), _active_chunks.end());

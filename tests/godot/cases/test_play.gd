@@ -308,13 +308,7 @@ func test_a_plant_put_on_a_field_on_colliders_stands_on_the_collider() -> void:
 
 
 func test_a_field_whose_map_has_no_plant_takes_plants_put() -> void:
-	var empty: SunflowerFieldMap = SunflowerFieldMap.new()
-	empty.source_path = "res://play_empty.field"
-	var lines: PackedStringArray = ["20 10"]
-	for row: int in 10:
-		lines.append(".".repeat(20))
-	empty.text = "\n".join(lines).to_utf8_buffer()
-	field.map = empty
+	field.map = Maps.filled(20, 10, "res://play_empty.field", ".")
 	field.advance(1.0 / 60.0)
 	check_eq(field.get_plant_count(), 0, "no plant in the map")
 	var cells: PackedInt32Array = field.play.get_cells_in_circle(Vector3(5.0, 0.0, 2.5), 1.0)

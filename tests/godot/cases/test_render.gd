@@ -234,13 +234,7 @@ func test_cut_plants_leave_the_stumps_their_type_says() -> void:
 ## A field whose map has no plant at all draws the plants a game puts in it (a farm sown at run time).
 func test_an_empty_field_sown_at_run_time_draws_its_plants() -> void:
 	var field: SunflowerField = _still_field("res://fields/demo.field", Vector3(5.0, 4.0, 12.0), Vector3(5.0, 0.0, 4.0))
-	var lines: PackedStringArray = ["20 16"]
-	for row: int in 16:
-		lines.append(".".repeat(20))
-	var empty: SunflowerFieldMap = SunflowerFieldMap.new()
-	empty.source_path = "res://sown.field"
-	empty.text = "\n".join(lines).to_utf8_buffer()
-	field.map = empty
+	field.map = Maps.filled(20, 16, "res://sown.field", ".")
 	await _built_and_drawn(field)
 	var bare: Image = tree.root.get_viewport().get_texture().get_image()
 	var put: PackedInt32Array = field.play.put_plants(field.play.get_cells_in_rect(Rect2(2.0, 2.0, 6.0, 4.0)), 0)
