@@ -328,11 +328,11 @@ var _field_meshes: Dictionary = {}  # a part mesh → the mesh the field draws i
 
 ## A plant of one part made from [param scene] (a glTF, .blend or .tscn plant): its meshes with
 ## their node transforms and material overrides merged per mesh level, its level-of-detail variants
-## ([code]_LOD0[/code], [code]_LOD1[/code] … node names) as mesh levels, or levels 2 and 3 simplified
-## from level 1 (see [code]scene_plant.gd[/code]); framed by [method fit_to_meshes], and as tall as
-## the scene models it (a unit a metre). Null, with an error, for a scene that draws nothing (no
-## mesh, or no triangle with area); a warning for what it leaves out and for a plant that stands
-## wholly below or far above its root.
+## ([code]_LOD0[/code], [code]_LOD1[/code] … node names) as mesh levels, or levels 2 and 3 generated
+## from level 1, with fewer and bigger leaves and fewer twigs (see [code]scene_plant.gd[/code]); framed
+## by [method fit_to_meshes], and as tall as the scene models it (a unit a metre). Null, with an
+## error, for a scene that draws nothing (no mesh, or no triangle with area); a warning for what it
+## leaves out and for a plant that stands wholly below or far above its root.
 ## Bake its impostors next ([method bake_impostors]; the editor's plant inspector does it at once).
 static func from_scene(scene: PackedScene) -> FieldPlant:
 	var source: String = scene.resource_path if scene and scene.resource_path else "(unsaved scene)"

@@ -10,10 +10,16 @@ extends RefCounted
 ## and 3; a node without a suffix belongs to every level). A scene without variants gets levels 2
 ## and 3 simplified from level 1 by the engine's mesh simplifier ([method ImporterMesh.generate_lods]),
 ## to about [constant LEVEL_SHARES] of its triangles where a surface keeps [constant AREA_KEPT] of its
-## area; surfaces of cards ([constant CARD_TRIANGLES]) keep every card.
+## area, or its smallest pieces dropped (twigs), and its foliage cards thinned to fewer, bigger leaves
+## ([code]mesh_pieces.gd[/code]).
 
 ## The share of level 1's triangles each mesh level is simplified to when the scene has no variants.
 const LEVEL_SHARES: Array[float] = [1.0, 0.5, 0.2]
+## A plant of fewer triangles than this at level 1 is cheap wherever it is drawn as meshes (its
+## levels of detail follow its size: a small plant's meshes end a few metres away): its levels keep
+## [constant SMALL_PLANT_SHARES] of them, so that its few leaves or blades stay what they were.
+const SMALL_PLANT: int = 1000
+const SMALL_PLANT_SHARES: Array[float] = [1.0, 0.75, 0.5]
 ## The vertex arrays a merged surface keeps; surfaces merge only with others that have the same.
 const KEPT: Array[int] = [
 	Mesh.ARRAY_VERTEX, Mesh.ARRAY_NORMAL, Mesh.ARRAY_TANGENT, Mesh.ARRAY_COLOR, Mesh.ARRAY_TEX_UV, Mesh.ARRAY_TEX_UV2
@@ -21,15 +27,19 @@ const KEPT: Array[int] = [
 ## The least share of a surface's area a simplified level keeps (thin branches lose some as their
 ## sides merge; a surface that would lose more keeps its triangles).
 const AREA_KEPT: float = 0.8
-## A surface of at most this many triangles per connected piece is of cards (leaves, blades): the
-## simplifier would drop whole cards, and a crown that lost its leaves no longer looks like the
-## plant, so such a surface keeps every card at every level.
-const CARD_TRIANGLES: float = 4.0
+## The least share of a surface of cards (leaves, blades) each mesh level keeps: the cards keep what
+## makes the level [constant LEVEL_SHARES] of the whole, but no fewer than this share of them (a tree
+## whose trunk the simplifier cannot thin keeps this much of its crown).
+const LEAST_CARD_SHARES: Array[float] = [1.0, 0.25, 0.1]
+## Bisection steps that find how much the kept cards of a level grow (to within 8^(1 / 2^steps)).
+const COVER_STEPS: int = 5
 ## The engine importer's defaults for the simplifier's normal angles, degrees.
 const NORMAL_MERGE_ANGLE: float = 60.0
 const NORMAL_SPLIT_ANGLE: float = 25.0
 const WholePlantMesh: GDScript = preload("whole_plant_mesh.gd")
 const ScenePieces: GDScript = preload("scene_pieces.gd")
+const MeshPieces: GDScript = preload("mesh_pieces.gd")
+const PlantCover: GDScript = preload("plant_cover.gd")
 
 
 ## The scene's three mesh levels as ArrayMeshes (null where the scene has nothing to draw), with
@@ -227,42 +237,124 @@ static func _append(merged: Dictionary, arrays: Array, transform: Transform3D) -
 	merged[Mesh.ARRAY_INDEX] = indices
 
 
-## Levels 2 and 3 of [param mesh]: its surfaces simplified to about [constant LEVEL_SHARES] of their
-## triangles, keeping [constant AREA_KEPT] of their area; surfaces of cards, and those the simplifier
-## cannot reduce so, keep their own triangles.
+## Levels 2 and 3 of [param mesh] ([code]mesh_pieces.gd[/code]): each surface of foliage cards keeps
+## what makes the level [constant LEVEL_SHARES] of the whole mesh ([constant SMALL_PLANT_SHARES] for a
+## small plant; at least [constant LEAST_CARD_SHARES]
+## of its cards), grown until the level covers what level 1 covers ([code]plant_cover.gd[/code]); any
+## other surface is simplified to about [constant LEVEL_SHARES] of its triangles, by the engine's
+## simplifier where that keeps [constant AREA_KEPT] of its area, else by dropping its smallest pieces
+## (twigs), whichever keeps more area.
 static func _simplified(mesh: ArrayMesh) -> Array:
 	if mesh == null:
 		return [null, null]
+	var bounds: AABB = mesh.get_aabb()
 	var importer: ImporterMesh = ImporterMesh.new()
+	var pieces: Array[MeshPieces] = []
+	var card_triangles: int = 0
+	var masks: Array[Dictionary] = []  # per surface: where its texture is cut out
+	var whole: Dictionary = PlantCover.empty(bounds)
 	for surface: int in mesh.get_surface_count():
-		importer.add_surface(
-			Mesh.PRIMITIVE_TRIANGLES, mesh.surface_get_arrays(surface), [], {}, mesh.surface_get_material(surface)
-		)
+		var arrays: Array = mesh.surface_get_arrays(surface)
+		importer.add_surface(Mesh.PRIMITIVE_TRIANGLES, arrays, [], {}, mesh.surface_get_material(surface))
+		pieces.append(MeshPieces.new(arrays))
+		var cards: bool = pieces[-1].are_cards()
+		card_triangles += pieces[-1].piece_of.size() if cards else 0
+		masks.append(PlantCover.cut_out(mesh.surface_get_material(surface)))
+		PlantCover.draw(whole, arrays, masks[-1])
 	importer.generate_lods(NORMAL_MERGE_ANGLE, NORMAL_SPLIT_ANGLE, [])
+	var triangles: int = triangle_count(mesh)
+	var shares: Array[float] = LEVEL_SHARES if triangles >= SMALL_PLANT else SMALL_PLANT_SHARES
 	var out: Array = []
 	for level: int in [1, 2]:
-		var simplified: bool = false
-		var simpler: ArrayMesh = ArrayMesh.new()
+		var others: Dictionary = PlantCover.empty(bounds)  # what the surfaces not of cards cover
+		var chosen: Array = []  # per surface: its arrays, or null for cards
+		var others_kept: int = 0
 		for surface: int in importer.get_surface_count():
-			var arrays: Array = importer.get_surface_arrays(surface)
-			var positions: PackedVector3Array = arrays[Mesh.ARRAY_VERTEX]
-			var best: PackedInt32Array = arrays[Mesh.ARRAY_INDEX]
-			var wanted: float = best.size() * LEVEL_SHARES[level]
-			var least_area: float = AREA_KEPT * _area(positions, best)
-			var cards: bool = best.size() / 3.0 <= CARD_TRIANGLES * _pieces(best, positions.size())
-			for lod: int in 0 if cards else importer.get_surface_lod_count(surface):
-				var indices: PackedInt32Array = importer.get_surface_lod_indices(surface, lod)
-				if (
-					absf(indices.size() - wanted) < absf(best.size() - wanted)
-					and _area(positions, indices) >= least_area
-				):
-					best = indices
-			simplified = simplified or best != arrays[Mesh.ARRAY_INDEX]
-			arrays[Mesh.ARRAY_INDEX] = best
+			if pieces[surface].are_cards():
+				chosen.append(null)
+				continue
+			var arrays: Array = _simpler_surface(importer, surface, pieces[surface], shares[level])
+			chosen.append(arrays)
+			others_kept += (arrays[Mesh.ARRAY_INDEX] as PackedInt32Array).size() / 3
+			PlantCover.draw(others, arrays, masks[surface])
+		var card_share: float = (
+			clampf((shares[level] * triangles - others_kept) / card_triangles, LEAST_CARD_SHARES[level], shares[level])
+			if card_triangles > 0
+			else 1.0
+		)
+		var growth: float = _cover_growth(pieces, masks, card_share, bounds, others, PlantCover.covered(whole))
+		var simpler: ArrayMesh = ArrayMesh.new()
+		var simplified: bool = false
+		for surface: int in importer.get_surface_count():
+			var arrays: Array = []
+			if chosen[surface] != null:
+				arrays = chosen[surface]
+			else:
+				var cards: MeshPieces = pieces[surface]
+				arrays = cards.cards_thinned(card_share, growth * cards.area_growth(card_share), bounds)
+			simplified = simplified or arrays[Mesh.ARRAY_INDEX] != pieces[surface].arrays[Mesh.ARRAY_INDEX]
 			simpler.add_surface_from_arrays(Mesh.PRIMITIVE_TRIANGLES, arrays)
 			simpler.surface_set_material(surface, importer.get_surface_material(surface))
 		out.append(simpler if simplified else (out[-1] if level == 2 and out[-1] != mesh else mesh))
 	return out
+
+
+## A surface (not of cards) of [param importer] with about [param share] of its triangles: of the
+## engine's levels of detail that keep [constant AREA_KEPT] of its area and its biggest pieces, the
+## one that keeps the most area at no more than a tenth above the share, else the nearest to it.
+static func _simpler_surface(importer: ImporterMesh, surface: int, pieces: MeshPieces, share: float) -> Array:
+	var arrays: Array = importer.get_surface_arrays(surface)
+	var positions: PackedVector3Array = arrays[Mesh.ARRAY_VERTEX]
+	var wanted: float = (arrays[Mesh.ARRAY_INDEX] as PackedInt32Array).size() / 3.0 * share
+	var least_area: float = AREA_KEPT * _area(positions, arrays[Mesh.ARRAY_INDEX])
+	var candidates: Array[Array] = [arrays, pieces.biggest(share)]
+	for lod: int in importer.get_surface_lod_count(surface):
+		var indices: PackedInt32Array = importer.get_surface_lod_indices(surface, lod)
+		if _area(positions, indices) >= least_area:
+			var simpler: Array = arrays.duplicate()
+			simpler[Mesh.ARRAY_INDEX] = indices
+			candidates.append(simpler)
+	var best: Array = arrays
+	var best_area: float = -1.0
+	for candidate: Array in candidates:
+		var size: int = (candidate[Mesh.ARRAY_INDEX] as PackedInt32Array).size() / 3
+		var kept_area: float = _area(candidate[Mesh.ARRAY_VERTEX], candidate[Mesh.ARRAY_INDEX])
+		if size <= 1.1 * wanted and kept_area > best_area:
+			best = candidate
+			best_area = kept_area
+	if best_area < 0.0:
+		for candidate: Array in candidates:
+			var size: int = (candidate[Mesh.ARRAY_INDEX] as PackedInt32Array).size() / 3
+			if absf(size - wanted) < absf((best[Mesh.ARRAY_INDEX] as PackedInt32Array).size() / 3 - wanted):
+				best = candidate
+	return best
+
+
+## How much more than to their area the cards of [param pieces] kept at [param share] grow for the
+## level (with [param others], what its other surfaces cover) to cover [param target] cells, each
+## surface cut out by its [param masks]: found by bisection between a quarter and twice (more than
+## once where the twigs the level dropped covered some of it).
+static func _cover_growth(
+	pieces: Array[MeshPieces], masks: Array[Dictionary], share: float, bounds: AABB, others: Dictionary, target: int
+) -> float:
+	if not pieces.any(func(surface: MeshPieces) -> bool: return surface.are_cards()):
+		return 1.0
+	var low: float = 0.25
+	var high: float = 2.0
+	for step: int in COVER_STEPS:
+		var middle: float = sqrt(low * high)
+		var cover: Dictionary = PlantCover.copied(others)
+		for surface: int in pieces.size():
+			if pieces[surface].are_cards():
+				var thin: Array = pieces[surface].cards_thinned(
+					share, middle * pieces[surface].area_growth(share), bounds
+				)
+				PlantCover.draw(cover, thin, masks[surface])
+		if PlantCover.covered(cover) < target:
+			low = middle
+		else:
+			high = middle
+	return sqrt(low * high)
 
 
 ## The area of the triangles [param indices] make of [param positions].
@@ -272,26 +364,3 @@ static func _area(positions: PackedVector3Array, indices: PackedInt32Array) -> f
 		var a: Vector3 = positions[indices[k]]
 		area += 0.5 * (positions[indices[k + 1]] - a).cross(positions[indices[k + 2]] - a).length()
 	return area
-
-
-## How many connected pieces the triangles [param indices] make of [param vertex_count] vertices.
-static func _pieces(indices: PackedInt32Array, vertex_count: int) -> int:
-	var parent: PackedInt32Array = range(vertex_count)
-	var pieces: int = vertex_count
-	for k: int in indices.size():
-		var a: int = _root_of(parent, indices[k - k % 3])
-		var b: int = _root_of(parent, indices[k])
-		if a != b:
-			parent[b] = a
-			pieces -= 1
-	var used: Dictionary = {}
-	for index: int in indices:
-		used[index] = true
-	return pieces - (vertex_count - used.size())  # vertices no triangle uses are no piece
-
-
-static func _root_of(parent: PackedInt32Array, vertex: int) -> int:
-	while parent[vertex] != vertex:
-		parent[vertex] = parent[parent[vertex]]
-		vertex = parent[vertex]
-	return vertex

@@ -165,3 +165,18 @@ func _window_sum(integral: PackedFloat64Array, x: int, y: int) -> float:
 	var top: int = y * stride
 	var bottom: int = (y + WINDOW) * stride
 	return integral[bottom + x + WINDOW] - integral[top + x + WINDOW] - integral[bottom + x] + integral[top + x]
+
+
+## The pixels of [param image] that are not black (covered), and of those the leaf green ones.
+static func covered_and_green(image: Image) -> Vector2:
+	var rgb: Image = image.duplicate() as Image
+	rgb.convert(Image.FORMAT_RGB8)
+	var bytes: PackedByteArray = rgb.get_data()
+	var covered: int = 0
+	var green: int = 0
+	for i: int in range(0, bytes.size(), 3):
+		if bytes[i] + bytes[i + 1] + bytes[i + 2] > 12:
+			covered += 1
+			if bytes[i + 1] > bytes[i] + 8 and bytes[i + 1] > bytes[i + 2] + 8:
+				green += 1
+	return Vector2(covered, green)

@@ -11,6 +11,7 @@ const Maps: GDScript = preload("res://runner/maps.gd")
 const Dressing: GDScript = preload("res://runner/dressing.gd")
 const ScenePlant: GDScript = preload("res://addons/sunflower_field/scene_plant.gd")
 const ScenePieces: GDScript = preload("res://addons/sunflower_field/scene_pieces.gd")
+const MeshPieces: GDScript = preload("res://addons/sunflower_field/mesh_pieces.gd")
 const Scenes: GDScript = preload("res://runner/scenes.gd")
 const ImpostorBaker: GDScript = preload("res://addons/sunflower_field/impostor_baker.gd")
 const CROWN_PLACE: Vector3 = Vector3(0.5, 3.0, 0.0)
@@ -27,6 +28,12 @@ const MESH_SHADOWS: PackedStringArray = ["maple_tree"]
 ## sparse crown's impostor pixels are other pixels than its meshes', as many), so it read the maple's
 ## far field from 40 m outside as 0.885 of the meshes' brightness where, grown by 2, it is 1.05.
 const BRIGHTNESS_GROWTH: int = 2
+## The least SSIM of a generated level whose foliage cards are thinned against the scene drawn
+## plainly, alone, where the level begins (measured: 0.85–0.93 at mesh 2, 0.77–0.85 at mesh 3).
+const THINNED_LEAST_SSIM: float = 0.7
+## The least SSIM of a field of a plant with thinned levels against all its plants at mesh 1, at
+## head height and from 25 m up at 45° (measured: 0.85–0.95 and 0.75–0.89).
+const THINNED_FIELD_LEAST_SSIM: Vector2 = Vector2(0.8, 0.7)
 ## The test plants made and baked once a run ([method _baked_test_plant]), by file.
 static var baked_plants: Dictionary = {}
 
@@ -74,7 +81,7 @@ func _tree_scene(variants: bool = false) -> PackedScene:
 		cone.radial_segments = sides[k]
 		cone.rings = 8 if k == 0 else 1
 		leaves.mesh = cone
-		leaves.set_surface_override_material(0, _leaves())
+		leaves.set_surface_override_material(0, Scenes.holed_leaves())
 		crown.add_child(leaves)
 	return Scenes.packed(root)
 
@@ -83,21 +90,6 @@ func _bark() -> StandardMaterial3D:
 	var bark: StandardMaterial3D = StandardMaterial3D.new()
 	bark.albedo_color = Color(0.35, 0.22, 0.12)
 	return bark
-
-
-## Green leaves cut by alpha: a texture of holes (every third square of 8 pixels clear).
-func _leaves() -> StandardMaterial3D:
-	var holes: Image = Image.create(64, 64, false, Image.FORMAT_RGBA8)
-	for y: int in 64:
-		for x: int in 64:
-			var clear: bool = (x / 8 + 2 * (y / 8)) % 3 == 0
-			holes.set_pixel(x, y, Color(0.25, 0.55, 0.18, 0.0 if clear else 1.0))
-	var leaves: StandardMaterial3D = StandardMaterial3D.new()
-	leaves.albedo_texture = ImageTexture.create_from_image(holes)
-	leaves.transparency = BaseMaterial3D.TRANSPARENCY_ALPHA_SCISSOR
-	leaves.alpha_scissor_threshold = 0.5
-	leaves.cull_mode = BaseMaterial3D.CULL_DISABLED
-	return leaves
 
 
 ## The bounds the scene's meshes cover in the root's frame, as the engine places them.
@@ -325,9 +317,15 @@ func _compare_lone_plant(plant_name: String, packed: PackedScene) -> void:
 				check_eq(_yellow_pixels(image), 0, "%s: no sunflower yellow at mesh %d" % [plant_name, level + 1])
 		var similarity: float = picture.ssim(pictures[1], pictures[0])
 		scores.append("%.3f" % similarity)
+		# Thinned cards are other leaves than the scene's, as many pixels (test_plant_levels checks the
+		# cover): what is left to check is that the level still draws the plant there.
+		var least: float = THINNED_LEAST_SSIM if level > 0 and _has_cards(plant) else 0.95
 		check(
-			similarity >= 0.95,
-			"%s: mesh %d looks like the scene drawn plainly (SSIM %.3f)" % [plant_name, level + 1, similarity]
+			similarity >= least,
+			(
+				"%s: mesh %d looks like the scene drawn plainly (SSIM %.3f, at least %.2f)"
+				% [plant_name, level + 1, similarity, least]
+			)
 		)
 	var triangles: Array = [1, 2, 3].map(
 		func(level: int) -> int: return ScenePlant.triangle_count(plant.get("mesh_level_%d" % level)[0])
@@ -338,6 +336,15 @@ func _compare_lone_plant(plant_name: String, packed: PackedScene) -> void:
 			% ([plant_name, plant.height] + triangles + [" / ".join(scores)])
 		)
 	)
+
+
+## Whether [param plant]'s mesh level 1 has a surface of foliage cards (which its generated levels thin).
+func _has_cards(plant: FieldPlant) -> bool:
+	var mesh: Mesh = plant.mesh_level_1[0]
+	for surface: int in mesh.get_surface_count():
+		if MeshPieces.new(mesh.surface_get_arrays(surface)).are_cards():
+			return true
+	return false
 
 
 ## The rectangle of the screen that holds [param plant] standing at [param root], a tenth more each
@@ -597,7 +604,7 @@ func test_each_test_plants_lone_impostor_covers_what_its_mesh_covers() -> void:
 						)
 					)
 				)
-				counts.append(_covered_and_green(image))
+				counts.append(Picture.covered_and_green(image))
 			var cover: float = counts[1].x / maxf(counts[0].x, 1.0)
 			var green: float = counts[1].y / maxf(counts[0].y, 1.0)
 			figures.append("%s at %.0f m: cover %.2f, leaf green %.2f" % [file.get_basename(), distance, cover, green])
@@ -613,21 +620,6 @@ func test_each_test_plants_lone_impostor_covers_what_its_mesh_covers() -> void:
 		stage = null
 	tree.root.size = window
 	print("     lone impostor against its mesh 1 (45° above, 1 280 × 720): %s" % "; ".join(figures))
-
-
-## The pixels of [param image] that are not black (covered), and of those the leaf green ones.
-func _covered_and_green(image: Image) -> Vector2:
-	var rgb: Image = image.duplicate() as Image
-	rgb.convert(Image.FORMAT_RGB8)
-	var bytes: PackedByteArray = rgb.get_data()
-	var covered: int = 0
-	var green: int = 0
-	for i: int in range(0, bytes.size(), 3):
-		if bytes[i] + bytes[i + 1] + bytes[i + 2] > 12:
-			covered += 1
-			if bytes[i + 1] > bytes[i] + 8 and bytes[i + 1] > bytes[i + 2] + 8:
-				green += 1
-	return Vector2(covered, green)
 
 
 ## A plant drawn part by part with empty slots: the empty slots' near buckets are not filled (the
@@ -776,13 +768,15 @@ func _compare_field(plant_name: String, plant: FieldPlant) -> void:
 					% [plant_name, view, brightness]
 				)
 			)
+	# A plant with foliage cards has its mesh levels 2 and 3 thinned: other leaves than mesh 1's.
+	var least: Vector2 = THINNED_FIELD_LEAST_SSIM if _has_cards(plant) else Vector2(0.95, 0.85)
 	check(
-		figures["inside"][0] >= 0.95,
-		"%s field at head height: SSIM %.3f, at least 0.95" % [plant_name, figures["inside"][0]]
+		figures["inside"][0] >= least.x,
+		"%s field at head height: SSIM %.3f, at least %.2f" % [plant_name, figures["inside"][0], least.x]
 	)
 	check(
-		figures["above45"][0] >= 0.85,
-		"%s field 25 m up at 45°, anti-aliased: SSIM %.3f, at least 0.85" % [plant_name, figures["above45"][0]]
+		figures["above45"][0] >= least.y,
+		"%s field 25 m up at 45°, anti-aliased: SSIM %.3f, at least %.2f" % [plant_name, figures["above45"][0], least.y]
 	)
 	var parts: PackedStringArray = []
 	for view: String in figures:

@@ -1,0 +1,255 @@
+@tool
+extends RefCounted
+## A surface's pieces: the triangles joined by shared vertices (or vertices at one place) — a leaf
+## card, a blade, a twig. A plant's coarser mesh levels thin them, as the engines that draw forests
+## do: a surface of foliage cards keeps a share of its cards, spread evenly over the plant, and
+## the kept cards grow (fewer, bigger leaves; a coarser level keeps a subset of a finer level's cards,
+## so no card comes back as the plant moves away); a surface of branches keeps its biggest pieces,
+## dropping twigs. A card standing on the plant's base (a blade of grass) grows only in width, so that
+## it keeps its foot on the ground and its height; any other grows about its centre. No card grows out
+## of the bounds it is given.
+
+## A surface whose pieces have at most this many triangles on average is of cards (a Sapling maple's
+## leaves, welded where they touch, average 4.1).
+const CARD_TRIANGLES: float = 8.0
+## A card whose lowest point is within this share of the bounds' height of their bottom stands on it.
+const STANDING_SHARE: float = 0.02
+
+## The surface's arrays, as given.
+var arrays: Array
+## How many pieces it has.
+var count: int = 0
+## The piece of each triangle (numbered in the order the pieces first appear).
+var piece_of: PackedInt32Array = []
+## Per piece: its area, its triangles, its area-weighted normal, the mean of its vertices, its lowest y.
+var area: PackedFloat32Array = []
+var triangles: PackedInt32Array = []
+var normal: PackedVector3Array = []
+var centre: PackedVector3Array = []
+var lowest: PackedFloat32Array = []
+
+
+func _init(surface_arrays: Array) -> void:
+	arrays = surface_arrays
+	var positions: PackedVector3Array = arrays[Mesh.ARRAY_VERTEX]
+	var indices: PackedInt32Array = arrays[Mesh.ARRAY_INDEX]
+	var parent: Array[int] = []
+	parent.assign(range(positions.size()))
+	var first_at: Dictionary = {}  # a place -> the first vertex there
+	for vertex: int in positions.size():
+		var place: Vector3 = positions[vertex]
+		if first_at.has(place):
+			_join(parent, first_at[place], vertex)
+		else:
+			first_at[place] = vertex
+	for k: int in range(0, indices.size() - 2, 3):
+		_join(parent, indices[k], indices[k + 1])
+		_join(parent, indices[k], indices[k + 2])
+	var number: Dictionary = {}  # a piece's root vertex -> its number
+	piece_of.resize(indices.size() / 3)
+	for triangle: int in piece_of.size():
+		var root: int = _root_of(parent, indices[3 * triangle])
+		if not number.has(root):
+			number[root] = number.size()
+		piece_of[triangle] = number[root]
+	count = number.size()
+	area.resize(count)
+	triangles.resize(count)
+	normal.resize(count)
+	centre.resize(count)
+	lowest.resize(count)
+	lowest.fill(INF)
+	for triangle: int in piece_of.size():
+		var a: Vector3 = positions[indices[3 * triangle]]
+		var across: Vector3 = (positions[indices[3 * triangle + 1]] - a).cross(positions[indices[3 * triangle + 2]] - a)
+		var piece: int = piece_of[triangle]
+		area[piece] += 0.5 * across.length()
+		triangles[piece] += 1
+		normal[piece] += across
+	var corners: PackedInt32Array = []
+	corners.resize(count)
+	for vertex: int in positions.size():
+		var piece: int = number.get(_root_of(parent, vertex), -1)
+		if piece >= 0:  # a vertex no triangle uses is in no piece
+			centre[piece] += positions[vertex]
+			corners[piece] += 1
+			lowest[piece] = minf(lowest[piece], positions[vertex].y)
+	for piece: int in count:
+		centre[piece] /= maxi(corners[piece], 1)
+
+
+## Whether the surface is of cards ([constant CARD_TRIANGLES]).
+func are_cards() -> bool:
+	return count > 0 and piece_of.size() <= CARD_TRIANGLES * count
+
+
+## How many cards [param share] of them is (at least one).
+func kept_count(share: float) -> int:
+	return clampi(roundi(share * count), 1, count)
+
+
+## How much each card kept at [param share] grows in area for the kept ones to have the area of all.
+func area_growth(share: float) -> float:
+	var keeps: PackedByteArray = _chosen(kept_count(share))
+	var kept_area: float = 0.0
+	var all_area: float = 0.0
+	for piece: int in count:
+		all_area += area[piece]
+		kept_area += area[piece] if keeps[piece] else 0.0
+	return all_area / kept_area if kept_area > 0.0 else 1.0
+
+
+## The surface's cards thinned to [param share] of them, each kept one grown [param growth] times in
+## area, no vertex past [param bounds] (the plant's; their bottom is its base): new arrays holding
+## only the vertices the kept cards use.
+func cards_thinned(share: float, growth: float, bounds: AABB) -> Array:
+	var keeps: PackedByteArray = _chosen(kept_count(share))
+	var picked: Dictionary = _picked_triangles(keeps)
+	var used: PackedInt32Array = picked.used
+	var positions: PackedVector3Array = arrays[Mesh.ARRAY_VERTEX]
+	var standing_below: float = bounds.position.y + STANDING_SHARE * bounds.size.y
+	var grown: PackedVector3Array = []
+	grown.resize(used.size())
+	for k: int in used.size():
+		var piece: int = (picked.piece_of_vertex as PackedInt32Array)[k]
+		var offset: Vector3 = positions[used[k]] - centre[piece]
+		var across: Vector3 = normal[piece].cross(Vector3.UP).normalized()
+		var moved: Vector3
+		if lowest[piece] <= standing_below and across.is_normalized():
+			moved = centre[piece] + offset + across * offset.dot(across) * (growth - 1.0)  # wider by the growth
+		else:
+			moved = centre[piece] + offset * sqrt(growth)  # each way by its root
+		grown[k] = moved.clamp(bounds.position, bounds.end)
+	var out: Array = _arrays_of(used, picked.indices)
+	out[Mesh.ARRAY_VERTEX] = grown
+	return out
+
+
+## The surface with only its biggest pieces (by area) that hold at most [param share] of its
+## triangles — at least the biggest one — as they are: a branch surface without its twigs.
+func biggest(share: float) -> Array:
+	var order: Array[int] = []
+	order.assign(range(count))
+	order.sort_custom(func(a: int, b: int) -> bool: return area[a] > area[b] or (area[a] == area[b] and a < b))
+	var keeps: PackedByteArray = []
+	keeps.resize(count)
+	var kept: int = 0
+	for piece: int in order:
+		if kept > 0 and kept + triangles[piece] > share * piece_of.size():
+			break
+		keeps[piece] = 1
+		kept += triangles[piece]
+	var picked: Dictionary = _picked_triangles(keeps)
+	return _arrays_of(picked.used, picked.indices)
+
+
+## The kept pieces' triangles re-indexed over the vertices they use: [code]{"indices", "used" (the
+## vertices, in their new order), "piece_of_vertex"}[/code].
+func _picked_triangles(keeps: PackedByteArray) -> Dictionary:
+	var indices: PackedInt32Array = arrays[Mesh.ARRAY_INDEX]
+	var new_index: PackedInt32Array = []
+	new_index.resize((arrays[Mesh.ARRAY_VERTEX] as PackedVector3Array).size())
+	new_index.fill(-1)
+	var used: PackedInt32Array = []
+	var piece_of_vertex: PackedInt32Array = []
+	var out: PackedInt32Array = []
+	for triangle: int in piece_of.size():
+		var piece: int = piece_of[triangle]
+		if not keeps[piece]:
+			continue
+		for corner: int in 3:
+			var vertex: int = indices[3 * triangle + corner]
+			if new_index[vertex] < 0:
+				new_index[vertex] = used.size()
+				used.append(vertex)
+				piece_of_vertex.append(piece)
+			out.append(new_index[vertex])
+	return {"indices": out, "used": used, "piece_of_vertex": piece_of_vertex}
+
+
+## New arrays of the vertices [param used] (every kind the surface has) and [param indices].
+func _arrays_of(used: PackedInt32Array, indices: PackedInt32Array) -> Array:
+	var out: Array = []
+	out.resize(Mesh.ARRAY_MAX)
+	for kind: int in [
+		Mesh.ARRAY_VERTEX,
+		Mesh.ARRAY_NORMAL,
+		Mesh.ARRAY_TANGENT,
+		Mesh.ARRAY_COLOR,
+		Mesh.ARRAY_TEX_UV,
+		Mesh.ARRAY_TEX_UV2
+	]:
+		if arrays[kind] != null:
+			var width: int = 4 if kind == Mesh.ARRAY_TANGENT else 1
+			var values: Variant = arrays[kind]
+			var picked: Variant = values.duplicate()
+			picked.resize(used.size() * width)
+			for k: int in used.size():
+				for part: int in width:
+					picked[k * width + part] = values[used[k] * width + part]
+			out[kind] = picked
+	out[Mesh.ARRAY_INDEX] = indices
+	return out
+
+
+## Which pieces are kept when [param kept] are: those ranked first when the pieces, in the order
+## of a curve through space (Morton's, over their centres), are ranked by their place's bits
+## reversed — so that any share of them is spread evenly over the plant, and fewer kept are always
+## among more kept.
+func _chosen(kept: int) -> PackedByteArray:
+	var box: AABB = AABB(centre[0], Vector3.ZERO) if count > 0 else AABB()
+	for piece: int in count:
+		box = box.expand(centre[piece])
+	var codes: PackedInt64Array = []
+	codes.resize(count)
+	for piece: int in count:
+		var at: Vector3 = (centre[piece] - box.position) / box.size.max(Vector3.ONE * 1e-9)
+		codes[piece] = _morton(at) * count + piece  # ties kept in the pieces' order
+	var along: Array[int] = []
+	along.assign(range(count))
+	along.sort_custom(func(a: int, b: int) -> bool: return codes[a] < codes[b])
+	var bits: int = maxi(1, ceili(log(float(count)) / log(2.0)))
+	var order: Array[int] = []
+	order.assign(range(count))
+	var rank: PackedInt64Array = []
+	rank.resize(count)
+	for place: int in count:
+		rank[along[place]] = _reversed(place, bits) * count + place
+	order.sort_custom(func(a: int, b: int) -> bool: return rank[a] < rank[b])
+	var keeps: PackedByteArray = []
+	keeps.resize(count)
+	for k: int in kept:
+		keeps[order[k]] = 1
+	return keeps
+
+
+## The Morton code of [param at] (each coordinate 0 to 1) on a grid of 1 024 a side.
+static func _morton(at: Vector3) -> int:
+	var code: int = 0
+	for bit: int in 10:
+		for axis: int in 3:
+			var cell: int = clampi(int(at[axis] * 1024.0), 0, 1023)
+			code |= ((cell >> bit) & 1) << (3 * bit + axis)
+	return code
+
+
+## [param value]'s lowest [param bits] bits in the reverse order.
+static func _reversed(value: int, bits: int) -> int:
+	var out: int = 0
+	for bit: int in bits:
+		out |= ((value >> bit) & 1) << (bits - 1 - bit)
+	return out
+
+
+static func _join(parent: Array[int], a: int, b: int) -> void:
+	var root_a: int = _root_of(parent, a)
+	var root_b: int = _root_of(parent, b)
+	if root_a != root_b:
+		parent[maxi(root_a, root_b)] = mini(root_a, root_b)
+
+
+static func _root_of(parent: Array[int], vertex: int) -> int:
+	while parent[vertex] != vertex:
+		parent[vertex] = parent[parent[vertex]]
+		vertex = parent[vertex]
+	return vertex

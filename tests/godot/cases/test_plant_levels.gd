@@ -1,0 +1,226 @@
+extends TestCase
+## A plant's generated mesh levels (scene_plant.gd, mesh_pieces.gd, plant_cover.gd): fewer triangles, the foliage
+## cards thinned to fewer and bigger ones, the cover kept where each level begins.
+
+const Picture: GDScript = preload("res://runner/picture.gd")
+const Stage: GDScript = preload("res://runner/stage.gd")
+const Maps: GDScript = preload("res://runner/maps.gd")
+const Scenes: GDScript = preload("res://runner/scenes.gd")
+const ScenePlant: GDScript = preload("res://addons/sunflower_field/scene_plant.gd")
+const MeshPieces: GDScript = preload("res://addons/sunflower_field/mesh_pieces.gd")
+## The Sapling test plants (TEST_PLANTS in TEST_PLANT_FOLDER).
+const ScenePlantTests: GDScript = preload("res://cases/test_scene_plant.gd")
+
+var stage: Node3D
+
+
+func after_each() -> void:
+	if stage:
+		stage.free()
+		stage = null
+
+
+## Generated levels thin a plant's foliage cards: mesh 2 draws at most 55 % and mesh 3 at most 30 %
+## of mesh 1's triangles for each test plant of 1 000 or more (the maple, the bush), a plant of a
+## few dozen cards (the grass clump, a bush of 36 cards) thins too, and each level, seen alone from
+## where it begins (45° above, no shadows), covers within ±10 % of the pixels mesh 1 covers there.
+func test_generated_levels_thin_the_cards_and_keep_the_cover() -> void:
+	var scenes: Dictionary = {"card_bush": _card_bush()}
+	for file: String in ScenePlantTests.TEST_PLANTS:
+		scenes[file.get_basename()] = load(ScenePlantTests.TEST_PLANT_FOLDER.path_join(file)) as PackedScene
+	var figures: PackedStringArray = []
+	for plant_name: String in scenes:
+		var plant: FieldPlant = FieldPlant.from_scene(scenes[plant_name])
+		if not check(plant != null, "%s: a plant is made of the scene" % plant_name):
+			continue
+		var triangles: Array = [1, 2, 3].map(
+			func(level: int) -> int: return ScenePlant.triangle_count(plant.get("mesh_level_%d" % level)[0])
+		)
+		var shares: Vector2 = Vector2(triangles[1], triangles[2]) / float(triangles[0])
+		check(
+			triangles[2] < triangles[1] and triangles[1] < triangles[0],
+			"%s: each level has fewer triangles (%d / %d / %d)" % ([plant_name] + triangles)
+		)
+		if triangles[0] >= 1000:
+			check(
+				shares.x <= 0.55 and shares.y <= 0.30,
+				(
+					"%s: mesh 2 and 3 draw %.2f and %.2f of mesh 1's triangles, at most 0.55 and 0.30"
+					% [plant_name, shares.x, shares.y]
+				)
+			)
+		var staged: Stage = Stage.new(tree.root)
+		stage = staged.root
+		staged.show_scenery(false)
+		for light: Node in stage.find_children("*", "DirectionalLight3D", true, false):
+			(light as DirectionalLight3D).shadow_enabled = false
+		plant.yaw_range = 0.0
+		var field: SunflowerField = SunflowerField.new()
+		field.plant = plant
+		field.map = Maps.filled(1, 1, "user://one_thinned_plant.field")
+		field.wind_power = 0.0
+		field.lod_fade = 0.0
+		stage.add_child(field)
+		field.finish_build()
+		field.set_process(false)
+		var camera: Camera3D = Camera3D.new()
+		camera.far = 2000.0
+		stage.add_child(camera)
+		camera.make_current()
+		var root: Vector3 = field.get_plant_info(0)["position"]
+		var middle: Vector3 = root + Vector3(0.0, plant.height * 0.5, 0.0)
+		var covers: PackedStringArray = []
+		for level: int in [1, 2]:
+			var begins: float = field.lod_distances[level - 1] * plant.lod_scale_used()
+			camera.look_at_from_position(middle + Vector3(0.0, 1.0, 1.0).normalized() * begins, middle)
+			var covered: Array[float] = []
+			for drawn: int in [0, level]:
+				field.force_lod = drawn
+				field.advance(0.0)
+				await frames(3)
+				var image: Image = tree.root.get_viewport().get_texture().get_image()
+				image.save_png(artifact_path("thinned_%s_mesh%d_at_mesh%d.png" % [plant_name, drawn + 1, level + 1]))
+				covered.append(Picture.covered_and_green(image).x)
+			var cover: float = covered[1] / maxf(covered[0], 1.0)
+			covers.append("%.2f" % cover)
+			check(
+				absf(cover - 1.0) <= 0.1,
+				(
+					"%s: mesh %d covers %.2f of mesh 1's pixels (%d of %d) from %.1f m, where it begins; within ±10 %%"
+					% [plant_name, level + 1, cover, covered[1], covered[0], begins]
+				)
+			)
+		figures.append("%s %d / %d / %d, cover %s" % ([plant_name] + triangles + [" / ".join(covers)]))
+		stage.free()
+		stage = null
+	print(
+		(
+			"     triangles at mesh 1 / 2 / 3, and the cover of mesh 2 / 3 of mesh 1's where each begins: %s"
+			% "; ".join(figures)
+		)
+	)
+
+
+## Thinning keeps a stable share of the cards, fewer always among more, and grows them to the area
+## of all: a standing blade (its foot on the base) grows only in width, keeping its foot and height;
+## no card leaves the bounds given.
+func test_foliage_cards_thin_to_fewer_of_the_same_area() -> void:
+	var arrays: Array = (_card_bush().instantiate().get_node("Leaves").mesh as ArrayMesh).surface_get_arrays(0)
+	var positions: PackedVector3Array = arrays[Mesh.ARRAY_VERTEX]
+	var indices: PackedInt32Array = arrays[Mesh.ARRAY_INDEX]
+	for k: int in 12:  # blades standing on the base, 1 m tall
+		var turn: float = TAU * k / 12.0
+		var foot: Vector3 = Vector3(cos(turn), 0.0, sin(turn)) * 0.2
+		var side: Vector3 = Vector3(-sin(turn), 0.0, cos(turn)) * 0.03
+		var first: int = positions.size()
+		positions.append_array(
+			PackedVector3Array([foot - side, foot + side, foot + side + Vector3.UP, foot - side + Vector3.UP])
+		)
+		indices.append_array(PackedInt32Array([first, first + 1, first + 2, first, first + 2, first + 3]))
+	var uvs: PackedVector2Array = arrays[Mesh.ARRAY_TEX_UV]
+	uvs.resize(positions.size())
+	arrays[Mesh.ARRAY_VERTEX] = positions
+	arrays[Mesh.ARRAY_TEX_UV] = uvs
+	arrays[Mesh.ARRAY_INDEX] = indices
+	var cards: MeshPieces = MeshPieces.new(arrays)
+	check(cards.are_cards(), "a surface of quads is of cards")
+	check_eq(cards.count, 48, "48 cards")
+	var wide: AABB = AABB(Vector3(-100, 0, -100), Vector3(200, 200, 200))
+	var all_area: float = _area_of(arrays)
+	var centres: Array = [_centres(arrays)]
+	for share: float in [0.5, 0.2]:
+		var thin: Array = cards.cards_thinned(share, cards.area_growth(share), wide)
+		var count: int = MeshPieces.new(thin).count
+		check_eq(count, roundi(share * 48), "%.1f of the cards kept" % share)
+		check_near(_area_of(thin) / all_area, 1.0, 1e-3, "%.1f of the cards: the area of all" % share)
+		centres.append(_centres(thin))
+		check(
+			_among(centres[-1], centres[-2]), "the cards kept at %.1f are among those kept at the share before" % share
+		)
+		# The blades are the cards about 0.2 m from the middle (the bush's leaves are 0.35 m or more).
+		var blades: int = 0
+		var standing: int = 0
+		var kept: PackedVector3Array = thin[Mesh.ARRAY_VERTEX]
+		for k: int in range(0, kept.size(), 4):
+			var corners: Array = Array(kept.slice(k, k + 4))
+			var middle: Vector3 = (
+				corners.reduce(func(sum: Vector3, v: Vector3) -> Vector3: return sum + v, Vector3.ZERO) / 4.0
+			)
+			if Vector2(middle.x, middle.z).length() < 0.25:
+				blades += 1
+				var heights: Array = corners.map(func(v: Vector3) -> float: return v.y)
+				standing += 1 if is_zero_approx(heights.min()) and is_equal_approx(heights.max(), 1.0) else 0
+		check(blades > 0, "%.1f: blades kept" % share)
+		check_eq(standing, blades, "%.1f: the kept blades keep their feet on the base and their 1 m" % share)
+	var tight: AABB = AABB(Vector3(-0.5, 0.0, -0.5), Vector3(1.0, 1.0, 1.0))
+	var clamped: PackedVector3Array = cards.cards_thinned(0.2, cards.area_growth(0.2), tight)[Mesh.ARRAY_VERTEX]
+	check(
+		Array(clamped).all(func(v: Vector3) -> bool: return tight.grow(1e-5).has_point(v)),
+		"no grown card leaves the bounds"
+	)
+	var again: Array = cards.cards_thinned(0.5, cards.area_growth(0.5), wide)
+	check_eq(
+		again[Mesh.ARRAY_VERTEX],
+		cards.cards_thinned(0.5, cards.area_growth(0.5), wide)[Mesh.ARRAY_VERTEX],
+		"the same cards each time"
+	)
+
+
+## Whether every point of [param points] is (about) one of [param others].
+func _among(points: Array, others: Array) -> bool:
+	for point: Vector3 in points:
+		if not others.any(func(other: Vector3) -> bool: return other.is_equal_approx(point)):
+			return false
+	return true
+
+
+func _area_of(arrays: Array) -> float:
+	var positions: PackedVector3Array = arrays[Mesh.ARRAY_VERTEX]
+	var indices: PackedInt32Array = arrays[Mesh.ARRAY_INDEX]
+	var area: float = 0.0
+	for k: int in range(0, indices.size(), 3):
+		var a: Vector3 = positions[indices[k]]
+		area += 0.5 * (positions[indices[k + 1]] - a).cross(positions[indices[k + 2]] - a).length()
+	return area
+
+
+## The centre of each card of [param arrays] (their four corners' mean; cards of four corners).
+func _centres(arrays: Array) -> Array:
+	var positions: PackedVector3Array = arrays[Mesh.ARRAY_VERTEX]
+	var out: Array = []
+	for k: int in range(0, positions.size(), 4):
+		out.append((positions[k] + positions[k + 1] + positions[k + 2] + positions[k + 3]) / 4.0)
+	return out
+
+
+## A bush of 36 alpha-cut cards and nothing else: 6 rings of 6 leaves, each ring higher and narrower.
+func _card_bush() -> PackedScene:
+	var positions: PackedVector3Array = []
+	var uvs: PackedVector2Array = []
+	var indices: PackedInt32Array = []
+	for ring: int in 6:
+		for k: int in 6:
+			var turn: float = TAU * (k + 0.5 * ring) / 6.0
+			var out: Vector3 = Vector3(cos(turn), 0.0, sin(turn))
+			var side: Vector3 = Vector3(-out.z, 0.0, out.x) * 0.25
+			var foot: Vector3 = out * (0.6 - 0.08 * ring) + Vector3.UP * (0.15 * ring)
+			var tip: Vector3 = foot + out * 0.3 + Vector3.UP * 0.35
+			var first: int = positions.size()
+			positions.append_array(PackedVector3Array([foot - side, foot + side, tip + side, tip - side]))
+			uvs.append_array(PackedVector2Array([Vector2(0, 1), Vector2(1, 1), Vector2(1, 0), Vector2(0, 0)]))
+			indices.append_array(PackedInt32Array([first, first + 1, first + 2, first, first + 2, first + 3]))
+	var arrays: Array = []
+	arrays.resize(Mesh.ARRAY_MAX)
+	arrays[Mesh.ARRAY_VERTEX] = positions
+	arrays[Mesh.ARRAY_TEX_UV] = uvs
+	arrays[Mesh.ARRAY_INDEX] = indices
+	var mesh: ArrayMesh = ArrayMesh.new()
+	mesh.add_surface_from_arrays(Mesh.PRIMITIVE_TRIANGLES, arrays)
+	var root: Node3D = Node3D.new()
+	root.name = "CardBush"
+	var leaves: MeshInstance3D = MeshInstance3D.new()
+	leaves.name = "Leaves"
+	leaves.mesh = mesh
+	leaves.material_override = Scenes.holed_leaves()
+	root.add_child(leaves)
+	return Scenes.packed(root)
