@@ -121,6 +121,11 @@ timeout 900 xvfb-run -a -s "-screen 0 1280x720x24" "$godot" --rendering-driver v
   --resolution "$resolution" --path "$repo/tests/godot" --script res://bench/play_bench.gd 2>&1 | grep '^|' ||
   echo "bench: the play benchmark failed" >&2
 echo
+echo "## 16. Forests: a field of each Sapling test plant, its levels thinned against every level mesh 1 (Vulkan lavapipe under Xvfb)"
+timeout 900 xvfb-run -a -s "-screen 0 1280x720x24" "$godot" --rendering-driver vulkan --audio-driver Dummy \
+  --resolution "$resolution" --path "$repo/tests/godot" --script res://bench/forest_bench.gd 2>&1 | grep '^|' ||
+  echo "bench: the forest benchmark failed" >&2
+echo
 echo "## 9. The editor opening a scene with a million-plant field (frame intervals; the plugin's frame probe)"
 editor_project=$(mktemp -d)
 mkdir -p "$editor_project/addons"
