@@ -9,8 +9,9 @@ extends RefCounted
 ## it keeps its foot on the ground and its height; any other grows about its centre. No card grows out
 ## of the bounds it is given.
 
-## A surface whose pieces have at most this many triangles on average is of cards (a Sapling maple's
-## leaves, welded where they touch, average 4.1).
+## A piece of at most this many triangles is a card, and a surface whose pieces have at most this many
+## on average is of cards (a Sapling maple's leaves, welded where they touch, average 4.1). Bigger
+## pieces of a surface of cards (a trunk merged with its leaves) are kept as they are.
 const CARD_TRIANGLES: float = 8.0
 ## A card whose lowest point is within this share of the bounds' height of their bottom stands on it.
 const STANDING_SHARE: float = 0.02
@@ -27,6 +28,8 @@ var triangles: PackedInt32Array = []
 var normal: PackedVector3Array = []
 var centre: PackedVector3Array = []
 var lowest: PackedFloat32Array = []
+## The pieces that are cards.
+var cards: PackedInt32Array = []
 
 
 func _init(surface_arrays: Array) -> void:
@@ -76,6 +79,8 @@ func _init(surface_arrays: Array) -> void:
 			lowest[piece] = minf(lowest[piece], positions[vertex].y)
 	for piece: int in count:
 		centre[piece] /= maxi(corners[piece], 1)
+		if is_card(piece):
+			cards.append(piece)
 
 
 ## Whether the surface is of cards ([constant CARD_TRIANGLES]).
@@ -83,9 +88,14 @@ func are_cards() -> bool:
 	return count > 0 and piece_of.size() <= CARD_TRIANGLES * count
 
 
-## How many cards [param share] of them is (at least one).
+## Whether [param piece] is a card ([constant CARD_TRIANGLES]).
+func is_card(piece: int) -> bool:
+	return triangles[piece] <= CARD_TRIANGLES
+
+
+## How many cards [param share] of them is (at least one, when there are any).
 func kept_count(share: float) -> int:
-	return clampi(roundi(share * count), 1, count)
+	return clampi(roundi(share * cards.size()), mini(1, cards.size()), cards.size())
 
 
 ## How much each card kept at [param share] grows in area for the kept ones to have the area of all.
@@ -93,15 +103,15 @@ func area_growth(share: float) -> float:
 	var keeps: PackedByteArray = _chosen(kept_count(share))
 	var kept_area: float = 0.0
 	var all_area: float = 0.0
-	for piece: int in count:
+	for piece: int in cards:
 		all_area += area[piece]
 		kept_area += area[piece] if keeps[piece] else 0.0
 	return all_area / kept_area if kept_area > 0.0 else 1.0
 
 
 ## The surface's cards thinned to [param share] of them, each kept one grown [param growth] times in
-## area, no vertex past [param bounds] (the plant's; their bottom is its base): new arrays holding
-## only the vertices the kept cards use.
+## area, no vertex past [param bounds] (the plant's; their bottom is its base), its other pieces as
+## they are: new arrays holding only the vertices the kept pieces use.
 func cards_thinned(share: float, growth: float, bounds: AABB) -> Array:
 	var keeps: PackedByteArray = _chosen(kept_count(share))
 	var picked: Dictionary = _picked_triangles(keeps)
@@ -112,6 +122,9 @@ func cards_thinned(share: float, growth: float, bounds: AABB) -> Array:
 	grown.resize(used.size())
 	for k: int in used.size():
 		var piece: int = (picked.piece_of_vertex as PackedInt32Array)[k]
+		if not is_card(piece):
+			grown[k] = positions[used[k]]
+			continue
 		var offset: Vector3 = positions[used[k]] - centre[piece]
 		var across: Vector3 = normal[piece].cross(Vector3.UP).normalized()
 		var moved: Vector3
@@ -192,34 +205,34 @@ func _arrays_of(used: PackedInt32Array, indices: PackedInt32Array) -> Array:
 	return out
 
 
-## Which pieces are kept when [param kept] are: those ranked first when the pieces, in the order
-## of a curve through space (Morton's, over their centres), are ranked by their place's bits
-## reversed — so that any share of them is spread evenly over the plant, and fewer kept are always
-## among more kept.
+## Which pieces are kept when [param kept] cards are: every piece that is not a card, and the cards
+## ranked first when, in the order of a curve through space (Morton's, over their centres), they are
+## ranked by their place's bits reversed — so that any share of them is spread evenly over the plant,
+## and fewer kept are always among more kept.
 func _chosen(kept: int) -> PackedByteArray:
-	var box: AABB = AABB(centre[0], Vector3.ZERO) if count > 0 else AABB()
-	for piece: int in count:
-		box = box.expand(centre[piece])
-	var codes: PackedInt64Array = []
-	codes.resize(count)
-	for piece: int in count:
-		var at: Vector3 = (centre[piece] - box.position) / box.size.max(Vector3.ONE * 1e-9)
-		codes[piece] = _morton(at) * count + piece  # ties kept in the pieces' order
-	var along: Array[int] = []
-	along.assign(range(count))
-	along.sort_custom(func(a: int, b: int) -> bool: return codes[a] < codes[b])
-	var bits: int = maxi(1, ceili(log(float(count)) / log(2.0)))
-	var order: Array[int] = []
-	order.assign(range(count))
-	var rank: PackedInt64Array = []
-	rank.resize(count)
-	for place: int in count:
-		rank[along[place]] = _reversed(place, bits) * count + place
-	order.sort_custom(func(a: int, b: int) -> bool: return rank[a] < rank[b])
 	var keeps: PackedByteArray = []
 	keeps.resize(count)
-	for k: int in kept:
-		keeps[order[k]] = 1
+	keeps.fill(1)
+	if cards.is_empty():
+		return keeps
+	var box: AABB = AABB(centre[cards[0]], Vector3.ZERO)
+	for piece: int in cards:
+		box = box.expand(centre[piece])
+	var codes: Dictionary = {}  # a card -> its place on the curve, ties in the pieces' order
+	for piece: int in cards:
+		var at: Vector3 = (centre[piece] - box.position) / box.size.max(Vector3.ONE * 1e-9)
+		codes[piece] = _morton(at) * count + piece
+	var along: Array[int] = []
+	along.assign(Array(cards))
+	along.sort_custom(func(a: int, b: int) -> bool: return codes[a] < codes[b])
+	var bits: int = maxi(1, ceili(log(float(along.size())) / log(2.0)))
+	var rank: Dictionary = {}
+	for place: int in along.size():
+		rank[along[place]] = _reversed(place, bits) * along.size() + place
+	var order: Array[int] = along.duplicate()
+	order.sort_custom(func(a: int, b: int) -> bool: return rank[a] < rank[b])
+	for k: int in range(kept, order.size()):
+		keeps[order[k]] = 0
 	return keeps
 
 

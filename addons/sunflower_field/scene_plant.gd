@@ -11,7 +11,8 @@ extends RefCounted
 ## and 3 simplified from level 1 by the engine's mesh simplifier ([method ImporterMesh.generate_lods]),
 ## to about [constant LEVEL_SHARES] of its triangles where a surface keeps [constant AREA_KEPT] of its
 ## area, or its smallest pieces dropped (twigs), and its foliage cards thinned to fewer, bigger leaves
-## ([code]mesh_pieces.gd[/code]).
+## ([code]mesh_pieces.gd[/code]). At every level, foliage cards that stand on the plant's base and
+## span most of its height are cut into slices so that they bend ([code]card_slices.gd[/code]).
 
 ## The share of level 1's triangles each mesh level is simplified to when the scene has no variants.
 const LEVEL_SHARES: Array[float] = [1.0, 0.5, 0.2]
@@ -40,6 +41,7 @@ const WholePlantMesh: GDScript = preload("whole_plant_mesh.gd")
 const ScenePieces: GDScript = preload("scene_pieces.gd")
 const MeshPieces: GDScript = preload("mesh_pieces.gd")
 const PlantCover: GDScript = preload("plant_cover.gd")
+const CardSlices: GDScript = preload("card_slices.gd")
 
 
 ## The scene's three mesh levels as ArrayMeshes (null where the scene has nothing to draw), with
@@ -66,12 +68,33 @@ static func levels_of(scene: PackedScene) -> Dictionary:
 				levels[level] = levels[level - 1]  # fewer variants than levels: the last repeats
 	else:
 		levels.append_array(_simplified(levels[0]))
+	var bounds: AABB = levels[0].get_aabb() if levels[0] != null else AABB()
+	var bendable: Dictionary = {}  # a level's mesh -> it with its tall cards sliced (a mesh repeats)
+	for level: int in levels.size():
+		if levels[level] != null:
+			if not bendable.has(levels[level]):
+				bendable[levels[level]] = _tall_cards_sliced(levels[level], bounds)
+			levels[level] = bendable[levels[level]]
 	return {
 		"levels": levels,
 		"generated": not variants,
 		"triangles": levels.map(func(mesh: Mesh) -> int: return triangle_count(mesh)),
 		"problems": problems,
 	}
+
+
+## [param mesh] with the tall standing cards of its surfaces sliced so that they bend (level 1's
+## [param bounds]; [code]card_slices.gd[/code]); itself when it has none.
+static func _tall_cards_sliced(mesh: ArrayMesh, bounds: AABB) -> ArrayMesh:
+	var sliced: ArrayMesh = ArrayMesh.new()
+	var changed: bool = false
+	for surface: int in mesh.get_surface_count():
+		var arrays: Array = mesh.surface_get_arrays(surface)
+		var cut: Array = CardSlices.sliced(arrays, bounds)
+		changed = changed or cut != arrays
+		sliced.add_surface_from_arrays(Mesh.PRIMITIVE_TRIANGLES, cut)
+		sliced.surface_set_material(surface, mesh.surface_get_material(surface))
+	return sliced if changed else mesh
 
 
 ## Why [param mesh] (a plant's merged level 1) makes no plant, or "" when it makes one: nothing, or

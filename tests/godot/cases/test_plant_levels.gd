@@ -1,6 +1,7 @@
 extends TestCase
 ## A plant's generated mesh levels (scene_plant.gd, mesh_pieces.gd, plant_cover.gd): fewer triangles, the foliage
-## cards thinned to fewer and bigger ones, the cover kept where each level begins.
+## cards thinned to fewer and bigger ones, the cover kept where each level begins; tall standing cards
+## sliced so that they bend (card_slices.gd).
 
 const Picture: GDScript = preload("res://runner/picture.gd")
 const Stage: GDScript = preload("res://runner/stage.gd")
@@ -8,6 +9,7 @@ const Maps: GDScript = preload("res://runner/maps.gd")
 const Scenes: GDScript = preload("res://runner/scenes.gd")
 const ScenePlant: GDScript = preload("res://addons/sunflower_field/scene_plant.gd")
 const MeshPieces: GDScript = preload("res://addons/sunflower_field/mesh_pieces.gd")
+const CardSlices: GDScript = preload("res://addons/sunflower_field/card_slices.gd")
 ## The Sapling test plants (TEST_PLANTS in TEST_PLANT_FOLDER).
 const ScenePlantTests: GDScript = preload("res://cases/test_scene_plant.gd")
 
@@ -163,6 +165,64 @@ func test_foliage_cards_thin_to_fewer_of_the_same_area() -> void:
 		again[Mesh.ARRAY_VERTEX],
 		cards.cards_thinned(0.5, cards.area_growth(0.5), wide)[Mesh.ARRAY_VERTEX],
 		"the same cards each time"
+	)
+
+
+## Cards standing on the base and spanning most of the plant are sliced so that they bend: each of
+## their triangles within one slice of the height, the area, the cards and their facing kept; a leaf
+## off the base, and a short blade, left as they are.
+func test_tall_standing_cards_are_sliced_and_stay_whole() -> void:
+	var positions: PackedVector3Array = []
+	var indices: PackedInt32Array = []
+	var corners: Array[PackedVector3Array] = [
+		PackedVector3Array([Vector3(0, 0, 0), Vector3(0.1, 0, 0), Vector3(0.1, 1, 0.2), Vector3(0, 1, 0.2)]),  # a blade
+		PackedVector3Array([Vector3(1, 0, 0), Vector3(1.1, 0, 0), Vector3(1.1, 0.3, 0), Vector3(1, 0.3, 0)]),  # short
+		PackedVector3Array([Vector3(2, 0.3, 0), Vector3(2.2, 0.3, 0), Vector3(2.2, 0.9, 0), Vector3(2, 0.9, 0)]),  # a leaf
+	]
+	for card: PackedVector3Array in corners:
+		var first: int = positions.size()
+		positions.append_array(card)
+		indices.append_array(PackedInt32Array([first, first + 1, first + 2, first, first + 2, first + 3]))
+	var arrays: Array = []
+	arrays.resize(Mesh.ARRAY_MAX)
+	arrays[Mesh.ARRAY_VERTEX] = positions
+	arrays[Mesh.ARRAY_INDEX] = indices
+	var uvs: PackedVector2Array = []
+	for vertex: Vector3 in positions:
+		uvs.append(Vector2(vertex.x, vertex.y))
+	arrays[Mesh.ARRAY_TEX_UV] = uvs
+	var bounds: AABB = AABB(Vector3(0, 0, 0), Vector3(2.2, 1, 0.2))
+	var sliced: Array = CardSlices.sliced(arrays, bounds)
+	var out: PackedVector3Array = sliced[Mesh.ARRAY_VERTEX]
+	var out_indices: PackedInt32Array = sliced[Mesh.ARRAY_INDEX]
+	var slice: float = 1.0 / CardSlices.SLICES
+	var blade: int = 0
+	var facing_kept: bool = true
+	var uv_kept: bool = true
+	for k: int in range(0, out_indices.size(), 3):
+		var a: Vector3 = out[out_indices[k]]
+		var b: Vector3 = out[out_indices[k + 1]]
+		var c: Vector3 = out[out_indices[k + 2]]
+		if maxf(a.x, maxf(b.x, c.x)) < 0.5:
+			blade += 1
+			check(
+				maxf(a.y, maxf(b.y, c.y)) - minf(a.y, minf(b.y, c.y)) <= slice + 1e-5,
+				"a blade's triangle within a slice"
+			)
+			facing_kept = facing_kept and (b - a).cross(c - a).dot(Vector3(0, -0.2, 1)) > 0.0
+		for vertex: int in [out_indices[k], out_indices[k + 1], out_indices[k + 2]]:
+			var uv: Vector2 = (sliced[Mesh.ARRAY_TEX_UV] as PackedVector2Array)[vertex]
+			uv_kept = uv_kept and uv.is_equal_approx(Vector2(out[vertex].x, out[vertex].y))
+	check(blade >= 2 * CardSlices.SLICES, "the blade is cut into its slices (%d triangles)" % blade)
+	check(facing_kept, "its triangles face as it did")
+	check(uv_kept, "the cut vertices' texture coordinates interpolated")
+	check_eq(out_indices.size() / 3 - blade, 4, "the short blade and the leaf as they were")
+	check_near(_area_of(sliced), _area_of(arrays), 1e-4, "the area kept")
+	check_eq(MeshPieces.new(sliced).count, 3, "three cards still, each in one piece")
+	check_eq(
+		CardSlices.sliced(arrays, AABB(Vector3(0, 0, 0), Vector3(2.2, 3, 0.2))),
+		arrays,
+		"no card spans a plant three times as tall"
 	)
 
 
