@@ -2,7 +2,7 @@ extends SceneTree
 ## Renders a plant's impostor atlases with the addon's baker (addons/sunflower_field/impostor_baker.gd,
 ## the editor's "Bake impostors"), into the given folder as <name>_views.png, <name>_normals.png and <name>_depths.png:
 ## the built-in sunflower ("sunflower"), or the plant resource given with its name; the alpha cuts
-## the bake measures go into the plant's .tres ([member FieldPlant.impostor_alpha_cuts]).
+## the bake measures go into the plant's .tres ([member SunflowerPlant.impostor_alpha_cuts]).
 ##
 ## Needs a real renderer (not --headless): xvfb-run godot --path <project with the addon> \
 ##     --script assets/bake_impostors.gd -- <output folder> [<plant .tres> <name>]
@@ -18,14 +18,16 @@ func _init() -> void:
 
 
 func _bake(out_dir: String, plant_path: String, base_name: String) -> void:
-	var source: FieldPlant = FieldPlant.default_plant() if plant_path.is_empty() else load(plant_path) as FieldPlant
+	var source: SunflowerPlant = (
+		SunflowerPlant.default_plant() if plant_path.is_empty() else load(plant_path) as SunflowerPlant
+	)
 	if source == null:
 		printerr("cannot load the plant %s" % plant_path)
 		quit(1)
 		return
-	var plant: FieldPlant = source.duplicate() as FieldPlant
+	var plant: SunflowerPlant = source.duplicate() as SunflowerPlant
 	var result: Error = await plant.bake_impostors(root, out_dir, base_name)
-	for kind: String in FieldPlant.IMPOSTOR_TEXTURES:
+	for kind: String in SunflowerPlant.IMPOSTOR_TEXTURES:
 		print("%s: %s %s" % [kind, out_dir.path_join("%s_%s.png" % [base_name, kind]), error_string(result)])
 	if result == OK:
 		result = _write_alpha_cuts(source.resource_path, plant.impostor_alpha_cuts)

@@ -6,7 +6,7 @@ extends SceneTree
 ## Run: godot --headless --path <any project> --script assets/generate_sunflower.gd -- <out dir> [red]
 ## Writes sunflower_lod{1,2,3}_{bottom,middle,head}.res into <out dir> and prints triangle counts.
 ## With "red": the same plant as a red-petalled cultivar ("red_sunflower_lod…"), the addon's second
-## plant type (plants/red_sunflower.tres), drawn lower by its FieldPlant.
+## plant type (plants/red_sunflower.tres), drawn lower by its SunflowerPlant.
 
 const STEM_GREEN: Color = Color(0.23, 0.42, 0.11)
 const LEAF_GREEN: Color = Color(0.20, 0.45, 0.10)

@@ -21,7 +21,7 @@ import xml.etree.ElementTree as ET
 REPO = pathlib.Path(__file__).resolve().parent.parent
 API = REPO / "docs" / "api"
 # The classes a user meets, in the order the index lists them.
-CLASSES = ["SunflowerField", "SunflowerFieldPlay", "FieldPlant", "SunflowerWind", "SunflowerFieldMap", "SunflowerPlacementRules",
+CLASSES = ["SunflowerField", "SunflowerFieldPlay", "SunflowerPlant", "SunflowerWind", "SunflowerFieldMap", "SunflowerPlacementRules",
            "SunflowerPlacementLayer", "SunflowerSimulation", "SunflowerPlacement"]
 ENGINE_DOCS = "https://docs.godotengine.org/en/stable/classes/class_{}.html"
 

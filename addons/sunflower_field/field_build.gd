@@ -26,7 +26,7 @@ class Job:
 	var text: PackedByteArray
 	var source: String
 	var legend: String
-	## The legend as the node had it (symbol → PackedScene or FieldPlant): the scenes it places.
+	## The legend as the node had it (symbol → PackedScene or SunflowerPlant): the scenes it places.
 	var scenes: Dictionary
 	var max_plants: int
 	var cheap_shadows: bool = true
@@ -42,7 +42,7 @@ class Job:
 	var error: String = ""
 	var usec: int = 0
 
-	## A job for [param field]'s map and layout properties and [param species_plants] (a FieldPlant
+	## A job for [param field]'s map and layout properties and [param species_plants] (a SunflowerPlant
 	## per species), filling [param native_simulation].
 	static func for_field(field: Node3D, species_plants: Array, native_simulation: NativeField) -> Job:
 		var job: Job = Job.new()

@@ -69,7 +69,7 @@ var impostor_sets: Array[ImpostorSet] = []
 var budget: FieldBudget = FieldBudget.new()
 ## The GPU-time target (0: none) and least quality the node sets, offered to its viewport's budget.
 var gpu_target_ms: float = 0.0
-## The plant types drawn (FieldPlant): species 0 the node's plant ('*'), then the legend's.
+## The plant types drawn (SunflowerPlant): species 0 the node's plant ('*'), then the legend's.
 var plants: Array = []
 var _layout_key: Array = []
 var _shared: Dictionary = {}  # shader parameters every impostor set gets
@@ -242,7 +242,7 @@ func update_field(delta: float) -> void:
 		)
 
 
-## Draws [param species_plants] (FieldPlant per species): their impostor textures and frames, and
+## Draws [param species_plants] (SunflowerPlant per species): their impostor textures and frames, and
 ## their meshes on the field drawn. True when a layout value or the plant types changed, so the
 ## field must be rebuilt.
 func configure_plants(species_plants: Array) -> bool:
@@ -333,7 +333,7 @@ func _send_lod() -> void:
 
 
 ## Tells each plant type's far tiles from where they cast the near plants' shadows
-## (SunflowerField.impostor_shadows_from, for a type whose FieldPlant.impostor_shadows is on: the
+## (SunflowerField.impostor_shadows_from, for a type whose SunflowerPlant.impostor_shadows is on: the
 ## switch to that level at the type's scale and the budget's quality, less the hysteresis and
 ## NEAR_SHADOW_MARGIN; −1: never), and the field drawn
 ## which mesh levels cast from meshes. With force_lod every plant casts from what it is drawn with.

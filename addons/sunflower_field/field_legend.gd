@@ -1,6 +1,6 @@
 @tool
 extends RefCounted
-## A field's legend ([member SunflowerField.legend]: symbol → PackedScene or FieldPlant) read as the
+## A field's legend ([member SunflowerField.legend]: symbol → PackedScene or SunflowerPlant) read as the
 ## native map parser needs it: the object symbols, the plant types' symbols (species 1, 2, … in
 ## order) and their plants. A key that is not one character other than '*', ' ' and '.' is warned
 ## about and left out.
@@ -10,7 +10,7 @@ extends RefCounted
 static func object_symbols(legend: Dictionary) -> String:
 	var symbols: String = ""
 	for key: Variant in _usable_keys(legend, true):
-		if not (legend[key] is FieldPlant):
+		if not (legend[key] is SunflowerPlant):
 			symbols += str(key)
 	return symbols
 
@@ -19,17 +19,17 @@ static func object_symbols(legend: Dictionary) -> String:
 static func plant_symbols(legend: Dictionary) -> String:
 	var symbols: String = ""
 	for key: Variant in _usable_keys(legend, false):
-		if legend[key] is FieldPlant:
+		if legend[key] is SunflowerPlant:
 			symbols += str(key)
 	return symbols
 
 
 ## The legend's plant types, in the order of [method plant_symbols].
-static func plants(legend: Dictionary) -> Array[FieldPlant]:
-	var plants: Array[FieldPlant] = []
+static func plants(legend: Dictionary) -> Array[SunflowerPlant]:
+	var plants: Array[SunflowerPlant] = []
 	for key: Variant in _usable_keys(legend, false):
-		if legend[key] is FieldPlant:
-			plants.append(legend[key] as FieldPlant)
+		if legend[key] is SunflowerPlant:
+			plants.append(legend[key] as SunflowerPlant)
 	return plants
 
 

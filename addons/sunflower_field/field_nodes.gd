@@ -36,7 +36,7 @@ var tiles: FarTileTable
 var cheap_shadows: bool = true
 ## Per species: near plants drawn at this mesh level (0–2) or coarser cast no shadows from their
 ## meshes, their tile's impostor casts for them (see SunflowerField.impostor_shadows_from and
-## FieldPlant.impostor_shadows); 3, or no entry: every mesh level casts. Set by
+## SunflowerPlant.impostor_shadows); 3, or no entry: every mesh level casts. Set by
 ## [method set_impostor_shadows_from].
 var impostor_shadows_from: PackedInt32Array = []
 ## Tile nodes made, and taken over from the previous field, by this field's build.
@@ -235,7 +235,7 @@ func get_tile_progress() -> float:
 
 
 ## Completes the field: the near plants' bucket nodes and the legend's scenes, then shows it all.
-## [param species_plants] holds each species' FieldPlant: a plant drawn whole gets one node per
+## [param species_plants] holds each species' SunflowerPlant: a plant drawn whole gets one node per
 ## level ([code]Mesh1[/code]…), any other one per level and part ([code]Mesh1Bottom[/code]…). The
 ## near plants' bounds reach [param sway_margin] metres past the chunks' (a swaying plant's lean).
 func finish(species_plants: Array, legend: Dictionary, cell_size: float, sway_margin: float) -> void:
@@ -350,7 +350,7 @@ static func _show_image(texture: ImageTexture, image: Image) -> ImageTexture:
 
 
 ## Near plants of species s from mesh [code]levels[s][/code] on cast no mesh shadows (the far tiles'
-## casters cast for them: SunflowerField.impostor_shadows_from, FieldPlant.impostor_shadows); nearer
+## casters cast for them: SunflowerField.impostor_shadows_from, SunflowerPlant.impostor_shadows); nearer
 ## levels cast from their meshes or their shadow twins. 3: every mesh level casts.
 func set_impostor_shadows_from(levels: PackedInt32Array) -> void:
 	if levels != impostor_shadows_from:

@@ -131,7 +131,7 @@ func refresh() -> void:
 	_symbols.add_item("* (%s)" % _field.get_plant_types()[0].name)
 	for key: Variant in _field.legend:
 		var value: Variant = _field.legend[key]
-		var what: String = (value as FieldPlant).name if value is FieldPlant else "object"
+		var what: String = (value as SunflowerPlant).name if value is SunflowerPlant else "object"
 		_symbols.add_item("%s (%s)" % [str(key), what])
 	symbol = "*"
 	_symbols.select(0)

@@ -1,6 +1,6 @@
 @tool
 @icon("icons/field_plant.svg")
-class_name FieldPlant
+class_name SunflowerPlant
 extends Resource
 ## One kind of plant for a [SunflowerField]: its three parts at each mesh level, how they stack,
 ## its height and variety, and the impostor textures of its far levels.
@@ -37,7 +37,7 @@ const EMISSION_TEXTURE: String = "emission"
 ## The optional impostor texture of the light a plant's leaves let through (see [member impostor_backlight]).
 const BACKLIGHT_TEXTURE: String = "backlight"
 
-static var _default: FieldPlant
+static var _default: SunflowerPlant
 
 ## A name for the plant (menus, warnings).
 @export var name: String = "Sunflower":
@@ -49,7 +49,7 @@ static var _default: FieldPlant
 ## Height from the root to the top of the parts, metres.
 @export_range(0.01, 50.0, 0.01, "or_greater", "suffix:m") var height: float = 2.0:
 	set(value):
-		var accepted: float = Native.accept("FieldPlant.height", value, height)
+		var accepted: float = Native.accept("SunflowerPlant.height", value, height)
 		if accepted != height:
 			height = accepted
 			emit_changed()
@@ -104,9 +104,9 @@ static var _default: FieldPlant
 @export var part_lengths: Vector3 = Vector3(1.0, 1.0, 1.0):
 	set(value):
 		var accepted: Vector3 = Vector3(
-			Native.accept("FieldPlant.part_lengths", value.x, part_lengths.x),
-			Native.accept("FieldPlant.part_lengths", value.y, part_lengths.y),
-			Native.accept("FieldPlant.part_lengths", value.z, part_lengths.z)
+			Native.accept("SunflowerPlant.part_lengths", value.x, part_lengths.x),
+			Native.accept("SunflowerPlant.part_lengths", value.y, part_lengths.y),
+			Native.accept("SunflowerPlant.part_lengths", value.z, part_lengths.z)
 		)
 		if accepted != part_lengths:
 			part_lengths = accepted
@@ -115,7 +115,7 @@ static var _default: FieldPlant
 ## them, such as petals): the impostor quads' height.
 @export_range(0.01, 100.0, 0.01, "or_greater") var height_units: float = 3.2:
 	set(value):
-		var accepted: float = Native.accept("FieldPlant.height_units", value, height_units)
+		var accepted: float = Native.accept("SunflowerPlant.height_units", value, height_units)
 		if accepted != height_units:
 			height_units = accepted
 			emit_changed()
@@ -123,7 +123,7 @@ static var _default: FieldPlant
 ## largest bend with its leaves: culling and chunk bounds use it.
 @export_range(0.01, 100.0, 0.01, "or_greater") var cull_radius_units: float = 1.9:
 	set(value):
-		var accepted: float = Native.accept("FieldPlant.cull_radius_units", value, cull_radius_units)
+		var accepted: float = Native.accept("SunflowerPlant.cull_radius_units", value, cull_radius_units)
 		if accepted != cull_radius_units:
 			cull_radius_units = accepted
 			emit_changed()
@@ -145,7 +145,7 @@ static var _default: FieldPlant
 	set(value):
 		var accepted: float = value if value >= 0.0 and is_finite(value) else lod_scale
 		if accepted != value:
-			push_warning("FieldPlant.lod_scale: %s is not a scale (0 or more); keeping %s" % [value, lod_scale])
+			push_warning("SunflowerPlant.lod_scale: %s is not a scale (0 or more); keeping %s" % [value, lod_scale])
 		if accepted != lod_scale:
 			lod_scale = accepted
 			emit_changed()
@@ -154,7 +154,7 @@ static var _default: FieldPlant
 ## [member SunflowerWind.stiffness_bottom]): 2 bends half as far as the sunflower, 0.5 twice as far.
 @export_range(0.05, 20.0, 0.01) var stiffness: float = 1.0:
 	set(value):
-		var accepted: float = Native.accept("FieldPlant.stiffness", value, stiffness)
+		var accepted: float = Native.accept("SunflowerPlant.stiffness", value, stiffness)
 		if accepted != stiffness:
 			stiffness = accepted
 			emit_changed()
@@ -165,7 +165,7 @@ static var _default: FieldPlant
 ## impostors do not flutter (their sway follows the bend).
 @export_range(0.0, 1.0, 0.01) var flutter: float = 0.0:
 	set(value):
-		var accepted: float = Native.accept("FieldPlant.flutter", value, flutter)
+		var accepted: float = Native.accept("SunflowerPlant.flutter", value, flutter)
 		if accepted != flutter:
 			flutter = accepted
 			emit_changed()
@@ -175,28 +175,28 @@ static var _default: FieldPlant
 ## thesis' s' = s + α/10).
 @export_range(0.0, 10.0, 0.01) var middle_variation: float = 0.1:
 	set(value):
-		var accepted: float = Native.accept("FieldPlant.middle_variation", value, middle_variation)
+		var accepted: float = Native.accept("SunflowerPlant.middle_variation", value, middle_variation)
 		if accepted != middle_variation:
 			middle_variation = accepted
 			emit_changed()
 ## Each plant turns up to this much either side of facing +z (seeded).
 @export_range(0.0, 180.0, 0.1, "radians_as_degrees") var yaw_range: float = 0.35:
 	set(value):
-		var accepted: float = Native.accept("FieldPlant.yaw_range", value, yaw_range)
+		var accepted: float = Native.accept("SunflowerPlant.yaw_range", value, yaw_range)
 		if accepted != yaw_range:
 			yaw_range = accepted
 			emit_changed()
 ## Each plant's size factor is drawn from [member scale_min] to [member scale_max] (seeded).
 @export_range(0.01, 100.0, 0.01) var scale_min: float = 1.0:
 	set(value):
-		var accepted: float = Native.accept("FieldPlant.scale_min", value, scale_min)
+		var accepted: float = Native.accept("SunflowerPlant.scale_min", value, scale_min)
 		if accepted != scale_min:
 			scale_min = accepted
 			emit_changed()
 ## See [member scale_min].
 @export_range(0.01, 100.0, 0.01) var scale_max: float = 1.0:
 	set(value):
-		var accepted: float = Native.accept("FieldPlant.scale_max", value, scale_max)
+		var accepted: float = Native.accept("SunflowerPlant.scale_max", value, scale_max)
 		if accepted != scale_max:
 			scale_max = accepted
 			emit_changed()
@@ -206,7 +206,7 @@ static var _default: FieldPlant
 ## impostors.
 @export_range(0.0, 1.0, 0.01) var brightness_variation: float = 0.0:
 	set(value):
-		var accepted: float = Native.accept("FieldPlant.brightness_variation", value, brightness_variation)
+		var accepted: float = Native.accept("SunflowerPlant.brightness_variation", value, brightness_variation)
 		if accepted != brightness_variation:
 			brightness_variation = accepted
 			emit_changed()
@@ -214,7 +214,7 @@ static var _default: FieldPlant
 ## way; seeded), like [member brightness_variation].
 @export_range(0.0, 1.0, 0.01) var tint_variation: float = 0.0:
 	set(value):
-		var accepted: float = Native.accept("FieldPlant.tint_variation", value, tint_variation)
+		var accepted: float = Native.accept("SunflowerPlant.tint_variation", value, tint_variation)
 		if accepted != tint_variation:
 			tint_variation = accepted
 			emit_changed()
@@ -225,14 +225,14 @@ static var _default: FieldPlant
 ## it lies for good.
 @export_range(0.0, 3600.0, 0.1, "or_greater", "suffix:s") var recover_after: float = 0.0:
 	set(value):
-		var accepted: float = Native.accept("FieldPlant.recover_after", value, recover_after)
+		var accepted: float = Native.accept("SunflowerPlant.recover_after", value, recover_after)
 		if accepted != recover_after:
 			recover_after = accepted
 			emit_changed()
 ## Seconds on the field's clock until a cut plant of this type has grown again; 0: it stays cut.
 @export_range(0.0, 3600.0, 0.1, "or_greater", "suffix:s") var regrow_after: float = 0.0:
 	set(value):
-		var accepted: float = Native.accept("FieldPlant.regrow_after", value, regrow_after)
+		var accepted: float = Native.accept("SunflowerPlant.regrow_after", value, regrow_after)
 		if accepted != regrow_after:
 			regrow_after = accepted
 			emit_changed()
@@ -242,7 +242,7 @@ static var _default: FieldPlant
 ## bottom part of its own and leaves nothing (the field warns).
 @export_range(0.0, 2.0, 0.01, "or_greater", "suffix:m") var stump_height: float = 0.0:
 	set(value):
-		var accepted: float = Native.accept("FieldPlant.stump_height", value, stump_height)
+		var accepted: float = Native.accept("SunflowerPlant.stump_height", value, stump_height)
 		if accepted != stump_height:
 			stump_height = accepted
 			emit_changed()
@@ -286,7 +286,7 @@ static var _default: FieldPlant
 ## make the far levels glow less than the meshes); set it yourself for an atlas made elsewhere.
 @export_range(1.0, 32768.0, 1.0) var impostor_emission_range: float = 8.0:
 	set(value):
-		var accepted: float = Native.accept("FieldPlant.impostor_emission_range", value, impostor_emission_range)
+		var accepted: float = Native.accept("SunflowerPlant.impostor_emission_range", value, impostor_emission_range)
 		if accepted != impostor_emission_range:
 			impostor_emission_range = accepted
 			emit_changed()
@@ -317,7 +317,7 @@ static var _default: FieldPlant
 ## shade each other (0.03 suits the sunflower; more shades a lone plant's own leaves with specks).
 @export_range(0.0, 0.5, 0.01) var impostor_shadow_shift: float = 0.03:
 	set(value):
-		var accepted: float = Native.accept("FieldPlant.impostor_shadow_shift", value, impostor_shadow_shift)
+		var accepted: float = Native.accept("SunflowerPlant.impostor_shadow_shift", value, impostor_shadow_shift)
 		if accepted != impostor_shadow_shift:
 			impostor_shadow_shift = accepted
 			emit_changed()
@@ -334,19 +334,19 @@ var _field_meshes: Dictionary = {}  # a part mesh → the mesh the field draws i
 ## error, for a scene that draws nothing (no mesh, or no triangle with area); a warning for what it
 ## leaves out and for a plant that stands wholly below or far above its root.
 ## Bake its impostors next ([method bake_impostors]; the editor's plant inspector does it at once).
-static func from_scene(scene: PackedScene) -> FieldPlant:
+static func from_scene(scene: PackedScene) -> SunflowerPlant:
 	var source: String = scene.resource_path if scene and scene.resource_path else "(unsaved scene)"
 	var made: Dictionary = ScenePlant.levels_of(scene)
 	for problem: String in made.problems:
-		push_warning("FieldPlant.from_scene: %s: %s" % [source, problem])
+		push_warning("SunflowerPlant.from_scene: %s: %s" % [source, problem])
 	var refused: String = ScenePlant.refusal(made.levels[0])
 	if not refused.is_empty():
-		push_error("FieldPlant.from_scene: %s %s" % [source, refused])
+		push_error("SunflowerPlant.from_scene: %s %s" % [source, refused])
 		return null
 	var placement: String = ScenePlant.placement_problem(made.levels[0])
 	if not placement.is_empty():
-		push_warning("FieldPlant.from_scene: %s: %s" % [source, placement])
-	var plant: FieldPlant = FieldPlant.new()
+		push_warning("SunflowerPlant.from_scene: %s: %s" % [source, placement])
+	var plant: SunflowerPlant = SunflowerPlant.new()
 	plant.name = source.get_file().get_basename() if scene.resource_path else "Plant"
 	plant.mesh_level_1 = [made.levels[0], null, null]
 	plant.mesh_level_2 = [made.levels[1], null, null]
@@ -372,7 +372,7 @@ func fit_to_meshes() -> void:
 				points.append(point + Vector3(0.0, base, 0.0))
 		base += lengths[part]
 	if points.is_empty():
-		push_warning("FieldPlant.fit_to_meshes: '%s' has no level-1 mesh to fit to" % name)
+		push_warning("SunflowerPlant.fit_to_meshes: '%s' has no level-1 mesh to fit to" % name)
 		return
 	var top: float = 0.0
 	var reach: float = 0.0
@@ -393,9 +393,9 @@ func fit_to_meshes() -> void:
 
 
 ## The built-in sunflower (shared: duplicate it before changing it).
-static func default_plant() -> FieldPlant:
+static func default_plant() -> SunflowerPlant:
 	if _default == null:
-		_default = load(DEFAULT_PATH) as FieldPlant
+		_default = load(DEFAULT_PATH) as SunflowerPlant
 	return _default
 
 
@@ -441,7 +441,7 @@ func stacked_lengths() -> Vector3:
 func stacking_problems() -> PackedStringArray:
 	var problems: PackedStringArray = []
 	if mesh_level_1.all(func(mesh: Mesh) -> bool: return mesh == null):
-		problems.append("FieldPlant '%s' has no mesh in mesh_level_1: its plants are not drawn near." % name)
+		problems.append("SunflowerPlant '%s' has no mesh in mesh_level_1: its plants are not drawn near." % name)
 	for level: int in PartMeshes.LEVELS:
 		var parts: Array[Mesh] = _level(level)
 		var top: int = -1
@@ -452,7 +452,7 @@ func stacking_problems() -> PackedStringArray:
 			if parts[part] == null:
 				problems.append(
 					(
-						"FieldPlant '%s': mesh_level_%d's %s slot is empty below its %s, which floats over the gap."
+						"SunflowerPlant '%s': mesh_level_%d's %s slot is empty below its %s, which floats over the gap."
 						% [name, level + 1, PartMeshes.PART_NAMES[part], PartMeshes.PART_NAMES[top]]
 					)
 				)
@@ -511,7 +511,7 @@ func texture_drawn(kind: String) -> Texture2D:
 func lod_scale_used() -> float:
 	if lod_scale > 0.0:
 		return lod_scale
-	return maxf(height, width_metres()) / float((FieldPlant as Script).get_property_default_value(&"height"))
+	return maxf(height, width_metres()) / float((SunflowerPlant as Script).get_property_default_value(&"height"))
 
 
 ## The plant's width in metres at its size factor 1: [member impostor_width] at [member height].
@@ -608,4 +608,4 @@ static func _positive(value: float, fallback: float) -> float:
 ## The inspector's range hints take their limits from the core's table (native.gd: [code]range_hint[/code]).
 func _validate_property(property: Dictionary) -> void:
 	if property["hint"] == PROPERTY_HINT_RANGE:
-		property["hint_string"] = Native.range_hint("FieldPlant." + property["name"], property["hint_string"])
+		property["hint_string"] = Native.range_hint("SunflowerPlant." + property["name"], property["hint_string"])

@@ -1,10 +1,10 @@
 @tool
 extends RefCounted
-## Bakes a [FieldPlant]'s multi-view impostor: renders its level-1 parts (a coarser level when
+## Bakes a [SunflowerPlant]'s multi-view impostor: renders its level-1 parts (a coarser level when
 ## level 1 has more than [constant BAKE_TRIANGLES] triangles), stacked as the plant
-## stands, from [constant FieldPlant.ATLAS_VIEWS] directions (around it, and from the side up to
+## stands, from [constant SunflowerPlant.ATLAS_VIEWS] directions (around it, and from the side up to
 ## straight above), orthographic, on a transparent background, each view framing the square of
-## [method FieldPlant.impostor_frame] about the plant's middle, into atlases: the colours
+## [method SunflowerPlant.impostor_frame] about the plant's middle, into atlases: the colours
 ## (materials drawn unshaded, albedo only: the field's lights shade the impostors once, like the
 ## meshes), the normals in the plant's own frame, the depths along the view and, when any part
 ## gives off light, the light given off (the parts' own materials lit by nothing), and when any lets
@@ -49,7 +49,7 @@ const SETTLE_FRAMES: int = 1
 ## blurred by it, and a plant whose parts are untextured (the built-in sunflower) bakes the same.
 const TEXTURE_MIP_BIAS: float = 2.0
 ## The emission pass is rendered again with a range this many times wider while a pixel saturates,
-## at most this many times in all: 8 to 8 × 8⁴ = 32 768, [member FieldPlant.impostor_emission_range]'s
+## at most this many times in all: 8 to 8 × 8⁴ = 32 768, [member SunflowerPlant.impostor_emission_range]'s
 ## top.
 const EMISSION_RANGE_STEP: float = 8.0
 const EMISSION_RANGE_STEPS: int = 5
@@ -114,7 +114,7 @@ class Glow:
 ## error after pushing what went wrong. [param progress], when valid, is called with each step's
 ## name and the share of the bake done before it (0–1), a drawn frame ahead of the step.
 static func bake(
-	plant: FieldPlant, host: Node, folder: String = "", base_name: String = "", progress: Callable = Callable()
+	plant: SunflowerPlant, host: Node, folder: String = "", base_name: String = "", progress: Callable = Callable()
 ) -> Error:
 	# The editor draws a frame only when something on screen changed; the bake waits for drawn frames
 	# of its own viewport, so frames are drawn continuously while it runs.
@@ -125,7 +125,7 @@ static func bake(
 	return result
 
 
-static func _bake(plant: FieldPlant, host: Node, folder: String, base_name: String, progress: Callable) -> Error:
+static func _bake(plant: SunflowerPlant, host: Node, folder: String, base_name: String, progress: Callable) -> Error:
 	if plant == null or host == null or not host.is_inside_tree():
 		push_error("Bake impostors: needs a plant and a node in the scene tree to render under")
 		return ERR_INVALID_PARAMETER
@@ -148,8 +148,8 @@ static func _bake(plant: FieldPlant, host: Node, folder: String, base_name: Stri
 	var viewport: SubViewport = stage.viewport
 	host.add_child(viewport)
 	var images: Array[Image] = []
-	var kinds: PackedStringArray = FieldPlant.IMPOSTOR_TEXTURES.duplicate()
-	for kind: String in FieldPlant.IMPOSTOR_TEXTURES:
+	var kinds: PackedStringArray = SunflowerPlant.IMPOSTOR_TEXTURES.duplicate()
+	for kind: String in SunflowerPlant.IMPOSTOR_TEXTURES:
 		_tell(progress, "drawing its " + kind, images.size() / STEPS)
 		if kind != "views":
 			var coded: ShaderMaterial = ShaderMaterial.new()
@@ -171,10 +171,10 @@ static func _bake(plant: FieldPlant, host: Node, folder: String, base_name: Stri
 	var glow: Glow = await _emission(stage, plant)
 	viewport.queue_free()
 	if glow.image:
-		kinds.append(FieldPlant.EMISSION_TEXTURE)
+		kinds.append(SunflowerPlant.EMISSION_TEXTURE)
 		images.append(glow.image)
 	if through:
-		kinds.append(FieldPlant.BACKLIGHT_TEXTURE)
+		kinds.append(SunflowerPlant.BACKLIGHT_TEXTURE)
 		images.append(through)
 	# Writing and importing the atlases take whole frames of their own: their step is drawn first.
 	await _tell_drawn(progress, "writing its atlases", 5.0 / STEPS, host.get_tree())
@@ -211,7 +211,7 @@ static func _tell_drawn(progress: Callable, step: String, done: float, tree: Sce
 ## averaged) that keeps the views' cover: the highest cut that at least the share of the level's
 ## texels reaches that the views' mean alpha gives (a leaf a fraction of a texel wide is that
 ## fraction of alpha, below a fixed cut; the test on this cut draws as many texels as the leaves
-## cover). See [member FieldPlant.impostor_alpha_cuts].
+## cover). See [member SunflowerPlant.impostor_alpha_cuts].
 static func alpha_cuts(image: Image) -> PackedFloat32Array:
 	var levels: Image = image.duplicate() as Image
 	levels.clear_mipmaps()
@@ -303,14 +303,14 @@ static func _black_material(material: Material) -> BaseMaterial3D:
 
 ## The light the parts give off, from the stage of [method _stage] with the parts' own materials,
 ## lit by nothing (no lights, no ambient or reflected light), divided by the smallest range of
-## [member FieldPlant.impostor_emission_range]'s default (8) × [constant EMISSION_RANGE_STEP]^k in
+## [member SunflowerPlant.impostor_emission_range]'s default (8) × [constant EMISSION_RANGE_STEP]^k in
 ## which no pixel saturates (through the exposure; rendered again with the next range while one
 ## does). No image when no pixel glows, or, without rendering, when no part's material can give off
 ## light.
-static func _emission(stage: Stage, plant: FieldPlant) -> Glow:
+static func _emission(stage: Stage, plant: SunflowerPlant) -> Glow:
 	var viewport: SubViewport = stage.viewport
 	var glow: Glow = Glow.new()
-	glow.energy_range = (FieldPlant as Script).get_property_default_value(&"impostor_emission_range")
+	glow.energy_range = (SunflowerPlant as Script).get_property_default_value(&"impostor_emission_range")
 	if not _can_glow(plant, stage.level):
 		return glow
 	for instance: Node in viewport.find_children("*", "MeshInstance3D", true, false):
@@ -348,7 +348,7 @@ static func _emission(stage: Stage, plant: FieldPlant) -> Glow:
 ## Whether any of the parts' materials at mesh [param level] (or their next passes) may give off
 ## light: anything but a StandardMaterial3D or ORMMaterial3D with its emission off (a shader's is not
 ## known without rendering it).
-static func _can_glow(plant: FieldPlant, level: int) -> bool:
+static func _can_glow(plant: SunflowerPlant, level: int) -> bool:
 	for part: int in 3:
 		var mesh: Mesh = plant.mesh_drawn(level, part)
 		if mesh == null:
@@ -367,7 +367,7 @@ static func _can_glow(plant: FieldPlant, level: int) -> bool:
 ## down by [method _average_down] on a worker thread (it takes most of a second for a 120-view
 ## atlas on one core; the editor draws meanwhile). Null when nothing was rendered.
 static func _read_pass(stage: Stage) -> Image:
-	var views: Vector2i = FieldPlant.ATLAS_VIEWS
+	var views: Vector2i = SunflowerPlant.ATLAS_VIEWS
 	var pixels: int = CELL_PIXELS * SUPERSAMPLE
 	var image: Image = null
 	for top: int in range(0, views.y, stage.tile.y):
@@ -407,8 +407,8 @@ static func _average_down(image: Image) -> void:
 ## The direction view (column, row) of the atlas sees the plant from, and the image's right and up,
 ## in the plant's frame: as shaders/impostor.gdshader turns its quad.
 static func view_basis(column: int, row: int) -> Basis:
-	var azimuth: float = TAU * column / FieldPlant.ATLAS_VIEWS.x
-	var elevation: float = 0.5 * PI * row / (FieldPlant.ATLAS_VIEWS.y - 1)
+	var azimuth: float = TAU * column / SunflowerPlant.ATLAS_VIEWS.x
+	var elevation: float = 0.5 * PI * row / (SunflowerPlant.ATLAS_VIEWS.y - 1)
 	var right: Vector3 = Vector3(cos(azimuth), 0.0, -sin(azimuth))
 	var back: Vector3 = Vector3(sin(azimuth) * cos(elevation), sin(elevation), cos(azimuth) * cos(elevation))
 	return Basis(right, back.cross(right), back)
@@ -418,8 +418,8 @@ static func view_basis(column: int, row: int) -> Basis:
 ## per view, each turned so that an orthographic camera looking down −z sees it from its view's
 ## direction in its square, and a transparent background; the viewport and camera one tile of views
 ## large.
-static func _stage(plant: FieldPlant) -> Stage:
-	var views: Vector2i = FieldPlant.ATLAS_VIEWS
+static func _stage(plant: SunflowerPlant) -> Stage:
+	var views: Vector2i = SunflowerPlant.ATLAS_VIEWS
 	var frame: Vector2 = plant.impostor_frame()
 	var stage: Stage = Stage.new()
 	var level: int = bake_level(plant)
@@ -472,7 +472,7 @@ static func _stage(plant: FieldPlant) -> Stage:
 
 ## The mesh level (0–2) the bake draws: the finest of at most [constant BAKE_TRIANGLES] triangles,
 ## else the coarsest.
-static func bake_level(plant: FieldPlant) -> int:
+static func bake_level(plant: SunflowerPlant) -> int:
 	for level: int in 2:
 		if plant.triangle_count(level) <= BAKE_TRIANGLES:
 			return level
@@ -483,7 +483,7 @@ static func bake_level(plant: FieldPlant) -> int:
 ## whole rows while a row fits in [constant TRIANGLES_PER_RENDER], else part of a row; its sides
 ## divide the atlas' so that every tile is whole.
 static func tile_of(triangles: int) -> Vector2i:
-	var views: Vector2i = FieldPlant.ATLAS_VIEWS
+	var views: Vector2i = SunflowerPlant.ATLAS_VIEWS
 	var budget: int = _test_triangles_per_render if _test_triangles_per_render > 0 else TRIANGLES_PER_RENDER
 	var fits: int = maxi(budget / maxi(triangles, 1), 1)
 	var rows: int = _largest_divisor(views.y, fits / views.x)
@@ -507,7 +507,7 @@ static func _largest_divisor(whole: int, most: int) -> int:
 ## hold none): in the editor reimported from the files (and the plant saved when it is a file),
 ## elsewhere made from the images.
 static func _give_textures(
-	plant: FieldPlant, kinds: PackedStringArray, paths: PackedStringArray, images: Array[Image], tree: SceneTree
+	plant: SunflowerPlant, kinds: PackedStringArray, paths: PackedStringArray, images: Array[Image], tree: SceneTree
 ) -> void:
 	var textures: Array[Texture2D] = []
 	var in_project: bool = Engine.is_editor_hint() and paths[0].begins_with("res://")

@@ -1,12 +1,12 @@
 @tool
 extends EditorInspectorPlugin
-## The "Bake impostors" button at the top of the inspector of a [FieldPlant], and of a
+## The "Bake impostors" button at the top of the inspector of a [SunflowerPlant], and of a
 ## [SunflowerField] growing a plant of its own: renders the plant's level-1 parts into its sprite
 ## and billboard textures, saves them beside the plant and reimports them.
 
 
 func _can_handle(object: Object) -> bool:
-	return object is FieldPlant or object is SunflowerField
+	return object is SunflowerPlant or object is SunflowerField
 
 
 func _parse_begin(object: Object) -> void:
@@ -22,7 +22,7 @@ func _parse_begin(object: Object) -> void:
 
 
 func _bake(object: Object, button: Button) -> void:
-	var plant: FieldPlant = object as FieldPlant
+	var plant: SunflowerPlant = object as SunflowerPlant
 	if object is SunflowerField:
 		plant = (object as SunflowerField).plant
 		if plant == null:

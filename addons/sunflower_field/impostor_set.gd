@@ -12,7 +12,7 @@ extends RefCounted
 
 const SHADER: Shader = preload("shaders/impostor.gdshader")
 const SHADOW_SHADER: Shader = preload("shaders/impostor_shadow.gdshader")
-## The shader's sampler of each of [constant FieldPlant.IMPOSTOR_TEXTURES].
+## The shader's sampler of each of [constant SunflowerPlant.IMPOSTOR_TEXTURES].
 const ATLAS_PARAMETERS: Dictionary = {"views": "view_atlas", "normals": "normal_atlas", "depths": "depth_atlas"}
 
 ## The mip levels of the views whose alpha cut the shader takes (its alpha_cuts array): an atlas
@@ -38,15 +38,15 @@ func _init() -> void:
 	caster_material.shader = SHADOW_SHADER
 	caster_material.set_shader_parameter("records_hold_shares", true)
 	tile_caster_material.shader = SHADOW_SHADER
-	_set_all("atlas_views", FieldPlant.ATLAS_VIEWS)
+	_set_all("atlas_views", SunflowerPlant.ATLAS_VIEWS)
 
 
-## Frames the quad and shows the views as [param plant] (a FieldPlant) says.
+## Frames the quad and shows the views as [param plant] (a SunflowerPlant) says.
 func configure(plant: Resource) -> void:
-	for kind: String in FieldPlant.IMPOSTOR_TEXTURES:
+	for kind: String in SunflowerPlant.IMPOSTOR_TEXTURES:
 		set_texture(kind, plant.texture_drawn(kind))
-	set_emission(plant.texture_drawn(FieldPlant.EMISSION_TEXTURE), plant.impostor_emission_range)
-	set_backlight(plant.texture_drawn(FieldPlant.BACKLIGHT_TEXTURE))
+	set_emission(plant.texture_drawn(SunflowerPlant.EMISSION_TEXTURE), plant.impostor_emission_range)
+	set_backlight(plant.texture_drawn(SunflowerPlant.BACKLIGHT_TEXTURE))
 	_stiffness = plant.stiffness
 	# Model units of the bottom part, and of the middle and head above it (how the wind bends them).
 	var lengths: Vector3 = plant.stacked_lengths()
@@ -58,7 +58,7 @@ func configure(plant: Resource) -> void:
 	set_alpha_cuts(plant.impostor_alpha_cuts)
 
 
-## Cuts the views' alpha at each mip level as [param cuts] says ([member FieldPlant.impostor_alpha_cuts]:
+## Cuts the views' alpha at each mip level as [param cuts] says ([member SunflowerPlant.impostor_alpha_cuts]:
 ## at most the shader's 16 levels); none: the field's alpha_scissor raised with distance.
 func set_alpha_cuts(cuts: PackedFloat32Array) -> void:
 	var kept: PackedFloat32Array = cuts.slice(0, ALPHA_CUT_LEVELS)
@@ -68,7 +68,7 @@ func set_alpha_cuts(cuts: PackedFloat32Array) -> void:
 	_set_all("alpha_cut_count", kept.size())
 
 
-## Shows [param texture] as the impostor's [param kind] (one of [constant FieldPlant.IMPOSTOR_TEXTURES]);
+## Shows [param texture] as the impostor's [param kind] (one of [constant SunflowerPlant.IMPOSTOR_TEXTURES]);
 ## null draws it untextured (flat, for depths), with a warning.
 func set_texture(kind: String, texture: Texture2D) -> void:
 	var parameter: String = ATLAS_PARAMETERS[kind]
@@ -99,30 +99,30 @@ func set_texture(kind: String, texture: Texture2D) -> void:
 		_set_all("view_bounds_block", joined_view_bounds(bounds, layout, Vector2i(2, 2)))
 
 
-## Makes the impostors glow with the light [param texture] holds ([member FieldPlant.impostor_emission]),
-## divided by [param energy_range] ([member FieldPlant.impostor_emission_range]); null: none.
+## Makes the impostors glow with the light [param texture] holds ([member SunflowerPlant.impostor_emission]),
+## divided by [param energy_range] ([member SunflowerPlant.impostor_emission_range]); null: none.
 func set_emission(texture: Texture2D, energy_range: float) -> void:
 	_set_all("emission_atlas", texture)
 	_set_all("emission_range", energy_range if texture else 0.0)
 
 
 ## Lets light through the impostors from behind as [param texture] says
-## ([member FieldPlant.impostor_backlight]); null: none.
+## ([member SunflowerPlant.impostor_backlight]); null: none.
 func set_backlight(texture: Texture2D) -> void:
 	_set_all("backlight_atlas", texture)
 	_set_all("has_backlight", texture != null)
 
 
-## The views across and down the atlas [param texture]: [constant FieldPlant.ATLAS_VIEWS]'s columns,
+## The views across and down the atlas [param texture]: [constant SunflowerPlant.ATLAS_VIEWS]'s columns,
 ## and as many rows of elevation as its shape holds, so that an atlas baked with fewer rows (the
 ## baker made 4, 30° apart, then 7, 15° apart, before it made 10) is still drawn right.
-## [constant FieldPlant.ATLAS_VIEWS] without a texture.
+## [constant SunflowerPlant.ATLAS_VIEWS] without a texture.
 static func atlas_layout(texture: Texture2D) -> Vector2i:
-	var columns: int = FieldPlant.ATLAS_VIEWS.x
+	var columns: int = SunflowerPlant.ATLAS_VIEWS.x
 	if texture == null or texture.get_width() <= 0:
-		return FieldPlant.ATLAS_VIEWS
+		return SunflowerPlant.ATLAS_VIEWS
 	var rows: int = roundi(float(texture.get_height()) * columns / texture.get_width())
-	return Vector2i(columns, clampi(rows, 2, FieldPlant.ATLAS_VIEWS.y))
+	return Vector2i(columns, clampi(rows, 2, SunflowerPlant.ATLAS_VIEWS.y))
 
 
 ## What is wrong with the shape of the atlas [param texture], or "" when it is one the baker makes:
@@ -137,7 +137,7 @@ static func atlas_problem(texture: Texture2D) -> String:
 		return ""
 	return (
 		"is %d × %d pixels, not %d square views across and 2–%d rows down"
-		% [size.x, size.y, layout.x, FieldPlant.ATLAS_VIEWS.y]
+		% [size.x, size.y, layout.x, SunflowerPlant.ATLAS_VIEWS.y]
 	)
 
 

@@ -16,7 +16,7 @@ enum Mode {
 }
 
 ## The plant type it places: [code]*[/code] (the field's [member SunflowerField.plant]) or a
-## symbol of the field's legend that names a [FieldPlant]. Not read by [constant Mode].ERASE.
+## symbol of the field's legend that names a [SunflowerPlant]. Not read by [constant Mode].ERASE.
 @export var plant: String = "*"
 ## How its cells meet what earlier layers placed (see [enum Mode]).
 @export var mode: Mode = Mode.PLACE

@@ -1,8 +1,8 @@
 @tool
 extends EditorInspectorPlugin
 ## Above a [SunflowerField]'s [code]plant[/code] property: "Plant from scene…", which takes a scene
-## dropped on it from the FileSystem dock or chosen in a dialog. The scene becomes a [FieldPlant]
-## ([method FieldPlant.from_scene]) saved beside it ([code]<scene>_plant.tres[/code] and its meshes
+## dropped on it from the FileSystem dock or chosen in a dialog. The scene becomes a [SunflowerPlant]
+## ([method SunflowerPlant.from_scene]) saved beside it ([code]<scene>_plant.tres[/code] and its meshes
 ## as [code]<scene>_plant_mesh1.res[/code] …), its impostors are baked at once (a progress bar shows
 ## the steps), and it becomes the field's plant in one undoable action, which also widens the field's
 ## cells to the plant's width when they are narrower (trees 0.5 m apart would stand in each other).
@@ -51,14 +51,14 @@ func _parse_property(
 ## it. Returns the plant, or null when the scene cannot be loaded, has nothing to draw or cannot be
 ## saved (the error names it), or when the field left the edited scene during the bake (a warning says
 ## where the plant is saved). [param button] and [param bar] show the progress when given.
-func make_plant(path: String, field: SunflowerField, button: Button = null, bar: ProgressBar = null) -> FieldPlant:
+func make_plant(path: String, field: SunflowerField, button: Button = null, bar: ProgressBar = null) -> SunflowerPlant:
 	var id: int = field.get_instance_id()
 	if button:
 		_controls[id] = [button, bar]
 	_show_step(id, 0)
 	await _drawn(button != null)  # the step shows before the merge holds the frame
 	var scene: PackedScene = await _loaded(path)
-	var plant: FieldPlant = await _merged(scene) if scene else null
+	var plant: SunflowerPlant = await _merged(scene) if scene else null
 	if scene == null:
 		push_error("Plant from scene: %s is not a scene" % path)
 	if plant == null:
@@ -131,11 +131,11 @@ static func _loaded(path: String) -> PackedScene:
 	return ResourceLoader.load_threaded_get(path) as PackedScene
 
 
-## [method FieldPlant.from_scene] of [param scene] on a worker thread while the editor draws its frames
+## [method SunflowerPlant.from_scene] of [param scene] on a worker thread while the editor draws its frames
 ## (a scene of a million triangles takes seconds to merge and simplify); await it.
-static func _merged(scene: PackedScene) -> FieldPlant:
-	var made: Array[FieldPlant] = [null]
-	var task: int = WorkerThreadPool.add_task(func() -> void: made[0] = FieldPlant.from_scene(scene))
+static func _merged(scene: PackedScene) -> SunflowerPlant:
+	var made: Array[SunflowerPlant] = [null]
+	var task: int = WorkerThreadPool.add_task(func() -> void: made[0] = SunflowerPlant.from_scene(scene))
 	while not WorkerThreadPool.is_task_completed(task):
 		await (Engine.get_main_loop() as SceneTree).process_frame
 	WorkerThreadPool.wait_for_task_completion(task)
@@ -162,7 +162,7 @@ static func _free_base(base: String) -> String:
 
 ## Saves [param plant]'s meshes as [param base]_meshN.res (a level that is the one above's is saved
 ## once) and the plant, naming them, as [param base].tres; each takes its file's path.
-static func _save(plant: FieldPlant, base: String) -> Error:
+static func _save(plant: SunflowerPlant, base: String) -> Error:
 	var saved: Array[Mesh] = []
 	for level: int in 3:
 		var mesh: Mesh = plant.get_part_mesh(level, 0)

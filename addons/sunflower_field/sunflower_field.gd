@@ -14,7 +14,7 @@ extends Node3D
 ## [br][br]
 ## Distances are measured from the [member observer] (by default the active camera; in the editor,
 ## the editor's camera). Keep this node's scale at 1: size the field with [member cell_size] and
-## the [member plant]'s height. The plant (a [FieldPlant]) is the built-in sunflower unless set.
+## the [member plant]'s height. The plant (a [SunflowerPlant]) is the built-in sunflower unless set.
 
 ## Emitted when a field has been built from the map.
 signal field_built(plant_count: int)
@@ -88,17 +88,17 @@ const WIND_PROPERTIES: Dictionary = {
 			_queue_rebuild()
 ## What other map symbols stand for; keys are single characters. A [PackedScene] is placed at the
 ## cell's centre (e.g. [code]{"S": preload("stone.tscn")}[/code], the thesis' "big stone"); a
-## [FieldPlant] makes the cell a plant of that type (e.g. [code]{"m": preload("maize.tres")}[/code]),
+## [SunflowerPlant] makes the cell a plant of that type (e.g. [code]{"m": preload("maize.tres")}[/code]),
 ## with its own levels of detail and impostors, sharing the field's LOD selection, wind and culling.
 @export var legend: Dictionary = {}:
 	set(value):
 		if value == legend:
 			return
-		for old: FieldPlant in FieldLegend.plants(legend):
+		for old: SunflowerPlant in FieldLegend.plants(legend):
 			if old.changed.is_connected(_on_plant_changed):
 				old.changed.disconnect(_on_plant_changed)
 		legend = value
-		for grown: FieldPlant in FieldLegend.plants(legend):
+		for grown: SunflowerPlant in FieldLegend.plants(legend):
 			if not grown.changed.is_connected(_on_plant_changed):
 				grown.changed.connect(_on_plant_changed)
 		_driver.configure_plants(_species_plants())
@@ -106,7 +106,7 @@ const WIND_PROPERTIES: Dictionary = {
 		update_configuration_warnings()
 ## The plant the field grows: its parts, form, variety and impostor textures. Empty: the built-in
 ## sunflower. A plant shared by several fields changes them all.
-@export var plant: FieldPlant:
+@export var plant: SunflowerPlant:
 	set(value):
 		if value == plant:
 			return
@@ -310,7 +310,7 @@ const WIND_PROPERTIES: Dictionary = {
 @export_group("Advanced: levels of detail")
 ## Switch distances: mesh 1 → 2, mesh 2 → 3, mesh 3 → sprite, sprite → billboard (thesis:
 ## 6, 10, 20, 25 m) for a plant of the sunflower's 2 m; each plant type switches at these times its
-## [method FieldPlant.lod_scale_used] (its size over 2 m unless its [member FieldPlant.lod_scale]
+## [method SunflowerPlant.lod_scale_used] (its size over 2 m unless its [member SunflowerPlant.lod_scale]
 ## says otherwise). Must increase.
 @export var lod_distances: PackedFloat32Array = DEFAULT_LOD_DISTANCES:
 	set(value):
@@ -330,7 +330,7 @@ const WIND_PROPERTIES: Dictionary = {
 			_tell_lod()
 ## Metres over which a plant leaving mesh 3 dithers into its impostor (both drawn, complementary
 ## screen-door patterns), ending at the sprite switch less [member lod_hysteresis]: no plant pops
-## from mesh to impostor. Plants drawn whole ([member FieldPlant.draw_whole]) also dither from mesh 1
+## from mesh to impostor. Plants drawn whole ([member SunflowerPlant.draw_whole]) also dither from mesh 1
 ## into 2 and from 2 into 3, over as large a share of this as the switch distance is of the sprite
 ## switch's. Plant materials fade when they dither by the instance colour's alpha, as the addon's
 ## [code]shaders/plant_parts.gdshader[/code] does (the built-in plants use it, and plain
@@ -382,7 +382,7 @@ const WIND_PROPERTIES: Dictionary = {
 		_tell_frame()
 ## A pusher pushes over (tramples: flattens) the standing plants whose roots lie within this share of
 ## its radius, and [signal SunflowerFieldPlay.plants_trampled] tells which (running game only). Trampled plants lie bent
-## until their type's [member FieldPlant.recover_after]. 0: pushers only bend plants.
+## until their type's [member SunflowerPlant.recover_after]. 0: pushers only bend plants.
 @export_range(0.0, 1.0, 0.01) var trample_share: float = 0.0:
 	set(value):
 		trample_share = Native.accept("SunflowerField.trample_share", value, trample_share)
@@ -471,27 +471,27 @@ const WIND_PROPERTIES: Dictionary = {
 var play: SunflowerFieldPlay:
 	get:
 		return _driver.play
-## The plant's height from root to head, metres: the [member plant]'s [member FieldPlant.height]
+## The plant's height from root to head, metres: the [member plant]'s [member SunflowerPlant.height]
 ## (setting it gives the field its own copy of the plant).
 var plant_height: float:
 	get:
 		return _plant().height
 	set(value):
 		_own_plant().height = value
-## The far levels' views of the plant: the [member plant]'s [member FieldPlant.impostor_views]
+## The far levels' views of the plant: the [member plant]'s [member SunflowerPlant.impostor_views]
 ## (setting it gives the field its own copy of the plant).
 var impostor_views: Texture2D:
 	get:
 		return _plant().texture_drawn("views")
 	set(value):
 		_own_plant().impostor_views = value
-## The far levels' normals: the [member plant]'s [member FieldPlant.impostor_normals].
+## The far levels' normals: the [member plant]'s [member SunflowerPlant.impostor_normals].
 var impostor_normals: Texture2D:
 	get:
 		return _plant().texture_drawn("normals")
 	set(value):
 		_own_plant().impostor_normals = value
-## The far levels' depths: the [member plant]'s [member FieldPlant.impostor_depths].
+## The far levels' depths: the [member plant]'s [member SunflowerPlant.impostor_depths].
 var impostor_depths: Texture2D:
 	get:
 		return _plant().texture_drawn("depths")
@@ -740,8 +740,8 @@ func get_frame_stats() -> Dictionary:
 
 ## The plant types grown, species by species: [member plant] (the map's '*'), then the legend's
 ## plants in its order. [method get_lod_counts_by_species] follows this order.
-func get_plant_types() -> Array[FieldPlant]:
-	var types: Array[FieldPlant] = []
+func get_plant_types() -> Array[SunflowerPlant]:
+	var types: Array[SunflowerPlant] = []
 	types.assign(_species_plants())
 	return types
 
@@ -869,13 +869,13 @@ func _get_configuration_warnings() -> PackedStringArray:
 		warnings.append("No observer: set 'observer' or add a current Camera3D; the field keeps its last LOD.")
 	if not scale.is_equal_approx(Vector3.ONE):
 		warnings.append("Keep the field's scale at 1; size it with 'cell_size' and 'plant_height'.")
-	for grown: FieldPlant in _species_plants():
+	for grown: SunflowerPlant in _species_plants():
 		warnings.append_array(grown.stacking_problems())
 		if grown.stump_height > 0.0 and grown.drawn_whole():
 			warnings.append(
 				(
 					(
-						"FieldPlant '%s': stump_height is set, but the plant is drawn whole (no bottom part of its "
+						"SunflowerPlant '%s': stump_height is set, but the plant is drawn whole (no bottom part of its "
 						+ "own): its cut plants leave no stump."
 					)
 					% grown.name
@@ -888,15 +888,15 @@ func _get_configuration_warnings() -> PackedStringArray:
 
 
 ## The plant grown: the one set, else the built-in sunflower.
-func _plant() -> FieldPlant:
-	return plant if plant else FieldPlant.default_plant()
+func _plant() -> SunflowerPlant:
+	return plant if plant else SunflowerPlant.default_plant()
 
 
 ## The plant, made this field's own first when it is the shared built-in sunflower (so changing it
 ## through the node's proxies changes no other field).
-func _own_plant() -> FieldPlant:
-	if plant == null or plant == FieldPlant.default_plant():
-		plant = FieldPlant.default_plant().duplicate() as FieldPlant
+func _own_plant() -> SunflowerPlant:
+	if plant == null or plant == SunflowerPlant.default_plant():
+		plant = SunflowerPlant.default_plant().duplicate() as SunflowerPlant
 	return plant
 
 

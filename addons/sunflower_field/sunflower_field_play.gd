@@ -1,4 +1,5 @@
 @tool
+@icon("icons/sunflower_field_play.svg")
 class_name SunflowerFieldPlay
 extends RefCounted
 ## What a running game does to a [SunflowerField]'s plants: cut, flatten, remove and give back
@@ -24,7 +25,7 @@ signal plants_changed(cells: PackedInt32Array, change: int)
 ## Emitted when [method put_plants] put plants of type [param plant_type] in [param cells].
 signal plants_put(cells: PackedInt32Array, plant_type: int)
 ## Emitted when flattened or cut plants of [param cells] stood again by their plant type's regrowth
-## ([member FieldPlant.recover_after], [member FieldPlant.regrow_after]).
+## ([member SunflowerPlant.recover_after], [member SunflowerPlant.regrow_after]).
 signal plants_recovered(cells: PackedInt32Array)
 ## Emitted when a pusher (see [member SunflowerField.pusher_group]) comes over the field's map.
 signal pusher_entered(pusher: Node3D)
@@ -34,8 +35,8 @@ signal pusher_exited(pusher: Node3D)
 ## What [method change_plants] does to a cell's plant.
 enum Change {
 	STAND,  ## A flattened or cut plant stands again.
-	FLATTEN,  ## It lies bent (until its type's [member FieldPlant.recover_after], if any).
-	CUT,  ## It is drawn nowhere (until its type's [member FieldPlant.regrow_after], if any).
+	FLATTEN,  ## It lies bent (until its type's [member SunflowerPlant.recover_after], if any).
+	CUT,  ## It is drawn nowhere (until its type's [member SunflowerPlant.regrow_after], if any).
 	REMOVE,  ## No plant there any more; nothing grows back.
 	RESTORE,  ## The cell as the map has it.
 }
@@ -229,11 +230,11 @@ func _step(simulation: NativeField, delta: float, pushers: Array[Node3D], trampl
 	_follow_pushers(simulation, pushers)
 
 
-## (The field calls this.) Each plant type of [param plants] (FieldPlant per species) gets its
+## (The field calls this.) Each plant type of [param plants] (SunflowerPlant per species) gets its
 ## recovery times and stump in [param simulation].
 func _send_regrowth(simulation: NativeField, plants: Array) -> void:
 	for species: int in plants.size():
-		var grown: FieldPlant = plants[species]
+		var grown: SunflowerPlant = plants[species]
 		simulation.set_play_type(species, grown.recover_after, grown.regrow_after, grown.stump_height)
 
 

@@ -24,7 +24,7 @@ static func can_merge(parts: Array[Mesh], own_shaders: bool = false) -> bool:
 
 
 ## The merged mesh of [param parts] (bottom, middle, head) for a plant whose parts' roots lie
-## [param part_lengths] model units apart and whose leaves [param flutter] ([member FieldPlant.flutter]),
+## [param part_lengths] model units apart and whose leaves [param flutter] ([member SunflowerPlant.flutter]),
 ## or null when they cannot be merged ([method can_merge] with [param own_shaders]).
 static func merge(
 	parts: Array[Mesh], part_lengths: Vector3, flutter: float = 0.0, own_shaders: bool = false

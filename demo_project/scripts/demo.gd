@@ -19,7 +19,7 @@ extends Node3D
 ##                            plants near, front-view quads far; native-whole: whole plants everywhere;
 ##                            native-hashed: the far quads' alpha test hashed (the far field keeps its cover)
 ##   --wind P                 the wind power (0: calm)
-##   --whole off              draw the near plants part by part (FieldPlant.draw_whole off)
+##   --whole off              draw the near plants part by part (SunflowerPlant.draw_whole off)
 ##   --cheap-shadows off      near plants at mesh 1 and 2 cast shadows from the mesh they are drawn with
 ##   --impostor-shadows FROM  near plants at this level on cast from impostors: mesh2, mesh3 (default), never
 ##   --shadows off            the sun casts no shadows (the fragment cost alone, for the far-plant benchmark)
@@ -116,7 +116,7 @@ func _ready() -> void:
 			"--baseline":
 				_recording.baseline = value
 			"--whole":
-				var own: FieldPlant = FieldPlant.default_plant().duplicate()
+				var own: SunflowerPlant = SunflowerPlant.default_plant().duplicate()
 				own.draw_whole = value != "off"
 				_field.plant = own
 			"--wind":

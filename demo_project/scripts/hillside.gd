@@ -47,7 +47,7 @@ static func stage(parent: Node) -> SunflowerField:
 	field.ground_source = SunflowerField.GroundSource.COLLIDERS
 	var legend: Dictionary = {}
 	for symbol: String in DemoPlants.SCENES:
-		legend[symbol] = FieldPlant.new()
+		legend[symbol] = SunflowerPlant.new()
 	field.legend = legend
 	parent.add_child(field)
 	await parent.get_tree().physics_frame

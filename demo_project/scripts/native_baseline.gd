@@ -37,7 +37,7 @@ func build(
 		return 0
 	simulation.set_layout(field.cell_size, field.seed, field.independent_jitter, CHUNK_SIZE)
 	var mesh: ArrayMesh = _whole_plant_mesh(field)
-	var plant: FieldPlant = field.plant if field.plant != null else FieldPlant.default_plant()
+	var plant: SunflowerPlant = field.plant if field.plant != null else SunflowerPlant.default_plant()
 	if far_quads and plant.impostor_views == null:
 		push_error("NativeBaseline: the plant '%s' has no baked impostor views for its far quads" % plant.name)
 		return 0
@@ -80,13 +80,13 @@ func _chunk(positions: Array, mesh: Mesh, scale_factor: float) -> MultiMeshInsta
 
 ## A quad the size of [param plant]'s impostor square (model units), its centre where the views' is,
 ## showing the front view (column 0, elevation 0 of the atlas), colours made straight from premultiplied.
-func _front_view_quad(plant: FieldPlant, hashed: bool) -> QuadMesh:
+func _front_view_quad(plant: SunflowerPlant, hashed: bool) -> QuadMesh:
 	var atlas: Image = plant.impostor_views.get_image()
 	if atlas.is_compressed():
 		atlas.decompress()
 	atlas.convert(Image.FORMAT_RGBA8)
 	var cell: Vector2i = Vector2i(
-		atlas.get_width() / FieldPlant.ATLAS_VIEWS.x, atlas.get_height() / FieldPlant.ATLAS_VIEWS.y
+		atlas.get_width() / SunflowerPlant.ATLAS_VIEWS.x, atlas.get_height() / SunflowerPlant.ATLAS_VIEWS.y
 	)
 	var front: Image = atlas.get_region(Rect2i(Vector2i.ZERO, cell))
 	for y: int in cell.y:

@@ -13,7 +13,7 @@ const SCENES: Dictionary = {
 	"g": "res://test_plants/grass_clump.glb",
 }
 const FOLDER: String = "user://demo_plants"
-## Their leaves' flutter in the wind ([member FieldPlant.flutter]).
+## Their leaves' flutter in the wind ([member SunflowerPlant.flutter]).
 const FLUTTER: float = 0.2
 const ImpostorBaker: GDScript = preload("res://addons/sunflower_field/impostor_baker.gd")
 const PLANT_SURFACE_PATH: String = "res://addons/sunflower_field/shaders/plant_surface.gdshaderinc"
@@ -25,7 +25,7 @@ static func legend(host: Node) -> Dictionary:
 	var entries: Dictionary = {}
 	for symbol: String in SCENES:
 		var scene: PackedScene = load(SCENES[symbol]) as PackedScene
-		var plant: FieldPlant = FieldPlant.from_scene(scene) if scene else null
+		var plant: SunflowerPlant = SunflowerPlant.from_scene(scene) if scene else null
 		if plant == null:
 			push_error("demo: cannot make a plant of %s" % SCENES[symbol])
 			continue
@@ -64,14 +64,14 @@ static func _forget_bakes(plant_name: String) -> void:
 
 ## Gives [param plant] the atlases an earlier run baked for it as [param baked_name] (the test plants
 ## give off no light; a back-light atlas when one was baked); false when there are none.
-static func _load_baked(plant: FieldPlant, baked_name: String) -> bool:
-	var kinds: PackedStringArray = FieldPlant.IMPOSTOR_TEXTURES.duplicate()
-	kinds.append(FieldPlant.BACKLIGHT_TEXTURE)
+static func _load_baked(plant: SunflowerPlant, baked_name: String) -> bool:
+	var kinds: PackedStringArray = SunflowerPlant.IMPOSTOR_TEXTURES.duplicate()
+	kinds.append(SunflowerPlant.BACKLIGHT_TEXTURE)
 	for kind: String in kinds:
 		var path: String = FOLDER.path_join("%s_%s.png" % [baked_name, kind])
 		var image: Image = Image.load_from_file(path) if FileAccess.file_exists(path) else null
 		if image == null:
-			if kind in FieldPlant.IMPOSTOR_TEXTURES:
+			if kind in SunflowerPlant.IMPOSTOR_TEXTURES:
 				return false
 			continue
 		plant.set("impostor_" + kind, ImpostorBaker.atlas_texture(image, plant.name))

@@ -123,6 +123,6 @@ func _on_recovered(cells: PackedInt32Array) -> void:
 
 
 func _on_built(_plants: int) -> void:
-	for plant: FieldPlant in _field.get_plant_types():
+	for plant: SunflowerPlant in _field.get_plant_types():
 		plant.recover_after = RECOVER_AFTER
 		plant.regrow_after = REGROW_AFTER

@@ -2,7 +2,7 @@ extends RefCounted
 ## Part meshes the tests give other materials.
 
 
-## Every part mesh of [param owner] (a SunflowerField or a FieldPlant: the mesh each part is drawn
+## Every part mesh of [param owner] (a SunflowerField or a SunflowerPlant: the mesh each part is drawn
 ## with) replaced by a copy whose surfaces all use what [param material_of] returns for that part
 ## (a Callable taking level and part), through the owner's set_part_mesh. Empty slots stay empty.
 static func dress_parts(owner: Object, material_of: Callable) -> void:

@@ -184,7 +184,7 @@ func test_the_hills_map_stands_the_field_on_the_terrain() -> void:
 	await frames_until(func() -> bool: return field.get_plant_count() == 55008 and not field.is_building(), 600)
 	check_eq(field.get_plant_count(), 55008, "the hills field is built")
 	# Two plant types: the map's 'r' cells are the addon's red sunflower (the demo's legend).
-	var types: Array[FieldPlant] = field.get_plant_types()
+	var types: Array[SunflowerPlant] = field.get_plant_types()
 	check_eq(types.size(), 2, "sunflowers and red sunflowers")
 	if types.size() == 2:
 		check_eq(types[1].name, "Red sunflower")
@@ -228,4 +228,4 @@ func test_the_plants_maps_bakes_are_named_by_what_they_depend_on() -> void:
 		check_eq(DemoPlants._fingerprint(DemoPlants.SCENES[symbol]), code, "%s: the same code twice" % symbol)
 		names[code] = symbol
 	check_eq(names.size(), DemoPlants.SCENES.size(), "each plant's code is its own")
-	check(not DemoPlants._load_baked(FieldPlant.new(), "never_baked_000000000000"), "nothing baked: nothing loaded")
+	check(not DemoPlants._load_baked(SunflowerPlant.new(), "never_baked_000000000000"), "nothing baked: nothing loaded")

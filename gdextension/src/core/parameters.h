@@ -51,34 +51,34 @@ inline constexpr ParameterSpec WIND_GUST_SHARE{ "SunflowerWind.gust_share", 0.5,
 
 // Layout: a bad size is refused and the field keeps the one it has (a rebuild would be wasted).
 inline constexpr ParameterSpec CELL_SIZE{ "SunflowerField.cell_size", 0.5, 0.001, NO_MAX, ParameterSpec::KEEP, 0.0 };
-inline constexpr ParameterSpec PLANT_HEIGHT{ "FieldPlant.height", 2.0, 0.001, NO_MAX, ParameterSpec::KEEP, 0.0 };
+inline constexpr ParameterSpec PLANT_HEIGHT{ "SunflowerPlant.height", 2.0, 0.001, NO_MAX, ParameterSpec::KEEP, 0.0 };
 // A plant type's variety: yaw either side of facing +z (radians), size factor range, middle stretch.
-inline constexpr ParameterSpec PLANT_YAW_RANGE{ "FieldPlant.yaw_range", 0.35, 0.0, PI, ParameterSpec::CLAMP, 0.35 };
-inline constexpr ParameterSpec PLANT_SCALE_MIN{ "FieldPlant.scale_min", 1.0, 0.01, 100.0, ParameterSpec::CLAMP, 1.0 };
-inline constexpr ParameterSpec PLANT_SCALE_MAX{ "FieldPlant.scale_max", 1.0, 0.01, 100.0, ParameterSpec::CLAMP, 1.0 };
+inline constexpr ParameterSpec PLANT_YAW_RANGE{ "SunflowerPlant.yaw_range", 0.35, 0.0, PI, ParameterSpec::CLAMP, 0.35 };
+inline constexpr ParameterSpec PLANT_SCALE_MIN{ "SunflowerPlant.scale_min", 1.0, 0.01, 100.0, ParameterSpec::CLAMP, 1.0 };
+inline constexpr ParameterSpec PLANT_SCALE_MAX{ "SunflowerPlant.scale_max", 1.0, 0.01, 100.0, ParameterSpec::CLAMP, 1.0 };
 // A plant type's colour variety: the instance colour multiplies the albedo by 1 ± brightness and
 // tints it warmer or cooler by up to ± tint (red up and blue down, or the other way).
-inline constexpr ParameterSpec PLANT_BRIGHTNESS_VARIATION{ "FieldPlant.brightness_variation", 0.0, 0.0, 1.0, ParameterSpec::CLAMP, 0.0 };
-inline constexpr ParameterSpec PLANT_TINT_VARIATION{ "FieldPlant.tint_variation", 0.0, 0.0, 1.0, ParameterSpec::CLAMP, 0.0 };
+inline constexpr ParameterSpec PLANT_BRIGHTNESS_VARIATION{ "SunflowerPlant.brightness_variation", 0.0, 0.0, 1.0, ParameterSpec::CLAMP, 0.0 };
+inline constexpr ParameterSpec PLANT_TINT_VARIATION{ "SunflowerPlant.tint_variation", 0.0, 0.0, 1.0, ParameterSpec::CLAMP, 0.0 };
 // A plant type's form in model units (plant_shape.h): each part's length (0 for an empty slot above
 // the plant's top part; lengths of no height together keep the current ones), the height the
 // impostors frame, the culling radius. Out of range or not finite: the current value stays.
-inline constexpr ParameterSpec PLANT_PART_LENGTH{ "FieldPlant.part_lengths", 1.0, 0.0, NO_MAX, ParameterSpec::KEEP, 0.0 };
-inline constexpr ParameterSpec PLANT_HEIGHT_UNITS{ "FieldPlant.height_units", 3.2, 1e-4, NO_MAX, ParameterSpec::KEEP, 0.0 };
-inline constexpr ParameterSpec PLANT_CULL_RADIUS_UNITS{ "FieldPlant.cull_radius_units", 1.9, 1e-4, NO_MAX, ParameterSpec::KEEP, 0.0 };
-inline constexpr ParameterSpec PLANT_STIFFNESS{ "FieldPlant.stiffness", 1.0, 0.05, 20.0, ParameterSpec::CLAMP, 1.0 };
+inline constexpr ParameterSpec PLANT_PART_LENGTH{ "SunflowerPlant.part_lengths", 1.0, 0.0, NO_MAX, ParameterSpec::KEEP, 0.0 };
+inline constexpr ParameterSpec PLANT_HEIGHT_UNITS{ "SunflowerPlant.height_units", 3.2, 1e-4, NO_MAX, ParameterSpec::KEEP, 0.0 };
+inline constexpr ParameterSpec PLANT_CULL_RADIUS_UNITS{ "SunflowerPlant.cull_radius_units", 1.9, 1e-4, NO_MAX, ParameterSpec::KEEP, 0.0 };
+inline constexpr ParameterSpec PLANT_STIFFNESS{ "SunflowerPlant.stiffness", 1.0, 0.05, 20.0, ParameterSpec::CLAMP, 1.0 };
 // A plant of one part's leaves in the wind (shaders/plant_bend.gdshaderinc): its upper part moves about
 // its bent place by up to this share of the bend's own sway at the top (0: still, the sunflower's).
-inline constexpr ParameterSpec PLANT_FLUTTER{ "FieldPlant.flutter", 0.0, 0.0, 1.0, ParameterSpec::CLAMP, 0.0 };
+inline constexpr ParameterSpec PLANT_FLUTTER{ "SunflowerPlant.flutter", 0.0, 0.0, 1.0, ParameterSpec::CLAMP, 0.0 };
 // A plant type's far shadows: in the shadow pass its impostor casts from the depth the plant has at
 // each pixel, moved this share of its frame towards the light (0.03 suits the sunflower: a field of
 // its impostors is then about as bright as its meshes, tools/measure_lod.sh).
-inline constexpr ParameterSpec PLANT_IMPOSTOR_SHADOW_SHIFT{ "FieldPlant.impostor_shadow_shift", 0.03, 0.0, 0.5, ParameterSpec::CLAMP, 0.03 };
+inline constexpr ParameterSpec PLANT_IMPOSTOR_SHADOW_SHIFT{ "SunflowerPlant.impostor_shadow_shift", 0.03, 0.0, 0.5, ParameterSpec::CLAMP, 0.03 };
 // A plant type's far glow: its emission atlas holds the light its parts give off divided by this, so
 // that 8-bit colours keep energies up to it. The baker picks the smallest of 8, 64, 512 … in which no
 // pixel of the atlas saturates.
-inline constexpr ParameterSpec PLANT_IMPOSTOR_EMISSION_RANGE{ "FieldPlant.impostor_emission_range", 8.0, 1.0, 32768.0, ParameterSpec::CLAMP, 8.0 };
-inline constexpr ParameterSpec PLANT_MIDDLE_VARIATION{ "FieldPlant.middle_variation", 0.1, 0.0, 10.0, ParameterSpec::CLAMP, 0.1 };
+inline constexpr ParameterSpec PLANT_IMPOSTOR_EMISSION_RANGE{ "SunflowerPlant.impostor_emission_range", 8.0, 1.0, 32768.0, ParameterSpec::CLAMP, 8.0 };
+inline constexpr ParameterSpec PLANT_MIDDLE_VARIATION{ "SunflowerPlant.middle_variation", 0.1, 0.0, 10.0, ParameterSpec::CLAMP, 0.1 };
 inline constexpr ParameterSpec CHUNK_SIZE{ "SunflowerField.chunk_size", 16.0, 0.5, 4096.0, ParameterSpec::KEEP, 0.0 };
 // 0 means the parser's own limit (MapLimits::max_plants).
 inline constexpr ParameterSpec MAX_PLANTS{ "SunflowerField.max_plants", 4'000'000, 0.0, 100'000'000, ParameterSpec::CLAMP, 4'000'000 };
@@ -122,11 +122,11 @@ inline constexpr ParameterSpec PUSHER_RADIUS{ "SunflowerField.pusher_radius", 0.
 inline constexpr ParameterSpec TRAMPLE_SHARE{ "SunflowerField.trample_share", 0.0, 0.0, 1.0, ParameterSpec::CLAMP, 0.0 };
 // A plant type's recovery on the field's clock: seconds until a flattened plant stands again and
 // until a cut one has grown again; 0: never.
-inline constexpr ParameterSpec PLANT_RECOVER_AFTER{ "FieldPlant.recover_after", 0.0, 0.0, 1.0e7, ParameterSpec::CLAMP, 0.0 };
-inline constexpr ParameterSpec PLANT_REGROW_AFTER{ "FieldPlant.regrow_after", 0.0, 0.0, 1.0e7, ParameterSpec::CLAMP, 0.0 };
+inline constexpr ParameterSpec PLANT_RECOVER_AFTER{ "SunflowerPlant.recover_after", 0.0, 0.0, 1.0e7, ParameterSpec::CLAMP, 0.0 };
+inline constexpr ParameterSpec PLANT_REGROW_AFTER{ "SunflowerPlant.regrow_after", 0.0, 0.0, 1.0e7, ParameterSpec::CLAMP, 0.0 };
 // What a cut plant of a type leaves: a stump this many metres tall (its bottom part, shortened; at
 // most that part's length), drawn near as a mesh; 0: nothing.
-inline constexpr ParameterSpec PLANT_STUMP_HEIGHT{ "FieldPlant.stump_height", 0.0, 0.0, 100.0, ParameterSpec::CLAMP, 0.0 };
+inline constexpr ParameterSpec PLANT_STUMP_HEIGHT{ "SunflowerPlant.stump_height", 0.0, 0.0, 100.0, ParameterSpec::CLAMP, 0.0 };
 
 // Stalk colliders stand within this reach of each pusher and of the observer; 0: none.
 inline constexpr ParameterSpec COLLISION_REACH{ "SunflowerField.collision_reach", 0.0, 0.0, 1000.0, ParameterSpec::CLAMP, 0.0 };

@@ -1,7 +1,7 @@
 #pragma once
 // A plant type's form: how its three parts stack and the space it takes, in model units (a part's
 // root at its origin, its height along +y), and the metres per model unit it is drawn at. The
-// addon's plant resource (FieldPlant) sets every value; the defaults are the built-in sunflower.
+// addon's plant resource (SunflowerPlant) sets every value; the defaults are the built-in sunflower.
 #include "parameters.h"
 
 #include <glm/vec3.hpp>

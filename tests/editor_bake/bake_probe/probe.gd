@@ -45,7 +45,7 @@ func _run() -> void:
 			await tree.process_frame
 			if plant.impostor_views != null and button.text == "Bake impostors":
 				break
-		for kind: String in FieldPlant.IMPOSTOR_TEXTURES:
+		for kind: String in SunflowerPlant.IMPOSTOR_TEXTURES:
 			var path: String = "res://my_plant_%s.png" % kind
 			if not FileAccess.file_exists(path):
 				problems.append("%s was not written" % path)
@@ -53,7 +53,7 @@ func _run() -> void:
 		if views == null or views.resource_path != "res://my_plant_views.png":
 			problems.append("the plant's views atlas is not the imported file: %s" % views)
 		var saved: String = FileAccess.get_file_as_string(PLANT_PATH)
-		if not Array(FieldPlant.IMPOSTOR_TEXTURES).all(
+		if not Array(SunflowerPlant.IMPOSTOR_TEXTURES).all(
 			func(k: String) -> bool: return saved.contains("my_plant_%s.png" % k)
 		):
 			problems.append("the plant file does not name its new atlases")
@@ -112,7 +112,7 @@ func _plants_from_scenes(tree: SceneTree, shot: String) -> PackedStringArray:
 			problems.append("PROBE_PLANTS names no test plant: %s" % plant_name)
 			continue
 		var scene_path: String = "res://%s.glb" % plant_name
-		var before: FieldPlant = field.plant
+		var before: SunflowerPlant = field.plant
 		var cells_before: float = field.cell_size
 		var drag: Dictionary = {"type": "files", "files": PackedStringArray([scene_path])}
 		button = _drop_button()
@@ -151,14 +151,14 @@ func _plants_from_scenes(tree: SceneTree, shot: String) -> PackedStringArray:
 		print("probe: %s: the longest frame %.1f s, after '%s'" % [scene_path, longest[0] / 1e6, longest[1]])
 		if longest[0] > FREEZE_USEC:
 			problems.append("%s: the drop held the editor %.1f s in one frame" % [scene_path, longest[0] / 1e6])
-		var plant: FieldPlant = field.plant
+		var plant: SunflowerPlant = field.plant
 		var saved: String = "res://%s_plant.tres" % plant_name
 		if plant == before or plant == null or plant.resource_path != saved:
 			problems.append("%s: the field's plant is not %s (%s)" % [scene_path, saved, plant])
 			continue
 		if plant.impostor_views == null or not FileAccess.file_exists("res://%s_plant_views.png" % plant_name):
 			problems.append("%s: its impostors were not baked" % saved)
-		var sunflower: Array = FieldPlant.default_plant().mesh_level_1 + FieldPlant.default_plant().mesh_level_3
+		var sunflower: Array = SunflowerPlant.default_plant().mesh_level_1 + SunflowerPlant.default_plant().mesh_level_3
 		for level: int in 3:
 			var mesh: Mesh = plant.get_part_mesh(level, 0)
 			if mesh == null or sunflower.has(mesh) or plant.get_part_mesh(level, 1) or plant.get_part_mesh(level, 2):
@@ -223,7 +223,7 @@ func _a_large_scene_merges_while_the_editor_draws(tree: SceneTree) -> PackedStri
 	var field: SunflowerField = EditorInterface.get_edited_scene_root().get_node("SunflowerField") as SunflowerField
 	EditorInterface.edit_node(field)
 	await _wait_for_button(tree, SceneDropButton.TEXT)
-	var before: FieldPlant = field.plant
+	var before: SunflowerPlant = field.plant
 	var button: Button = _drop_button()
 	if button == null:
 		return PackedStringArray(["no 'Plant from scene…' for the large scene"])

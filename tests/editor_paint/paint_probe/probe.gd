@@ -164,7 +164,7 @@ func _check_toolbar_follows_the_field(painter: RefCounted, field: SunflowerField
 	var symbols: OptionButton = painter.toolbar.get_child(2) as OptionButton
 	var paint: Button = painter.toolbar.get_child(0) as Button
 	_check(symbols.get_item_text(0).contains(field.get_plant_types()[0].name), "the symbol list names the plant")
-	var red: FieldPlant = load("res://addons/sunflower_field/plants/red_sunflower.tres")
+	var red: SunflowerPlant = load("res://addons/sunflower_field/plants/red_sunflower.tres")
 	field.plant = red
 	await _frames(3)
 	field.finish_build()

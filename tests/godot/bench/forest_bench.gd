@@ -19,11 +19,13 @@ func _run() -> void:
 	print("| field | view | frame ms, levels thinned | every level mesh 1 | primitives, thinned | every level mesh 1 |")
 	print("|---|---|---|---|---|---|")
 	for plant_name: String in PLANTS:
-		var plant: FieldPlant = FieldPlant.from_scene(load("res://test_plants/%s.glb" % plant_name) as PackedScene)
+		var plant: SunflowerPlant = SunflowerPlant.from_scene(
+			load("res://test_plants/%s.glb" % plant_name) as PackedScene
+		)
 		if plant == null or await plant.bake_impostors(root, "user://forest_bench", plant_name) != OK:
 			print("| %s | the plant could not be made or baked | | | | |" % plant_name)
 			continue
-		var unthinned: FieldPlant = plant.duplicate() as FieldPlant
+		var unthinned: SunflowerPlant = plant.duplicate() as SunflowerPlant
 		unthinned.mesh_level_2 = plant.mesh_level_1.duplicate()
 		unthinned.mesh_level_3 = plant.mesh_level_1.duplicate()
 		var cell: float = maxf(0.5, plant.spacing_metres())
@@ -32,7 +34,7 @@ func _run() -> void:
 		)
 		var side: float = cells * cell
 		var fields: Array[SunflowerField] = []
-		for drawn: FieldPlant in [plant, unthinned]:
+		for drawn: SunflowerPlant in [plant, unthinned]:
 			var field: SunflowerField = SunflowerField.new()
 			field.plant = drawn
 			field.cell_size = cell

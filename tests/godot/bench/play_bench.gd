@@ -28,7 +28,7 @@ func _run() -> void:
 	camera.global_transform = Transform3D(Basis.from_euler(Vector3(-0.3, 0.0, 0.0)), Vector3(250.0, 1.7, 250.0))
 	camera.current = true
 	var field: SunflowerField = SunflowerField.new()
-	field.legend = {"m": FieldPlant.default_plant().duplicate()}  # a second plant type, for the plants put
+	field.legend = {"m": SunflowerPlant.default_plant().duplicate()}  # a second plant type, for the plants put
 	field.map = field_map
 	root.add_child(field)
 	await process_frame

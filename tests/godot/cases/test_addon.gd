@@ -15,7 +15,7 @@ func test_the_node_names_the_cores_indices() -> void:
 		SunflowerField.Lod.SPRITE, SunflowerSimulation.MESH_LEVEL_COUNT, "the first impostor level follows the meshes"
 	)
 	check_eq(SunflowerField.FieldNodes.PART_NAMES.size(), SunflowerSimulation.PART_COUNT, "part names")
-	check_eq(FieldPlant.PartMeshes.LEVELS, SunflowerSimulation.MESH_LEVEL_COUNT, "a plant's levels")
+	check_eq(SunflowerPlant.PartMeshes.LEVELS, SunflowerSimulation.MESH_LEVEL_COUNT, "a plant's levels")
 	check_eq(SunflowerSimulation.mesh_bucket(2, SunflowerField.Part.HEAD), 8, "the last mesh bucket")
 	check_eq(SunflowerSimulation.BUCKET_IMPOSTOR, 9, "the impostors follow the mesh buckets")
 
@@ -47,7 +47,7 @@ func test_the_shaders_record_layout_is_the_librarys() -> void:
 func test_inspector_defaults_equal_the_cores() -> void:
 	var field: SunflowerField = SunflowerField.new()
 	var owners: Dictionary = {
-		"SunflowerField": field, "SunflowerWind": SunflowerWind.new(), "FieldPlant": FieldPlant.new()
+		"SunflowerField": field, "SunflowerWind": SunflowerWind.new(), "SunflowerPlant": SunflowerPlant.new()
 	}
 	var names: PackedStringArray = SunflowerField.Native.parameter_names()
 	check(names.size() >= 20, "the core lists its parameters (%d)" % names.size())
@@ -58,7 +58,7 @@ func test_inspector_defaults_equal_the_cores() -> void:
 			continue
 		var shown: Variant = object.get_script().get_property_default_value(pieces[1])
 		var core: float = SunflowerField.Native.default_of(qualified)
-		# A vector's every component has the default (FieldPlant.part_lengths).
+		# A vector's every component has the default (SunflowerPlant.part_lengths).
 		var agrees: bool = (
 			shown.is_equal_approx(Vector3.ONE * core) if shown is Vector3 else is_equal_approx(float(shown), core)
 		)
@@ -178,7 +178,9 @@ func test_the_drop_button_fits_a_narrow_dock() -> void:
 ## 46 hints differed from the table when they were typed twice.
 func test_the_inspectors_ranges_are_the_tables() -> void:
 	var objects: Dictionary = {
-		"SunflowerField": SunflowerField.new(), "SunflowerWind": SunflowerWind.new(), "FieldPlant": FieldPlant.new()
+		"SunflowerField": SunflowerField.new(),
+		"SunflowerWind": SunflowerWind.new(),
+		"SunflowerPlant": SunflowerPlant.new()
 	}
 	var checked: int = 0
 	for row: String in SunflowerField.Native.parameter_names():

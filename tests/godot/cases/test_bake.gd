@@ -71,7 +71,7 @@ func _coverage(image: Image) -> Array:
 
 ## One view's square of an atlas (column around the plant, row of elevation).
 func _view(atlas: Image, column: int, row: int) -> Image:
-	var cell: int = atlas.get_height() / FieldPlant.ATLAS_VIEWS.y
+	var cell: int = atlas.get_height() / SunflowerPlant.ATLAS_VIEWS.y
 	return atlas.get_region(Rect2i(column * cell, row * cell, cell, cell))
 
 
@@ -83,13 +83,13 @@ func _normal(normals: Image, point: Vector2i) -> Vector3:
 
 ## A plant named [param plant_name] of glTF parts: a thin green stalk (bottom and middle) and a red
 ## head written to [param head_file], 3 units tall; null (after a failed check) when they do not load.
-func _gltf_plant(plant_name: String, head_file: String) -> FieldPlant:
+func _gltf_plant(plant_name: String, head_file: String) -> SunflowerPlant:
 	DirAccess.make_dir_recursive_absolute(FOLDER)
 	var stalk: Mesh = _gltf_part(GREEN, Vector3(0.15, 1.0, 0.15), "stalk.gltf")
 	var head: Mesh = _gltf_part(RED, Vector3(0.9, 1.0, 0.9), head_file)
 	if not check(stalk != null and head != null, "the glTF parts load"):
 		return null
-	var plant: FieldPlant = FieldPlant.new()
+	var plant: SunflowerPlant = SunflowerPlant.new()
 	plant.name = plant_name
 	plant.mesh_level_1 = [stalk, stalk, head]
 	plant.height_units = 3.0
@@ -97,12 +97,12 @@ func _gltf_plant(plant_name: String, head_file: String) -> FieldPlant:
 
 
 func test_a_gltf_plant_gets_impostors_in_its_own_colours() -> void:
-	var plant: FieldPlant = _gltf_plant("Red plant", "head.gltf")
+	var plant: SunflowerPlant = _gltf_plant("Red plant", "head.gltf")
 	if plant == null:
 		return
 	var result: Error = await plant.bake_impostors(tree.root, FOLDER, "red_plant")
 	check_eq(result, OK, "baked")
-	for kind: String in FieldPlant.IMPOSTOR_TEXTURES:
+	for kind: String in SunflowerPlant.IMPOSTOR_TEXTURES:
 		check(FileAccess.file_exists(FOLDER.path_join("red_plant_%s.png" % kind)), "%s atlas written" % kind)
 	check(plant.impostor_emission == null, "a plant that gives off no light gets no emission atlas")
 	check(not FileAccess.file_exists(FOLDER.path_join("red_plant_emission.png")), "and no emission file")
@@ -117,7 +117,7 @@ func test_a_gltf_plant_gets_impostors_in_its_own_colours() -> void:
 	var normals: Image = plant.impostor_normals.get_image()
 	views.clear_mipmaps()
 	normals.clear_mipmaps()
-	check_eq(views.get_size(), FieldPlant.ATLAS_VIEWS * ImpostorBaker.CELL_PIXELS, "one square per view")
+	check_eq(views.get_size(), SunflowerPlant.ATLAS_VIEWS * ImpostorBaker.CELL_PIXELS, "one square per view")
 	var cell: int = ImpostorBaker.CELL_PIXELS
 	var frame: Vector2 = plant.impostor_frame()
 	var pixels_per_unit: float = cell / frame.x
@@ -137,12 +137,12 @@ func test_a_gltf_plant_gets_impostors_in_its_own_colours() -> void:
 		check(low.g > low.r and low.a > 0.5, "view %d: the stalk below is green: %s" % [column, low])
 	# From straight above only the head's top shows: red in the middle, facing up; from the front,
 	# the head's front face faces +z, from the right side (a quarter turn) +x.
-	var above: Image = _view(views, 0, FieldPlant.ATLAS_VIEWS.y - 1)
+	var above: Image = _view(views, 0, SunflowerPlant.ATLAS_VIEWS.y - 1)
 	check(above.get_pixel(cell / 2, cell / 2).r > 0.6, "from above, the head: %s" % above.get_pixel(cell / 2, cell / 2))
 	var head_point: Vector2i = Vector2i(cell / 2, roundi(cell / 2 - 1.0 * pixels_per_unit))
-	var quarter: int = FieldPlant.ATLAS_VIEWS.x / 4
+	var quarter: int = SunflowerPlant.ATLAS_VIEWS.x / 4
 	var expected: Array = [
-		[Vector2i(0, FieldPlant.ATLAS_VIEWS.y - 1), Vector2i(cell / 2, cell / 2), Vector3.UP],
+		[Vector2i(0, SunflowerPlant.ATLAS_VIEWS.y - 1), Vector2i(cell / 2, cell / 2), Vector3.UP],
 		[Vector2i(0, 0), head_point, Vector3.BACK],
 		[Vector2i(quarter, 0), head_point, Vector3.RIGHT],
 	]
@@ -156,7 +156,7 @@ func test_a_gltf_plant_gets_impostors_in_its_own_colours() -> void:
 	var depths: Image = plant.impostor_depths.get_image()
 	depths.clear_mipmaps()
 	var above_depth: float = (
-		depths.get_pixelv(Vector2i(0, FieldPlant.ATLAS_VIEWS.y - 1) * cell + Vector2i(cell / 2, cell / 2)).r
+		depths.get_pixelv(Vector2i(0, SunflowerPlant.ATLAS_VIEWS.y - 1) * cell + Vector2i(cell / 2, cell / 2)).r
 	)
 	check(
 		above_depth > 0.5 + 1.3 / frame.x,
@@ -181,8 +181,8 @@ func test_a_gltf_plant_gets_impostors_in_its_own_colours() -> void:
 
 ## A plant made by [method _gltf_plant] whose head gives off [constant GLOW] light (a
 ## StandardMaterial3D's emission) of [param energy], baked; null when it could not be.
-func _glowing_plant(plant_name: String, head_file: String, energy: float) -> FieldPlant:
-	var plant: FieldPlant = _gltf_plant(plant_name, head_file)
+func _glowing_plant(plant_name: String, head_file: String, energy: float) -> SunflowerPlant:
+	var plant: SunflowerPlant = _gltf_plant(plant_name, head_file)
 	if plant == null:
 		return null
 	var head: Mesh = plant.mesh_level_1[2]
@@ -203,7 +203,7 @@ func _glowing_plant(plant_name: String, head_file: String, energy: float) -> Fie
 
 ## Checks that [param plant]'s emission atlas holds the head's light of [param energy] over the
 ## plant's range where the head stands, and none where the stalk does, from two sides.
-func _check_glow(plant: FieldPlant, energy: float) -> void:
+func _check_glow(plant: SunflowerPlant, energy: float) -> void:
 	var emission: Image = plant.impostor_emission.get_image()
 	emission.clear_mipmaps()
 	var cell: int = ImpostorBaker.CELL_PIXELS
@@ -226,14 +226,14 @@ func _check_glow(plant: FieldPlant, energy: float) -> void:
 ## as the same field drawn with every plant as mesh 1 (and stays dark without the atlas: what the
 ## far levels did before).
 func test_a_glowing_plant_glows_as_far_impostors() -> void:
-	var plant: FieldPlant = await _glowing_plant("Glowing plant", "glowing_head.gltf", 2.0)
+	var plant: SunflowerPlant = await _glowing_plant("Glowing plant", "glowing_head.gltf", 2.0)
 	if plant == null:
 		return
 	check_eq(plant.impostor_emission_range, 8.0, "the light fits the first range")
 	_check_glow(plant, 2.0)
 	# The field in the dark: no sun, no sky light, a black background.
 	var seen: Vector3 = await _field_in_the_dark(
-		plant, Vector3(5.0, 3.0, 55.0), FieldPlant.EMISSION_TEXTURE, false, "glowing"
+		plant, Vector3(5.0, 3.0, 55.0), SunflowerPlant.EMISSION_TEXTURE, false, "glowing"
 	)
 	var ratio: float = seen.y
 	var without: float = seen.z
@@ -264,7 +264,7 @@ func test_a_backlit_plant_lets_the_sun_through_as_far_impostors() -> void:
 	backlit.backlight_enabled = true
 	backlit.backlight = BACKLIGHT
 	leaf.surface_set_material(0, backlit)
-	var plant: FieldPlant = FieldPlant.new()
+	var plant: SunflowerPlant = SunflowerPlant.new()
 	plant.name = "Backlit plant"
 	plant.mesh_level_1 = [leaf, null, null]
 	plant.height_units = 1.0
@@ -279,7 +279,7 @@ func test_a_backlit_plant_lets_the_sun_through_as_far_impostors() -> void:
 	var cell: int = ImpostorBaker.CELL_PIXELS
 	var pixels_per_unit: float = cell / plant.impostor_frame().x
 	var expected: Color = BACKLIGHT.srgb_to_linear()
-	for column: int in [0, FieldPlant.ATLAS_VIEWS.x / 2]:
+	for column: int in [0, SunflowerPlant.ATLAS_VIEWS.x / 2]:
 		var side: Image = _view(through, column, 0)
 		var lit: Color = side.get_pixel(cell / 2, cell / 2).srgb_to_linear()
 		var beside: Color = side.get_pixel(mini(cell - 1, roundi(cell / 2 + 0.6 * pixels_per_unit)), cell / 2)
@@ -290,7 +290,7 @@ func test_a_backlit_plant_lets_the_sun_through_as_far_impostors() -> void:
 		check(beside.a < 0.5, "view %d: nothing beside the leaf: %s" % [column, beside])
 	# The field against the sun: the camera north of it, looking south, the sun ahead and above.
 	var seen: Vector3 = await _field_in_the_dark(
-		plant, Vector3(5.0, 3.0, -45.0), FieldPlant.BACKLIGHT_TEXTURE, true, "backlit"
+		plant, Vector3(5.0, 3.0, -45.0), SunflowerPlant.BACKLIGHT_TEXTURE, true, "backlit"
 	)
 	var ratio: float = seen.y
 	var without: float = seen.z
@@ -313,7 +313,7 @@ func test_a_backlit_plant_lets_the_sun_through_as_far_impostors() -> void:
 ## [param name]_impostors, _meshes and _no_<atlas>.png). The sun shines, without shadows (a leaf's
 ## far face is lit through, not shaded by the leaf), when [param sun]; else it is off. Returns the
 ## meshes' mean brightness, and the impostors' with and without the atlas relative to it.
-func _field_in_the_dark(plant: FieldPlant, eye: Vector3, atlas: String, sun: bool, name: String) -> Vector3:
+func _field_in_the_dark(plant: SunflowerPlant, eye: Vector3, atlas: String, sun: bool, name: String) -> Vector3:
 	var stage: RefCounted = Stage.new(tree.root, 200.0, Vector3(5.0, 0.0, 5.0))
 	stage.show_scenery(false)
 	stage.environment.ambient_light_source = Environment.AMBIENT_SOURCE_COLOR
@@ -362,7 +362,7 @@ func _mean_luminance(image: Image) -> float:
 ## A light brighter than the first range (energy 24 against 8, which clipped it to a third) is
 ## baked in the next one, 64, where it keeps its value; the field's far levels multiply it back.
 func test_a_bright_glow_gets_a_wider_range() -> void:
-	var plant: FieldPlant = await _glowing_plant("Bright plant", "bright_head.gltf", 24.0)
+	var plant: SunflowerPlant = await _glowing_plant("Bright plant", "bright_head.gltf", 24.0)
 	if plant == null:
 		return
 	check_eq(plant.impostor_emission_range, 64.0, "the range widened once")
@@ -383,7 +383,7 @@ func test_a_bright_glow_gets_a_wider_range() -> void:
 
 
 func test_views_are_drawn_in_tiles_as_large_as_the_triangle_budget_allows() -> void:
-	var views: Vector2i = FieldPlant.ATLAS_VIEWS
+	var views: Vector2i = SunflowerPlant.ATLAS_VIEWS
 	check_eq(ImpostorBaker.tile_of(216), views, "a grass clump: every view in one render")
 	check_eq(ImpostorBaker.tile_of(8532), Vector2i(views.x, 5), "an 8 500-triangle bush: half the rows a render")
 	check_eq(ImpostorBaker.tile_of(30000), Vector2i(views.x, 2), "two rows")
@@ -399,22 +399,22 @@ func test_views_are_drawn_in_tiles_as_large_as_the_triangle_budget_allows() -> v
 	ball.radial_segments = 64
 	ball.rings = 32
 	light.add_surface_from_arrays(Mesh.PRIMITIVE_TRIANGLES, ball.get_mesh_arrays())
-	var plant: FieldPlant = FieldPlant.new()
+	var plant: SunflowerPlant = SunflowerPlant.new()
 	plant.set_part_mesh(0, 0, heavy)
 	plant.set_part_mesh(1, 0, heavy)
 	plant.set_part_mesh(2, 0, light)
 	check_eq(ImpostorBaker.bake_level(plant), 2, "128 000 triangles at levels 1 and 2: drawn from level 3")
 	plant.set_part_mesh(1, 0, light)
 	check_eq(ImpostorBaker.bake_level(plant), 1, "from level 2 when it is within the budget")
-	check_eq(ImpostorBaker.bake_level(FieldPlant.default_plant()), 0, "the sunflower from level 1")
+	check_eq(ImpostorBaker.bake_level(SunflowerPlant.default_plant()), 0, "the sunflower from level 1")
 	# The sunflower drawn a view at a time bakes the atlases it bakes in one render.
-	var whole: FieldPlant = FieldPlant.default_plant().duplicate() as FieldPlant
+	var whole: SunflowerPlant = SunflowerPlant.default_plant().duplicate() as SunflowerPlant
 	check_eq(await whole.bake_impostors(tree.root, FOLDER, "sunflower_whole"), OK)
-	var tiled: FieldPlant = FieldPlant.default_plant().duplicate() as FieldPlant
+	var tiled: SunflowerPlant = SunflowerPlant.default_plant().duplicate() as SunflowerPlant
 	ImpostorBaker.test_set_triangles_per_render(1)
 	check_eq(await tiled.bake_impostors(tree.root, FOLDER, "sunflower_tiled"), OK)
 	ImpostorBaker.test_set_triangles_per_render(0)
-	for kind: String in FieldPlant.IMPOSTOR_TEXTURES:
+	for kind: String in SunflowerPlant.IMPOSTOR_TEXTURES:
 		var a: Image = (whole.get("impostor_" + kind) as Texture2D).get_image()
 		var b: Image = (tiled.get("impostor_" + kind) as Texture2D).get_image()
 		a.clear_mipmaps()
@@ -432,11 +432,11 @@ func test_views_are_drawn_in_tiles_as_large_as_the_triangle_budget_allows() -> v
 
 
 func test_the_built_in_sunflower_baked_again_matches_the_shipped_textures() -> void:
-	var plant: FieldPlant = FieldPlant.default_plant().duplicate() as FieldPlant
+	var plant: SunflowerPlant = SunflowerPlant.default_plant().duplicate() as SunflowerPlant
 	var result: Error = await plant.bake_impostors(tree.root, FOLDER, "sunflower_again")
 	check_eq(result, OK)
-	for kind: String in FieldPlant.IMPOSTOR_TEXTURES:
-		var shipped: Image = (FieldPlant.default_plant().get("impostor_" + kind) as Texture2D).get_image()
+	for kind: String in SunflowerPlant.IMPOSTOR_TEXTURES:
+		var shipped: Image = (SunflowerPlant.default_plant().get("impostor_" + kind) as Texture2D).get_image()
 		var baked: Image = (plant.get("impostor_" + kind) as Texture2D).get_image()
 		shipped.decompress()
 		shipped.clear_mipmaps()
@@ -458,7 +458,7 @@ func test_the_built_in_sunflower_baked_again_matches_the_shipped_textures() -> v
 		print("     bake: %s differs from the shipped atlas in %.1f %% of pixels" % [kind, share * 100.0])
 		check(share < 0.03, "%s: the baker reproduces the shipped atlas (%.1f %% differ)" % [kind, share * 100.0])
 	# The alpha cuts it measures are the shipped plant's (tools/regenerate_assets.sh writes them there).
-	var shipped_cuts: PackedFloat32Array = FieldPlant.default_plant().impostor_alpha_cuts
+	var shipped_cuts: PackedFloat32Array = SunflowerPlant.default_plant().impostor_alpha_cuts
 	check_eq(plant.impostor_alpha_cuts.size(), shipped_cuts.size(), "an alpha cut for each mip level, as shipped")
 	for level: int in mini(plant.impostor_alpha_cuts.size(), shipped_cuts.size()):
 		check_near(

@@ -39,12 +39,12 @@ func _run(seconds: float) -> Array[PackedFloat32Array]:
 
 
 func test_a_plants_triangles_are_counted_per_mesh_level() -> void:
-	var plant: FieldPlant = field.get_plant_types()[0]
+	var plant: SunflowerPlant = field.get_plant_types()[0]
 	var counts: PackedInt32Array = [plant.triangle_count(0), plant.triangle_count(1), plant.triangle_count(2)]
 	print("     the sunflower's triangles at mesh 1 / 2 / 3: %s" % counts)
 	check(counts[0] > counts[1] and counts[1] > counts[2] and counts[2] > 0, "fewer at each level: %s" % counts)
 	var box: BoxMesh = BoxMesh.new()
-	var one: FieldPlant = FieldPlant.new()
+	var one: SunflowerPlant = SunflowerPlant.new()
 	one.mesh_level_1 = [box, null, null]
 	check_eq(one.triangle_count(0), 12, "a box is 12 triangles")
 	check_eq(one.triangle_count(2), 12, "drawn at every level when only level 1 is set")

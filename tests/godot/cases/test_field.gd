@@ -141,7 +141,7 @@ func test_near_plants_cast_shadows_from_their_impostors_from_a_level_on() -> voi
 	check(casters > 0, "far tiles' casters checked (%d)" % casters)
 	# A plant type with its impostor shadows off casts from its meshes at every level, the field's
 	# setting kept.
-	var own: FieldPlant = FieldPlant.default_plant().duplicate() as FieldPlant
+	var own: SunflowerPlant = SunflowerPlant.default_plant().duplicate() as SunflowerPlant
 	own.impostor_shadows = false
 	field.plant = own
 	field.advance(0.1)
@@ -599,7 +599,7 @@ func test_an_imported_map_uses_any_symbol_its_fields_legend_defines() -> void:
 	var packed: PackedScene = PackedScene.new()
 	packed.pack(stone)
 	stone.free()
-	var red: FieldPlant = load("res://addons/sunflower_field/plants/red_sunflower.tres")
+	var red: SunflowerPlant = load("res://addons/sunflower_field/plants/red_sunflower.tres")
 	field.legend = {"S": packed, "r": red}
 	field.map = imported
 	field.finish_build()
@@ -638,7 +638,10 @@ func test_part_meshes_can_be_swapped_at_run_time() -> void:
 	check(field.get_part_mesh(0, SunflowerField.Part.HEAD) == null, "null empties the slot: no default part")
 	check(_node("Mesh1").multimesh.mesh.get_surface_count() == 1, "the bottom and middle are drawn whole")
 	check(
-		_node("Mesh1").multimesh.mesh.get_faces().size() < FieldPlant.default_plant().whole_mesh(0).get_faces().size(),
+		(
+			_node("Mesh1").multimesh.mesh.get_faces().size()
+			< SunflowerPlant.default_plant().whole_mesh(0).get_faces().size()
+		),
 		"without a head"
 	)
 	allow_error("out of range")

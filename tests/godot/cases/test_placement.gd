@@ -20,7 +20,7 @@ func _field(columns: int, rows: int) -> SunflowerField:
 	var map: SunflowerFieldMap = SunflowerFieldMap.new()
 	map.source_path = "rules.field"
 	map.text = ("# A comment kept through generation.\n%d %d\n.....S\n" % [columns, rows]).to_utf8_buffer()
-	field.legend = {"g": FieldPlant.default_plant(), "S": PackedScene.new()}
+	field.legend = {"g": SunflowerPlant.default_plant(), "S": PackedScene.new()}
 	field.map = map
 	check_eq(map.check_format(), "", "the empty map reads")
 	tree.root.add_child(field)

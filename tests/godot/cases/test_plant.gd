@@ -1,5 +1,5 @@
 extends TestCase
-## Plant types (FieldPlant): the built-in sunflower by default, shared unchanged; a field's own plant
+## Plant types (SunflowerPlant): the built-in sunflower by default, shared unchanged; a field's own plant
 ## through set_part_mesh and the old properties; a plant's form (part lengths, height) and variety
 ## (size and yaw ranges) in the plants drawn; a shared plant's change rebuilds every field using it;
 ## the impostor quads cut to what the plant's views show; an atlas read with the rows it was baked
@@ -22,7 +22,7 @@ func after_each() -> void:
 	fields.clear()
 
 
-func _field(plant: FieldPlant = null) -> SunflowerField:
+func _field(plant: SunflowerPlant = null) -> SunflowerField:
 	var field: SunflowerField = SunflowerField.new()
 	field.plant = plant
 	field.map = DEMO_MAP
@@ -64,7 +64,7 @@ func _child_named(field: SunflowerField, node_name: String) -> MultiMeshInstance
 
 
 func test_the_built_in_sunflower_is_the_default_and_stays_shared_unchanged() -> void:
-	var default_plant: FieldPlant = FieldPlant.default_plant()
+	var default_plant: SunflowerPlant = SunflowerPlant.default_plant()
 	check(default_plant != null, "the addon ships the sunflower plant")
 	check_eq(default_plant.name, "Sunflower")
 	var first: SunflowerField = _field()
@@ -91,16 +91,50 @@ func test_the_built_in_sunflower_is_the_default_and_stays_shared_unchanged() -> 
 
 
 ## A new plant holding the built-in sunflower's meshes (and none of its impostor textures).
-func _plant_of_sunflower_parts() -> FieldPlant:
-	var plant: FieldPlant = FieldPlant.new()
+func _plant_of_sunflower_parts() -> SunflowerPlant:
+	var plant: SunflowerPlant = SunflowerPlant.new()
 	for level: int in 3:
 		for part: int in 3:
-			plant.set_part_mesh(level, part, FieldPlant.default_plant().get_part_mesh(level, part))
+			plant.set_part_mesh(level, part, SunflowerPlant.default_plant().get_part_mesh(level, part))
 	return plant
 
 
+## A scene and a plant saved before the plant's class was renamed (FieldPlant, at 22a3d56: the plant's
+## header names the old class; the field's wind_power was the node's own) load to the same field as
+## one made now: the plant a SunflowerPlant with its saved settings, the wind as saved, and every
+## plant where a field of that plant made in code puts it.
+func test_a_scene_and_a_plant_saved_under_the_old_class_name_load_to_the_same_field() -> void:
+	var old: Node = (load("res://scenes/saved_22a3d56/own_plant_field.tscn") as PackedScene).instantiate()
+	tree.root.add_child(old)
+	var loaded: SunflowerField = old.get_node("SunflowerField") as SunflowerField
+	loaded.finish_build()
+	check(loaded.plant is SunflowerPlant, "the saved plant loads as a SunflowerPlant")
+	check_eq(loaded.plant.name, "My plant", "its name")
+	check_near(loaded.plant.height, 1.5, 1e-6, "its height")
+	check(loaded.plant.get_part_mesh(0, 2) is SphereMesh, "its head part")
+	check_near(loaded.wind_power, 2.0, 1e-6, "the field's wind as saved")
+	var plant: SunflowerPlant = SunflowerPlant.new()
+	plant.name = "My plant"
+	plant.height = 1.5
+	plant.height_units = 3.0
+	plant.mesh_level_1 = loaded.plant.mesh_level_1
+	var made: SunflowerField = _field(plant)
+	check(loaded.get_plant_count() > 0, "the saved field has plants")
+	check_eq(loaded.get_plant_count(), made.get_plant_count(), "as many plants as a field made now")
+	for field: SunflowerField in [loaded, made]:
+		field.advance(0.0)
+	var same: bool = true
+	for index: int in range(0, made.get_plant_count(), 97):
+		var a: Dictionary = loaded.get_plant_info(index)
+		var b: Dictionary = made.get_plant_info(index)
+		same = same and (a["position"] as Vector3).is_equal_approx(b["position"])
+		same = same and a["lod"] == b["lod"]
+	check(same, "each plant where the field made now puts it, at the same level of detail")
+	old.free()
+
+
 func test_a_plants_form_and_height_shape_the_plants_drawn() -> void:
-	var plant: FieldPlant = _plant_of_sunflower_parts()
+	var plant: SunflowerPlant = _plant_of_sunflower_parts()
 	plant.part_lengths = Vector3(2.0, 0.5, 1.0)
 	plant.middle_variation = 0.0
 	plant.height = 7.0  # 3.5 model units: 2 m each
@@ -125,7 +159,7 @@ func test_a_plants_form_and_height_shape_the_plants_drawn() -> void:
 
 
 func test_a_plants_variety_spreads_sizes_and_yaws_within_its_ranges() -> void:
-	var plant: FieldPlant = _plant_of_sunflower_parts()
+	var plant: SunflowerPlant = _plant_of_sunflower_parts()
 	plant.scale_min = 0.6
 	plant.scale_max = 1.4
 	plant.yaw_range = PI / 2.0
@@ -170,7 +204,7 @@ func test_a_plants_variety_spreads_sizes_and_yaws_within_its_ranges() -> void:
 ## on every edit of a field) re-configures nothing; an array or texture always says so (it may hold
 ## new contents).
 func test_a_plant_signals_a_change_only_when_a_value_changes() -> void:
-	var plant: FieldPlant = FieldPlant.new()
+	var plant: SunflowerPlant = SunflowerPlant.new()
 	var changes: Array[int] = [0]
 	plant.changed.connect(func() -> void: changes[0] += 1)
 	plant.height = plant.height
@@ -189,7 +223,7 @@ func test_a_plant_signals_a_change_only_when_a_value_changes() -> void:
 
 
 func test_changing_a_shared_plant_rebuilds_every_field_that_grows_it() -> void:
-	var plant: FieldPlant = _plant_of_sunflower_parts()
+	var plant: SunflowerPlant = _plant_of_sunflower_parts()
 	var first: SunflowerField = _field(plant)
 	var second: SunflowerField = _field(plant)
 	var before: float = second.get_simulation().get_chunk_aabb(0).end.y
@@ -200,12 +234,14 @@ func test_changing_a_shared_plant_rebuilds_every_field_that_grows_it() -> void:
 	for field: SunflowerField in [first, second]:
 		check_near(field.get_simulation().get_chunk_aabb(0).end.y, before * 2.0, 0.05, "chunk bounds follow the height")
 	# Drawn whole: a part that merges as well is swapped into both fields' merged meshes in place.
-	var other_bottom: Mesh = FieldPlant.default_plant().get_part_mesh(1, 0)
+	var other_bottom: Mesh = SunflowerPlant.default_plant().get_part_mesh(1, 0)
 	plant.set_part_mesh(2, 0, other_bottom)
 	check(not first.is_building() and not second.is_building(), "a mesh change drawn the same way needs no rebuild")
 	var merged: Mesh = plant.whole_mesh(2)
 	check(_whole_mesh(first, 2) == merged and _whole_mesh(second, 2) == merged, "a mesh change shows in both")
-	check(merged.get_faces().size() > FieldPlant.default_plant().whole_mesh(2).get_faces().size(), "with the new part")
+	check(
+		merged.get_faces().size() > SunflowerPlant.default_plant().whole_mesh(2).get_faces().size(), "with the new part"
+	)
 	# Part by part (a box cannot be merged: both rebuild once), then a mesh change swaps in place.
 	var box: BoxMesh = BoxMesh.new()
 	plant.set_part_mesh(2, 0, box)
@@ -222,11 +258,11 @@ func test_changing_a_shared_plant_rebuilds_every_field_that_grows_it() -> void:
 ## draws it at all three levels with nothing above it, and its height spans that one part; a slot
 ## left empty below a filled one is a configuration warning naming it. No sunflower part anywhere.
 func test_empty_slots_draw_nothing_and_a_plant_of_one_part_stands_its_height() -> void:
-	var plant: FieldPlant = FieldPlant.new()
+	var plant: SunflowerPlant = SunflowerPlant.new()
 	var field: SunflowerField = _field(plant)
 	var sunflower_meshes: Array[Mesh] = []
 	for level: int in 3:
-		sunflower_meshes.append_array(FieldPlant.default_plant().get("mesh_level_%d" % (level + 1)))
+		sunflower_meshes.append_array(SunflowerPlant.default_plant().get("mesh_level_%d" % (level + 1)))
 	for level: int in 3:
 		for part: int in 3:
 			check(field.get_part_mesh(level, part) == null, "a new plant's slots are empty (%d / %d)" % [level, part])
@@ -265,12 +301,12 @@ func test_empty_slots_draw_nothing_and_a_plant_of_one_part_stands_its_height() -
 		"a slot left empty below a filled one is a configuration warning naming it"
 	)
 	# Drawn whole: the merged mesh of a plant of the sunflower's bottom alone holds just that part.
-	var stem: FieldPlant = FieldPlant.new()
-	stem.mesh_level_1 = [FieldPlant.default_plant().get_part_mesh(0, 0), null, null]
+	var stem: SunflowerPlant = SunflowerPlant.new()
+	stem.mesh_level_1 = [SunflowerPlant.default_plant().get_part_mesh(0, 0), null, null]
 	check(stem.drawn_whole(), "a plant of one plant-material part is drawn whole")
 	check_eq(
 		stem.whole_mesh(0).get_faces().size(),
-		FieldPlant.default_plant().get_part_mesh(0, 0).get_faces().size(),
+		SunflowerPlant.default_plant().get_part_mesh(0, 0).get_faces().size(),
 		"its merged mesh is that part alone"
 	)
 	check(stem.whole_mesh(2) != null, "a level without meshes draws the level above's")
@@ -328,7 +364,9 @@ func test_the_impostor_quad_covers_only_what_its_views_show() -> void:
 		var area: float = 0.0
 		for view: Vector4 in drawn:
 			area += (view.z - view.x) * (view.w - view.y) / drawn.size()
-		check_eq(drawn.size(), FieldPlant.ATLAS_VIEWS.x * FieldPlant.ATLAS_VIEWS.y, "%s: a rectangle per view" % name)
+		check_eq(
+			drawn.size(), SunflowerPlant.ATLAS_VIEWS.x * SunflowerPlant.ATLAS_VIEWS.y, "%s: a rectangle per view" % name
+		)
 		check(area > 0.1 and area < 0.45, "%s: four views together fill %.2f of their squares" % [name, area])
 		check_eq(material.get_shader_parameter("view_bounds_up").size(), drawn.size(), "%s: pairs of views" % name)
 
@@ -337,19 +375,19 @@ func test_the_impostor_quad_covers_only_what_its_views_show() -> void:
 ## apart, as older bakes made) is read with its own rows, from its shape, so its views are still found
 ## where they are.
 func test_an_atlas_is_read_with_the_rows_it_was_baked_with() -> void:
-	var columns: int = FieldPlant.ATLAS_VIEWS.x
+	var columns: int = SunflowerPlant.ATLAS_VIEWS.x
 	var oldest: ImageTexture = ImageTexture.create_from_image(
 		Image.create(columns * 8, 4 * 8, false, Image.FORMAT_RGBA8)
 	)
 	var old: ImageTexture = ImageTexture.create_from_image(Image.create(columns * 8, 7 * 8, false, Image.FORMAT_RGBA8))
 	var now: ImageTexture = ImageTexture.create_from_image(
-		Image.create(columns * 8, FieldPlant.ATLAS_VIEWS.y * 8, false, Image.FORMAT_RGBA8)
+		Image.create(columns * 8, SunflowerPlant.ATLAS_VIEWS.y * 8, false, Image.FORMAT_RGBA8)
 	)
-	check_eq(FieldPlant.ATLAS_VIEWS, Vector2i(12, 10), "the baker's views: 12 around, 10 elevations")
+	check_eq(SunflowerPlant.ATLAS_VIEWS, Vector2i(12, 10), "the baker's views: 12 around, 10 elevations")
 	check_eq(ImpostorSetScript.atlas_layout(oldest), Vector2i(columns, 4), "a 4-row atlas")
 	check_eq(ImpostorSetScript.atlas_layout(old), Vector2i(columns, 7), "a 7-row atlas")
-	check_eq(ImpostorSetScript.atlas_layout(now), FieldPlant.ATLAS_VIEWS, "a 10-row atlas")
-	check_eq(ImpostorSetScript.atlas_layout(null), FieldPlant.ATLAS_VIEWS, "no atlas: the baker's layout")
+	check_eq(ImpostorSetScript.atlas_layout(now), SunflowerPlant.ATLAS_VIEWS, "a 10-row atlas")
+	check_eq(ImpostorSetScript.atlas_layout(null), SunflowerPlant.ATLAS_VIEWS, "no atlas: the baker's layout")
 	var impostors: RefCounted = ImpostorSetScript.new()
 	for texture: ImageTexture in [oldest, old, now]:
 		impostors.set_texture("views", texture)
@@ -370,11 +408,11 @@ func test_an_atlas_is_read_with_the_rows_it_was_baked_with() -> void:
 		print("     %d × %d: %s" % [size.x, size.y, problem])
 	# The shipped sunflower is baked with the baker's layout.
 	check_eq(
-		ImpostorSetScript.atlas_problem(FieldPlant.default_plant().impostor_views), "", "the built-in atlas' shape"
+		ImpostorSetScript.atlas_problem(SunflowerPlant.default_plant().impostor_views), "", "the built-in atlas' shape"
 	)
 	check_eq(
-		ImpostorSetScript.atlas_layout(FieldPlant.default_plant().impostor_views),
-		FieldPlant.ATLAS_VIEWS,
+		ImpostorSetScript.atlas_layout(SunflowerPlant.default_plant().impostor_views),
+		SunflowerPlant.ATLAS_VIEWS,
 		"the built-in sunflower's atlas"
 	)
 
@@ -416,7 +454,7 @@ func test_a_shader_of_your_own_is_made_to_fade() -> void:
 	check(first.shader == shader and shader.code == code, "your material and shader stay as they were")
 	check(PlantMaterialScript.fading(StandardMaterial3D.new()) == null, "only ShaderMaterials")
 	# Through a plant: the field's mesh draws the copy, the plant's own mesh keeps yours.
-	var plant: FieldPlant = FieldPlant.default_plant().duplicate()
+	var plant: SunflowerPlant = SunflowerPlant.default_plant().duplicate()
 	Dressing.dress_parts(plant, func(_level: int, _part: int) -> Material: return first)
 	var drawn: Material = plant.mesh_for_field(0, 0).surface_get_material(0)
 	check(
@@ -453,7 +491,7 @@ func test_a_shader_of_your_own_is_made_to_bend_when_drawn_whole() -> void:
 	shader.code = code
 	var own: ShaderMaterial = ShaderMaterial.new()
 	own.shader = shader
-	var plant: FieldPlant = FieldPlant.new()
+	var plant: SunflowerPlant = SunflowerPlant.new()
 	var box: BoxMesh = BoxMesh.new()
 	box.material = own
 	var mesh: ArrayMesh = ArrayMesh.new()
@@ -616,7 +654,7 @@ func test_plain_standard_materials_are_taken_over_and_others_kept() -> void:
 	check(PlantMaterialScript.adopt(passes, false) == null, "a next pass is kept as it is")
 	check(PlantMaterialScript.adopt(ORMMaterial3D.new(), false) == null, "an ORMMaterial3D is kept as it is")
 	check(PlantMaterialScript.adopt(leaf, true) == null, "vertex colours the material ignores: kept as it is")
-	var coloured: ArrayMesh = FieldPlant.default_plant().mesh_drawn(0, 0).duplicate() as ArrayMesh  # has them
+	var coloured: ArrayMesh = SunflowerPlant.default_plant().mesh_drawn(0, 0).duplicate() as ArrayMesh  # has them
 	for surface: int in coloured.get_surface_count():
 		coloured.surface_set_material(surface, leaf)
 	check(PlantMaterialScript.adopt_mesh(coloured) == coloured, "a mesh with vertex colours its material ignores")
@@ -624,7 +662,7 @@ func test_plain_standard_materials_are_taken_over_and_others_kept() -> void:
 	check(PlantMaterialScript.adopt(leaf, true) != null, "vertex colours as albedo: taken over")
 	# A plant of such parts is drawn whole, one surface per distinct material; switched off, or with
 	# one part kept, part by part.
-	var plant: FieldPlant = FieldPlant.default_plant().duplicate()
+	var plant: SunflowerPlant = SunflowerPlant.default_plant().duplicate()
 	var stalk: StandardMaterial3D = StandardMaterial3D.new()
 	stalk.vertex_color_use_as_albedo = true
 	var head: StandardMaterial3D = stalk.duplicate()

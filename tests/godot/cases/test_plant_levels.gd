@@ -32,7 +32,7 @@ func test_generated_levels_thin_the_cards_and_keep_the_cover() -> void:
 		scenes[file.get_basename()] = load(ScenePlantTests.TEST_PLANT_FOLDER.path_join(file)) as PackedScene
 	var figures: PackedStringArray = []
 	for plant_name: String in scenes:
-		var plant: FieldPlant = FieldPlant.from_scene(scenes[plant_name])
+		var plant: SunflowerPlant = SunflowerPlant.from_scene(scenes[plant_name])
 		if not check(plant != null, "%s: a plant is made of the scene" % plant_name):
 			continue
 		var triangles: Array = [1, 2, 3].map(
@@ -107,7 +107,9 @@ func test_generated_levels_thin_the_cards_and_keep_the_cover() -> void:
 ## of all: a standing blade (its foot on the base) grows only in width, keeping its foot and height;
 ## no card leaves the bounds given.
 func test_foliage_cards_thin_to_fewer_of_the_same_area() -> void:
-	var arrays: Array = (_card_bush().instantiate().get_node("Leaves").mesh as ArrayMesh).surface_get_arrays(0)
+	var bush: Node = _card_bush().instantiate()
+	var arrays: Array = (bush.get_node("Leaves").mesh as ArrayMesh).surface_get_arrays(0)
+	bush.free()
 	var positions: PackedVector3Array = arrays[Mesh.ARRAY_VERTEX]
 	var indices: PackedInt32Array = arrays[Mesh.ARRAY_INDEX]
 	for k: int in 12:  # blades standing on the base, 1 m tall

@@ -59,7 +59,7 @@ func _state(cell: int) -> int:
 
 
 func test_a_walking_pusher_tramples_a_trail_once_per_plant_which_recovers() -> void:
-	var plant: FieldPlant = field.get_plant_types()[0]
+	var plant: SunflowerPlant = field.get_plant_types()[0]
 	plant = plant.duplicate()
 	plant.recover_after = 3.0
 	field.plant = plant

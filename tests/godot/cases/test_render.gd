@@ -145,7 +145,7 @@ func test_plants_cut_or_put_at_run_time_change_the_far_field_at_once() -> void:
 	var field: SunflowerField = _still_field(
 		"res://fields/large.field", Vector3(100.0, 25.0, 190.0), Vector3(100.0, 0.0, 60.0)
 	)
-	field.legend = {"m": FieldPlant.default_plant().duplicate()}  # a second type, which the map does not grow
+	field.legend = {"m": SunflowerPlant.default_plant().duplicate()}  # a second type, which the map does not grow
 	await _built_and_drawn(field)
 	var before: Image = tree.root.get_viewport().get_texture().get_image()
 	var simulation: RefCounted = field.get_simulation()
@@ -187,7 +187,7 @@ func test_plants_cut_or_put_at_run_time_change_the_far_field_at_once() -> void:
 	)
 
 
-## A cut plant leaves the stump its type says (FieldPlant.stump_height), drawn whole as the built-in
+## A cut plant leaves the stump its type says (SunflowerPlant.stump_height), drawn whole as the built-in
 ## sunflower is, and part by part: a patch in front of the camera cut with stumps of 0.3 m and without.
 func test_cut_plants_leave_the_stumps_their_type_says() -> void:
 	var shares: Dictionary = {}
@@ -196,7 +196,7 @@ func test_cut_plants_leave_the_stumps_their_type_says() -> void:
 			"res://fields/demo.field", Vector3(5.0, 5.0, 11.0), Vector3(5.0, 0.0, 5.0)
 		)
 		field.map = Maps.filled(40, 20, "res://stumps.field")
-		var plant: FieldPlant = FieldPlant.default_plant().duplicate()
+		var plant: SunflowerPlant = SunflowerPlant.default_plant().duplicate()
 		plant.draw_whole = whole
 		plant.stump_height = 0.3
 		field.plant = plant
@@ -354,7 +354,7 @@ func test_plants_drawn_whole_look_as_drawn_part_by_part() -> void:
 	var calls: Array[int] = []
 	var picture: Picture = Picture.new(640, 360)
 	for whole: bool in [true, false]:
-		var own: FieldPlant = FieldPlant.default_plant().duplicate()
+		var own: SunflowerPlant = SunflowerPlant.default_plant().duplicate()
 		own.draw_whole = whole
 		var field: SunflowerField = await _windy_demo_field(own)
 		var counts: PackedInt32Array = field.get_lod_counts()
@@ -431,7 +431,7 @@ func test_plain_standard_materials_are_drawn_as_the_plant_material() -> void:
 	mapped.backlight_texture = ImageTexture.create_from_image(through)
 	var ways: Array[String] = ["built-in", "taken over", "own material", "mapped, taken over", "mapped, own material"]
 	for way: String in ways:
-		var own: FieldPlant = FieldPlant.default_plant().duplicate()
+		var own: SunflowerPlant = SunflowerPlant.default_plant().duplicate()
 		if way != "built-in":
 			var material: StandardMaterial3D = mapped if way.begins_with("mapped") else standard
 			Dressing.dress_parts(own, func(_level: int, _part: int) -> Material: return material)
@@ -490,7 +490,7 @@ func test_a_shader_of_your_own_fades() -> void:
 		if way == "made to fade":
 			shader.code = PLAIN_SHADER
 			material.set_shader_parameter("colour", Color(1.0, 0.0, 0.0))
-		var own: FieldPlant = FieldPlant.default_plant().duplicate()
+		var own: SunflowerPlant = SunflowerPlant.default_plant().duplicate()
 		Dressing.dress_parts(own, func(_level: int, _part: int) -> Material: return material)
 		own.use_plant_material = way != "not fading"
 		var field: SunflowerField = SunflowerField.new()
@@ -847,7 +847,7 @@ func _snapshot(picture: Picture, file: String) -> PackedFloat32Array:
 ## The demo field of [param plant] seen from inside at one instant of a strong wind, without fades
 ## (plants drawn whole fade between mesh levels, parts drawn by their own material do not: the
 ## tests compare the pictures without them).
-func _windy_demo_field(plant: FieldPlant) -> SunflowerField:
+func _windy_demo_field(plant: SunflowerPlant) -> SunflowerField:
 	var field: SunflowerField = _still_field(
 		"res://fields/demo.field", Vector3(8.0, 2.8, 10.0), Vector3(14.0, 0.8, 3.0)
 	)

@@ -119,16 +119,16 @@ func test_bad_values_are_rejected_or_clamped_with_a_warning() -> void:
 	check(warned("SunflowerField.budget_primitives"), "and warns")
 	field.plant_height = NAN
 	check_eq(field.plant_height, 2.0, "NaN plant height is rejected")
-	check(warned("FieldPlant.height"), "bad height warns")
-	var plant: FieldPlant = FieldPlant.new()
+	check(warned("SunflowerPlant.height"), "bad height warns")
+	var plant: SunflowerPlant = SunflowerPlant.new()
 	plant.impostor_shadow_shift = NAN
 	check_near(plant.impostor_shadow_shift, 0.03, 1e-6, "a NaN shadow shift is the default")
-	check(warned("FieldPlant.impostor_shadow_shift: nan"), "a NaN shadow shift warns")
+	check(warned("SunflowerPlant.impostor_shadow_shift: nan"), "a NaN shadow shift warns")
 	plant.impostor_shadow_shift = 2.0
 	check_eq(plant.impostor_shadow_shift, 0.5, "a shadow shift past its range is clamped")
 	plant.impostor_emission_range = NAN
 	check_eq(plant.impostor_emission_range, 8.0, "a NaN emission range is the default")
-	check(warned("FieldPlant.impostor_emission_range: nan"), "a NaN emission range warns")
+	check(warned("SunflowerPlant.impostor_emission_range: nan"), "a NaN emission range warns")
 	plant.impostor_emission_range = 0.0
 	check_eq(plant.impostor_emission_range, 1.0, "an emission range below 1 is clamped (no division by 0)")
 	field.lod_distances = PackedFloat32Array([6.0, 5.0, 20.0, 25.0])

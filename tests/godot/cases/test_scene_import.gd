@@ -1,5 +1,5 @@
 extends TestCase
-## A catalogue of odd plant scenes, built here, each through FieldPlant.from_scene: drawn as the
+## A catalogue of odd plant scenes, built here, each through SunflowerPlant.from_scene: drawn as the
 ## editor shows it (top_level nodes where they stand, MultiMesh instances as parts, blend shapes at
 ## their weights, Godot's visibility-range levels of detail as mesh levels), or refused or warned
 ## about with a message naming the node and the reason (nothing with area, non-finite positions,
@@ -37,7 +37,7 @@ func test_a_top_level_node_stands_where_it_stands_not_where_its_parent_is() -> v
 	var free: MeshInstance3D = _box_node("Free", Vector3(0.4, 2.0, 0.4), Vector3(0.0, 1.0, 0.0))
 	free.top_level = true
 	holder.add_child(free)
-	var plant: FieldPlant = FieldPlant.from_scene(Scenes.packed(root))
+	var plant: SunflowerPlant = SunflowerPlant.from_scene(Scenes.packed(root))
 	if check(plant != null, "a plant"):
 		check_near(plant.height, 2.0, 1e-3, "2 m tall from the root, as the top_level box stands (not 7 m)")
 
@@ -59,7 +59,7 @@ func test_multimesh_instances_are_parts_of_the_plant() -> void:
 		multimesh.set_instance_transform(k, Transform3D(Basis(), Vector3(0.5 * (k - 1), 2.5 + 0.3 * k, 0.0)))
 	leaves.multimesh = multimesh
 	root.add_child(leaves)
-	var plant: FieldPlant = FieldPlant.from_scene(Scenes.packed(root))
+	var plant: SunflowerPlant = SunflowerPlant.from_scene(Scenes.packed(root))
 	if not check(plant != null, "a plant"):
 		return
 	if multimesh.buffer.is_empty():  # --headless: the renderer kept no transforms, read as identity once
@@ -105,7 +105,7 @@ func test_blend_shapes_are_taken_at_the_nodes_weights() -> void:
 	instance.mesh = mesh
 	instance.set_blend_shape_value(0, 1.0)
 	root.add_child(instance)
-	var plant: FieldPlant = FieldPlant.from_scene(Scenes.packed(root))
+	var plant: SunflowerPlant = SunflowerPlant.from_scene(Scenes.packed(root))
 	if check(plant != null, "a plant"):
 		check_near(plant.height, 3.0, 1e-3, "3 m tall, as its blend shape at weight 1 shows it (the base is 1 m)")
 
@@ -116,7 +116,7 @@ func test_a_scene_that_draws_nothing_with_area_is_refused_naming_why() -> void:
 	flat.scale = Vector3.ZERO
 	root.add_child(flat)
 	allow_error("draws no triangle with area")
-	check(FieldPlant.from_scene(Scenes.packed(root)) == null, "no plant of a mesh scaled to nothing")
+	check(SunflowerPlant.from_scene(Scenes.packed(root)) == null, "no plant of a mesh scaled to nothing")
 
 
 func test_non_finite_positions_are_named_by_node_and_surface() -> void:
@@ -131,7 +131,7 @@ func test_non_finite_positions_are_named_by_node_and_surface() -> void:
 	instance.name = "Broken"
 	instance.mesh = broken
 	root.add_child(instance)
-	var plant: FieldPlant = FieldPlant.from_scene(Scenes.packed(root))
+	var plant: SunflowerPlant = SunflowerPlant.from_scene(Scenes.packed(root))
 	check(plant != null, "a plant of the rest")
 	check(warned("Broken: surface 0 has 1 vertex positions that are not finite"), "the node and surface named")
 	if plant:
@@ -142,7 +142,7 @@ func test_a_gap_in_the_lod_suffixes_is_named() -> void:
 	var root: Node3D = _root()
 	root.add_child(_box_node("Bush_LOD1", Vector3(1.0, 1.0, 1.0), Vector3(0.0, 0.5, 0.0)))
 	root.add_child(_box_node("Bush_LOD2", Vector3(1.0, 0.5, 1.0), Vector3(0.0, 0.25, 0.0)))
-	var plant: FieldPlant = FieldPlant.from_scene(Scenes.packed(root))
+	var plant: SunflowerPlant = SunflowerPlant.from_scene(Scenes.packed(root))
 	check(warned("no _LOD0: _LOD1 is taken as mesh level 1"), "the missing _LOD0 named")
 	if check(plant != null, "a plant of the variants there are"):
 		check_near(plant.height, 1.0, 1e-3, "mesh 1 is Bush_LOD1")
@@ -158,7 +158,7 @@ func test_nodes_it_does_not_read_are_named() -> void:
 	var crown: CSGSphere3D = CSGSphere3D.new()
 	crown.name = "Crown"
 	root.add_child(crown)
-	var plant: FieldPlant = FieldPlant.from_scene(Scenes.packed(root))
+	var plant: SunflowerPlant = SunflowerPlant.from_scene(Scenes.packed(root))
 	check(plant != null, "a plant of what it reads")
 	var warnings: String = "\n".join(take_warnings())
 	check(warnings.contains("Flower: a Sprite3D is not read"), "the sprite named, with the reason")
@@ -195,7 +195,7 @@ func test_a_skinned_mesh_is_taken_in_its_pose() -> void:
 	skinned.mesh = body
 	skinned.skeleton = NodePath("..")
 	skeleton.add_child(skinned)
-	var plant: FieldPlant = FieldPlant.from_scene(Scenes.packed(root))
+	var plant: SunflowerPlant = SunflowerPlant.from_scene(Scenes.packed(root))
 	if check(plant != null, "a plant"):
 		check_near(plant.height, 2.0, 1e-3, "2 m tall, as its bone's pose shows it")
 
@@ -203,6 +203,6 @@ func test_a_skinned_mesh_is_taken_in_its_pose() -> void:
 func test_a_plant_wholly_below_its_root_is_warned_about() -> void:
 	var root: Node3D = _root()
 	root.add_child(_box_node("Sunk", Vector3(1.0, 2.0, 1.0), Vector3(0.0, -4.0, 0.0)))
-	var plant: FieldPlant = FieldPlant.from_scene(Scenes.packed(root))
+	var plant: SunflowerPlant = SunflowerPlant.from_scene(Scenes.packed(root))
 	check(plant != null, "a plant, as the scene has it")
 	check(warned("stands wholly below its root"), "with what to fix")

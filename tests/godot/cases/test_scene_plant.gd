@@ -1,5 +1,5 @@
 extends TestCase
-## A plant from a scene (FieldPlant.from_scene): a tree as an asset pack ships it (a trunk with a
+## A plant from a scene (SunflowerPlant.from_scene): a tree as an asset pack ships it (a trunk with a
 ## material override, a crown node moved, turned and scaled holding alpha-cut leaves in a surface
 ## override) becomes one mesh per level, placed and drawn as the scene shows it, framed from its
 ## bounds; its level-of-detail variants are its mesh levels, or levels 2 and 3 are simplified; no
@@ -18,7 +18,7 @@ const CROWN_SCALE: float = 1.5
 ## Plants made by Blender's Sapling Tree Gen (assets/test_plants/make_test_plants.py).
 const TEST_PLANT_FOLDER: String = "res://test_plants"
 const TEST_PLANTS: PackedStringArray = ["maple_tree.glb", "bottlebrush_bush.glb", "grass_clump.glb"]
-## The test plants whose near plants cast from their meshes at every level (FieldPlant.impostor_shadows
+## The test plants whose near plants cast from their meshes at every level (SunflowerPlant.impostor_shadows
 ## off, as docs/plants.md advises for trees): the maple's impostor shadows are lighter than its
 ## branches' and leaves' (its field 25 m up at 45° scores SSIM 0.799 with them, 0.868 without).
 const MESH_SHADOWS: PackedStringArray = ["maple_tree"]
@@ -114,7 +114,7 @@ func _scene_bounds(packed: PackedScene) -> AABB:
 
 func test_a_scene_of_several_meshes_becomes_a_plant_of_one_part_per_level() -> void:
 	var packed: PackedScene = _tree_scene()
-	var plant: FieldPlant = FieldPlant.from_scene(packed)
+	var plant: SunflowerPlant = SunflowerPlant.from_scene(packed)
 	if not check(plant != null, "a plant is made of the scene"):
 		return
 	var level_1: Mesh = plant.get_part_mesh(0, 0)
@@ -158,7 +158,7 @@ func test_a_scene_of_several_meshes_becomes_a_plant_of_one_part_per_level() -> v
 	check(triangles[2] > 0, "and still draw the plant")
 	# Its variants, where the scene has them: Leaves_LOD1 at mesh 2 (with the trunk, which has none).
 	var variant_scene: PackedScene = _tree_scene(true)
-	var with_variants: FieldPlant = FieldPlant.from_scene(variant_scene)
+	var with_variants: SunflowerPlant = SunflowerPlant.from_scene(variant_scene)
 	var parts: Node = variant_scene.instantiate()
 	var trunk: int = ScenePlant.triangle_count(parts.get_node("Trunk").mesh)
 	for level: int in 3:
@@ -179,8 +179,8 @@ func test_a_scene_of_several_meshes_becomes_a_plant_of_one_part_per_level() -> v
 	field.finish_build()
 	var sunflower: Array = []
 	for level: int in 3:
-		sunflower.append(FieldPlant.default_plant().whole_mesh(level))
-		sunflower.append_array(FieldPlant.default_plant().get("mesh_level_%d" % (level + 1)))
+		sunflower.append(SunflowerPlant.default_plant().whole_mesh(level))
+		sunflower.append_array(SunflowerPlant.default_plant().get("mesh_level_%d" % (level + 1)))
 	var drawn: Array[Mesh] = []
 	for node: Node in field.find_children("*", "MultiMeshInstance3D", true, false):
 		var mesh: Mesh = (node as MultiMeshInstance3D).multimesh.mesh
@@ -195,9 +195,9 @@ func test_a_scene_of_several_meshes_becomes_a_plant_of_one_part_per_level() -> v
 ## in a field of a row of Sapling maples (8.7 m), sunflowers and grass clumps (0.9 m), plants the same
 ## distance away are at finer levels the larger their type; lod_scale overrides it.
 func test_lod_distances_follow_each_plant_types_size() -> void:
-	var maple: FieldPlant = FieldPlant.from_scene(load(TEST_PLANT_FOLDER.path_join("maple_tree.glb")))
-	var grass: FieldPlant = FieldPlant.from_scene(load(TEST_PLANT_FOLDER.path_join("grass_clump.glb")))
-	check_near(FieldPlant.default_plant().lod_scale_used(), 1.0, 1e-3, "the sunflower keeps the field's distances")
+	var maple: SunflowerPlant = SunflowerPlant.from_scene(load(TEST_PLANT_FOLDER.path_join("maple_tree.glb")))
+	var grass: SunflowerPlant = SunflowerPlant.from_scene(load(TEST_PLANT_FOLDER.path_join("grass_clump.glb")))
+	check_near(SunflowerPlant.default_plant().lod_scale_used(), 1.0, 1e-3, "the sunflower keeps the field's distances")
 	check(maple.lod_scale_used() > 4.0, "a maple's are over 4× as far (%.2f)" % maple.lod_scale_used())
 	check(grass.lod_scale_used() < 0.6, "a grass clump's under 0.6× (%.2f)" % grass.lod_scale_used())
 	var map: SunflowerFieldMap = SunflowerFieldMap.new()
@@ -217,7 +217,7 @@ func test_lod_distances_follow_each_plant_types_size() -> void:
 	for i: int in 20:
 		field.advance(0.3)
 	var distances: PackedFloat32Array = field.lod_distances
-	var rows: Array[FieldPlant] = [maple, FieldPlant.default_plant(), grass]
+	var rows: Array[SunflowerPlant] = [maple, SunflowerPlant.default_plant(), grass]
 	var checked: int = 0
 	for i: int in field.get_plant_count():
 		var info: Dictionary = field.get_plant_info(i)
@@ -239,7 +239,7 @@ func test_lod_distances_follow_each_plant_types_size() -> void:
 	check_near(maple.lod_scale_used(), 1.0, 1e-6, "lod_scale overrides the size")
 	maple.lod_scale = NAN
 	check_eq(maple.lod_scale, 1.0, "a NaN scale is refused")
-	check(warned("FieldPlant.lod_scale: nan"), "with a warning naming the property")
+	check(warned("SunflowerPlant.lod_scale: nan"), "with a warning naming the property")
 	field.free()
 	observer.free()
 
@@ -250,7 +250,7 @@ func test_a_scene_with_nothing_to_draw_is_an_error_naming_it() -> void:
 	empty.pack(root)
 	root.free()
 	allow_error("has no visible MeshInstance3D, MultiMeshInstance3D or CSG shape")
-	check(FieldPlant.from_scene(empty) == null, "no plant of a scene without meshes")
+	check(SunflowerPlant.from_scene(empty) == null, "no plant of a scene without meshes")
 
 
 ## Each test plant alone (the tree scene built here and the three Sapling plants of
@@ -271,7 +271,7 @@ func test_a_lone_scene_plant_looks_like_its_scene_drawn_plainly() -> void:
 
 
 func _compare_lone_plant(plant_name: String, packed: PackedScene) -> void:
-	var plant: FieldPlant = FieldPlant.from_scene(packed)
+	var plant: SunflowerPlant = SunflowerPlant.from_scene(packed)
 	if not check(plant != null, "%s: a plant is made of the scene" % plant_name):
 		return
 	plant.yaw_range = 0.0
@@ -339,7 +339,7 @@ func _compare_lone_plant(plant_name: String, packed: PackedScene) -> void:
 
 ## The rectangle of the screen that holds [param plant] standing at [param root], a tenth more each
 ## way, within the viewport.
-func _box_on_screen(camera: Camera3D, root: Vector3, plant: FieldPlant) -> Rect2i:
+func _box_on_screen(camera: Camera3D, root: Vector3, plant: SunflowerPlant) -> Rect2i:
 	var half: float = 0.5 * plant.impostor_width * plant.height / plant.height_units
 	var box: Rect2 = Rect2(camera.unproject_position(root), Vector2.ZERO)
 	for corner: int in 8:
@@ -383,7 +383,7 @@ func test_a_plant_of_one_part_bends_in_the_wind_and_its_base_stands() -> void:
 	check(absf(bases[1] - bases[0]) < 0.05, "the shader's own shift is left out (%.2f m)" % (bases[1] - bases[0]))
 
 
-## Leaves flutter ([member FieldPlant.flutter]): the pole bent by wind 6, the field held still (no
+## Leaves flutter ([member SunflowerPlant.flutter]): the pole bent by wind 6, the field held still (no
 ## updates, so its bend stays), drawn over eight frames. With flutter its upper part (8 m up: the
 ## top itself dips up to ~1 m as it moves, so a row nearer it may miss it) moves from frame to frame
 ## and a point a tenth of its height up under a tenth as far; without, it stays. The pole is in both
@@ -396,7 +396,7 @@ func test_a_plant_of_one_part_flutters_at_its_top() -> void:
 		field.advance(1.0 / 30.0)
 	var spreads: Array[Vector2] = []
 	for flutter: float in [0.0, 1.0]:
-		(pole.plant as FieldPlant).flutter = flutter
+		(pole.plant as SunflowerPlant).flutter = flutter
 		await frames(2)
 		var tops: PackedFloat32Array = []
 		var lows: PackedFloat32Array = []
@@ -451,7 +451,7 @@ func _pole_field(material: Material = null, card: bool = false) -> Dictionary:
 	var packed: PackedScene = PackedScene.new()
 	packed.pack(pole)
 	pole.free()
-	var plant: FieldPlant = FieldPlant.from_scene(packed)
+	var plant: SunflowerPlant = SunflowerPlant.from_scene(packed)
 	plant.yaw_range = 0.0
 	check(plant.drawn_whole(), "the pole is drawn whole (its shader bends it)")
 	var field: SunflowerField = SunflowerField.new()
@@ -527,7 +527,7 @@ func _red_centre(image: Image, row: int) -> float:
 func test_each_test_plants_impostor_views_are_framed() -> void:
 	var cell: int = ImpostorBaker.CELL_PIXELS
 	for file: String in TEST_PLANTS:
-		var plant: FieldPlant = await _baked_test_plant(file)
+		var plant: SunflowerPlant = await _baked_test_plant(file)
 		if not check(plant != null, "%s: baked" % file):
 			continue
 		var views: Image = plant.impostor_views.get_image()
@@ -536,8 +536,8 @@ func test_each_test_plants_impostor_views_are_framed() -> void:
 		views.save_png(artifact_path("scene_plant_%s_views.png" % file.get_basename()))
 		var touching: PackedStringArray = []
 		var empty: int = 0
-		for row: int in FieldPlant.ATLAS_VIEWS.y:
-			for column: int in FieldPlant.ATLAS_VIEWS.x:
+		for row: int in SunflowerPlant.ATLAS_VIEWS.y:
+			for column: int in SunflowerPlant.ATLAS_VIEWS.x:
 				var square: Image = views.get_region(Rect2i(column * cell, row * cell, cell, cell))
 				if square.get_used_rect().size == Vector2i.ZERO:
 					empty += 1
@@ -551,7 +551,7 @@ func test_each_test_plants_impostor_views_are_framed() -> void:
 ## Each test plant's impostor, alone, against its mesh 1 at the same view (45° above, on black, no
 ## ground, calm, unshadowed): where its impostors begin, the pixels it covers are 0.85–1.15 of the
 ## mesh's. Its thin leaves' cover is kept by the bake (supersampled: a pixel's alpha is the share
-## covered) and by the alpha cut measured per mip level (FieldPlant.impostor_alpha_cuts). Reported,
+## covered) and by the alpha cut measured per mip level (SunflowerPlant.impostor_alpha_cuts). Reported,
 ## not checked (not met yet for the maple: docs/plants.md): the cover twice as far, and the leaf
 ## green pixels' share of the mesh's at both.
 func test_each_test_plants_lone_impostor_covers_what_its_mesh_covers() -> void:
@@ -560,7 +560,7 @@ func test_each_test_plants_lone_impostor_covers_what_its_mesh_covers() -> void:
 	tree.root.size = window * 2  # more pixels a plant: a far tree is a few hundred at 640 × 360
 	await RenderingServer.frame_post_draw
 	for file: String in TEST_PLANTS:
-		var plant: FieldPlant = await _baked_test_plant(file)
+		var plant: SunflowerPlant = await _baked_test_plant(file)
 		if not check(plant != null, "%s: baked" % file):
 			continue
 		var staged: Stage = Stage.new(tree.root)
@@ -622,7 +622,7 @@ func test_each_test_plants_lone_impostor_covers_what_its_mesh_covers() -> void:
 ## is drawn.
 func test_empty_slots_of_a_plant_drawn_part_by_part_fill_no_instances() -> void:
 	stage = Stage.new(tree.root).root
-	var plant: FieldPlant = FieldPlant.new()
+	var plant: SunflowerPlant = SunflowerPlant.new()
 	var trunk: BoxMesh = BoxMesh.new()
 	trunk.size = Vector3(0.4, 3.0, 0.4)
 	plant.mesh_level_1 = [trunk, null, null]
@@ -675,9 +675,9 @@ func _yellow_pixels(image: Image) -> int:
 
 ## The test plant of [param file] made from its scene, with its impostors baked (once a run: the
 ## tests that need it share it); null when the bake failed.
-func _baked_test_plant(file: String) -> FieldPlant:
+func _baked_test_plant(file: String) -> SunflowerPlant:
 	if not baked_plants.has(file):
-		var plant: FieldPlant = FieldPlant.from_scene(load(TEST_PLANT_FOLDER.path_join(file)) as PackedScene)
+		var plant: SunflowerPlant = SunflowerPlant.from_scene(load(TEST_PLANT_FOLDER.path_join(file)) as PackedScene)
 		var result: Error = await plant.bake_impostors(tree.root, "user://scene_plants", file.get_basename())
 		baked_plants[file] = plant if result == OK and plant.impostor_views != null else null
 	return baked_plants[file]
@@ -695,13 +695,13 @@ func test_a_field_of_each_test_plant_looks_like_its_meshes() -> void:
 	tree.root.size = window * 2
 	await RenderingServer.frame_post_draw
 	for file: String in TEST_PLANTS:
-		var plant: FieldPlant = await _baked_test_plant(file)
+		var plant: SunflowerPlant = await _baked_test_plant(file)
 		if check(plant != null, "%s: baked" % file):
 			await _compare_field(file.get_basename(), plant)
 	tree.root.size = window
 
 
-func _compare_field(plant_name: String, plant: FieldPlant) -> void:
+func _compare_field(plant_name: String, plant: SunflowerPlant) -> void:
 	var cell: float = maxf(0.5, plant.spacing_metres())
 	var impostors_from: float = SunflowerField.DEFAULT_LOD_DISTANCES[2]
 	var cells: int = ceili(maxf(60.0, 3.0 * plant.lod_scale_used() * impostors_from) / cell)
@@ -809,7 +809,7 @@ func _field_picture(field: SunflowerField, force: int, name: String) -> Image:
 
 ## The picture of [param field] with every mesh level of [param plant] drawn black and unshaded, no
 ## ground and a black sky: what is not black is impostor. The plant's meshes are put back.
-func _impostors_alone(staged: Stage, field: SunflowerField, plant: FieldPlant, name: String) -> Image:
+func _impostors_alone(staged: Stage, field: SunflowerField, plant: SunflowerPlant, name: String) -> Image:
 	var black: StandardMaterial3D = Dressing.unlit_black()
 	var kept: Array = [plant.mesh_level_1, plant.mesh_level_2, plant.mesh_level_3]
 	Dressing.dress_parts(plant, func(_level: int, _part: int) -> Material: return black)

@@ -1,12 +1,12 @@
 extends TestCase
-## Several plant types in one map: the legend maps a character to a FieldPlant; each type has its
+## Several plant types in one map: the legend maps a character to a SunflowerPlant; each type has its
 ## own near buckets, impostors and chunks, its own height, and LOD counts per type that add up to
 ## the field's. A render of a hilly field mixing the sunflower and the red sunflower shows both,
 ## standing on the hills (saved to tests/artifacts/render_hilly_mixed.png).
 
 const FarTileTable: GDScript = preload("res://addons/sunflower_field/far_tile_table.gd")
 const NativeField: GDScript = preload("res://addons/sunflower_field/native_field.gd")
-const RED: FieldPlant = preload("res://addons/sunflower_field/plants/red_sunflower.tres")
+const RED: SunflowerPlant = preload("res://addons/sunflower_field/plants/red_sunflower.tres")
 const SHOT: String = "render_hilly_mixed.png"
 
 var scene: Node3D
@@ -50,7 +50,7 @@ func test_a_legend_plant_is_a_species_with_its_own_buckets_impostors_and_counts(
 	var stone: PackedScene = PackedScene.new()
 	stone.pack(marker)
 	marker.free()
-	var maize: FieldPlant = FieldPlant.new()
+	var maize: SunflowerPlant = SunflowerPlant.new()
 	maize.name = "Box maize"
 	maize.height = 3.0
 	maize.height_units = 3.5
@@ -63,7 +63,7 @@ func test_a_legend_plant_is_a_species_with_its_own_buckets_impostors_and_counts(
 	scene.add_child(field)
 	field.finish_build()
 	check_eq(field.get_plant_count(), 60 * 60 - 1, "plants of both types (and one stone)")
-	var types: Array[FieldPlant] = field.get_plant_types()
+	var types: Array[SunflowerPlant] = field.get_plant_types()
 	check(types.size() == 2 and types[1] == maize, "the field grows the sunflower and the legend's plant")
 	check(_node_named(field, "Plant1Mesh1Head") != null, "the second type has its own near bucket nodes")
 	check(_node_named(field, "Plant1Mesh1Head").multimesh.mesh == box, "drawn with its own parts")
