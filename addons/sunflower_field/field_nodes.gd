@@ -260,6 +260,7 @@ func finish(species_plants: Array, legend: Dictionary, cell_size: float, sway_ma
 				_mesh_node_species.append(species)
 				if cheap_shadows and level < levels - 1:
 					_add_shadow_twin(whole, whole_bucket, plant.whole_mesh(levels - 1))
+				_give_instance_parameters(whole, plant)
 				continue
 			for part: int in PART_NAMES.size():
 				var node_name: String = "%sMesh%d%s" % [prefix, level + 1, PART_NAMES[part].capitalize()]
@@ -271,6 +272,7 @@ func finish(species_plants: Array, legend: Dictionary, cell_size: float, sway_ma
 				_mesh_node_species.append(species)
 				if cheap_shadows and level < levels - 1:
 					_add_shadow_twin(node, bucket, plant.mesh_for_field(levels - 1, part))
+				_give_instance_parameters(node, plant)
 		# The near sprites and billboards: one multi-view impostor draws both.
 		var impostors: MultiMeshInstance3D = _make_node(prefix + "Impostors", _impostors[species].mesh(), aabb)
 		_add_dynamic(impostors, first + Native.constant(&"BUCKET_IMPOSTOR"))
@@ -411,6 +413,18 @@ func set_plant_meshes(species: int, plant: Resource) -> void:
 				plant.mesh_for_field(level, part),
 				plant.mesh_for_field(levels - 1, part)
 			)
+	for node: int in _mesh_nodes.size():
+		if _mesh_node_species[node] == species:
+			_give_instance_parameters(_mesh_nodes[node], plant)
+
+
+## Gives a near mesh node (and its shadow twin) [param plant]'s instance shader parameters.
+func _give_instance_parameters(node: MultiMeshInstance3D, plant: Resource) -> void:
+	var twin: MultiMeshInstance3D = node.get_node_or_null(NodePath(CASTER_NAME))
+	for parameter: StringName in plant.instance_shader_parameters:
+		node.set_instance_shader_parameter(parameter, plant.instance_shader_parameters[parameter])
+		if twin:
+			twin.set_instance_shader_parameter(parameter, plant.instance_shader_parameters[parameter])
 
 
 ## Draws a near bucket with [param mesh], and its shadow twin (if any) with [param shadow_mesh].

@@ -97,6 +97,15 @@ static var _default: SunflowerPlant
 			use_plant_material = accepted
 			emit_changed()
 
+## Values the field gives the [code]instance uniform[/code]s of the parts' shaders on every node that
+## draws this plant's meshes (and the impostor bake), by name — what a scene's nodes set as their
+## [code]instance_shader_parameters/…[/code] ([method from_scene] takes them). Every part of the plant
+## gets the same value of a parameter.
+@export var instance_shader_parameters: Dictionary = {}:
+	set(value):
+		instance_shader_parameters = value
+		emit_changed()
+
 @export_group("Form")
 ## Model units from each part's root to the next one's: bottom → middle, middle → head, and the
 ## head's own length. [member height] spans their sum, the lengths of empty slots above the top
@@ -351,6 +360,7 @@ static func from_scene(scene: PackedScene) -> SunflowerPlant:
 	plant.mesh_level_1 = [made.levels[0], null, null]
 	plant.mesh_level_2 = [made.levels[1], null, null]
 	plant.mesh_level_3 = [made.levels[2], null, null]
+	plant.instance_shader_parameters = made.instance_parameters
 	plant.fit_to_meshes()
 	plant.height = plant.part_lengths.x
 	plant.middle_variation = 0.0  # a plant of one part has no middle to stretch

@@ -456,6 +456,8 @@ static func _stage(plant: SunflowerPlant) -> Stage:
 			for part: int in lengths.size():
 				var instance: MeshInstance3D = MeshInstance3D.new()
 				instance.mesh = plant.mesh_drawn(level, part)
+				for parameter: StringName in plant.instance_shader_parameters:
+					instance.set_instance_shader_parameter(parameter, plant.instance_shader_parameters[parameter])
 				instance.position.y = y
 				copy.add_child(instance)
 				y += lengths[part]

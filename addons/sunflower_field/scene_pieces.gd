@@ -13,12 +13,14 @@ extends RefCounted
 const LEVELS: int = 3
 
 static var _suffix: RegEx
+static var _instance_uniform: RegEx
 
 
 ## The pieces [param root] draws: each a Dictionary of [code]"name"[/code] (the node's path in the
 ## scene), [code]"mesh"[/code], [code]"materials"[/code] (one a surface, as shown),
 ## [code]"transform"[/code] (to the root's frame), [code]"weights"[/code] (blend shape values; empty:
-## none) and [code]"level"[/code] (0–2, or -1 for every level). What is left out, and why, is
+## none), [code]"level"[/code] (0–2, or -1 for every level) and [code]"instance_parameters"[/code]
+## (the node's values of its materials' [code]instance uniform[/code]s). What is left out, and why, is
 ## appended to [param problems].
 static func of(root: Node, problems: PackedStringArray) -> Array[Dictionary]:
 	var pieces: Array[Dictionary] = []
@@ -234,7 +236,26 @@ static func _piece(
 		"level": -1,
 		"suffix": level_of_name(instance.name),
 		"range": Vector2(instance.visibility_range_begin, instance.visibility_range_end),
+		"instance_parameters": instance_parameters(instance, materials),
 	}
+
+
+## The values [param instance] gives the [code]instance uniform[/code]s its [param materials]'
+## shaders declare (its [code]instance_shader_parameters/…[/code]), by name; those it leaves at the
+## shader's default are not in it.
+static func instance_parameters(instance: GeometryInstance3D, materials: Array[Material]) -> Dictionary:
+	if _instance_uniform == null:
+		_instance_uniform = RegEx.create_from_string("instance\\s+uniform\\s+(?:\\w+\\s+)+?(\\w+)\\s*[:;=]")
+	var found: Dictionary = {}
+	for material: Material in materials:
+		var shader: Shader = (material as ShaderMaterial).shader if material is ShaderMaterial else null
+		if shader == null:
+			continue
+		for uniform: RegExMatch in _instance_uniform.search_all(shader.code):
+			var value: Variant = instance.get_instance_shader_parameter(uniform.get_string(1))
+			if value != null:
+				found[uniform.get_string(1)] = value
+	return found
 
 
 ## Levels from the names' suffixes: the suffixes present, lowest first, are levels 1, 2, 3 (a gap,

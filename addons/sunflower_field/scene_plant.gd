@@ -46,7 +46,8 @@ const CardSlices: GDScript = preload("card_slices.gd")
 
 ## The scene's three mesh levels as ArrayMeshes (null where the scene has nothing to draw), with
 ## [code]"generated"[/code] (whether levels 2 and 3 were simplified from level 1),
-## [code]"triangles"[/code] (per level) and [code]"problems"[/code] (what was left out, and why).
+## [code]"triangles"[/code] (per level), [code]"instance_parameters"[/code] (the instance shader
+## parameters its nodes set) and [code]"problems"[/code] (what was left out, and why).
 static func levels_of(scene: PackedScene) -> Dictionary:
 	var problems: PackedStringArray = []
 	var root: Node = scene.instantiate() if scene else null
@@ -55,6 +56,7 @@ static func levels_of(scene: PackedScene) -> Dictionary:
 		return {"levels": [null, null, null], "generated": false, "triangles": [0, 0, 0], "problems": problems}
 	var pieces: Array[Dictionary] = ScenePieces.of(root, problems)
 	root.free()
+	var parameters: Dictionary = _instance_parameters(pieces, problems)
 	var variants: bool = pieces.any(func(piece: Dictionary) -> bool: return piece.level >= 0)
 	var levels: Array = []
 	for level: int in 3 if variants else 1:
@@ -79,8 +81,41 @@ static func levels_of(scene: PackedScene) -> Dictionary:
 		"levels": levels,
 		"generated": not variants,
 		"triangles": levels.map(func(mesh: Mesh) -> int: return triangle_count(mesh)),
+		"instance_parameters": parameters,
 		"problems": problems,
 	}
+
+
+## The instance shader parameters the scene's nodes set, by name, for every part of the plant (the
+## field draws all of a level with one node); a parameter two nodes set to different values is
+## named in [param problems], the first node's value kept.
+static func _instance_parameters(pieces: Array[Dictionary], problems: PackedStringArray) -> Dictionary:
+	var parameters: Dictionary = {}
+	var set_by: Dictionary = {}
+	for piece: Dictionary in pieces:
+		for parameter: String in piece.instance_parameters:
+			var value: Variant = piece.instance_parameters[parameter]
+			if not parameters.has(parameter):
+				parameters[parameter] = value
+				set_by[parameter] = piece.name
+			elif parameters[parameter] != value:
+				(
+					problems
+					. append(
+						(
+							"%s: its instance shader parameter '%s' is %s, but %s sets it to %s; the plant draws every part with %s's"
+							% [
+								piece.name,
+								parameter,
+								value,
+								set_by[parameter],
+								parameters[parameter],
+								set_by[parameter]
+							]
+						)
+					)
+				)
+	return parameters
 
 
 ## [param mesh] with the tall standing cards of its surfaces sliced so that they bend (level 1's

@@ -206,3 +206,82 @@ func test_a_plant_wholly_below_its_root_is_warned_about() -> void:
 	var plant: SunflowerPlant = SunflowerPlant.from_scene(Scenes.packed(root))
 	check(plant != null, "a plant, as the scene has it")
 	check(warned("stands wholly below its root"), "with what to fix")
+
+
+## Instance shader parameters a scene's nodes set (instance_shader_parameters/…) are the plant's:
+## the field gives them to every node that draws its meshes, so a part tinted by its node is drawn
+## in that tint (a shader whose default tint is red, the nodes' green); a node that sets another
+## value is named, and the first node's value kept.
+func test_instance_shader_parameters_are_carried_to_the_field() -> void:
+	var shader: Shader = Shader.new()
+	shader.code = "shader_type spatial;\nrender_mode unshaded;\n"
+	shader.code += "instance uniform vec4 tint : source_color = vec4(1.0, 0.0, 0.0, 1.0);\n"
+	shader.code += "void fragment() {\n\tALBEDO = tint.rgb;\n}\n"
+	var material: ShaderMaterial = ShaderMaterial.new()
+	material.shader = shader
+	var root: Node3D = _root()
+	var green: Color = Color(0.0, 1.0, 0.0, 1.0)
+	for part: int in 2:
+		var node: MeshInstance3D = _box_node("Part%d" % part, Vector3(0.6, 1.0, 0.6), Vector3(0.0, 0.5 + part, 0.0))
+		node.material_override = material
+		node.set_instance_shader_parameter(&"tint", green)
+		root.add_child(node)
+	var plant: SunflowerPlant = SunflowerPlant.from_scene(Scenes.packed(root.duplicate()))
+	if not check(plant != null, "a plant"):
+		root.free()
+		return
+	check_eq(plant.instance_shader_parameters, {"tint": green}, "the nodes' tint is the plant's")
+	var odd: MeshInstance3D = _box_node("Odd", Vector3(0.3, 0.3, 0.3), Vector3(0.0, 2.2, 0.0))
+	odd.material_override = material
+	odd.set_instance_shader_parameter(&"tint", Color(0.0, 0.0, 1.0, 1.0))
+	root.add_child(odd)
+	take_warnings()
+	var mixed: SunflowerPlant = SunflowerPlant.from_scene(Scenes.packed(root))
+	var warnings: String = "\n".join(take_warnings())
+	check(warnings.contains("Odd: its instance shader parameter 'tint'"), "the odd node is named: %s" % warnings)
+	check_eq(mixed.instance_shader_parameters, {"tint": green}, "the first node's value kept")
+	var field: SunflowerField = SunflowerField.new()
+	field.plant = plant
+	field.map = SunflowerFieldMap.new()
+	field.map.source_path = "user://tinted.field"
+	field.map.text = "1 1\n*\n".to_utf8_buffer()
+	field.wind_power = 0.0
+	field.force_lod = SunflowerField.Lod.MESH_1
+	tree.root.add_child(field)
+	field.finish_build()
+	var nodes: Array[Node] = field.find_children("Mesh*", "MultiMeshInstance3D", true, false)
+	check(not nodes.is_empty(), "near mesh nodes")
+	check(
+		nodes.all(
+			func(n: Node) -> bool: return (n as GeometryInstance3D).get_instance_shader_parameter(&"tint") == green
+		),
+		"every near mesh node draws with the tint"
+	)
+	if DisplayServer.get_name() == "headless":
+		print("     (headless: nothing drawn to look at; the engine suite checks the picture)")
+		field.free()
+		return
+	var camera: Camera3D = Camera3D.new()
+	tree.root.add_child(camera)
+	camera.look_at_from_position(
+		field.get_plant_info(0)["position"] + Vector3(0.0, 1.0, 4.0),
+		field.get_plant_info(0)["position"] + Vector3(0.0, 1.0, 0.0)
+	)
+	camera.make_current()
+	field.advance(0.0)
+	await frames(3)
+	var image: Image = tree.root.get_viewport().get_texture().get_image()
+	image.save_png(artifact_path("scene_import_tinted.png"))
+	var counts: Vector2i = Vector2i.ZERO  # (green, red) pixels
+	for y: int in range(0, image.get_height(), 2):
+		for x: int in range(0, image.get_width(), 2):
+			var pixel: Color = image.get_pixel(x, y)
+			counts.x += 1 if pixel.g > 0.8 and pixel.r < 0.2 and pixel.b < 0.2 else 0
+			counts.y += 1 if pixel.r > 0.8 and pixel.g < 0.2 and pixel.b < 0.2 else 0
+	print("     the tinted plant: %d green pixels, %d red (every fourth pixel)" % [counts.x, counts.y])
+	check(
+		counts.x > 100 and counts.y == 0,
+		"the plant is drawn green, not its shader's red (%d, %d)" % [counts.x, counts.y]
+	)
+	camera.free()
+	field.free()
