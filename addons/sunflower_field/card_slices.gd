@@ -150,14 +150,7 @@ static func _written(out: Dictionary) -> Array:
 	var arrays: Array = out.arrays
 	var written: Array = []
 	written.resize(Mesh.ARRAY_MAX)
-	for kind: int in [
-		Mesh.ARRAY_VERTEX,
-		Mesh.ARRAY_NORMAL,
-		Mesh.ARRAY_TANGENT,
-		Mesh.ARRAY_COLOR,
-		Mesh.ARRAY_TEX_UV,
-		Mesh.ARRAY_TEX_UV2
-	]:
+	for kind: int in MeshPieces.VERTEX_ARRAYS:
 		if arrays[kind] == null:
 			continue
 		var values: Variant = arrays[kind]

@@ -13,6 +13,11 @@ extends RefCounted
 ## on average is of cards (a Sapling maple's leaves, welded where they touch, average 4.1). Bigger
 ## pieces of a surface of cards (a trunk merged with its leaves) are kept as they are.
 const CARD_TRIANGLES: float = 8.0
+## The vertex arrays a plant's merged surfaces have (scene_plant.gd keeps these alone; a tangent is
+## four numbers a vertex, any other one value).
+const VERTEX_ARRAYS: Array[int] = [
+	Mesh.ARRAY_VERTEX, Mesh.ARRAY_NORMAL, Mesh.ARRAY_TANGENT, Mesh.ARRAY_COLOR, Mesh.ARRAY_TEX_UV, Mesh.ARRAY_TEX_UV2
+]
 ## A card whose lowest point is within this share of the bounds' height of their bottom stands on it.
 const STANDING_SHARE: float = 0.02
 
@@ -184,14 +189,7 @@ func _picked_triangles(keeps: PackedByteArray) -> Dictionary:
 func _arrays_of(used: PackedInt32Array, indices: PackedInt32Array) -> Array:
 	var out: Array = []
 	out.resize(Mesh.ARRAY_MAX)
-	for kind: int in [
-		Mesh.ARRAY_VERTEX,
-		Mesh.ARRAY_NORMAL,
-		Mesh.ARRAY_TANGENT,
-		Mesh.ARRAY_COLOR,
-		Mesh.ARRAY_TEX_UV,
-		Mesh.ARRAY_TEX_UV2
-	]:
+	for kind: int in VERTEX_ARRAYS:
 		if arrays[kind] != null:
 			var width: int = 4 if kind == Mesh.ARRAY_TANGENT else 1
 			var values: Variant = arrays[kind]

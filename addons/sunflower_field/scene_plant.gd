@@ -21,10 +21,6 @@ const LEVEL_SHARES: Array[float] = [1.0, 0.5, 0.2]
 ## [constant SMALL_PLANT_SHARES] of them, so that its few leaves or blades stay what they were.
 const SMALL_PLANT: int = 1000
 const SMALL_PLANT_SHARES: Array[float] = [1.0, 0.75, 0.5]
-## The vertex arrays a merged surface keeps; surfaces merge only with others that have the same.
-const KEPT: Array[int] = [
-	Mesh.ARRAY_VERTEX, Mesh.ARRAY_NORMAL, Mesh.ARRAY_TANGENT, Mesh.ARRAY_COLOR, Mesh.ARRAY_TEX_UV, Mesh.ARRAY_TEX_UV2
-]
 ## The least share of a surface's area a simplified level keeps (thin branches lose some as their
 ## sides merge; a surface that would lose more keeps its triangles).
 const AREA_KEPT: float = 0.8
@@ -210,7 +206,7 @@ static func _merge(pieces: Array[Dictionary], problems: PackedStringArray) -> Ar
 				)
 				continue
 			var material: Material = piece.materials[surface]
-			var format: Array = KEPT.map(func(kind: int) -> bool: return arrays[kind] != null)
+			var format: Array = MeshPieces.VERTEX_ARRAYS.map(func(kind: int) -> bool: return arrays[kind] != null)
 			var group: Dictionary = {}
 			for candidate: Dictionary in groups:
 				if candidate.material == material and candidate.format == format:
@@ -225,9 +221,9 @@ static func _merge(pieces: Array[Dictionary], problems: PackedStringArray) -> Ar
 	for group: Dictionary in groups:
 		var arrays: Array = []
 		arrays.resize(Mesh.ARRAY_MAX)
-		for k: int in KEPT.size():
+		for k: int in MeshPieces.VERTEX_ARRAYS.size():  # the arrays kept, each group of one format
 			if group.format[k]:
-				arrays[KEPT[k]] = group.arrays[KEPT[k]]
+				arrays[MeshPieces.VERTEX_ARRAYS[k]] = group.arrays[MeshPieces.VERTEX_ARRAYS[k]]
 		arrays[Mesh.ARRAY_INDEX] = group.arrays[Mesh.ARRAY_INDEX]
 		merged.add_surface_from_arrays(Mesh.PRIMITIVE_TRIANGLES, arrays)
 		merged.surface_set_material(merged.get_surface_count() - 1, group.material)
