@@ -35,6 +35,7 @@ var centre: PackedVector3Array = []
 var lowest: PackedFloat32Array = []
 ## The pieces that are cards.
 var cards: PackedInt32Array = []
+var _order: Array[int] = []  # the cards in the order they are kept (_card_order)
 
 
 func _init(surface_arrays: Array) -> void:
@@ -203,16 +204,25 @@ func _arrays_of(used: PackedInt32Array, indices: PackedInt32Array) -> Array:
 	return out
 
 
-## Which pieces are kept when [param kept] cards are: every piece that is not a card, and the cards
-## ranked first when, in the order of a curve through space (Morton's, over their centres), they are
-## ranked by their place's bits reversed — so that any share of them is spread evenly over the plant,
-## and fewer kept are always among more kept.
+## Which pieces are kept when [param kept] cards are: every piece that is not a card, and the first
+## [param kept] cards of [method _card_order].
 func _chosen(kept: int) -> PackedByteArray:
 	var keeps: PackedByteArray = []
 	keeps.resize(count)
 	keeps.fill(1)
-	if cards.is_empty():
-		return keeps
+	var order: Array[int] = _card_order()
+	for k: int in range(kept, order.size()):
+		keeps[order[k]] = 0
+	return keeps
+
+
+## The cards in the order they are kept: in the order of a curve through space (Morton's, over their
+## centres), ranked by their place's bits reversed — so that any number of the first is spread evenly
+## over the plant, and fewer kept are always among more kept. Found once (every level and every step
+## of the growth's search keeps a number of the first).
+func _card_order() -> Array[int]:
+	if _order.size() == cards.size():
+		return _order
 	var box: AABB = AABB(centre[cards[0]], Vector3.ZERO)
 	for piece: int in cards:
 		box = box.expand(centre[piece])
@@ -227,11 +237,9 @@ func _chosen(kept: int) -> PackedByteArray:
 	var rank: Dictionary = {}
 	for place: int in along.size():
 		rank[along[place]] = _reversed(place, bits) * along.size() + place
-	var order: Array[int] = along.duplicate()
-	order.sort_custom(func(a: int, b: int) -> bool: return rank[a] < rank[b])
-	for k: int in range(kept, order.size()):
-		keeps[order[k]] = 0
-	return keeps
+	_order = along.duplicate()
+	_order.sort_custom(func(a: int, b: int) -> bool: return rank[a] < rank[b])
+	return _order
 
 
 ## The Morton code of [param at] (each coordinate 0 to 1) on a grid of 1 024 a side.

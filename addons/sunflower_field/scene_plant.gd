@@ -401,8 +401,6 @@ static func _simpler_surface(importer: ImporterMesh, surface: int, pieces: MeshP
 static func _cover_growth(
 	pieces: Array[MeshPieces], masks: Array[Dictionary], share: float, bounds: AABB, others: Dictionary, target: int
 ) -> float:
-	if not pieces.any(func(surface: MeshPieces) -> bool: return surface.are_cards()):
-		return 1.0
 	var low: float = 0.25
 	var high: float = 2.0
 	for step: int in COVER_STEPS:

@@ -258,16 +258,9 @@ func test_a_plant_of_many_cards_keeps_their_area() -> void:
 	arrays.resize(Mesh.ARRAY_MAX)
 	arrays[Mesh.ARRAY_VERTEX] = positions
 	arrays[Mesh.ARRAY_INDEX] = indices
-	var mesh: ArrayMesh = ArrayMesh.new()
-	mesh.add_surface_from_arrays(Mesh.PRIMITIVE_TRIANGLES, arrays)
-	var root: Node3D = Node3D.new()
-	root.name = "Crown"
-	var leaves: MeshInstance3D = MeshInstance3D.new()
-	leaves.name = "Leaves"
-	leaves.mesh = mesh
-	root.add_child(leaves)
+	var scene: PackedScene = _leaves_scene("Crown", arrays, null)
 	var started: int = Time.get_ticks_msec()
-	var plant: SunflowerPlant = SunflowerPlant.from_scene(Scenes.packed(root))
+	var plant: SunflowerPlant = SunflowerPlant.from_scene(scene)
 	print("     %d cards (%d triangles): the plant made in %d ms" % [cards, 2 * cards, Time.get_ticks_msec() - started])
 	if not check(plant != null, "a plant"):
 		return
@@ -327,13 +320,19 @@ func _card_bush() -> PackedScene:
 	arrays[Mesh.ARRAY_VERTEX] = positions
 	arrays[Mesh.ARRAY_TEX_UV] = uvs
 	arrays[Mesh.ARRAY_INDEX] = indices
+	return _leaves_scene("CardBush", arrays, Scenes.holed_leaves())
+
+
+## A plant scene [param root_name] of one node, "Leaves", drawing a mesh of [param arrays] with
+## [param material] as its override (none when null).
+func _leaves_scene(root_name: String, arrays: Array, material: Material) -> PackedScene:
 	var mesh: ArrayMesh = ArrayMesh.new()
 	mesh.add_surface_from_arrays(Mesh.PRIMITIVE_TRIANGLES, arrays)
 	var root: Node3D = Node3D.new()
-	root.name = "CardBush"
+	root.name = root_name
 	var leaves: MeshInstance3D = MeshInstance3D.new()
 	leaves.name = "Leaves"
 	leaves.mesh = mesh
-	leaves.material_override = Scenes.holed_leaves()
+	leaves.material_override = material
 	root.add_child(leaves)
 	return Scenes.packed(root)
