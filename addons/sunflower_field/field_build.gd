@@ -15,6 +15,7 @@ const NativeField: GDScript = preload("native_field.gd")
 const FieldGround: GDScript = preload("field_ground.gd")
 const FieldLegend: GDScript = preload("field_legend.gd")
 const FieldNodes: GDScript = preload("field_nodes.gd")
+const FieldSettings: GDScript = preload("field_settings.gd")
 const ImpostorSet: GDScript = preload("impostor_set.gd")
 
 
@@ -30,13 +31,13 @@ class Job:
 	var scenes: Dictionary
 	var max_plants: int
 	var cheap_shadows: bool = true
+	## The rows of the core's table the field, its wind and its plant types hold (field_settings.gd).
+	var settings: FieldSettings
 	var cell_size: float
 	var seed: int
 	var independent_jitter: bool
-	var chunk_size: float
-	var tile_merge_distance: float
 	var plant_symbols: String
-	var plants: Array = []
+	var lod_scales: PackedFloat32Array = []  # per species: SunflowerPlant.lod_scale_used
 	var whole: Array[bool] = []  # per species: drawn whole (decided on the main thread: it asks the renderer)
 	var ground: FieldGround
 	var error: String = ""
@@ -53,14 +54,13 @@ class Job:
 		job.scenes = field.legend.duplicate()
 		job.max_plants = field.max_plants
 		job.cheap_shadows = field.cheap_shadows
+		job.settings = FieldSettings.of(field, species_plants)
 		job.cell_size = field.cell_size
 		job.seed = field.seed
 		job.independent_jitter = field.independent_jitter
-		job.chunk_size = field.chunk_size
-		job.tile_merge_distance = field.tile_merge_distance
 		job.plant_symbols = FieldLegend.plant_symbols(field.legend)
 		for species_plant: Resource in species_plants:
-			job.plants.append(species_plant.duplicate())
+			job.lod_scales.append(species_plant.lod_scale_used())
 			job.whole.append(species_plant.drawn_whole())
 		job.ground = FieldGround.for_field(field)
 		return job
@@ -69,10 +69,10 @@ class Job:
 	## until the rays are in).
 	func run() -> void:
 		var start: int = Time.get_ticks_usec()
-		simulation.set_layout(cell_size, seed, independent_jitter, chunk_size)
-		simulation.set_tile_merge_distance(tile_merge_distance)
-		for species: int in plants.size():
-			plants[species].apply_to(simulation, species)
+		simulation.set_layout_seed(seed, independent_jitter)
+		settings.apply_to(simulation)
+		for species: int in whole.size():
+			simulation.set_plant_lod_scale(species, lod_scales[species])
 			simulation.set_plant_whole(species, whole[species])
 		ground.prepare(simulation)
 		error = simulation.load_map(text, source, legend, plant_symbols, max_plants)

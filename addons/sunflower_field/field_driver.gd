@@ -2,9 +2,9 @@
 extends RefCounted
 ## Runs one [SunflowerField] behind its public face: the field drawn now (a native simulation and
 ## its nodes), the build that will replace it, each frame's update (observer, pushers, colliders),
-## and the settings the node hands it, which it keeps and gives every field it draws. The node's
-## setters and methods call in; the driver reports through its own signals, which the node turns
-## into its public ones.
+## and the settings the node hands on: it keeps none of the node's settings, but reads them from the
+## node (field_settings.gd) for every field it draws. The node's setters and methods call in; the
+## driver reports through its own signals, which the node turns into its public ones.
 
 ## A background build's progress, 0 to 1.
 signal build_progress(progress: float)
@@ -21,6 +21,7 @@ const FieldBudget: GDScript = preload("field_budget.gd")
 const FieldBuild: GDScript = preload("field_build.gd")
 const FieldInteraction: GDScript = preload("field_interaction.gd")
 const FieldPlay: GDScript = preload("sunflower_field_play.gd")
+const FieldSettings: GDScript = preload("field_settings.gd")
 const FieldNodes: GDScript = preload("field_nodes.gd")
 const FieldObserver: GDScript = preload("field_observer.gd")
 const ImpostorSet: GDScript = preload("impostor_set.gd")
@@ -31,20 +32,6 @@ const BACKGROUND_BUILD_MIN_BYTES: int = 65536
 ## Near plants cast from their impostors from this far inside their switch to the level that does
 ## (less the hysteresis): an observer walking in between two LOD passes finds no plant without one.
 const NEAR_SHADOW_MARGIN: float = 1.0
-
-
-## What each frame's update follows, as the node told it (its properties of the same names).
-class FrameSettings:
-	extends RefCounted
-	var observer: NodePath
-	var frustum_culling: bool = true
-	var pusher_group: StringName
-	var pusher_radius: float = 0.0
-	var collision_reach: float = 0.0
-	var collision_layer: int = 1
-	var collision_mask: int = 1
-	var trample_share: float = 0.0
-
 
 ## Fields building in the background now, for progress displays.
 static var building: Array[Node3D] = []
@@ -60,8 +47,6 @@ var rebuild_queued: bool = false
 var interaction: FieldInteraction
 ## The running game's changes to the plants, their clock and events (SunflowerField.play).
 var play: FieldPlay
-## What each frame follows, set by the node as its properties change.
-var frame: FrameSettings = FrameSettings.new()
 ## The far levels' look per species, shared by the field drawn and one being built.
 var impostor_sets: Array[ImpostorSet] = []
 ## The frame budget for the near meshes' triangles the fields drawn are held to, and the quality it
@@ -73,12 +58,6 @@ var gpu_target_ms: float = 0.0
 var plants: Array = []
 var _layout_key: Array = []
 var _shared: Dictionary = {}  # shader parameters every impostor set gets
-var _wind: SunflowerWind
-var _lod: Array = []  # set_lod's arguments
-var _push: Array = []  # set_push_params' arguments
-var _threads: int = 0
-var _draw_distance: float = 0.0  # SunflowerField.max_draw_distance (0: none)
-var _thinning_start: float = 0.0  # SunflowerField.thinning_distance (0: no thinning)
 var _triangles: Array[PackedInt32Array] = []  # per species, a plant's triangles at each mesh level
 var _measuring_viewport: RID  # the viewport whose GPU time is measured for the budget
 var _applied_quality: float = 1.0  # the quality the field is drawn at
@@ -103,7 +82,7 @@ func simulation() -> NativeField:
 
 ## Whom the field measures distances from now, or null.
 func observer_node() -> Node3D:
-	return FieldObserver.resolve(_field, frame.observer)
+	return FieldObserver.resolve(_field, _field.observer)
 
 
 ## Plants in the field drawn now.
@@ -135,7 +114,7 @@ func rebuild(background: bool = false) -> void:
 		return
 	var job: FieldBuild.Job = FieldBuild.Job.for_field(_field, plants, native_simulation)
 	# Where the observer is now, so that the far tiles' records are ordered for it from the start.
-	FieldObserver.push(_field, frame.observer, frame.frustum_culling, native_simulation)
+	FieldObserver.push(_field, _field.observer, _field.frustum_culling, native_simulation)
 	background = background and _field.background_build and field_map.text.size() >= BACKGROUND_BUILD_MIN_BYTES
 	build = FieldBuild.new(_field, impostor_sets, job, background, drawn)
 	if background or build.needs_frames():
@@ -149,7 +128,7 @@ func rebuild(background: bool = false) -> void:
 ## puts the new field in place of the old.
 func step_build(budget_usec: int) -> void:
 	var stalks: Array[RID] = interaction.get_body_rids()
-	if not build.step(budget_usec, _draw_distance, stalks):
+	if not build.step(budget_usec, _field.max_draw_distance * quality(), stalks):
 		if build.get_progress() > 0.0:  # not while the worker reads the map
 			build_progress.emit(build.get_progress())
 		return
@@ -195,7 +174,7 @@ func show(nodes: FieldNodes, scenes: Dictionary = {}, cell_size: float = 0.0) ->
 	drawn.finish(plants, scenes, cell_size, tallest * 0.5)
 	_configure_drawn()
 	play._carry(old, drawn.simulation)
-	FieldObserver.push(_field, frame.observer, frame.frustum_culling, drawn.simulation)
+	FieldObserver.push(_field, _field.observer, _field.frustum_culling, drawn.simulation)
 	drawn.simulation.update(0.0)
 	drawn.show_filled_buckets()
 	drawn.update_masks()
@@ -220,10 +199,10 @@ func update_field(delta: float) -> void:
 	if plant_count() == 0:
 		return
 	var native_simulation: NativeField = drawn.simulation
-	var observer: Node3D = FieldObserver.push(_field, frame.observer, frame.frustum_culling, native_simulation)
-	native_simulation.set_pushers(interaction.gather_pushers(frame.pusher_group, frame.pusher_radius))
+	var observer: Node3D = FieldObserver.push(_field, _field.observer, _field.frustum_culling, native_simulation)
+	native_simulation.set_pushers(interaction.gather_pushers(_field.pusher_group, _field.pusher_radius))
 	if not Engine.is_editor_hint():
-		play._step(native_simulation, delta, interaction.pusher_nodes, frame.trample_share)
+		play._step(native_simulation, delta, interaction.pusher_nodes, _field.trample_share)
 	native_simulation.update(delta)
 	drawn.show_filled_buckets()
 	drawn.update_masks()
@@ -233,18 +212,20 @@ func update_field(delta: float) -> void:
 		_step_budgets(delta)
 	var wind_state: PackedFloat32Array = native_simulation.get_wind_state()
 	for impostors: ImpostorSet in impostor_sets:
-		impostors.sway(wind_state, _wind, _field.global_transform)
+		impostors.sway(wind_state, _field.wind, _field.global_transform)
 		if observer:
 			impostors.set_shared(&"observer_position", observer.global_position)
 	if not Engine.is_editor_hint():
 		interaction.update_colliders(
-			native_simulation, observer, frame.collision_reach, frame.collision_layer, frame.collision_mask
+			native_simulation, observer, _field.collision_reach, _field.collision_layer, _field.collision_mask
 		)
 
 
-## Draws [param species_plants] (SunflowerPlant per species): their impostor textures and frames, and
-## their meshes on the field drawn. True when a layout value or the plant types changed, so the
-## field must be rebuilt.
+## Draws [param species_plants] (SunflowerPlant per species): their impostor textures and frames,
+## their meshes and their rows of the core's table on the field drawn. True when the field must be
+## built anew: the core says a row changed that the layout depends on, the plant types changed, or
+## what the layout takes beyond the rows (a plant's switch scale, drawing whole) did; while a
+## build runs with no field drawn yet, any change.
 func configure_plants(species_plants: Array) -> bool:
 	plants = species_plants
 	while impostor_sets.size() < plants.size():
@@ -253,6 +234,7 @@ func configure_plants(species_plants: Array) -> bool:
 			impostors.set_shared(parameter, _shared[parameter])
 		impostor_sets.append(impostors)
 	var key: Array = []
+	var cost: int = FieldSettings.FREE
 	_triangles.clear()
 	for species: int in plants.size():
 		impostor_sets[species].configure(plants[species])
@@ -263,12 +245,12 @@ func configure_plants(species_plants: Array) -> bool:
 		key.append(plants[species].layout_key())
 		if drawn:
 			drawn.set_plant_meshes(species, plants[species])
-	if drawn:
-		play._send_regrowth(drawn.simulation, plants)
-	_send_near_shadows()
+			var rows: Dictionary = FieldSettings.rows_of(plants[species], "SunflowerPlant")
+			cost = maxi(cost, FieldSettings.send(drawn.simulation, rows, species))
+	send_near_shadows()
 	var changed: bool = key != _layout_key and not _layout_key.is_empty()
 	_layout_key = key
-	return changed
+	return changed or cost == FieldSettings.REBUILD or (build != null and drawn == null)
 
 
 ## Sets a shader parameter of every impostor material ([code]alpha_scissor[/code],
@@ -279,87 +261,54 @@ func set_impostor_shared(parameter: StringName, value: Variant) -> void:
 		impostors.set_shared(parameter, value)
 
 
-## The wind the fields drawn follow (its changes included: call again after one).
-func set_wind(wind: SunflowerWind) -> void:
-	_wind = wind
-	if drawn and _wind:
-		_wind.apply_to(drawn.simulation)
-
-
-## The levels of detail of the fields drawn (SunflowerField's lod_* and force_lod); the distances
-## and the fade are drawn at the budget's quality.
-func set_lod(distances: PackedFloat32Array, hysteresis: float, fade: float, interval: float, force: int) -> void:
-	_lod = [distances, hysteresis, fade, interval, force]
-	_send_near_shadows()
+## Sends changed settings of the node or its wind ([param rows]: their rows of the core's table and
+## values, field_settings.gd) to the field drawn. A change the field's layout depends on (the core
+## says which: the field drawn does not take it) builds the field anew; with no field drawn, the
+## table's cost says whether the coming field must be built again.
+func send_settings(rows: Dictionary) -> void:
+	var cost: int = FieldSettings.FREE
 	if drawn:
-		_send_lod()
+		cost = FieldSettings.send(drawn.simulation, rows)
+	else:
+		for row: String in rows:
+			cost = maxi(cost, Native.parameter_cost(row))
+	if cost == FieldSettings.REBUILD:
+		rebuild_queued = true
+	send_near_shadows()
 
 
-## How the plants of the fields drawn are pushed (SunflowerField's push_strength and
-## push_recovery_time).
-func set_push(strength: float, recovery_time: float) -> void:
-	_push = [strength, recovery_time]
-	if drawn:
-		drawn.simulation.set_push_params(strength, recovery_time)
-
-
-## The threads that move the near plants of the fields drawn (0: the hardware's count).
-func set_threads(threads: int) -> void:
-	_threads = threads
-	if drawn:
-		drawn.simulation.set_worker_threads(threads)
-
-
-## Gives the field drawn every setting told so far.
+## Gives the field drawn every setting of the node, its wind and its plant types as they are now,
+## and the quality it is drawn at (what changed while it was built included).
 func _configure_drawn() -> void:
-	if _wind:
-		_wind.apply_to(drawn.simulation)
-	if not _lod.is_empty():
-		_send_lod()
-		_send_near_shadows()
-	if not _push.is_empty():
-		drawn.simulation.set_push_params(_push[0], _push[1])
-	drawn.simulation.set_worker_threads(_threads)
-	play._send_regrowth(drawn.simulation, plants)
-
-
-## Sends the LOD settings to the field drawn, its distances and fade at the budget's quality.
-func _send_lod() -> void:
-	var scale: float = quality()
-	var distances: PackedFloat32Array = _lod[0].duplicate()
-	for i: int in distances.size():
-		distances[i] *= scale
-	drawn.simulation.set_lod(distances, _lod[1], _lod[2] * scale, _lod[3], _lod[4])
+	FieldSettings.of(_field, plants).apply_to(drawn.simulation)  # its cost: the build had these rows
+	drawn.simulation.set_quality(quality())
+	send_near_shadows()
 
 
 ## Tells each plant type's far tiles from where they cast the near plants' shadows
-## (SunflowerField.impostor_shadows_from, for a type whose SunflowerPlant.impostor_shadows is on: the
-## switch to that level at the type's scale and the budget's quality, less the hysteresis and
-## NEAR_SHADOW_MARGIN; −1: never), and the field drawn
-## which mesh levels cast from meshes. With force_lod every plant casts from what it is drawn with.
-func _send_near_shadows() -> void:
-	if _lod.is_empty():
-		return
-	var field_level: int = _field.impostor_shadows_from if _lod[4] < 0 else PartMeshes.LEVELS
-	var scale: float = quality()
+## (SunflowerField.impostor_shadows_from, for a type whose SunflowerPlant.impostor_shadows is on:
+## where the type turns finer than that level, as the core says, less NEAR_SHADOW_MARGIN; −1:
+## never), and the field drawn which mesh levels cast from meshes. With force_lod every plant casts
+## from what it is drawn with.
+func send_near_shadows() -> void:
+	if not drawn:
+		return  # (the field drawn next gets them)
+	var field_level: int = _field.impostor_shadows_from if _field.force_lod < 0 else PartMeshes.LEVELS
 	var levels: PackedInt32Array = []
 	for species: int in mini(impostor_sets.size(), plants.size()):
 		var level: int = field_level if plants[species].impostor_shadows else PartMeshes.LEVELS
 		levels.append(level)
 		var from: float = -1.0
 		if level < PartMeshes.LEVELS:
-			var switch: float = (_lod[0][level - 1] - _lod[1]) * plants[species].lod_scale_used() * scale
-			from = maxf(0.0, switch - NEAR_SHADOW_MARGIN)
+			from = maxf(0.0, drawn.simulation.get_finer_distance(species, level - 1) - NEAR_SHADOW_MARGIN)
 		impostor_sets[species].set_shared(&"near_shadow_from", from)
-	if drawn:
-		drawn.set_impostor_shadows_from(levels)
+	drawn.set_impostor_shadows_from(levels)
 
 
-## Sets the draw distance (0: none), drawn at the budget's quality: the impostors' per-plant fade,
+## Draws the node's draw distance (0: none) at the budget's quality: the impostors' per-plant fade,
 ## and the chunks' visibility ranges on the field drawn and one being built.
-func set_draw_distance(max_draw_distance: float) -> void:
-	_draw_distance = max_draw_distance
-	var distance: float = max_draw_distance * quality()
+func set_draw_distance() -> void:
+	var distance: float = _field.max_draw_distance * quality()
 	set_impostor_shared(&"draw_distance", distance)
 	set_impostor_shared(&"draw_fade", maxf(2.0, 0.1 * distance))
 	for nodes: FieldNodes in [drawn, build.nodes if build else null]:
@@ -367,10 +316,9 @@ func set_draw_distance(max_draw_distance: float) -> void:
 			nodes.apply_ranges(distance)
 
 
-## Sets where thinning starts (0: no thinning), drawn at the budget's quality.
-func set_thinning_start(distance: float) -> void:
-	_thinning_start = distance
-	set_impostor_shared(&"thinning_start", distance * quality())
+## Draws where the node's thinning starts (0: no thinning) at the budget's quality.
+func set_thinning_start() -> void:
+	set_impostor_shared(&"thinning_start", _field.thinning_distance * quality())
 
 
 ## Sets the budgets' targets (0: none) and least quality; with no target the quality goes back to 1.
@@ -453,12 +401,12 @@ func _gpu_ms() -> float:
 
 ## Draws at the budget's quality: distances, thinning and draw distance.
 func _apply_quality() -> void:
-	_send_near_shadows()
-	if drawn and not _lod.is_empty():
-		_send_lod()
-	set_thinning_start(_thinning_start)
-	if _draw_distance > 0.0:
-		set_draw_distance(_draw_distance)
+	if drawn:
+		drawn.simulation.set_quality(quality())
+	send_near_shadows()
+	set_thinning_start()
+	if _field.max_draw_distance > 0.0:
+		set_draw_distance()
 
 
 ## Frees internal children that belong to no field of this node: copies that duplicate() made of

@@ -20,7 +20,6 @@ extends Resource
 ## given none, never a source of parts for another plant.
 
 const Native: GDScript = preload("native.gd")
-const NativeField: GDScript = preload("native_field.gd")
 const DEFAULT_PATH: String = "res://addons/sunflower_field/plants/sunflower.tres"
 const PartMeshes: GDScript = preload("part_meshes.gd")
 const ImpostorBaker: GDScript = preload("impostor_baker.gd")
@@ -543,26 +542,12 @@ func impostor_frame() -> Vector2:
 	return Vector2(sqrt(height_units * height_units + impostor_width * impostor_width), height_units * 0.5)
 
 
-## What the layout depends on, and whether the plant is drawn whole (the native buckets follow it):
-## a change of any of these rebuilds the field (the impostor frame and textures are the impostor
-## material's, set without a rebuild).
+## What a field's layout takes from the plant beyond its rows of the core's table (whose changes the
+## core judges, field_settings.gd): whether it is drawn whole (the native buckets follow it), with
+## the plant material, and the scale of its switch distances. A change of any of these builds the
+## field anew.
 func layout_key() -> Array:
-	return [
-		height,
-		stacked_lengths(),
-		height_units,
-		cull_radius_units,
-		stiffness,
-		middle_variation,
-		yaw_range,
-		scale_min,
-		scale_max,
-		brightness_variation,
-		tint_variation,
-		drawn_whole(),
-		use_plant_material,
-		lod_scale_used(),
-	]
+	return [drawn_whole(), use_plant_material, lod_scale_used()]
 
 
 ## Sets the mesh of a part (level 0–2, part 0–2); null clears it.
@@ -586,12 +571,10 @@ func bake_impostors(host: Node, folder: String = "", base_name: String = "", pro
 	return await ImpostorBaker.bake(self, host, folder, base_name, progress)
 
 
-## Hands the plant's form, height and variety to a native simulation, as [param species].
-func apply_to(simulation: NativeField, species: int = 0) -> void:
-	simulation.set_plant_form(species, stacked_lengths(), middle_variation, height_units, cull_radius_units, stiffness)
-	simulation.set_plant_height(species, height)
-	simulation.set_plant_variation(species, yaw_range, scale_min, scale_max, brightness_variation, tint_variation)
-	simulation.set_plant_lod_scale(species, lod_scale_used())
+## The value the core's table row of [param property] gets ([code]field_settings.gd[/code]): the
+## lengths as stacked, without empty slots above the plant's top part; others as they are.
+func _row_value(property: StringName, value: Variant) -> Variant:
+	return stacked_lengths() if property == &"part_lengths" else value
 
 
 func _drawn_parts(level: int) -> Array[Mesh]:

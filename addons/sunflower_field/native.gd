@@ -15,7 +15,7 @@ const BUILD_HINT: String = (
 )
 
 static var _reported: bool = false
-static var _names: Dictionary = {}  # "Class.property" → true, every row of the core's table
+static var _names: Dictionary = {}  # "Class.property" → its row, every row of the core's table
 
 
 ## Whether the native library is loaded (a build for this platform exists and loaded).
@@ -118,10 +118,22 @@ static func range_hint(property: String, hint_string: String) -> String:
 
 
 static func _parameters() -> Dictionary:
-	if _names.is_empty():
-		for name: String in parameter_names():
-			_names[name] = true
+	if _names.is_empty() and is_available():
+		var names: PackedStringArray = parameter_names()
+		for row: int in names.size():
+			_names[names[row]] = row
 	return _names
+
+
+## The row of [param property] ([code]"Class.property"[/code]) in the core's table, or -1.
+static func parameter_row(property: String) -> int:
+	return _parameters().get(property, -1)
+
+
+## What a change of [param property] costs by the core's table: 0 nothing more than the value, 1 a
+## rebuild of the field (the layout depends on it); -1 for a property the table does not have.
+static func parameter_cost(property: String) -> int:
+	return ClassDB.class_call_static(CLASS, &"get_parameter_cost", property) if is_available() else -1
 
 
 ## Every property the core's table knows, as [code]"Class.property"[/code].

@@ -1,5 +1,5 @@
 # gdlint: disable=max-public-methods, function-arguments-number
-# (one method per native method the addon calls, with its signature: set_wind takes 11 settings)
+# (one method per native method the addon calls, with its signature)
 @tool
 extends RefCounted
 ## The one script that calls the native simulation ([code]SunflowerSimulation[/code]), with typed
@@ -76,15 +76,15 @@ func get_map_objects() -> PackedInt32Array:
 	return native.get_map_objects()
 
 
-## Metres per map character, the random seed, whether x and z get independent jitter (the thesis
-## uses one α for both), and the chunk size in metres.
-func set_layout(cell_size: float, layout_seed: int, independent_jitter: bool, chunk_size: float) -> void:
-	native.set_layout(cell_size, layout_seed, independent_jitter, chunk_size)
+## Settings by their rows of the core's table ([code]field_settings.gd[/code] sends them): the
+## largest cost (0 free, 1 a rebuild: those rows were not applied), -1 when refused.
+func set_settings(species: int, rows: PackedInt32Array, values: PackedFloat32Array) -> int:
+	return native.set_settings(species, rows, values)
 
 
-## Where far tiles start to merge (see [member SunflowerField.tile_merge_distance]).
-func set_tile_merge_distance(metres: float) -> void:
-	native.set_tile_merge_distance(metres)
+## The random seed and whether x and z get independent jitter (the thesis uses one α for both).
+func set_layout_seed(layout_seed: int, independent_jitter: bool) -> void:
+	native.set_layout_seed(layout_seed, independent_jitter)
 
 
 ## Stands the plants on the plane y = 0 of the field's space (the default).
@@ -136,23 +136,6 @@ func get_wind_state() -> PackedFloat32Array:
 	return native.get_wind_state()
 
 
-## A species' height from root to the top of its parts.
-func set_plant_height(species: int, metres: float) -> void:
-	native.set_plant_height(species, metres)
-
-
-## A species' form in model units.
-func set_plant_form(
-	species: int,
-	part_lengths: Vector3,
-	middle_variation: float,
-	height_units: float,
-	cull_radius_units: float,
-	stiffness: float
-) -> void:
-	native.set_plant_form(species, part_lengths, middle_variation, height_units, cull_radius_units, stiffness)
-
-
 ## Whether a species' near plants are drawn whole.
 func set_plant_whole(species: int, whole: bool) -> void:
 	native.set_plant_whole(species, whole)
@@ -163,69 +146,26 @@ func set_plant_lod_scale(species: int, scale: float) -> void:
 	native.set_plant_lod_scale(species, scale)
 
 
-## A species' variety between its plants, all seeded.
-func set_plant_variation(
-	species: int, yaw_range: float, scale_min: float, scale_max: float, brightness: float, tint: float
-) -> void:
-	native.set_plant_variation(species, yaw_range, scale_min, scale_max, brightness, tint)
-
-
-## The whole wind in one call, as [code]SunflowerWind[/code] holds it.
-func set_wind(
-	model: int,
-	power: float,
-	direction: Vector2,
-	stiffness_middle: float,
-	stiffness_bottom: float,
-	bend_per_power: float,
-	max_bend: float,
-	flip_interval: float,
-	flip_chance: float,
-	gust_speed: float,
-	gust_share: float
-) -> void:
-	native.set_wind(
-		model,
-		power,
-		direction,
-		stiffness_middle,
-		stiffness_bottom,
-		bend_per_power,
-		max_bend,
-		flip_interval,
-		flip_chance,
-		gust_speed,
-		gust_share
-	)
-
-
-## The four switch distances in metres (mesh 1→2, 2→3, 3→sprite, sprite→billboard), the hysteresis
-## margin in metres, the metres over which mesh 3 dithers into the impostor before the sprite
-## switch (its share in the instance colour's alpha.
-func set_lod(distances: PackedFloat32Array, hysteresis: float, fade: float, interval: float, force_level: int) -> void:
-	native.set_lod(distances, hysteresis, fade, interval, force_level)
-
-
 ## The observer's position and view frustum in the field's space.
 func set_observer(position: Vector3, frustum: PackedFloat32Array) -> void:
 	native.set_observer(position, frustum)
 
 
-## Threads that move the near plants, the caller included.
-func set_worker_threads(threads: int) -> void:
-	native.set_worker_threads(threads)
+## The frame budget's quality the switch distances and fade are drawn at (0–1].
+func set_quality(quality: float) -> void:
+	native.set_quality(quality)
+
+
+## Where a plant of [param species] turns finer at [param switch] (0: mesh 1 → 2 … 3: sprite →
+## billboard), coming nearer: the switch at the quality less the hysteresis, at the type's scale.
+func get_finer_distance(species: int, switch: int) -> float:
+	return native.get_finer_distance(species, switch)
 
 
 ## Bodies the plants part around, four floats each (x, y, z, radius) in the field's space, from the
 ## next [method update] on.
 func set_pushers(pushers: PackedFloat32Array) -> void:
 	native.set_pushers(pushers)
-
-
-## The largest push (a bend, like the wind's) and the seconds a released plant takes to settle
-## upright.
-func set_push_params(strength: float, recovery_seconds: float) -> void:
-	native.set_push_params(strength, recovery_seconds)
 
 
 ## Plants pushed now or still springing back (only these hold push state).
@@ -317,12 +257,6 @@ func set_cell_heights(cells: PackedInt32Array, heights: PackedFloat32Array) -> v
 ## The clock moved to [param now]: the cells whose plants stood again by regrowth.
 func advance_changes(now: float) -> PackedInt32Array:
 	return native.advance_changes(now)
-
-
-## A plant type's play: seconds until a flattened plant stands, until a cut one has grown, and the
-## height in metres of the stump a cut one leaves (0: none).
-func set_play_type(species: int, flattened_seconds: float, cut_seconds: float, stump_height: float) -> void:
-	native.set_play_type(species, flattened_seconds, cut_seconds, stump_height)
 
 
 ## A cell after play: x its plant (0 none, 1 + type), y its state, z the clock when it took it.

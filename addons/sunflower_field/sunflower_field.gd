@@ -39,6 +39,7 @@ enum GroundSource {
 const Native: GDScript = preload("native.gd")
 const NativeField: GDScript = preload("native_field.gd")
 const FieldDriver: GDScript = preload("field_driver.gd")
+const FieldSettings: GDScript = preload("field_settings.gd")
 const FieldGround: GDScript = preload("field_ground.gd")
 const FieldLegend: GDScript = preload("field_legend.gd")
 const FieldNodes: GDScript = preload("field_nodes.gd")
@@ -78,7 +79,7 @@ const WIND_PROPERTIES: Dictionary = {
 		value = Native.accept("SunflowerField.cell_size", value, cell_size)
 		if value != cell_size:
 			cell_size = value
-			_queue_rebuild()
+			_tell(&"cell_size")
 ## Seed of the per-plant randomness (position jitter α, height, facing, wind phase). The same map
 ## and seed give the same field.
 @export var seed: int = 1:
@@ -195,21 +196,17 @@ const WIND_PROPERTIES: Dictionary = {
 		value = Native.accept("SunflowerField.max_draw_distance", value, max_draw_distance)
 		if value != max_draw_distance:
 			max_draw_distance = value
-			_driver.set_draw_distance(max_draw_distance)
+			_driver.set_draw_distance()
 ## The node distances are measured from. Empty: the viewport's active camera (in the editor, the
 ## editor camera). A [Camera3D] also culls plants outside its view.
 @export var observer: NodePath:
 	set(value):
 		observer = value
-		_tell_frame()
 		update_configuration_warnings()
 ## Nodes in this group part the plants around them, like a body walking through the field: near
 ## plants within the pusher's radius bend away from it and spring back once it has gone. A pusher's
 ## [code]push_radius[/code] meta sets its own radius. Empty: no pushers.
-@export var pusher_group: StringName = &"sunflower_pushers":
-	set(value):
-		pusher_group = value
-		_tell_frame()
+@export var pusher_group: StringName = &"sunflower_pushers"
 @export_group("Advanced: layout")
 ## Jitter x and z independently (the thesis used one α for both).
 @export var independent_jitter: bool = false:
@@ -223,7 +220,7 @@ const WIND_PROPERTIES: Dictionary = {
 		value = Native.accept_int("SunflowerField.max_plants", value, max_plants)
 		if value != max_plants:
 			max_plants = value
-			_queue_rebuild()
+			_tell(&"max_plants")
 ## Side of the square chunks the field is cut into: a chunk's plants turn near (each with its own
 ## level of detail and sway) or far together; far plants are drawn in tiles of 8 × 8 chunks, one
 ## draw call each. (A field of more than 65 536 chunks gets larger ones.)
@@ -232,7 +229,7 @@ const WIND_PROPERTIES: Dictionary = {
 		value = Native.accept("SunflowerField.chunk_size", value, chunk_size)
 		if value != chunk_size:
 			chunk_size = value
-			_queue_rebuild()
+			_tell(&"chunk_size")
 ## Far tiles merge with distance, so a wide field costs few draw calls: plants this far from the
 ## observer are drawn by merged tiles, 2 × 2 tiles as one MultiMesh holding a quarter of their
 ## plants, each drawn twice as wide to keep the field's cover; from twice it, 4 × 4 tiles with a
@@ -251,7 +248,7 @@ const WIND_PROPERTIES: Dictionary = {
 		value = Native.accept("SunflowerField.tile_merge_distance", value, tile_merge_distance)
 		if value != tile_merge_distance:
 			tile_merge_distance = value
-			_queue_rebuild()
+			_tell(&"tile_merge_distance")
 @export_group("Advanced: ground")
 ## Colliders: how far above the node the rays start.
 @export_range(0.0, 1000.0, 0.1, "or_greater", "suffix:m") var ground_ray_above: float = 100.0:
@@ -259,14 +256,14 @@ const WIND_PROPERTIES: Dictionary = {
 		value = Native.accept("SunflowerField.ground_ray_above", value, ground_ray_above)
 		if value != ground_ray_above:
 			ground_ray_above = value
-			_queue_rebuild()
+			_tell(&"ground_ray_above")
 ## Colliders: how far below the node the rays end.
 @export_range(0.0, 1000.0, 0.1, "or_greater", "suffix:m") var ground_ray_below: float = 100.0:
 	set(value):
 		value = Native.accept("SunflowerField.ground_ray_below", value, ground_ray_below)
 		if value != ground_ray_below:
 			ground_ray_below = value
-			_queue_rebuild()
+			_tell(&"ground_ray_below")
 ## How far plants lean from upright towards the ground's normal: 0 keeps them upright (sunflowers
 ## do), 1 stands them along it.
 @export_range(0.0, 1.0, 0.01) var ground_tilt: float = 0.0:
@@ -274,7 +271,7 @@ const WIND_PROPERTIES: Dictionary = {
 		value = Native.accept("SunflowerField.ground_tilt", value, ground_tilt)
 		if value != ground_tilt:
 			ground_tilt = value
-			_queue_rebuild()
+			_tell(&"ground_tilt")
 @export_group("Advanced: look")
 ## Alpha below which sprite and billboard pixels are discarded (thesis: 190/255).
 @export_range(0.0, 1.0, 0.001) var alpha_scissor: float = 190.0 / 255.0:
@@ -306,7 +303,7 @@ const WIND_PROPERTIES: Dictionary = {
 			value = used
 		if value != impostor_shadows_from:
 			impostor_shadows_from = value
-			_tell_lod()
+			_driver.send_near_shadows()
 @export_group("Advanced: levels of detail")
 ## Switch distances: mesh 1 → 2, mesh 2 → 3, mesh 3 → sprite, sprite → billboard (thesis:
 ## 6, 10, 20, 25 m) for a plant of the sunflower's 2 m; each plant type switches at these times its
@@ -320,14 +317,14 @@ const WIND_PROPERTIES: Dictionary = {
 			return
 		if value != lod_distances:
 			lod_distances = value
-			_tell_lod()
+			_tell(&"lod_distances")
 ## Hysteresis on every switch: less detail this much later, more detail this much earlier.
 @export_range(0.0, 5.0, 0.05, "or_greater", "suffix:m") var lod_hysteresis: float = 0.5:
 	set(value):
 		value = Native.accept("SunflowerField.lod_hysteresis", value, lod_hysteresis)
 		if value != lod_hysteresis:
 			lod_hysteresis = value
-			_tell_lod()
+			_tell(&"lod_hysteresis")
 ## Metres over which a plant leaving mesh 3 dithers into its impostor (both drawn, complementary
 ## screen-door patterns), ending at the sprite switch less [member lod_hysteresis]: no plant pops
 ## from mesh to impostor. Plants drawn whole ([member SunflowerPlant.draw_whole]) also dither from mesh 1
@@ -342,33 +339,30 @@ const WIND_PROPERTIES: Dictionary = {
 		value = Native.accept("SunflowerField.lod_fade", value, lod_fade)
 		if value != lod_fade:
 			lod_fade = value
-			_tell_lod()
+			_tell(&"lod_fade")
 ## Seconds between LOD updates (thesis: 0.25 s). Plants move every frame regardless.
 @export_range(0.0, 2.0, 0.01, "or_greater", "suffix:s") var lod_interval: float = 0.25:
 	set(value):
 		value = Native.accept("SunflowerField.lod_interval", value, lod_interval)
 		if value != lod_interval:
 			lod_interval = value
-			_tell_lod()
+			_tell(&"lod_interval")
 ## Draw every plant as one representation, whatever its distance (for benchmarks and debugging).
 @export_enum("Automatic:-1", "Mesh 1:0", "Mesh 2:1", "Mesh 3:2", "Sprite:3", "Billboard:4") var force_lod: int = -1:
 	set(value):
 		value = Native.accept_int("SunflowerField.force_lod", value, force_lod)
 		if value != force_lod:
 			force_lod = value
-			_tell_lod()
+			_tell(&"force_lod")
 ## Skip writing plants outside the observer camera's view (the engine culls the far chunks itself).
-@export var frustum_culling: bool = true:
-	set(value):
-		frustum_culling = value
-		_tell_frame()
+@export var frustum_culling: bool = true
 ## Beyond this distance, draw only a share of the impostors, falling with the square of the
 ## distance (down to [member thinning_min_density]); the kept ones widen to keep the coverage.
 ## Done on the GPU, so it costs no CPU time. 0 turns thinning off.
 @export_range(0.0, 1000.0, 1.0, "or_greater", "suffix:m") var thinning_distance: float = 0.0:
 	set(value):
 		thinning_distance = Native.accept("SunflowerField.thinning_distance", value, thinning_distance)
-		_driver.set_thinning_start(thinning_distance)
+		_driver.set_thinning_start()
 ## The least share of impostors drawn far away, with thinning on.
 @export_range(0.01, 1.0, 0.01) var thinning_min_density: float = 0.25:
 	set(value):
@@ -379,14 +373,12 @@ const WIND_PROPERTIES: Dictionary = {
 @export_range(0.01, 20.0, 0.01, "or_greater", "suffix:m") var pusher_radius: float = 0.6:
 	set(value):
 		pusher_radius = Native.accept("SunflowerField.pusher_radius", value, pusher_radius)
-		_tell_frame()
 ## A pusher pushes over (tramples: flattens) the standing plants whose roots lie within this share of
 ## its radius, and [signal SunflowerFieldPlay.plants_trampled] tells which (running game only). Trampled plants lie bent
 ## until their type's [member SunflowerPlant.recover_after]. 0: pushers only bend plants.
 @export_range(0.0, 1.0, 0.01) var trample_share: float = 0.0:
 	set(value):
 		trample_share = Native.accept("SunflowerField.trample_share", value, trample_share)
-		_tell_frame()
 ## How far a pusher bends the plants at its centre (a bend, like the wind's: 0.8 tilts a plant about
 ## 45°); it falls to 0 at the pusher's radius.
 @export_range(0.0, 10.0, 0.01) var push_strength: float = 1.2:
@@ -394,30 +386,23 @@ const WIND_PROPERTIES: Dictionary = {
 		value = Native.accept("SunflowerField.push_strength", value, push_strength)
 		if value != push_strength:
 			push_strength = value
-			_tell_push()
+			_tell(&"push_strength")
 ## Seconds a plant takes to spring back upright once the pusher has gone.
 @export_range(0.05, 60.0, 0.05, "suffix:s") var push_recovery_time: float = 1.5:
 	set(value):
 		value = Native.accept("SunflowerField.push_recovery_time", value, push_recovery_time)
 		if value != push_recovery_time:
 			push_recovery_time = value
-			_tell_push()
+			_tell(&"push_recovery_time")
 ## Stalks within this distance of a pusher or the observer get capsule colliders (running game
 ## only), so characters bump into them and ray casts hit them ([method get_plant_for_body]). 0: none.
 @export_range(0.0, 100.0, 0.1, "or_greater", "suffix:m") var collision_reach: float = 0.0:
 	set(value):
 		collision_reach = Native.accept("SunflowerField.collision_reach", value, collision_reach)
-		_tell_frame()
 ## The physics layers the stalk colliders are in.
-@export_flags_3d_physics var collision_layer: int = 1:
-	set(value):
-		collision_layer = value
-		_tell_frame()
+@export_flags_3d_physics var collision_layer: int = 1
 ## The physics layers the stalk colliders scan.
-@export_flags_3d_physics var collision_mask: int = 1:
-	set(value):
-		collision_mask = value
-		_tell_frame()
+@export_flags_3d_physics var collision_mask: int = 1
 @export_group("Advanced: building")
 ## Build large maps without stalling: the map is read and laid out on a worker thread, then the
 ## field's nodes are made a few at a time, at most [member build_budget_ms] per frame. The previous
@@ -438,7 +423,7 @@ const WIND_PROPERTIES: Dictionary = {
 		value = Native.accept_int("SunflowerField.worker_threads", value, worker_threads)
 		if value != worker_threads:
 			worker_threads = value
-			_driver.set_threads(worker_threads)
+			_tell(&"worker_threads")
 @export_group("Advanced: frame budget")
 ## A frame budget the field holds by itself: the most triangles its near meshes may hold in a frame
 ## (the main view's; each shadow pass draws its own), 0: no cap. Over it, the field lowers its
@@ -511,14 +496,9 @@ func _init() -> void:
 	_driver.map_error.connect(_on_map_error)
 	_driver.quality_changed.connect(quality_changed.emit)
 	wind.changed.connect(_tell_wind)
-	_tell_wind()
-	_tell_lod()
-	_tell_push()
-	_tell_frame()
-	_driver.set_threads(worker_threads)
 	_driver.configure_plants(_species_plants())
 	_driver.set_impostor_shared(&"alpha_scissor", alpha_scissor)
-	_driver.set_thinning_start(thinning_distance)
+	_driver.set_thinning_start()
 	_driver.set_impostor_shared(&"thinning_min_density", thinning_min_density)
 	set_notify_transform(true)  # the far impostors are placed through the field's transform
 
@@ -532,32 +512,18 @@ static func _listen(old: Resource, new: Resource, action: Callable) -> void:
 		new.changed.connect(action)
 
 
+## Tells the field drawn that [param property], a row of the core's table, changed (the core says
+## what that costs: field_settings.gd).
+func _tell(property: StringName) -> void:
+	_driver.send_settings({"SunflowerField." + property: get(property)})
+
+
 func _tell_wind() -> void:
-	_driver.set_wind(wind)
-
-
-func _tell_lod() -> void:
-	_driver.set_lod(lod_distances, lod_hysteresis, lod_fade, lod_interval, force_lod)
+	_driver.send_settings(FieldSettings.rows_of(wind, "SunflowerWind"))
 
 
 func _tell_budget() -> void:
 	_driver.set_budget(budget_primitives, budget_gpu_ms, budget_min_quality)
-
-
-func _tell_push() -> void:
-	_driver.set_push(push_strength, push_recovery_time)
-
-
-func _tell_frame() -> void:
-	var frame: FieldDriver.FrameSettings = _driver.frame
-	frame.observer = observer
-	frame.frustum_culling = frustum_culling
-	frame.pusher_group = pusher_group
-	frame.pusher_radius = pusher_radius
-	frame.collision_reach = collision_reach
-	frame.collision_layer = collision_layer
-	frame.collision_mask = collision_mask
-	frame.trample_share = trample_share
 
 
 func _on_built(plants: int) -> void:

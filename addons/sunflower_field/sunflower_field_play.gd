@@ -230,14 +230,6 @@ func _step(simulation: NativeField, delta: float, pushers: Array[Node3D], trampl
 	_follow_pushers(simulation, pushers)
 
 
-## (The field calls this.) Each plant type of [param plants] (SunflowerPlant per species) gets its
-## recovery times and stump in [param simulation].
-func _send_regrowth(simulation: NativeField, plants: Array) -> void:
-	for species: int in plants.size():
-		var grown: SunflowerPlant = plants[species]
-		simulation.set_play_type(species, grown.recover_after, grown.regrow_after, grown.stump_height)
-
-
 ## (The field calls this.) The changes of [param old] carried to [param new] (a rebuild): kept when
 ## both read the same map, forgotten for another map.
 func _carry(old: NativeField, new: NativeField) -> void:

@@ -19,7 +19,6 @@ extends Resource
 enum Model { THESIS, NATURAL }
 
 const Native: GDScript = preload("native.gd")
-const NativeField: GDScript = preload("native_field.gd")
 
 ## [b]Natural[/b]: a downwind lean, sway and rolling gusts, for games. [b]Thesis[/b]: the thesis'
 ## equations exactly, swinging about upright (for reproducing it).
@@ -111,8 +110,14 @@ const NativeField: GDScript = preload("native_field.gd")
 		if value != gust_share:
 			gust_share = value
 			emit_changed()
-
-## Hands the wind to a native simulation in one call (the core applies its own rules again).
+## Natural wind: the seconds a change of [member power] or [member direction] takes to ease in,
+## at a steady rate (0: at once). A storm that builds over ten seconds: 10.
+@export_range(0.0, 60.0, 0.1, "or_greater", "suffix:s") var ease_time: float = 0.5:
+	set(value):
+		value = Native.accept("SunflowerWind.ease_time", value, ease_time)
+		if value != ease_time:
+			ease_time = value
+			emit_changed()
 
 
 ## Whether every setting is its default (a field does not save a wind nobody changed).
@@ -123,22 +128,6 @@ func is_default() -> bool:
 			if get(property["name"]) != fresh.get(property["name"]):
 				return false
 	return true
-
-
-func apply_to(simulation: NativeField) -> void:
-	simulation.set_wind(
-		model,
-		power,
-		direction,
-		stiffness_middle,
-		stiffness_bottom,
-		bend_per_power,
-		max_bend,
-		flip_interval,
-		flip_chance,
-		gust_speed,
-		gust_share
-	)
 
 
 ## The inspector's range hints take their limits from the core's table (native.gd: [code]range_hint[/code]).

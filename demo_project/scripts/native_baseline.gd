@@ -31,11 +31,15 @@ func build(
 	hashed: bool = false
 ) -> int:
 	var simulation: SunflowerSimulation = SunflowerSimulation.new()
+	# The layout's settings go in before the map (by their rows of the core's table).
+	var rows: PackedStringArray = SunflowerSimulation.get_parameter_names().split(",")
+	var layout: PackedInt32Array = [rows.find("SunflowerField.cell_size"), rows.find("SunflowerField.chunk_size")]
+	simulation.set_settings(0, layout, PackedFloat32Array([field.cell_size, CHUNK_SIZE]))
+	simulation.set_layout_seed(field.seed, field.independent_jitter)
 	var error: String = simulation.load_map(field_map.text, field_map.source_path, "", "", 0)
 	if not error.is_empty():
 		push_error("NativeBaseline: " + error)
 		return 0
-	simulation.set_layout(field.cell_size, field.seed, field.independent_jitter, CHUNK_SIZE)
 	var mesh: ArrayMesh = _whole_plant_mesh(field)
 	var plant: SunflowerPlant = field.plant if field.plant != null else SunflowerPlant.default_plant()
 	if far_quads and plant.impostor_views == null:

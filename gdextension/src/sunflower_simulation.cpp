@@ -27,8 +27,8 @@ void SunflowerSimulation::bind_methods() {
 	gdx::bind_method(CLASS, "get_map_columns", &SunflowerSimulation::get_map_columns);
 	gdx::bind_method(CLASS, "get_map_rows", &SunflowerSimulation::get_map_rows);
 	gdx::bind_method(CLASS, "get_map_objects", &SunflowerSimulation::get_map_objects);
-	gdx::bind_method(CLASS, "set_layout", &SunflowerSimulation::set_layout, { "cell_size", "seed", "independent_jitter", "chunk_size" });
-	gdx::bind_method(CLASS, "set_tile_merge_distance", &SunflowerSimulation::set_tile_merge_distance, { "metres" });
+	gdx::bind_method(CLASS, "set_settings", &SunflowerSimulation::set_settings, { "species", "rows", "values" });
+	gdx::bind_method(CLASS, "set_layout_seed", &SunflowerSimulation::set_layout_seed, { "seed", "independent_jitter" });
 	gdx::bind_method(CLASS, "set_ground_flat", &SunflowerSimulation::set_ground_flat);
 	gdx::bind_method(CLASS, "set_ground_height_map", &SunflowerSimulation::set_ground_height_map,
 			{ "rgba", "width", "depth", "origin", "size", "height_min", "height_max", "tilt" });
@@ -38,21 +38,12 @@ void SunflowerSimulation::bind_methods() {
 	gdx::bind_method(CLASS, "get_ground_height", &SunflowerSimulation::get_ground_height, { "point" });
 	gdx::bind_method(CLASS, "get_object_heights", &SunflowerSimulation::get_object_heights);
 	gdx::bind_method(CLASS, "get_wind_state", &SunflowerSimulation::get_wind_state);
-	gdx::bind_method(CLASS, "set_plant_height", &SunflowerSimulation::set_plant_height, { "species", "metres" });
-	gdx::bind_method(CLASS, "set_plant_form", &SunflowerSimulation::set_plant_form,
-			{ "species", "part_lengths", "middle_variation", "height_units", "cull_radius_units", "stiffness" });
 	gdx::bind_method(CLASS, "set_plant_whole", &SunflowerSimulation::set_plant_whole, { "species", "whole" });
 	gdx::bind_method(CLASS, "set_plant_lod_scale", &SunflowerSimulation::set_plant_lod_scale, { "species", "scale" });
-	gdx::bind_method(CLASS, "set_plant_variation", &SunflowerSimulation::set_plant_variation,
-			{ "species", "yaw_range", "scale_min", "scale_max", "brightness", "tint" });
-	gdx::bind_method(CLASS, "set_wind", &SunflowerSimulation::set_wind,
-			{ "model", "power", "direction", "stiffness_middle", "stiffness_bottom", "bend_per_power", "max_bend", "flip_interval",
-					"flip_chance", "gust_speed", "gust_share" });
-	gdx::bind_method(CLASS, "set_lod", &SunflowerSimulation::set_lod, { "distances", "hysteresis", "fade", "interval", "force_level" });
+	gdx::bind_method(CLASS, "set_quality", &SunflowerSimulation::set_quality, { "quality" });
+	gdx::bind_method(CLASS, "get_finer_distance", &SunflowerSimulation::get_finer_distance, { "species", "switch" });
 	gdx::bind_method(CLASS, "set_observer", &SunflowerSimulation::set_observer, { "position", "frustum" });
-	gdx::bind_method(CLASS, "set_worker_threads", &SunflowerSimulation::set_worker_threads, { "threads" });
 	gdx::bind_method(CLASS, "set_pushers", &SunflowerSimulation::set_pushers, { "pushers" });
-	gdx::bind_method(CLASS, "set_push_params", &SunflowerSimulation::set_push_params, { "strength", "recovery_seconds" });
 	gdx::bind_method(CLASS, "get_pushed_count", &SunflowerSimulation::get_pushed_count);
 	gdx::bind_method(CLASS, "get_plants_near", &SunflowerSimulation::get_plants_near, { "position", "radius", "standing_only" });
 	gdx::bind_method(CLASS, "set_bucket_multimesh", &SunflowerSimulation::set_bucket_multimesh, { "bucket", "multimesh" });
@@ -79,8 +70,6 @@ void SunflowerSimulation::bind_methods() {
 	gdx::bind_method(CLASS, "get_cell_roots", &SunflowerSimulation::get_cell_roots, { "cells" });
 	gdx::bind_method(CLASS, "set_cell_heights", &SunflowerSimulation::set_cell_heights, { "cells", "heights" });
 	gdx::bind_method(CLASS, "advance_changes", &SunflowerSimulation::advance_changes, { "now" });
-	gdx::bind_method(CLASS, "set_play_type", &SunflowerSimulation::set_play_type,
-			{ "species", "flattened_seconds", "cut_seconds", "stump_height" });
 	gdx::bind_method(CLASS, "get_cell_change", &SunflowerSimulation::get_cell_change, { "cell" });
 	gdx::bind_method(CLASS, "get_change_count", &SunflowerSimulation::get_change_count);
 	gdx::bind_method(CLASS, "get_cells_in_circle", &SunflowerSimulation::get_cells_in_circle, { "center", "radius" });
@@ -109,6 +98,8 @@ void SunflowerSimulation::bind_methods() {
 	gdx::bind_method(CLASS, "explain_parameter", &SunflowerSimulation::explain_parameter, { "name", "value", "used" });
 	gdx::bind_method(CLASS, "get_parameter_default", &SunflowerSimulation::get_parameter_default, { "name" });
 	gdx::bind_method(CLASS, "get_parameter_limit", &SunflowerSimulation::get_parameter_limit, { "name", "upper" });
+	gdx::bind_method(CLASS, "get_parameter_cost", &SunflowerSimulation::get_parameter_cost, { "name" });
+	gdx::bind_method(CLASS, "get_parameter_components", &SunflowerSimulation::get_parameter_components, { "name" });
 	gdx::bind_method(CLASS, "get_parameter_names", &SunflowerSimulation::get_parameter_names);
 	gdx::bind_method(CLASS, "check_lod_distances", &SunflowerSimulation::check_lod_distances, { "distances" });
 	gdx::bind_method(CLASS, "sanitize_wind_direction", &SunflowerSimulation::sanitize_wind_direction, { "direction" });
@@ -134,22 +125,38 @@ void SunflowerSimulation::bind_methods() {
 	gdx::bind_integer_constant(CLASS, "", "MAX_THREADS", param::MAX_THREADS);
 }
 
-void SunflowerSimulation::set_layout(double p_cell_size, int64_t p_seed, bool p_independent_jitter, double p_chunk_size) {
-	LayoutParams params = _sim.plants().get_layout_params();
-	params.cell_size = static_cast<float>(p_cell_size);
-	params.seed = static_cast<uint64_t>(p_seed);
-	params.independent_jitter = p_independent_jitter;
-	params.chunk_size = static_cast<float>(p_chunk_size);
-	if (_sim.set_layout_params(params)) {
-		release_multimeshes(); // the chunks changed
+int64_t SunflowerSimulation::set_settings(int64_t p_species, const gdx::PackedInt32Array &p_rows, const gdx::PackedFloat32Array &p_values) {
+	SF_FAIL_COND_V_MSG(!_is_species(p_species), -1, "set_settings: no plant type " + std::to_string(p_species));
+	const int32_t *rows = p_rows.data();
+	size_t needed = 0;
+	for (int64_t i = 0; i < p_rows.size(); ++i) {
+		SF_FAIL_COND_V_MSG(rows[i] < 0 || size_t(rows[i]) >= param::ALL.size(), -1,
+				"set_settings: row " + std::to_string(rows[i]) + " is not in the parameter table (0 to " +
+						std::to_string(param::ALL.size() - 1) + ")");
+		needed += param::ALL[size_t(rows[i])]->components;
 	}
+	SF_FAIL_COND_V_MSG(needed != size_t(p_values.size()), -1,
+			"set_settings: the rows take " + std::to_string(needed) + " values, got " + std::to_string(p_values.size()));
+	const float *values = p_values.data();
+	ParameterSpec::Cost cost = ParameterSpec::FREE;
+	const LayoutParams layout = _sim.plants().get_layout_params();
+	for (int64_t i = 0; i < p_rows.size(); ++i) {
+		const ParameterSpec &spec = *param::ALL[size_t(rows[i])];
+		cost = std::max(cost, _sim.set_setting(spec, values, uint32_t(p_species)));
+		values += spec.components;
+	}
+	if (!(_sim.plants().get_layout_params() == layout)) {
+		release_multimeshes(); // the chunks changed (a field not laid out yet)
+	}
+	return int64_t(cost);
 }
 
-void SunflowerSimulation::set_tile_merge_distance(double p_metres) {
+void SunflowerSimulation::set_layout_seed(int64_t p_seed, bool p_independent_jitter) {
 	LayoutParams params = _sim.plants().get_layout_params();
-	params.tile_merge_distance = static_cast<float>(p_metres);
+	params.seed = static_cast<uint64_t>(p_seed);
+	params.independent_jitter = p_independent_jitter;
 	if (_sim.set_layout_params(params)) {
-		release_multimeshes(); // the tiles changed
+		release_multimeshes(); // the chunks changed
 	}
 }
 
@@ -236,29 +243,6 @@ bool SunflowerSimulation::_is_species(int64_t p_species) const {
 	return true;
 }
 
-void SunflowerSimulation::set_plant_height(int64_t p_species, double p_metres) {
-	if (_is_species(p_species)) {
-		_sim.set_plant_height(float(p_metres), uint32_t(p_species));
-	}
-}
-
-void SunflowerSimulation::set_plant_form(int64_t p_species, gdx::Vector3 p_part_lengths, double p_middle_variation,
-		double p_height_units, double p_cull_radius_units, double p_stiffness) {
-	if (!_is_species(p_species)) {
-		return;
-	}
-	const uint32_t species = uint32_t(p_species);
-	PlantShape shape = _sim.plants().get_shape(species);
-	const float metres = shape.part_scale * shape.parts_height(); // the plant keeps its height
-	shape.part_lengths = gdx::to_core(p_part_lengths);
-	shape.middle_variation = float(p_middle_variation);
-	shape.height = float(p_height_units);
-	shape.cull_radius = float(p_cull_radius_units);
-	shape.stiffness = float(p_stiffness);
-	_sim.set_shape(shape, species);
-	_sim.set_plant_height(metres, species);
-}
-
 void SunflowerSimulation::set_plant_lod_scale(int64_t p_species, double p_scale) {
 	if (!_is_species(p_species)) {
 		return;
@@ -277,54 +261,6 @@ void SunflowerSimulation::set_plant_whole(int64_t p_species, bool p_whole) {
 	_sim.set_shape(shape, uint32_t(p_species));
 }
 
-void SunflowerSimulation::set_plant_variation(int64_t p_species, double p_yaw_range, double p_scale_min, double p_scale_max,
-		double p_brightness, double p_tint) {
-	if (!_is_species(p_species)) {
-		return;
-	}
-	LayoutParams params = _sim.plants().get_layout_params();
-	PlantVariety &variety = params.varieties[size_t(p_species)];
-	variety.yaw_range = float(p_yaw_range);
-	variety.scale_min = float(p_scale_min);
-	variety.scale_max = float(p_scale_max);
-	variety.brightness = float(p_brightness);
-	variety.tint = float(p_tint);
-	if (_sim.set_layout_params(params)) {
-		release_multimeshes(); // the chunks changed
-	}
-}
-
-void SunflowerSimulation::set_wind(int64_t p_model, double p_power, gdx::Vector2 p_direction, double p_stiffness_middle, double p_stiffness_bottom,
-		double p_bend_per_power, double p_max_bend, double p_flip_interval, double p_flip_chance, double p_gust_speed,
-		double p_gust_share) {
-	WindParams params;
-	params.model = int(std::clamp<int64_t>(p_model, INT32_MIN, INT32_MAX)); // the core clamps
-	params.power = float(p_power);
-	params.direction = gdx::to_core(p_direction);
-	params.d1 = float(p_stiffness_middle);
-	params.d2 = float(p_stiffness_bottom);
-	params.h = float(p_bend_per_power);
-	params.max_bend = float(p_max_bend);
-	params.flip_interval = float(p_flip_interval);
-	params.flip_chance = float(p_flip_chance);
-	params.gust_speed = float(p_gust_speed);
-	params.gust_share = float(p_gust_share);
-	_sim.near().set_wind(params); // the core applies the param:: rules
-}
-
-void SunflowerSimulation::set_lod(const gdx::PackedFloat32Array &p_distances, double p_hysteresis, double p_fade, double p_interval,
-		int64_t p_force_level) {
-	const std::string problem = sunflower::check_lod_distances(p_distances.data(), size_t(p_distances.size()));
-	SF_FAIL_COND_MSG(!problem.empty(), "set_lod: " + problem);
-	LodParams params;
-	std::copy_n(p_distances.data(), 4, params.distances.begin());
-	params.hysteresis = float(p_hysteresis);
-	params.fade = float(p_fade);
-	params.interval = float(p_interval);
-	params.force_level = int(std::clamp<int64_t>(p_force_level, INT32_MIN, INT32_MAX)); // the core clamps
-	_sim.near().set_lod(params);
-}
-
 void SunflowerSimulation::set_observer(gdx::Vector3 p_position, const gdx::PackedFloat32Array &p_frustum) {
 	_sim.near().set_observer(gdx::to_core(p_position));
 	const int64_t count = p_frustum.size() / 4;
@@ -335,10 +271,12 @@ void SunflowerSimulation::set_observer(gdx::Vector3 p_position, const gdx::Packe
 	}
 }
 
-void SunflowerSimulation::set_worker_threads(int64_t p_threads) {
-	SF_FAIL_COND_MSG(p_threads < 0 || p_threads > param::MAX_THREADS,
-			"worker threads " + std::to_string(p_threads) + " is out of range (0 to " + std::to_string(param::MAX_THREADS) + ")");
-	_sim.near().set_worker_threads(static_cast<uint32_t>(p_threads));
+void SunflowerSimulation::set_quality(double p_quality) {
+	_sim.near().set_quality(float(p_quality));
+}
+
+double SunflowerSimulation::get_finer_distance(int64_t p_species, int64_t p_switch) const {
+	return _is_species(p_species) && p_switch >= 0 ? double(_sim.near().get_finer_distance(uint32_t(p_species), uint32_t(p_switch))) : -1.0;
 }
 
 void SunflowerSimulation::set_pushers(const gdx::PackedFloat32Array &p_pushers) {
@@ -348,6 +286,3 @@ void SunflowerSimulation::set_pushers(const gdx::PackedFloat32Array &p_pushers) 
 	_sim.near().get_pushes().set_pushers(_pushers.data(), _pushers.size());
 }
 
-void SunflowerSimulation::set_push_params(double p_strength, double p_recovery_seconds) {
-	_sim.near().get_pushes().set_params(float(p_strength), float(p_recovery_seconds)); // the core applies param::PUSH_*
-}

@@ -33,8 +33,14 @@ public:
 	int64_t get_map_rows() const;
 	gdx::PackedInt32Array get_map_objects() const;
 
-	void set_layout(double p_cell_size, int64_t p_seed, bool p_independent_jitter, double p_chunk_size);
-	void set_tile_merge_distance(double p_metres);
+	// Settings by their rows of the core's table (get_parameter_names' order): p_values holds each
+	// row's components in turn (get_parameter_components); a plant type's rows are p_species'. The
+	// core routes each to the unit that owns it (FieldSimulation::set_setting). Returns the largest
+	// cost (0 free, 1 a rebuild: those rows were not applied, the caller builds anew), or -1 with an
+	// error and nothing set when the rows and values do not match.
+	int64_t set_settings(int64_t p_species, const gdx::PackedInt32Array &p_rows, const gdx::PackedFloat32Array &p_values);
+	// The layout's seed and jitter, which are not the table's (a seed is any 64-bit integer).
+	void set_layout_seed(int64_t p_seed, bool p_independent_jitter);
 	void set_ground_flat();
 	gdx::String set_ground_height_map(const gdx::PackedFloat32Array &p_rgba, int64_t p_width, int64_t p_depth, gdx::Vector2 p_origin,
 			gdx::Vector2 p_size, double p_height_min, double p_height_max, double p_tilt);
@@ -44,24 +50,17 @@ public:
 	double get_ground_height(gdx::Vector2 p_point) const;
 	gdx::PackedFloat32Array get_object_heights() const;
 	gdx::PackedFloat32Array get_wind_state() const;
-	void set_plant_height(int64_t p_species, double p_metres);
-	void set_plant_form(int64_t p_species, gdx::Vector3 p_part_lengths, double p_middle_variation, double p_height_units,
-			double p_cull_radius_units, double p_stiffness);
 	// Whether the species' near plants are drawn whole: one instance per plant in its level's first
 	// mesh bucket (WHOLE_FLOATS_PER_INSTANCE floats, with custom data), their parts placed by the
 	// shader, instead of one per part.
 	void set_plant_whole(int64_t p_species, bool p_whole);
 	void set_plant_lod_scale(int64_t p_species, double p_scale);
-	void set_plant_variation(int64_t p_species, double p_yaw_range, double p_scale_min, double p_scale_max, double p_brightness,
-			double p_tint);
-	void set_wind(int64_t p_model, double p_power, gdx::Vector2 p_direction, double p_stiffness_middle, double p_stiffness_bottom,
-			double p_bend_per_power, double p_max_bend, double p_flip_interval, double p_flip_chance, double p_gust_speed,
-			double p_gust_share);
-	void set_lod(const gdx::PackedFloat32Array &p_distances, double p_hysteresis, double p_fade, double p_interval, int64_t p_force_level);
 	void set_observer(gdx::Vector3 p_position, const gdx::PackedFloat32Array &p_frustum);
-	void set_worker_threads(int64_t p_threads);
+	// The frame budget's quality the levels are drawn at (NearField::set_quality), and where a plant
+	// type turns finer at a switch (NearField::get_finer_distance): what its impostor shadows follow.
+	void set_quality(double p_quality);
+	double get_finer_distance(int64_t p_species, int64_t p_switch) const;
 	void set_pushers(const gdx::PackedFloat32Array &p_pushers);
-	void set_push_params(double p_strength, double p_recovery_seconds);
 	int64_t get_pushed_count() const;
 	gdx::PackedInt32Array get_plants_near(gdx::Vector3 p_position, double p_radius, bool p_standing_only) const;
 
@@ -109,9 +108,6 @@ public:
 	void set_cell_heights(const gdx::PackedInt32Array &p_cells, const gdx::PackedFloat32Array &p_heights);
 	// Moves the changes' clock: returns the cells whose plants stood again.
 	gdx::PackedInt32Array advance_changes(double p_now);
-	// A plant type's play: its regrowth (FieldSimulation::set_regrowth) and the stump its cut plants
-	// leave (NearField::set_stump_height).
-	void set_play_type(int64_t p_species, double p_flattened_seconds, double p_cut_seconds, double p_stump_height);
 	// A cell after play: x its plant (0 none, 1 + plant type), y its state (0 standing, 1 flattened,
 	// 2 cut), z the clock when it took it.
 	gdx::Vector3 get_cell_change(int64_t p_cell) const;
@@ -148,6 +144,10 @@ public:
 	// The core's parameter table (parameters.h), for the node's setters: one validator per value.
 	static double sanitize_parameter(const gdx::String &p_name, double p_value, double p_current);
 	static gdx::String explain_parameter(const gdx::String &p_name, double p_value, double p_used);
+	// A row's cost column (0 free, 1 a rebuild: ParameterSpec::Cost) and its count of values; -1
+	// for a name not in the table.
+	static int64_t get_parameter_cost(const gdx::String &p_name);
+	static int64_t get_parameter_components(const gdx::String &p_name);
 	static double get_parameter_default(const gdx::String &p_name);
 	static double get_parameter_limit(const gdx::String &p_name, bool p_upper);
 	static gdx::String get_parameter_names();

@@ -96,16 +96,6 @@ gdx::PackedInt32Array SunflowerSimulation::advance_changes(double p_now) {
 	return gdx::to_godot_indices(recovered);
 }
 
-void SunflowerSimulation::set_play_type(int64_t p_species, double p_flattened_seconds, double p_cut_seconds, double p_stump_height) {
-	SF_FAIL_COND_MSG(!_is_species(p_species), "set_play_type: no plant type " + std::to_string(p_species));
-	_sim.near().set_stump_height(uint32_t(p_species), float(p_stump_height));
-	std::array<Regrowth, FieldMap::MAX_SPECIES> regrowth = _sim.get_regrowth();
-	Regrowth &changed = regrowth[static_cast<size_t>(p_species)];
-	changed.flattened_seconds = sanitize(param::PLANT_RECOVER_AFTER, p_flattened_seconds, changed.flattened_seconds);
-	changed.cut_seconds = sanitize(param::PLANT_REGROW_AFTER, p_cut_seconds, changed.cut_seconds);
-	_sim.set_regrowth(regrowth);
-}
-
 gdx::Vector3 SunflowerSimulation::get_cell_change(int64_t p_cell) const {
 	if (p_cell < 0 || static_cast<size_t>(p_cell) >= cell_count(_sim)) {
 		return gdx::Vector3{ 0.0f, 0.0f, 0.0f };

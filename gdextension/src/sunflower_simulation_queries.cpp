@@ -144,6 +144,16 @@ double SunflowerSimulation::get_parameter_limit(const gdx::String &p_name, bool 
 	return p_upper ? spec->max : spec->min;
 }
 
+int64_t SunflowerSimulation::get_parameter_cost(const gdx::String &p_name) {
+	const ParameterSpec *spec = find_parameter(p_name.utf8());
+	return spec ? int64_t(spec->cost) : -1;
+}
+
+int64_t SunflowerSimulation::get_parameter_components(const gdx::String &p_name) {
+	const ParameterSpec *spec = find_parameter(p_name.utf8());
+	return spec ? int64_t(spec->components) : -1;
+}
+
 gdx::String SunflowerSimulation::get_parameter_names() {
 	std::string names;
 	for (const ParameterSpec *spec : param::ALL) {

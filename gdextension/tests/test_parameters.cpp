@@ -98,3 +98,68 @@ TEST_CASE("parameters: LOD distances must be four positive increasing numbers") 
 	const float negative[4] = { -1.0f, 5.0f, 20.0f, 25.0f };
 	CHECK(check_lod_distances(negative, 4) == "distance 1 (-1) is not a positive number");
 }
+
+TEST_CASE("settings by table row: each row reaches the unit that owns it; a laid-out field leaves the layout's to a rebuild") {
+	FieldSimulation sim;
+	const float power = 7.0f;
+	CHECK(sim.set_setting(param::WIND_POWER, &power) == ParameterSpec::FREE);
+	CHECK(sim.near().get_wind().get_params().power == 7.0f);
+	const float direction[2] = { 0.0f, 0.0f }; // a zero direction is +x
+	sim.set_setting(param::WIND_DIRECTION, direction);
+	CHECK(sim.near().get_wind().get_params().direction == glm::vec2(1.0f, 0.0f));
+	const float distances[4] = { 3.0f, 5.0f, 8.0f, 9.0f };
+	sim.set_setting(param::LOD_DISTANCES, distances);
+	CHECK(sim.near().get_lod().get_params().distances[2] == 8.0f);
+	const float falling[4] = { 3.0f, 2.0f, 8.0f, 9.0f }; // fails check_lod_distances: kept
+	sim.set_setting(param::LOD_DISTANCES, falling);
+	CHECK(sim.near().get_lod().get_params().distances[1] == 5.0f);
+	const float force = 9.0f; // clamped by the row's rule
+	sim.set_setting(param::FORCE_LOD, &force);
+	CHECK(sim.near().get_lod().get_params().force_level == 4);
+	const float recover = 12.0f;
+	sim.set_setting(param::PLANT_RECOVER_AFTER, &recover, 2);
+	CHECK(sim.get_regrowth()[2].flattened_seconds == 12.0);
+	CHECK(sim.get_regrowth()[0].flattened_seconds == 0.0);
+	const float stump = 0.3f;
+	sim.set_setting(param::PLANT_STUMP_HEIGHT, &stump, 1);
+	CHECK(sim.near().get_stump_height(1) == doctest::Approx(0.3f));
+	const float threads = 1.0f;
+	sim.set_setting(param::WORKER_THREADS, &threads);
+	CHECK(sim.near().get_worker_threads() == 1);
+
+	// Before a map is laid out, the layout's rows are taken as they come.
+	const float cell = 0.8f;
+	CHECK(sim.set_setting(param::CELL_SIZE, &cell) == ParameterSpec::FREE);
+	CHECK(sim.plants().get_layout_params().cell_size == 0.8f);
+	const float yaw = 0.1f;
+	CHECK(sim.set_setting(param::PLANT_YAW_RANGE, &yaw, 1) == ParameterSpec::FREE);
+	CHECK(sim.plants().get_layout_params().varieties[1].yaw_range == 0.1f);
+	const float lengths[3] = { 2.0f, 1.0f, 1.0f };
+	sim.set_setting(param::PLANT_PART_LENGTH, lengths);
+	CHECK(sim.plants().get_shape(0).part_lengths.x == 2.0f);
+	const float height = 3.0f;
+	sim.set_setting(param::PLANT_HEIGHT, &height);
+	CHECK(sim.plants().get_shape(0).part_scale * sim.plants().get_shape(0).parts_height() == doctest::Approx(3.0f));
+
+	MapError error;
+	REQUIRE(sim.load_map("3 1\n***\n", U"", "rows", MapLimits{}, error));
+	// Laid out: a new value of a row the layout depends on is not applied and costs a rebuild; the
+	// value held, a value the rules refuse, and a row taken at the next update cost nothing.
+	const float other_cell = 0.6f;
+	CHECK(sim.set_setting(param::CELL_SIZE, &other_cell) == ParameterSpec::REBUILD);
+	CHECK(sim.plants().get_layout_params().cell_size == 0.8f);
+	CHECK(sim.set_setting(param::CELL_SIZE, &cell) == ParameterSpec::FREE);
+	const float refused = -1.0f; // CELL_SIZE keeps its value
+	CHECK(sim.set_setting(param::CELL_SIZE, &refused) == ParameterSpec::FREE);
+	CHECK(sim.set_setting(param::PLANT_YAW_RANGE, &yaw, 1) == ParameterSpec::FREE);
+	CHECK(sim.set_setting(param::PLANT_YAW_RANGE, &cell, 1) == ParameterSpec::REBUILD);
+	CHECK(sim.set_setting(param::PLANT_HEIGHT, &height) == ParameterSpec::FREE);
+	CHECK(sim.set_setting(param::PLANT_HEIGHT, &cell) == ParameterSpec::REBUILD);
+	const float stiff = 2.0f;
+	CHECK(sim.set_setting(param::PLANT_STIFFNESS, &stiff) == ParameterSpec::REBUILD);
+	CHECK(sim.set_setting(param::WIND_POWER, &cell) == ParameterSpec::FREE);
+	CHECK(sim.near().get_wind().get_params().power == 0.8f);
+	// A row the engine side applies costs what the table says (the core cannot tell a change).
+	CHECK(sim.set_setting(param::GROUND_RAY_ABOVE, &cell) == ParameterSpec::REBUILD);
+	CHECK(param::GROUND_RAY_ABOVE.cost == ParameterSpec::REBUILD);
+}

@@ -409,3 +409,27 @@ TEST_CASE("a plant drawn whole: its record gives back the part transforms, throu
 	}
 	CHECK(cases == 36);
 }
+
+TEST_CASE("natural wind: a change eases in over the wind's ease time, at once with 0") {
+	for (const float ease : { 0.5f, 4.0f, 0.0f }) {
+		WindModel wind = natural_wind(1.0f);
+		wind.advance(0.1f); // started: a change now eases in
+		WindParams params = wind.get_params();
+		params.ease_time = ease;
+		params.power = 5.0f;
+		wind.configure(params);
+		float seconds = 0.0f;
+		const float dt = 1.0f / 60.0f;
+		while (wind.get_effective_power() < 5.0f && seconds < 60.0f) {
+			wind.advance(dt);
+			seconds += dt;
+		}
+		CAPTURE(ease);
+		CHECK(seconds == doctest::Approx(std::max(ease, dt)).epsilon(0.05));
+	}
+	WindParams params;
+	params.ease_time = -3.0f; // below the row's 0: clamped
+	WindModel wind;
+	wind.configure(params);
+	CHECK(wind.get_params().ease_time == 0.0f);
+}

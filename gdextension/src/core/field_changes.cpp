@@ -6,6 +6,21 @@
 
 namespace sunflower {
 
+RowSet Regrowth::set(const ParameterSpec &p_spec, double p_value) {
+	double *held = nullptr;
+	if (&p_spec == &param::PLANT_RECOVER_AFTER) {
+		held = &flattened_seconds;
+	} else if (&p_spec == &param::PLANT_REGROW_AFTER) {
+		held = &cut_seconds;
+	} else {
+		return RowSet::OTHER;
+	}
+	const double value = sanitize(p_spec, p_value, *held);
+	const bool changed = value != *held;
+	*held = value;
+	return changed ? RowSet::CHANGED : RowSet::SAME;
+}
+
 namespace {
 
 constexpr char MAGIC[4] = { 'S', 'F', 'C', 'H' };

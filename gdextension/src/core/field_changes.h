@@ -5,6 +5,7 @@
 // so the cost follows the changes, not the field; a save (save_field_changes) holds the same, checked
 // against the map it was made on when it is loaded.
 #include "field_map.h"
+#include "parameters.h"
 
 #include <glm/vec2.hpp>
 
@@ -42,6 +43,9 @@ struct CellState {
 struct Regrowth {
 	double flattened_seconds = 0.0;
 	double cut_seconds = 0.0;
+
+	// Sets the SunflowerPlant row p_spec of a type's recovery (FieldSimulation::set_setting).
+	RowSet set(const ParameterSpec &p_spec, double p_value);
 };
 
 class FieldChanges {

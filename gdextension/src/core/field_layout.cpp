@@ -159,4 +159,39 @@ void build_layout(const FieldMap &p_map, const LayoutParams &p_params, const Gro
 	}
 }
 
+namespace {
+
+// The layout's settings of one float each and a plant type's variety's, by their table rows.
+constexpr FloatRow<LayoutParams> LAYOUT_ROWS[] = { { &param::CELL_SIZE, &LayoutParams::cell_size },
+	{ &param::CHUNK_SIZE, &LayoutParams::chunk_size }, { &param::TILE_MERGE_DISTANCE, &LayoutParams::tile_merge_distance } };
+constexpr FloatRow<PlantVariety> VARIETY_ROWS[] = { { &param::PLANT_YAW_RANGE, &PlantVariety::yaw_range },
+	{ &param::PLANT_SCALE_MIN, &PlantVariety::scale_min }, { &param::PLANT_SCALE_MAX, &PlantVariety::scale_max },
+	{ &param::PLANT_BRIGHTNESS_VARIATION, &PlantVariety::brightness }, { &param::PLANT_TINT_VARIATION, &PlantVariety::tint } };
+
+} // namespace
+
+RowSet PlantVariety::set(const ParameterSpec &p_spec, float p_value) {
+	return set_float_row(*this, VARIETY_ROWS, p_spec, p_value);
+}
+
+RowSet LayoutParams::set(const ParameterSpec &p_spec, float p_value, uint32_t p_species) {
+	const RowSet set = set_float_row(*this, LAYOUT_ROWS, p_spec, p_value);
+	return set != RowSet::OTHER || p_species >= varieties.size() ? set : varieties[p_species].set(p_spec, p_value);
+}
+
+LayoutParams LayoutParams::sanitized(const LayoutParams &p_current) const {
+	LayoutParams params = *this;
+	for (const FloatRow<LayoutParams> &row : LAYOUT_ROWS) {
+		params.*row.member = sanitize(*row.spec, this->*row.member, p_current.*row.member);
+	}
+	for (size_t s = 0; s < params.varieties.size(); ++s) {
+		PlantVariety &variety = params.varieties[s];
+		for (const FloatRow<PlantVariety> &row : VARIETY_ROWS) {
+			variety.*row.member = sanitize(*row.spec, varieties[s].*row.member, p_current.varieties[s].*row.member);
+		}
+		variety.scale_max = std::max(variety.scale_min, variety.scale_max);
+	}
+	return params;
+}
+
 } // namespace sunflower

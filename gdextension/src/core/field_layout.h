@@ -29,6 +29,9 @@ struct PlantVariety {
 	float brightness = float(param::PLANT_BRIGHTNESS_VARIATION.default_value);
 	float tint = float(param::PLANT_TINT_VARIATION.default_value);
 
+	// Sets the SunflowerPlant row p_spec of a type's variety (FieldSimulation::set_setting).
+	RowSet set(const ParameterSpec &p_spec, float p_value);
+
 	bool operator==(const PlantVariety &p_other) const {
 		return yaw_range == p_other.yaw_range && scale_min == p_other.scale_min && scale_max == p_other.scale_max &&
 				brightness == p_other.brightness && tint == p_other.tint;
@@ -51,6 +54,12 @@ struct LayoutParams {
 	// Where far tiles start to merge (param::TILE_MERGE_DISTANCE); 0: they never do. The layout
 	// itself does not depend on it, the far tiles built from it do.
 	float tile_merge_distance = float(param::TILE_MERGE_DISTANCE.default_value);
+
+	// Sets the SunflowerField row p_spec of the layout, or the row of p_species' variety
+	// (FieldSimulation::set_setting).
+	RowSet set(const ParameterSpec &p_spec, float p_value, uint32_t p_species);
+	// These by the param:: rules, values they refuse kept from p_current (a size range never falls).
+	LayoutParams sanitized(const LayoutParams &p_current) const;
 
 	bool operator==(const LayoutParams &p_other) const {
 		return cell_size == p_other.cell_size && seed == p_other.seed && independent_jitter == p_other.independent_jitter &&

@@ -38,20 +38,7 @@ bool FieldPlants::paint_map(const glm::vec2 &p_center, float p_radius, const Cel
 }
 
 bool FieldPlants::set_layout_params(const LayoutParams &p_params) {
-	LayoutParams params = p_params;
-	params.cell_size = sanitize(param::CELL_SIZE, p_params.cell_size, _layout_params.cell_size);
-	params.chunk_size = sanitize(param::CHUNK_SIZE, p_params.chunk_size, _layout_params.chunk_size);
-	params.tile_merge_distance =
-			sanitize(param::TILE_MERGE_DISTANCE, p_params.tile_merge_distance, _layout_params.tile_merge_distance);
-	for (size_t s = 0; s < params.varieties.size(); ++s) {
-		PlantVariety &variety = params.varieties[s];
-		const PlantVariety &current = _layout_params.varieties[s];
-		variety.yaw_range = sanitize(param::PLANT_YAW_RANGE, variety.yaw_range, current.yaw_range);
-		variety.scale_min = sanitize(param::PLANT_SCALE_MIN, variety.scale_min, current.scale_min);
-		variety.scale_max = std::max(variety.scale_min, sanitize(param::PLANT_SCALE_MAX, variety.scale_max, current.scale_max));
-		variety.brightness = sanitize(param::PLANT_BRIGHTNESS_VARIATION, variety.brightness, current.brightness);
-		variety.tint = sanitize(param::PLANT_TINT_VARIATION, variety.tint, current.tint);
-	}
+	const LayoutParams params = p_params.sanitized(_layout_params);
 	if (params == _layout_params) {
 		return false;
 	}
@@ -66,6 +53,30 @@ void FieldPlants::set_ground(Ground p_ground) {
 	_rebuild();
 }
 
+namespace {
+
+// A plant type's form's settings of one float each, by their table rows.
+constexpr FloatRow<PlantShape> SHAPE_ROWS[] = { { &param::PLANT_MIDDLE_VARIATION, &PlantShape::middle_variation },
+	{ &param::PLANT_HEIGHT_UNITS, &PlantShape::height }, { &param::PLANT_CULL_RADIUS_UNITS, &PlantShape::cull_radius },
+	{ &param::PLANT_STIFFNESS, &PlantShape::stiffness } };
+
+} // namespace
+
+RowSet PlantShape::set(const ParameterSpec &p_spec, const float *p_values) {
+	if (&p_spec != &param::PLANT_PART_LENGTH) {
+		return set_float_row(*this, SHAPE_ROWS, p_spec, p_values[0]);
+	}
+	glm::vec3 lengths = part_lengths;
+	for (int i = 0; i < 3; ++i) {
+		lengths[i] = sanitize(p_spec, p_values[i], part_lengths[i]);
+	}
+	if (!(lengths.x + lengths.y + lengths.z > 0.0f) || lengths == part_lengths) {
+		return RowSet::SAME; // a plant of no height could not be scaled to one
+	}
+	part_lengths = lengths;
+	return RowSet::CHANGED;
+}
+
 bool FieldPlants::set_shape(const PlantShape &p_shape, uint32_t p_species) {
 	if (p_species >= _shapes.size()) {
 		return false;
@@ -78,10 +89,9 @@ bool FieldPlants::set_shape(const PlantShape &p_shape, uint32_t p_species) {
 	if (!(shape.parts_height() > 0.0f)) {
 		shape.part_lengths = current.part_lengths; // a plant of no height could not be scaled to one
 	}
-	shape.middle_variation = sanitize(param::PLANT_MIDDLE_VARIATION, shape.middle_variation, current.middle_variation);
-	shape.stiffness = sanitize(param::PLANT_STIFFNESS, shape.stiffness, current.stiffness);
-	shape.height = sanitize(param::PLANT_HEIGHT_UNITS, shape.height, current.height);
-	shape.cull_radius = sanitize(param::PLANT_CULL_RADIUS_UNITS, shape.cull_radius, current.cull_radius);
+	for (const FloatRow<PlantShape> &row : SHAPE_ROWS) {
+		shape.*row.member = sanitize(*row.spec, p_shape.*row.member, current.*row.member);
+	}
 	shape.part_scale = shape.part_scale > 0.0f && std::isfinite(shape.part_scale) ? shape.part_scale : current.part_scale;
 	shape.lod_scale = shape.lod_scale > 0.0f && std::isfinite(shape.lod_scale) ? shape.lod_scale : current.lod_scale;
 	const bool drawn_otherwise = shape.whole != current.whole;

@@ -40,6 +40,82 @@ void FieldSimulation::paint_map(const glm::vec2 &p_center, float p_radius, const
 	}
 }
 
+ParameterSpec::Cost FieldSimulation::set_setting(const ParameterSpec &p_spec, const float *p_values, uint32_t p_species) {
+	if (p_species >= FieldMap::MAX_SPECIES) {
+		return ParameterSpec::FREE;
+	}
+	// What is taken at the next update.
+	WindParams wind = _near.get_wind().get_params();
+	if (wind.set(p_spec, p_values) != RowSet::OTHER) {
+		_near.set_wind(wind);
+		return ParameterSpec::FREE;
+	}
+	LodParams lod = _near.get_lod_params();
+	if (lod.set(p_spec, p_values) != RowSet::OTHER) {
+		_near.set_lod(lod);
+		return ParameterSpec::FREE;
+	}
+	if (_near.get_pushes().set(p_spec, p_values[0]) != RowSet::OTHER) {
+		return ParameterSpec::FREE;
+	}
+	Regrowth regrowth = _regrowth[p_species];
+	if (regrowth.set(p_spec, double(p_values[0])) != RowSet::OTHER) {
+		std::array<Regrowth, FieldMap::MAX_SPECIES> all = _regrowth;
+		all[p_species] = regrowth;
+		set_regrowth(all);
+		return ParameterSpec::FREE;
+	}
+	if (&p_spec == &param::WORKER_THREADS) {
+		_near.set_worker_threads(uint32_t(sanitize(p_spec, double(p_values[0]), double(_near.get_worker_threads()))));
+		return ParameterSpec::FREE;
+	}
+	if (&p_spec == &param::PLANT_STUMP_HEIGHT) {
+		_near.set_stump_height(p_species, p_values[0]);
+		return ParameterSpec::FREE;
+	}
+	// What the layout depends on: taken while no map is read, else left to a new build.
+	const bool laid_out = _plants.get_map().columns > 0;
+	LayoutParams layout = _plants.get_layout_params();
+	const RowSet layout_set = layout.set(p_spec, p_values[0], p_species);
+	if (layout_set != RowSet::OTHER) {
+		if (layout_set == RowSet::SAME) {
+			return ParameterSpec::FREE;
+		}
+		if (laid_out) {
+			return ParameterSpec::REBUILD;
+		}
+		set_layout_params(layout);
+		return ParameterSpec::FREE;
+	}
+	PlantShape shape = _plants.get_shape(p_species);
+	const float metres = shape.part_scale * shape.parts_height();
+	if (&p_spec == &param::PLANT_HEIGHT) {
+		if (sanitize(p_spec, p_values[0], metres) == metres) {
+			return ParameterSpec::FREE;
+		}
+		if (laid_out) {
+			return ParameterSpec::REBUILD;
+		}
+		set_plant_height(p_values[0], p_species);
+		return ParameterSpec::FREE;
+	}
+	const RowSet shape_set = shape.set(p_spec, p_values);
+	if (shape_set == RowSet::CHANGED) {
+		if (laid_out) {
+			return ParameterSpec::REBUILD;
+		}
+		set_shape(shape, p_species);
+		set_plant_height(metres, p_species); // a new form keeps the plant's height
+		return ParameterSpec::FREE;
+	}
+	if (shape_set == RowSet::SAME || !laid_out) {
+		return ParameterSpec::FREE;
+	}
+	// A row no unit here owns (the engine side applies it): the table's cost, as the core cannot
+	// tell whether it changed.
+	return p_spec.cost;
+}
+
 bool FieldSimulation::set_layout_params(const LayoutParams &p_params) {
 	if (!_plants.set_layout_params(p_params)) {
 		return false;

@@ -43,6 +43,15 @@ public:
 	// anything changed. (A simulation that only edits a map, for a painter, skips the layout.)
 	void paint_map(const glm::vec2 &p_center, float p_radius, const CellContent &p_content, float p_density, uint64_t p_seed,
 			bool p_relayout, std::vector<int> &r_changed, const CellWeights *p_weights = nullptr);
+	// Sets the setting of table row p_spec (parameters.h) from its p_spec.components values (a plant
+	// type's row: of p_species), by the row's rules, in the unit that owns it: the wind, the levels
+	// of detail, the pushes, the worker threads, a type's recovery and stump, the layout and a
+	// type's variety and form. Returns what the change costs: FREE (taken at the next update, or a
+	// value the row's rules make the one held) or REBUILD: a row the layout depends on, set while a
+	// map is read, is not applied, and the caller builds the field anew with it (a simulation never
+	// rebuilds itself for a setting). A row no unit owns (the engine side applies it) costs its
+	// ParameterSpec::cost once a map is read: the core cannot tell whether it changed.
+	ParameterSpec::Cost set_setting(const ParameterSpec &p_spec, const float *p_values, uint32_t p_species = 0);
 	// Rebuilds when the (sanitised) parameters differ from the current ones; returns whether it did.
 	bool set_layout_params(const LayoutParams &p_params);
 	// Stands the plants on p_ground (rebuilding). Plants whose cells have no ground go.

@@ -5,16 +5,45 @@
 
 namespace sunflower {
 
-void LodSelector::configure(const LodParams &p_params) {
-	const LodParams previous = _params;
-	_params = p_params;
-	if (!check_lod_distances(p_params.distances.data(), p_params.distances.size()).empty()) {
-		_params.distances = previous.distances;
+namespace {
+
+// The levels' settings of one float each, by their table rows.
+constexpr FloatRow<LodParams> LOD_ROWS[] = { { &param::LOD_HYSTERESIS, &LodParams::hysteresis },
+	{ &param::LOD_INTERVAL, &LodParams::interval }, { &param::LOD_FADE, &LodParams::fade } };
+
+} // namespace
+
+RowSet LodParams::set(const ParameterSpec &p_spec, const float *p_values) {
+	if (&p_spec == &param::FORCE_LOD) {
+		const int value = int(sanitize(p_spec, double(p_values[0]), double(force_level)));
+		const bool changed = value != force_level;
+		force_level = value;
+		return changed ? RowSet::CHANGED : RowSet::SAME;
 	}
-	_params.hysteresis = sanitize(param::LOD_HYSTERESIS, p_params.hysteresis, previous.hysteresis);
-	_params.interval = sanitize(param::LOD_INTERVAL, p_params.interval, previous.interval);
-	_params.fade = sanitize(param::LOD_FADE, p_params.fade, previous.fade);
-	_params.force_level = int(sanitize(param::FORCE_LOD, double(p_params.force_level), double(previous.force_level)));
+	if (&p_spec == &param::LOD_DISTANCES) {
+		if (!check_lod_distances(p_values, distances.size()).empty() || std::equal(distances.begin(), distances.end(), p_values)) {
+			return RowSet::SAME; // distances that fail the check keep the current ones
+		}
+		std::copy_n(p_values, distances.size(), distances.begin());
+		return RowSet::CHANGED;
+	}
+	return set_float_row(*this, LOD_ROWS, p_spec, p_values[0]);
+}
+
+LodParams LodSelector::sanitized(const LodParams &p_params, const LodParams &p_current) {
+	LodParams params = p_params;
+	if (!check_lod_distances(p_params.distances.data(), p_params.distances.size()).empty()) {
+		params.distances = p_current.distances;
+	}
+	for (const FloatRow<LodParams> &row : LOD_ROWS) {
+		params.*row.member = sanitize(*row.spec, p_params.*row.member, p_current.*row.member);
+	}
+	params.force_level = int(sanitize(param::FORCE_LOD, double(p_params.force_level), double(p_current.force_level)));
+	return params;
+}
+
+void LodSelector::configure(const LodParams &p_params) {
+	_params = sanitized(p_params, _params);
 	for (size_t i = 0; i < 4; ++i) {
 		const float d = _params.distances[i];
 		const float finer = std::max(0.0f, d - _params.hysteresis);

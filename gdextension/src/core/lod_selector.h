@@ -29,6 +29,10 @@ struct LodParams {
 	float fade = float(param::LOD_FADE.default_value); // metres of mesh 3 → impostor cross-fade
 	// 0–4: draw every plant in this representation (benchmarks, debugging); -1: by distance.
 	int force_level = int(param::FORCE_LOD.default_value);
+
+	// Sets the SunflowerField row p_spec of the levels of detail from its values
+	// (FieldSimulation::set_setting).
+	RowSet set(const ParameterSpec &p_spec, const float *p_values);
 };
 
 class LodSelector {
@@ -36,6 +40,8 @@ public:
 	// Takes the parameters the param:: rules accept; distances that fail check_lod_distances() keep
 	// the current ones.
 	void configure(const LodParams &p_params);
+	// p_params by the param:: rules, values they refuse kept from p_current.
+	static LodParams sanitized(const LodParams &p_params, const LodParams &p_current);
 	const LodParams &get_params() const { return _params; }
 
 	// The level for a plant first seen at squared distance p_distance_sq (no history).

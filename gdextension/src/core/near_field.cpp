@@ -106,8 +106,27 @@ void NearField::_write_stump(const Plant &p_plant, const PlantShape &p_shape, fl
 }
 
 void NearField::set_lod(const LodParams &p_params) {
-	_lod.configure(p_params);
+	_lod_params = LodSelector::sanitized(p_params, _lod_params);
+	LodParams drawn = _lod_params;
+	for (float &distance : drawn.distances) {
+		distance *= _quality;
+	}
+	drawn.fade *= _quality;
+	_lod.configure(drawn);
 	_lod_due = true;
+}
+
+void NearField::set_quality(float p_quality) {
+	if (p_quality > 0.0f && p_quality <= 1.0f && p_quality != _quality) {
+		_quality = p_quality;
+		set_lod(_lod_params);
+	}
+}
+
+float NearField::get_finer_distance(uint32_t p_species, uint32_t p_switch) const {
+	const LodParams &params = _lod.get_params();
+	const float distance = std::max(0.0f, params.distances[std::min<size_t>(p_switch, 3)] - params.hysteresis);
+	return distance * _plants.get_shape(p_species).lod_scale;
 }
 
 void NearField::write_active_mask(uint32_t p_species, uint8_t *r_out) const {

@@ -54,7 +54,17 @@ public:
 
 	void set_wind(const WindParams &p_params) { _wind.configure(p_params); }
 	const WindModel &get_wind() const { return _wind; }
+	// The levels' settings (the param:: rules apply); they are drawn at the quality.
 	void set_lod(const LodParams &p_params);
+	const LodParams &get_lod_params() const { return _lod_params; }
+	// The share of the switch distances and the fade plants are drawn at: a frame budget's quality,
+	// in (0, 1] (out of it or not finite: the current one stays).
+	void set_quality(float p_quality);
+	float get_quality() const { return _quality; }
+	// Where a plant of p_species turns from the finer level of switch p_switch (0: mesh 1 → 2, …,
+	// 3: sprite → billboard) to the coarser one, coming nearer: the switch distance at the quality
+	// less the hysteresis, times the type's PlantShape::lod_scale.
+	float get_finer_distance(uint32_t p_species, uint32_t p_switch) const;
 	// The stump a cut plant of p_species leaves, metres (param::PLANT_STUMP_HEIGHT; 0: none): its
 	// bottom part, upright, shortened to that height, drawn at its mesh level (drawn whole: the
 	// plant's record with a negative middle stretch, which the shader draws so). A plant of one part
@@ -150,7 +160,9 @@ private:
 	const FieldPlants &_plants;
 	const PlantPushes::WindOf _wind_lookup;
 	WindModel _wind;
-	LodSelector _lod;
+	LodSelector _lod; // _lod_params at _quality
+	LodParams _lod_params;
+	float _quality = 1.0f;
 	Frustum _frustum;
 	PlantPushes _pushes;
 	glm::vec3 _observer{ 0.0f };

@@ -42,6 +42,10 @@ const ParameterSpec *find_parameter(std::string_view p_name) {
 	return nullptr;
 }
 
+bool is_plant_setting(const ParameterSpec &p_spec) {
+	return std::string_view(p_spec.name).rfind("SunflowerPlant.", 0) == 0;
+}
+
 double sanitize(const ParameterSpec &p_spec, double p_value, double p_current) {
 	if (!std::isfinite(p_value)) {
 		return p_spec.rule == ParameterSpec::KEEP ? p_current : p_spec.fallback;

@@ -21,12 +21,20 @@ struct ParameterSpec {
 		CLAMP, // out of range: the nearest bound; not finite: `fallback`
 		KEEP, // out of range or not finite: the current value stays
 	};
+	// What changing the value costs a field whose map is laid out (FieldSimulation::set_setting).
+	enum Cost : uint8_t {
+		FREE, // taken at the next update (or applied by the engine side)
+		REBUILD, // the layout depends on it: the field is built anew
+	};
 	const char *name;
 	double default_value;
 	double min;
 	double max;
 	Rule rule;
 	double fallback; // CLAMP: what a non-finite value becomes
+	Cost cost = FREE;
+	// Values the setting holds (a direction 2, the switch distances 4); the rules apply to each.
+	uint8_t components = 1;
 };
 
 namespace param {
@@ -48,25 +56,30 @@ inline constexpr ParameterSpec WIND_FLIP_INTERVAL{ "SunflowerWind.flip_interval"
 inline constexpr ParameterSpec WIND_FLIP_CHANCE{ "SunflowerWind.flip_chance", 0.5, 0.0, 1.0, ParameterSpec::CLAMP, 0.5 };
 inline constexpr ParameterSpec WIND_GUST_SPEED{ "SunflowerWind.gust_speed", 3.0, 0.0, NO_MAX, ParameterSpec::CLAMP, 3.0 };
 inline constexpr ParameterSpec WIND_GUST_SHARE{ "SunflowerWind.gust_share", 0.5, 0.0, 1.0, ParameterSpec::CLAMP, 0.5 };
+// Natural wind: the seconds a change of power or direction takes to ease in (0: at once).
+inline constexpr ParameterSpec WIND_EASE_TIME{ "SunflowerWind.ease_time", 0.5, 0.0, 600.0, ParameterSpec::CLAMP, 0.5 };
+// Where the wind blows to (x, z; need not be normalised): a zero or non-finite one is +x
+// (sanitize_wind_direction), not a per-value rule.
+inline constexpr ParameterSpec WIND_DIRECTION{ "SunflowerWind.direction", 1.0, NO_MIN, NO_MAX, ParameterSpec::KEEP, 0.0, ParameterSpec::FREE, 2 };
 
 // Layout: a bad size is refused and the field keeps the one it has (a rebuild would be wasted).
-inline constexpr ParameterSpec CELL_SIZE{ "SunflowerField.cell_size", 0.5, 0.001, NO_MAX, ParameterSpec::KEEP, 0.0 };
-inline constexpr ParameterSpec PLANT_HEIGHT{ "SunflowerPlant.height", 2.0, 0.001, NO_MAX, ParameterSpec::KEEP, 0.0 };
+inline constexpr ParameterSpec CELL_SIZE{ "SunflowerField.cell_size", 0.5, 0.001, NO_MAX, ParameterSpec::KEEP, 0.0, ParameterSpec::REBUILD };
+inline constexpr ParameterSpec PLANT_HEIGHT{ "SunflowerPlant.height", 2.0, 0.001, NO_MAX, ParameterSpec::KEEP, 0.0, ParameterSpec::REBUILD };
 // A plant type's variety: yaw either side of facing +z (radians), size factor range, middle stretch.
-inline constexpr ParameterSpec PLANT_YAW_RANGE{ "SunflowerPlant.yaw_range", 0.35, 0.0, PI, ParameterSpec::CLAMP, 0.35 };
-inline constexpr ParameterSpec PLANT_SCALE_MIN{ "SunflowerPlant.scale_min", 1.0, 0.01, 100.0, ParameterSpec::CLAMP, 1.0 };
-inline constexpr ParameterSpec PLANT_SCALE_MAX{ "SunflowerPlant.scale_max", 1.0, 0.01, 100.0, ParameterSpec::CLAMP, 1.0 };
+inline constexpr ParameterSpec PLANT_YAW_RANGE{ "SunflowerPlant.yaw_range", 0.35, 0.0, PI, ParameterSpec::CLAMP, 0.35, ParameterSpec::REBUILD };
+inline constexpr ParameterSpec PLANT_SCALE_MIN{ "SunflowerPlant.scale_min", 1.0, 0.01, 100.0, ParameterSpec::CLAMP, 1.0, ParameterSpec::REBUILD };
+inline constexpr ParameterSpec PLANT_SCALE_MAX{ "SunflowerPlant.scale_max", 1.0, 0.01, 100.0, ParameterSpec::CLAMP, 1.0, ParameterSpec::REBUILD };
 // A plant type's colour variety: the instance colour multiplies the albedo by 1 ± brightness and
 // tints it warmer or cooler by up to ± tint (red up and blue down, or the other way).
-inline constexpr ParameterSpec PLANT_BRIGHTNESS_VARIATION{ "SunflowerPlant.brightness_variation", 0.0, 0.0, 1.0, ParameterSpec::CLAMP, 0.0 };
-inline constexpr ParameterSpec PLANT_TINT_VARIATION{ "SunflowerPlant.tint_variation", 0.0, 0.0, 1.0, ParameterSpec::CLAMP, 0.0 };
+inline constexpr ParameterSpec PLANT_BRIGHTNESS_VARIATION{ "SunflowerPlant.brightness_variation", 0.0, 0.0, 1.0, ParameterSpec::CLAMP, 0.0, ParameterSpec::REBUILD };
+inline constexpr ParameterSpec PLANT_TINT_VARIATION{ "SunflowerPlant.tint_variation", 0.0, 0.0, 1.0, ParameterSpec::CLAMP, 0.0, ParameterSpec::REBUILD };
 // A plant type's form in model units (plant_shape.h): each part's length (0 for an empty slot above
 // the plant's top part; lengths of no height together keep the current ones), the height the
 // impostors frame, the culling radius. Out of range or not finite: the current value stays.
-inline constexpr ParameterSpec PLANT_PART_LENGTH{ "SunflowerPlant.part_lengths", 1.0, 0.0, NO_MAX, ParameterSpec::KEEP, 0.0 };
-inline constexpr ParameterSpec PLANT_HEIGHT_UNITS{ "SunflowerPlant.height_units", 3.2, 1e-4, NO_MAX, ParameterSpec::KEEP, 0.0 };
-inline constexpr ParameterSpec PLANT_CULL_RADIUS_UNITS{ "SunflowerPlant.cull_radius_units", 1.9, 1e-4, NO_MAX, ParameterSpec::KEEP, 0.0 };
-inline constexpr ParameterSpec PLANT_STIFFNESS{ "SunflowerPlant.stiffness", 1.0, 0.05, 20.0, ParameterSpec::CLAMP, 1.0 };
+inline constexpr ParameterSpec PLANT_PART_LENGTH{ "SunflowerPlant.part_lengths", 1.0, 0.0, NO_MAX, ParameterSpec::KEEP, 0.0, ParameterSpec::REBUILD, 3 };
+inline constexpr ParameterSpec PLANT_HEIGHT_UNITS{ "SunflowerPlant.height_units", 3.2, 1e-4, NO_MAX, ParameterSpec::KEEP, 0.0, ParameterSpec::REBUILD };
+inline constexpr ParameterSpec PLANT_CULL_RADIUS_UNITS{ "SunflowerPlant.cull_radius_units", 1.9, 1e-4, NO_MAX, ParameterSpec::KEEP, 0.0, ParameterSpec::REBUILD };
+inline constexpr ParameterSpec PLANT_STIFFNESS{ "SunflowerPlant.stiffness", 1.0, 0.05, 20.0, ParameterSpec::CLAMP, 1.0, ParameterSpec::REBUILD };
 // A plant of one part's leaves in the wind (shaders/plant_bend.gdshaderinc): its upper part moves about
 // its bent place by up to this share of the bend's own sway at the top (0: still, the sunflower's).
 inline constexpr ParameterSpec PLANT_FLUTTER{ "SunflowerPlant.flutter", 0.0, 0.0, 1.0, ParameterSpec::CLAMP, 0.0 };
@@ -78,12 +91,15 @@ inline constexpr ParameterSpec PLANT_IMPOSTOR_SHADOW_SHIFT{ "SunflowerPlant.impo
 // that 8-bit colours keep energies up to it. The baker picks the smallest of 8, 64, 512 … in which no
 // pixel of the atlas saturates.
 inline constexpr ParameterSpec PLANT_IMPOSTOR_EMISSION_RANGE{ "SunflowerPlant.impostor_emission_range", 8.0, 1.0, 32768.0, ParameterSpec::CLAMP, 8.0 };
-inline constexpr ParameterSpec PLANT_MIDDLE_VARIATION{ "SunflowerPlant.middle_variation", 0.1, 0.0, 10.0, ParameterSpec::CLAMP, 0.1 };
-inline constexpr ParameterSpec CHUNK_SIZE{ "SunflowerField.chunk_size", 16.0, 0.5, 4096.0, ParameterSpec::KEEP, 0.0 };
+inline constexpr ParameterSpec PLANT_MIDDLE_VARIATION{ "SunflowerPlant.middle_variation", 0.1, 0.0, 10.0, ParameterSpec::CLAMP, 0.1, ParameterSpec::REBUILD };
+inline constexpr ParameterSpec CHUNK_SIZE{ "SunflowerField.chunk_size", 16.0, 0.5, 4096.0, ParameterSpec::KEEP, 0.0, ParameterSpec::REBUILD };
 // 0 means the parser's own limit (MapLimits::max_plants).
-inline constexpr ParameterSpec MAX_PLANTS{ "SunflowerField.max_plants", 4'000'000, 0.0, 100'000'000, ParameterSpec::CLAMP, 4'000'000 };
+inline constexpr ParameterSpec MAX_PLANTS{ "SunflowerField.max_plants", 4'000'000, 0.0, 100'000'000, ParameterSpec::CLAMP, 4'000'000, ParameterSpec::REBUILD };
 
 // Levels of detail (thesis 3.2–3.3: 0.25 s between updates; the hysteresis is this addon's).
+// The switch distances, metres: mesh 1 → 2, 2 → 3, 3 → sprite, sprite → billboard (thesis: 6, 10,
+// 20, 25); four that fail check_lod_distances keep the current ones. The default is the first's.
+inline constexpr ParameterSpec LOD_DISTANCES{ "SunflowerField.lod_distances", 6.0, 0.0, NO_MAX, ParameterSpec::KEEP, 0.0, ParameterSpec::FREE, 4 };
 inline constexpr ParameterSpec LOD_HYSTERESIS{ "SunflowerField.lod_hysteresis", 0.5, 0.0, NO_MAX, ParameterSpec::CLAMP, 0.5 };
 inline constexpr ParameterSpec LOD_INTERVAL{ "SunflowerField.lod_interval", 0.25, 0.0, NO_MAX, ParameterSpec::CLAMP, 0.25 };
 // Metres over which a plant leaving mesh 3 dithers into its impostor, ending where the sprite takes
@@ -98,7 +114,7 @@ inline constexpr ParameterSpec THINNING_MIN_DENSITY{ "SunflowerField.thinning_mi
 // Far tiles merge with distance: plants this far from the observer are drawn by tiles of 2 × 2
 // tiles holding a quarter of their plants, from twice it 4 × 4 with a sixteenth, and so on, fading
 // in over the half octave before (FieldSimulation::choose_tile_level); 0: tiles never merge.
-inline constexpr ParameterSpec TILE_MERGE_DISTANCE{ "SunflowerField.tile_merge_distance", 200.0, 0.0, NO_MAX, ParameterSpec::CLAMP, 200.0 };
+inline constexpr ParameterSpec TILE_MERGE_DISTANCE{ "SunflowerField.tile_merge_distance", 200.0, 0.0, NO_MAX, ParameterSpec::CLAMP, 200.0, ParameterSpec::REBUILD };
 inline constexpr ParameterSpec MAX_DRAW_DISTANCE{ "SunflowerField.max_draw_distance", 0.0, 0.0, NO_MAX, ParameterSpec::CLAMP, 0.0 };
 
 // Performance. 0 threads: the machine's cores, at most MAX_AUTO_THREADS.
@@ -132,11 +148,11 @@ inline constexpr ParameterSpec PLANT_STUMP_HEIGHT{ "SunflowerPlant.stump_height"
 inline constexpr ParameterSpec COLLISION_REACH{ "SunflowerField.collision_reach", 0.0, 0.0, 1000.0, ParameterSpec::CLAMP, 0.0 };
 
 // Ground: how far plants lean towards the ground's normal; where rays for colliders start and end.
-inline constexpr ParameterSpec GROUND_TILT{ "SunflowerField.ground_tilt", 0.0, 0.0, 1.0, ParameterSpec::CLAMP, 0.0 };
-inline constexpr ParameterSpec GROUND_RAY_ABOVE{ "SunflowerField.ground_ray_above", 100.0, 0.0, NO_MAX, ParameterSpec::CLAMP, 100.0 };
-inline constexpr ParameterSpec GROUND_RAY_BELOW{ "SunflowerField.ground_ray_below", 100.0, 0.0, NO_MAX, ParameterSpec::CLAMP, 100.0 };
+inline constexpr ParameterSpec GROUND_TILT{ "SunflowerField.ground_tilt", 0.0, 0.0, 1.0, ParameterSpec::CLAMP, 0.0, ParameterSpec::REBUILD };
+inline constexpr ParameterSpec GROUND_RAY_ABOVE{ "SunflowerField.ground_ray_above", 100.0, 0.0, NO_MAX, ParameterSpec::CLAMP, 100.0, ParameterSpec::REBUILD };
+inline constexpr ParameterSpec GROUND_RAY_BELOW{ "SunflowerField.ground_ray_below", 100.0, 0.0, NO_MAX, ParameterSpec::CLAMP, 100.0, ParameterSpec::REBUILD };
 
-inline constexpr std::array<const ParameterSpec *, 53> ALL{ { &WIND_MODEL, &WIND_POWER, &WIND_INCREMENT, &WIND_STIFFNESS_MIDDLE,
+inline constexpr std::array<const ParameterSpec *, 56> ALL{ { &WIND_MODEL, &WIND_DIRECTION, &LOD_DISTANCES, &WIND_EASE_TIME, &WIND_POWER, &WIND_INCREMENT, &WIND_STIFFNESS_MIDDLE,
 		&WIND_STIFFNESS_BOTTOM, &WIND_BEND_PER_POWER, &WIND_MAX_BEND, &WIND_FLIP_INTERVAL, &WIND_FLIP_CHANCE,
 		&WIND_GUST_SPEED, &WIND_GUST_SHARE, &CELL_SIZE, &PLANT_HEIGHT, &CHUNK_SIZE, &MAX_PLANTS, &LOD_HYSTERESIS,
 		&LOD_INTERVAL, &LOD_FADE, &FORCE_LOD, &ALPHA_SCISSOR, &THINNING_DISTANCE, &THINNING_MIN_DENSITY, &TILE_MERGE_DISTANCE, &MAX_DRAW_DISTANCE,
@@ -150,6 +166,8 @@ inline constexpr std::array<const ParameterSpec *, 53> ALL{ { &WIND_MODEL, &WIND
 
 // The spec called p_name, or null.
 const ParameterSpec *find_parameter(std::string_view p_name);
+// Whether a setting is a plant type's (set per species) rather than the field's or its wind's.
+bool is_plant_setting(const ParameterSpec &p_spec);
 // The value the core uses when asked for p_value while p_current is set.
 double sanitize(const ParameterSpec &p_spec, double p_value, double p_current);
 inline float sanitize(const ParameterSpec &p_spec, float p_value, float p_current) {
@@ -158,6 +176,35 @@ inline float sanitize(const ParameterSpec &p_spec, float p_value, float p_curren
 // Why p_value became p_used, for a warning: "nan is not a finite number; using 0". Empty when
 // p_value was taken as it is.
 std::string explain_sanitized(const ParameterSpec &p_spec, double p_value, double p_used);
+
+// A unit's settings of one float each: the member of its parameters (Params) a table row sets.
+template <class Params>
+struct FloatRow {
+	const ParameterSpec *spec;
+	float Params::*member;
+};
+// What setting a row did to a unit's parameters (set_float_row, the units' set functions).
+enum class RowSet : uint8_t {
+	OTHER, // not the unit's row
+	SAME, // the value, by the row's rules, is the one held
+	CHANGED,
+};
+// Sets r_params' member of row p_spec among p_rows to p_value by the row's rules.
+template <class Params, size_t N>
+RowSet set_float_row(Params &r_params, const FloatRow<Params> (&p_rows)[N], const ParameterSpec &p_spec, float p_value) {
+	for (const FloatRow<Params> &row : p_rows) {
+		if (row.spec == &p_spec) {
+			float &held = r_params.*row.member;
+			const float value = sanitize(p_spec, p_value, held);
+			if (value == held) {
+				return RowSet::SAME;
+			}
+			held = value;
+			return RowSet::CHANGED;
+		}
+	}
+	return RowSet::OTHER;
+}
 
 // The wind direction (x, z): a zero or non-finite vector means +x.
 glm::vec2 sanitize_wind_direction(const glm::vec2 &p_direction);

@@ -11,6 +11,12 @@ void PlantPushes::set_params(float p_strength, float p_recovery_seconds) {
 	_recovery = sanitize(param::PUSH_RECOVERY, p_recovery_seconds, _recovery);
 }
 
+RowSet PlantPushes::set(const ParameterSpec &p_spec, float p_value) {
+	static constexpr FloatRow<PlantPushes> ROWS[] = { { &param::PUSH_STRENGTH, &PlantPushes::_strength },
+		{ &param::PUSH_RECOVERY, &PlantPushes::_recovery } };
+	return set_float_row(*this, ROWS, p_spec, p_value);
+}
+
 void PlantPushes::drop_chunk(uint32_t p_chunk, const FieldLayout &p_layout, const WindOf &p_wind_of) {
 	for (size_t i = 0; i < _pushed.size();) {
 		if (p_layout.plants[_pushed[i].plant].chunk != p_chunk) {

@@ -34,6 +34,8 @@ public:
 	const std::vector<Pusher> &get_pushers() const { return _pushers; }
 	// Invalid values keep the current ones (param::PUSH_STRENGTH, param::PUSH_RECOVERY).
 	void set_params(float p_strength, float p_recovery_seconds);
+	// Sets the SunflowerField row p_spec of the pushes (FieldSimulation::set_setting).
+	RowSet set(const ParameterSpec &p_spec, float p_value);
 	// Plants pushed now or springing back.
 	uint32_t get_pushed_count() const { return static_cast<uint32_t>(_pushed.size()); }
 	// The push's bend of a plant now (zero when it is not pushed).

@@ -48,6 +48,9 @@ struct PlantShape {
 	bool whole = false;
 
 	float parts_height() const { return part_lengths.x + part_lengths.y + part_lengths.z; }
+	// Sets the SunflowerPlant row p_spec of the form in model units from its values
+	// (FieldSimulation::set_setting; the height in metres is FieldPlants::shape_of_height's).
+	RowSet set(const ParameterSpec &p_spec, const float *p_values);
 	// A stalk collider's radius as a share of the parts' height (5 cm for a 2 m sunflower).
 	static constexpr float STALK_RADIUS_SHARE = 0.025f;
 	bool operator==(const PlantShape &p_other) const {

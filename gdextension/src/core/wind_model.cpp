@@ -61,35 +61,52 @@ glm::mat3 lean_rotation(const glm::vec2 &p_lean) {
 	return rotation_about_horizontal(glm::vec2(p_lean.y, -p_lean.x) / glm::length(p_lean), std::asin(size));
 }
 
-// Natural wind: how fast power and direction changes ease in, and how long a redrawn b takes to
-// turn the sway round.
-constexpr float EASE_SECONDS = 0.5f;
 // Natural wind: the size of a gust cell on the ground, metres.
 constexpr float GUST_CELL = 8.0f;
 
+// The wind's settings of one float each, by their table rows (set and configure apply their rules).
+constexpr FloatRow<WindParams> WIND_ROWS[] = { { &param::WIND_POWER, &WindParams::power },
+	{ &param::WIND_STIFFNESS_MIDDLE, &WindParams::d1 }, { &param::WIND_STIFFNESS_BOTTOM, &WindParams::d2 },
+	{ &param::WIND_BEND_PER_POWER, &WindParams::h }, { &param::WIND_MAX_BEND, &WindParams::max_bend },
+	{ &param::WIND_FLIP_INTERVAL, &WindParams::flip_interval }, { &param::WIND_FLIP_CHANCE, &WindParams::flip_chance },
+	{ &param::WIND_GUST_SPEED, &WindParams::gust_speed }, { &param::WIND_GUST_SHARE, &WindParams::gust_share },
+	{ &param::WIND_EASE_TIME, &WindParams::ease_time } };
+
+RowSet WindParams::set(const ParameterSpec &p_spec, const float *p_values) {
+	if (&p_spec == &param::WIND_MODEL) {
+		const int value = int(sanitize(p_spec, double(p_values[0]), double(model)));
+		const bool changed = value != model;
+		model = value;
+		return changed ? RowSet::CHANGED : RowSet::SAME;
+	}
+	if (&p_spec == &param::WIND_DIRECTION) {
+		const glm::vec2 value = sanitize_wind_direction(glm::vec2(p_values[0], p_values[1]));
+		const bool changed = value != direction;
+		direction = value;
+		return changed ? RowSet::CHANGED : RowSet::SAME;
+	}
+	return set_float_row(*this, WIND_ROWS, p_spec, p_values[0]);
+}
+
 void WindModel::configure(const WindParams &p_params) {
+	const WindParams previous = _params;
 	_params = p_params;
-	_params.model = int(sanitize(param::WIND_MODEL, double(p_params.model), double(_params.model)));
-	_params.power = sanitize(param::WIND_POWER, p_params.power, _params.power);
+	_params.model = int(sanitize(param::WIND_MODEL, double(p_params.model), double(previous.model)));
 	_params.direction = sanitize_wind_direction(p_params.direction);
-	_params.d1 = sanitize(param::WIND_STIFFNESS_MIDDLE, p_params.d1, _params.d1);
-	_params.d2 = sanitize(param::WIND_STIFFNESS_BOTTOM, p_params.d2, _params.d2);
-	_params.h = sanitize(param::WIND_BEND_PER_POWER, p_params.h, _params.h);
-	_params.max_bend = sanitize(param::WIND_MAX_BEND, p_params.max_bend, _params.max_bend);
-	_params.flip_interval = sanitize(param::WIND_FLIP_INTERVAL, p_params.flip_interval, _params.flip_interval);
-	_params.flip_chance = sanitize(param::WIND_FLIP_CHANCE, p_params.flip_chance, _params.flip_chance);
-	_params.gust_speed = sanitize(param::WIND_GUST_SPEED, p_params.gust_speed, _params.gust_speed);
-	_params.gust_share = sanitize(param::WIND_GUST_SHARE, p_params.gust_share, _params.gust_share);
+	for (const FloatRow<WindParams> &row : WIND_ROWS) {
+		_params.*row.member = sanitize(*row.spec, p_params.*row.member, previous.*row.member);
+	}
 	_bend_limit = _params.max_bend / (1.0f / _params.d1 + 1.0f / _params.d2);
 	if (_params.model == WIND_THESIS || !_advanced) {
 		// The thesis' wind changes at once; natural wind starts where it is configured before it moves.
 		_power = _params.power;
 		_lean = glm::normalize(_params.direction);
 	}
-	// Natural wind eases a change in at a steady rate that takes EASE_SECONDS.
+	// Natural wind eases a change in at a steady rate that takes ease_time (0: at once).
 	const glm::vec2 target = glm::normalize(_params.direction);
-	_power_rate = std::abs(_params.power - _power) / EASE_SECONDS;
-	_turn_rate = std::abs(std::remainder(std::atan2(target.y, target.x) - std::atan2(_lean.y, _lean.x), TAU)) / EASE_SECONDS;
+	const float ease = std::max(_params.ease_time, 1e-6f);
+	_power_rate = std::abs(_params.power - _power) / ease;
+	_turn_rate = std::abs(std::remainder(std::atan2(target.y, target.x) - std::atan2(_lean.y, _lean.x), TAU)) / ease;
 	_derive();
 }
 

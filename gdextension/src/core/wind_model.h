@@ -54,6 +54,10 @@ struct WindParams {
 	float flip_chance = float(param::WIND_FLIP_CHANCE.default_value); // probability that b reverses at a redraw
 	float gust_speed = float(param::WIND_GUST_SPEED.default_value); // m/s the bend travels downwind; 0: no gust
 	float gust_share = float(param::WIND_GUST_SHARE.default_value); // 0: each plant on its own; 1: only the gust
+	float ease_time = float(param::WIND_EASE_TIME.default_value); // natural wind: seconds a change takes to ease in
+
+	// Sets the SunflowerWind row p_spec from its values (FieldSimulation::set_setting).
+	RowSet set(const ParameterSpec &p_spec, const float *p_values);
 };
 
 struct PlantWind {

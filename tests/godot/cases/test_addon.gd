@@ -58,10 +58,15 @@ func test_inspector_defaults_equal_the_cores() -> void:
 			continue
 		var shown: Variant = object.get_script().get_property_default_value(pieces[1])
 		var core: float = SunflowerField.Native.default_of(qualified)
-		# A vector's every component has the default (SunflowerPlant.part_lengths).
-		var agrees: bool = (
-			shown.is_equal_approx(Vector3.ONE * core) if shown is Vector3 else is_equal_approx(float(shown), core)
-		)
+		# A row of several values: the default is its first one's (SunflowerWind.direction,
+		# SunflowerField.lod_distances), every one's for a Vector3 (SunflowerPlant.part_lengths).
+		var agrees: bool = false
+		if shown is Vector3:
+			agrees = shown.is_equal_approx(Vector3.ONE * core)
+		elif shown is Vector2 or shown is PackedFloat32Array:
+			agrees = is_equal_approx(float(shown[0]), core)
+		else:
+			agrees = is_equal_approx(float(shown), core)
 		check(agrees, "%s: the inspector shows %s, the core %s" % [qualified, shown, core])
 	field.free()
 
