@@ -41,7 +41,7 @@ var last_error: String = ""
 
 var _undo_redo: EditorUndoRedoManager
 var _field: SunflowerField
-var _stroke: NativeField  # the native simulation holding the map while a stroke paints it
+var _stroke: RefCounted  # the native map (SunflowerMap) a stroke paints
 var _erasing: bool = false  # the stroke erases (Erase mode, or Ctrl held when it began)
 var _original: PackedByteArray
 var _original_map: SunflowerFieldMap
@@ -303,10 +303,10 @@ func _begin_stroke(erasing: bool) -> bool:
 	return true
 
 
-## A map-only native simulation holding [param field]'s map (see [code]map_files.gd[/code]);
-## remembers the map and its bytes as they were. Null (with [member last_error]) otherwise.
-func _open_map(field: SunflowerField) -> NativeField:
-	var editor: NativeField = map_files.open(field)
+## A native map holding [param field]'s map (see [code]map_files.gd[/code]); remembers the map and
+## its bytes as they were. Null (with [member last_error]) otherwise.
+func _open_map(field: SunflowerField) -> RefCounted:
+	var editor: RefCounted = map_files.open(field)
 	last_error = map_files.last_error
 	if editor:
 		_original = field.map.text
@@ -322,10 +322,10 @@ func _paint_at(world_point: Vector3) -> void:
 	var changed: PackedInt32Array
 	if rule_brush.is_following():
 		var weights: Array = rule_brush.weights_at(cells, reach)
-		changed = _stroke.paint_map(cells, reach, painted, density, _seed, false, weights[0], weights[1])
+		changed = _stroke.paint(cells, reach, painted, density, _seed, weights[0], rule_brush.rect_cells(weights[1]))
 		rule_brush.note_changed(changed, painted)
 	else:
-		changed = _stroke.paint_map(cells, reach, painted, density, _seed, false)
+		changed = _stroke.paint(cells, reach, painted, density, _seed, PackedFloat32Array(), PackedInt32Array())
 	_preview_due = _preview_due or not changed.is_empty()
 	_preview_if_due()
 
@@ -343,7 +343,7 @@ func _preview() -> void:
 	_last_preview_ms = Time.get_ticks_msec()
 	var preview: SunflowerFieldMap = SunflowerFieldMap.new()
 	preview.source_path = _original_map.source_path
-	preview.text = _stroke.write_map()
+	preview.text = _stroke.write()
 	_field.map = preview
 
 
@@ -351,7 +351,7 @@ func _preview() -> void:
 func _end_stroke(commit: bool) -> void:
 	if _stroke == null:
 		return
-	var painted: PackedByteArray = _stroke.write_map()
+	var painted: PackedByteArray = _stroke.write()
 	var path: String = _original_map.source_path
 	var field: SunflowerField = _field
 	_stroke = null

@@ -5,7 +5,7 @@ extends RefCounted
 ## given the written map at once and the file reimported at a later frame, when no import runs.
 ## The painter (field_painter.gd), the map inspector's buttons and Generate from rules write through it.
 
-const NativeField: GDScript = preload("native_field.gd")
+const Native: GDScript = preload("native.gd")
 const FieldLegend: GDScript = preload("field_legend.gd")
 
 ## The last error ("" when none), for tests and the painter's toolbar.
@@ -23,9 +23,9 @@ func _init(undo_redo: EditorUndoRedoManager) -> void:
 		filesystem.resources_reimported.connect(func(_paths: PackedStringArray) -> void: _reimporting = false)
 
 
-## A map-only native simulation holding [param field]'s map, which must be a writable .field file
-## in the project (to paint or resize it). Null (with an error) otherwise.
-func open(field: SunflowerField) -> NativeField:
+## A native map ([code]SunflowerMap[/code]) holding [param field]'s map, which must be a writable
+## .field file in the project (to paint or resize it). Null (with an error) otherwise.
+func open(field: SunflowerField) -> RefCounted:
 	last_error = ""
 	var field_map: SunflowerFieldMap = field.map
 	if field_map == null:
@@ -45,12 +45,11 @@ func open(field: SunflowerField) -> NativeField:
 		)
 		return null
 	writable.close()
-	var editor: NativeField = NativeField.create()
+	var editor: RefCounted = Native.create_map()
 	if editor == null:
 		return null
-	editor.set_ground_heights(PackedFloat32Array(), PackedFloat32Array(), 0.0)  # a map only: no plants laid out
 	var legend: Dictionary = field.legend
-	var message: String = editor.load_map(
+	var message: String = editor.load(
 		field_map.text, path, FieldLegend.object_symbols(legend), FieldLegend.plant_symbols(legend), 0
 	)
 	if not message.is_empty():
@@ -63,7 +62,7 @@ func open(field: SunflowerField) -> NativeField:
 ## [param filled], saved as a new [code].field[/code] beside the edited scene and given to the field
 ## as one undo/redo action. Returns the file's path, or "" (with an error).
 func new_map(field: SunflowerField, columns: int, rows: int, filled: bool) -> String:
-	var editor: NativeField = NativeField.create()
+	var editor: RefCounted = Native.create_map()
 	if editor == null:
 		return ""
 	var lines: PackedStringArray = [
@@ -71,7 +70,7 @@ func new_map(field: SunflowerField, columns: int, rows: int, filled: bool) -> St
 	]
 	for row: int in rows:
 		lines.append("*".repeat(columns) if filled else "")
-	var message: String = editor.load_map("\n".join(lines).to_utf8_buffer(), "new map", "", "", 0)
+	var message: String = editor.load("\n".join(lines).to_utf8_buffer(), "new map", "", "", 0)
 	if not message.is_empty():
 		_fail("SunflowerField: cannot make a %d x %d map: %s" % [columns, rows, message])
 		return ""
@@ -88,7 +87,7 @@ func new_map(field: SunflowerField, columns: int, rows: int, filled: bool) -> St
 	if file == null:
 		_fail("SunflowerField: cannot write %s (%s)" % [path, error_string(FileAccess.get_open_error())])
 		return ""
-	var bytes: PackedByteArray = editor.write_map()
+	var bytes: PackedByteArray = editor.write()
 	file.store_buffer(bytes)
 	file.close()
 	var made: SunflowerFieldMap = _unimported(path, bytes)
@@ -102,13 +101,13 @@ func new_map(field: SunflowerField, columns: int, rows: int, filled: bool) -> St
 ## Gives [param field]'s map [param columns] × [param rows] cells, keeping the cells both sizes share,
 ## written back to its file as one undo/redo action. False (with an error) when it cannot.
 func resize_map(field: SunflowerField, columns: int, rows: int) -> bool:
-	var editor: NativeField = open(field)
+	var editor: RefCounted = open(field)
 	if editor == null:
 		return false
-	if not editor.resize_map(columns, rows):
+	if not editor.resize(columns, rows):
 		return _fail("SunflowerField: cannot resize the map to %d x %d" % [columns, rows])
 	var original: PackedByteArray = field.map.text
-	var resized: PackedByteArray = editor.write_map()
+	var resized: PackedByteArray = editor.write()
 	if resized != original:
 		_undo_redo.create_action("Resize field map", UndoRedo.MERGE_DISABLE, field)
 		_undo_redo.add_do_method(self, &"write_map", field, field.map.source_path, resized)

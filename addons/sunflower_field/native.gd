@@ -8,6 +8,8 @@ extends RefCounted
 const CLASS: StringName = &"SunflowerSimulation"
 ## The native class of placement by rules.
 const PLACEMENT_CLASS: StringName = &"SunflowerPlacement"
+## The native class of a map read and edited on its own.
+const MAP_CLASS: StringName = &"SunflowerMap"
 ## The command that builds the libraries, for the missing-library error.
 const BUILD_HINT: String = (
 	"build it with 'scons platform=<linux|windows|macos> arch=<x86_64|arm64>' or 'tools/build.sh --all' "
@@ -37,6 +39,15 @@ static func create_placement() -> RefCounted:
 		report_missing()
 		return null
 	return ClassDB.instantiate(PLACEMENT_CLASS) as RefCounted
+
+
+## A new native map (read, painted, resized and written without a simulation), or null (with the one
+## missing-library error).
+static func create_map() -> RefCounted:
+	if not is_available():
+		report_missing()
+		return null
+	return ClassDB.instantiate(MAP_CLASS) as RefCounted
 
 
 ## Prints, once per run, that no native library fits this platform and how to make one.
@@ -149,13 +160,13 @@ static func check_map(
 ) -> String:
 	if not is_available():
 		return missing_message()
-	return ClassDB.class_call_static(CLASS, &"check_map", text, source, symbols, "", max_plants, any_symbol)
+	return ClassDB.class_call_static(MAP_CLASS, &"check", text, source, symbols, "", max_plants, any_symbol)
 
 
 ## The columns, rows and sunflowers of a valid map (see [method check_map]); empty otherwise.
 static func map_figures(text: PackedByteArray, max_plants: int) -> PackedInt32Array:
 	return (
-		ClassDB.class_call_static(CLASS, &"get_map_figures", text, max_plants) if is_available() else PackedInt32Array()
+		ClassDB.class_call_static(MAP_CLASS, &"get_figures", text, max_plants) if is_available() else PackedInt32Array()
 	)
 
 

@@ -33,34 +33,6 @@ func get_species_count() -> int:
 	return native.get_species_count()
 
 
-## A brush stroke on the map; [param weights] over the cells of [param weights_rect] (when not
-## empty) multiply its density: a brush following a placement layer's filters.
-func paint_map(
-	center: Vector2,
-	radius: float,
-	symbol: String,
-	density: float,
-	stroke_seed: int,
-	relayout: bool,
-	weights: PackedFloat32Array = PackedFloat32Array(),
-	weights_rect: Rect2i = Rect2i()
-) -> PackedInt32Array:
-	var rect: PackedInt32Array = [
-		weights_rect.position.x, weights_rect.position.y, weights_rect.size.x, weights_rect.size.y
-	]
-	return native.paint_map(center, radius, symbol, density, stroke_seed, relayout, weights, rect)
-
-
-## The map as text in the format's canonical form (see [code]fields/FORMAT.md[/code]).
-func write_map() -> PackedByteArray:
-	return native.write_map()
-
-
-## Gives the map [param columns] × [param rows] cells.
-func resize_map(columns: int, rows: int) -> bool:
-	return native.resize_map(columns, rows)
-
-
 ## Columns of the loaded map.
 func get_map_columns() -> int:
 	return native.get_map_columns()

@@ -99,6 +99,11 @@ func is_following() -> bool:
 	return _placement != null
 
 
+## [param rect] of cells as SunflowerMap.paint takes it: column, row, columns, rows.
+static func rect_cells(rect: Rect2i) -> PackedInt32Array:
+	return PackedInt32Array([rect.position.x, rect.position.y, rect.size.x, rect.size.y])
+
+
 ## The layer's weights over the cells a dab at [param center] of [param reach] cells touches (both
 ## in cells): [weights (PackedFloat32Array), their Rect2i of cells], clipped to the map.
 func weights_at(center: Vector2, reach: float) -> Array:

@@ -1,7 +1,8 @@
-// The library's entry point: loads the binding, registers SunflowerSimulation, SunflowerPlacement and
-// their docs.
+// The library's entry point: loads the binding, registers SunflowerSimulation, SunflowerPlacement,
+// SunflowerMap and their docs.
 #include "binding/class_binder.h"
 #include "binding/rendering_server.h"
+#include "sunflower_map.h"
 #include "sunflower_placement.h"
 #include "sunflower_simulation.h"
 
@@ -18,6 +19,7 @@ void initialize(void *, GDExtensionInitializationLevel p_level) {
 		// The RenderingServer singleton is not published yet at this level: it is looked up on first use.
 		gdx::register_class<SunflowerSimulation>("SunflowerSimulation", "RefCounted");
 		gdx::register_class<SunflowerPlacement>("SunflowerPlacement", "RefCounted");
+		gdx::register_class<SunflowerMap>("SunflowerMap", "RefCounted");
 		registered = true;
 	} else if (p_level == GDEXTENSION_INITIALIZATION_EDITOR && registered) {
 		for (const char *xml : sunflower_doc::XML) {

@@ -17,13 +17,7 @@ using namespace sunflower;
 void SunflowerSimulation::bind_methods() {
 	const char *CLASS = "SunflowerSimulation";
 	gdx::bind_method(CLASS, "load_map", &SunflowerSimulation::load_map, { "text", "source", "legend", "plant_symbols", "max_plants" });
-	gdx::bind_method(CLASS, "check_map", &SunflowerSimulation::check_map,
-			{ "text", "source", "legend", "plant_symbols", "max_plants", "any_symbol" });
-	gdx::bind_method(CLASS, "get_map_figures", &SunflowerSimulation::get_map_figures, { "text", "max_plants" });
 	gdx::bind_method(CLASS, "get_species_count", &SunflowerSimulation::get_species_count);
-	gdx::bind_method(CLASS, "paint_map", &SunflowerSimulation::paint_map, { "center", "radius", "symbol", "density", "seed", "relayout", "weights", "weights_rect" });
-	gdx::bind_method(CLASS, "write_map", &SunflowerSimulation::write_map);
-	gdx::bind_method(CLASS, "resize_map", &SunflowerSimulation::resize_map, { "columns", "rows" });
 	gdx::bind_method(CLASS, "get_map_columns", &SunflowerSimulation::get_map_columns);
 	gdx::bind_method(CLASS, "get_map_rows", &SunflowerSimulation::get_map_rows);
 	gdx::bind_method(CLASS, "get_map_objects", &SunflowerSimulation::get_map_objects);

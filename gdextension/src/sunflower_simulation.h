@@ -14,21 +14,7 @@ public:
 
 	gdx::String load_map(const gdx::PackedByteArray &p_text, const gdx::String &p_source, const gdx::String &p_legend,
 			const gdx::String &p_plant_symbols, int64_t p_max_plants);
-	// Parses a map as load_map does, without laying it out and without a simulation: a check cheap
-	// enough for the main thread (a million-cell map in milliseconds). The error, or empty. With
-	// p_any_symbol every printable symbol is an object, whatever p_legend says (the importer's check).
-	static gdx::String check_map(const gdx::PackedByteArray &p_text, const gdx::String &p_source, const gdx::String &p_legend,
-			const gdx::String &p_plant_symbols, int64_t p_max_plants, bool p_any_symbol);
-	// The columns, rows and plants ('*' and any legend plant cannot be told apart here: '*' only) of a
-	// map that parses with any printable symbol as an object; empty when it does not parse.
-	static gdx::PackedInt32Array get_map_figures(const gdx::PackedByteArray &p_text, int64_t p_max_plants);
 	int64_t get_species_count() const;
-	// A brush stroke (core paint_cells); p_weights over the cells of p_weights_rect (column, row,
-	// columns, rows) when not empty: the brush follows a placement layer's filters.
-	gdx::PackedInt32Array paint_map(gdx::Vector2 p_center, double p_radius, const gdx::String &p_symbol, double p_density, int64_t p_seed,
-			bool p_relayout, const gdx::PackedFloat32Array &p_weights, const gdx::PackedInt32Array &p_weights_rect);
-	gdx::PackedByteArray write_map() const;
-	bool resize_map(int64_t p_columns, int64_t p_rows);
 	int64_t get_map_columns() const;
 	int64_t get_map_rows() const;
 	gdx::PackedInt32Array get_map_objects() const;

@@ -233,22 +233,22 @@ func test_a_brush_following_a_rule_paints_only_where_the_rule_lets_plants_grow()
 	await brush.follow(field, 1)
 	check_eq(brush.problem(field), "", "the ground is read")
 	# A tree at cell (50, 30) in the map the stroke begins on.
-	var editor: RefCounted = load("res://addons/sunflower_field/native_field.gd").create()
-	editor.set_ground_heights(PackedFloat32Array(), PackedFloat32Array(), 0.0)
+	var native: GDScript = load("res://addons/sunflower_field/native.gd")
+	var editor: RefCounted = native.create_map()
 	var text: String = "62 62\n" + "\n".repeat(30) + ".".repeat(50) + "g\n"
-	check_eq(editor.load_map(text.to_utf8_buffer(), "brush.field", "S", "g", 0), "", "the map reads")
-	check_eq(brush.begin(field, editor.write_map()), "", "the stroke follows the rule")
+	check_eq(editor.load(text.to_utf8_buffer(), "brush.field", "S", "g", 0), "", "the map reads")
+	check_eq(brush.begin(field, editor.write()), "", "the stroke follows the rule")
 	check(brush.is_following(), "following")
 	# One dab over the whole field, the brush's density 1.
 	var weights: Array = brush.weights_at(Vector2(31.0, 31.0), 50.0)
 	check_eq(weights[1], Rect2i(0, 0, 62, 62), "the dab's cells, clipped to the map")
-	var changed: PackedInt32Array = editor.paint_map(
-		Vector2(31.0, 31.0), 50.0, "*", 1.0, 1, false, weights[0], weights[1]
+	var changed: PackedInt32Array = editor.paint(
+		Vector2(31.0, 31.0), 50.0, "*", 1.0, 1, weights[0], brush.rect_cells(weights[1])
 	)
 	brush.note_changed(changed, "*")
 	brush.end()
-	var reader: RefCounted = load("res://addons/sunflower_field/native.gd").create_placement()
-	var cells: PackedByteArray = reader.read_map_cells(editor.write_map(), "g")
+	var reader: RefCounted = native.create_placement()
+	var cells: PackedByteArray = reader.read_map_cells(editor.write(), "g")
 	var ramp: int = 0
 	var top: int = 0
 	for row: int in range(4, 58):
@@ -269,12 +269,12 @@ func test_a_brush_following_a_rule_paints_only_where_the_rule_lets_plants_grow()
 	brush.end()
 	# A rule that is gone, and a ground that cannot be read, are refused with a reason.
 	field.placement_rules.layers = [trees]
-	check(brush.begin(field, editor.write_map()).contains("no placement rule 2"), "a layer that is gone")
+	check(brush.begin(field, editor.write()).contains("no placement rule 2"), "a layer that is gone")
 	field.placement_rules.layers = [trees, level]
 	tree.root.remove_child(field)
 	allow_error("the field must be in the scene tree to read its ground")
 	await brush.follow(field, 1)
-	check(brush.begin(field, editor.write_map()).contains("could not be read"), "no ground read")
+	check(brush.begin(field, editor.write()).contains("could not be read"), "no ground read")
 	tree.root.add_child(field)
 
 
