@@ -14,6 +14,9 @@ extends RefCounted
 ## [code]--headless[/code]); the work takes frames, so [method bake] is awaited.
 
 const PlantMaterial: GDScript = preload("plant_material.gd")
+const PartMeshes: GDScript = preload("part_meshes.gd")
+## The addon's own files: its shaders are baked with what they light.
+const ADDON_FOLDER: String = "res://addons/sunflower_field/"
 
 ## Pixels per view square.
 const CELL_PIXELS: int = 128
@@ -144,6 +147,8 @@ static func _bake(plant: SunflowerPlant, host: Node, folder: String, base_name: 
 	if made != OK:
 		push_error("Bake impostors: cannot make the folder %s (%s)" % [folder, error_string(made)])
 		return made
+	for problem: String in lighting_not_baked(plant):
+		push_warning("Bake impostors: " + problem)
 	var stage: Stage = _stage(plant)
 	var viewport: SubViewport = stage.viewport
 	host.add_child(viewport)
@@ -235,6 +240,54 @@ static func alpha_cuts(image: Image) -> PackedFloat32Array:
 			reached += counts[cut]
 		cuts.append(cut / 255.0)
 	return cuts
+
+
+## What of [param plant]'s own shaders the bake cannot capture, a sentence per material naming it:
+## the views are drawn unshaded (each surface's albedo), so a ShaderMaterial of its own that lights
+## its surface itself (a [code]light()[/code] function) or lets light through
+## ([code]BACKLIGHT[/code], [code]SSS_TRANSMITTANCE_*[/code]) is baked without that light: its far
+## plants are lit by the impostor shader's own model and may look darker or otherwise than its
+## meshes. (The plant material's back-light and any material's emission are baked.)
+static func lighting_not_baked(plant: SunflowerPlant) -> PackedStringArray:
+	var problems: PackedStringArray = []
+	var seen: Dictionary = {}
+	var light_function: RegEx = RegEx.create_from_string("\\bvoid\\s+light\\s*\\(")
+	var let_through: RegEx = RegEx.create_from_string("\\b(BACKLIGHT|SSS_TRANSMITTANCE_\\w+)\\s*=")
+	for part: int in PartMeshes.PART_NAMES.size():
+		var mesh: Mesh = plant.mesh_drawn(bake_level(plant), part)
+		for surface: int in mesh.get_surface_count() if mesh else 0:
+			var material: ShaderMaterial = mesh.surface_get_material(surface) as ShaderMaterial
+			if material == null or material.shader == null or seen.has(material):
+				continue
+			seen[material] = true
+			if material.shader.resource_path.begins_with(ADDON_FOLDER):
+				continue  # the plant material: its back-light is baked
+			var own: PackedStringArray = []
+			if light_function.search(material.shader.code):
+				own.append("its light() function")
+			if let_through.search(material.shader.code):
+				own.append("the light it lets through (BACKLIGHT, SSS transmittance)")
+			if not own.is_empty():
+				(
+					problems
+					. append(
+						(
+							"%s is baked as its albedo, without %s; far plants of this type are lit by the impostors' own model"
+							% [_material_name(material, part), " and ".join(own)]
+						)
+					)
+				)
+	return problems
+
+
+## A material as a warning names it: its file, its name, else its shader's file and the part it is on.
+static func _material_name(material: ShaderMaterial, part: int) -> String:
+	if not material.resource_path.is_empty():
+		return "the material " + material.resource_path
+	if not material.resource_name.is_empty():
+		return "the material '%s'" % material.resource_name
+	var shader: String = material.shader.resource_path
+	return "the %s part's material (shader %s)" % [PartMeshes.PART_NAMES[part], shader if shader else "built in"]
 
 
 ## The light the parts let through from behind (their back-light), drawn as their colour, unshaded:

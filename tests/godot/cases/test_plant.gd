@@ -11,6 +11,7 @@ const DEMO_MAP: SunflowerFieldMap = preload("res://fields/demo.field")
 const ImpostorSetScript: GDScript = preload("res://addons/sunflower_field/impostor_set.gd")
 const PlantMaterialScript: GDScript = preload("res://addons/sunflower_field/plant_material.gd")
 const Dressing: GDScript = preload("res://runner/dressing.gd")
+const ImpostorBaker: GDScript = preload("res://addons/sunflower_field/impostor_baker.gd")
 
 var fields: Array[SunflowerField] = []
 
@@ -679,3 +680,44 @@ func test_plain_standard_materials_are_taken_over_and_others_kept() -> void:
 	plant.set_part_mesh(1, 0, lit)
 	check(not plant.drawn_whole(), "a part with rim lighting: drawn part by part")
 	check_eq(plant.mesh_for_field(1, 0).surface_get_material(0), rimmed, "that part keeps its material")
+
+
+## A shader of the user's that lights its surface itself (light()) or lets light through is named
+## in a warning when the impostors are baked: the bake draws albedo only (#60); the plant material
+## and a StandardMaterial3D are not named.
+func test_a_shader_whose_own_light_the_bake_cannot_capture_is_named() -> void:
+	var lit: ShaderMaterial = ShaderMaterial.new()
+	lit.resource_name = "leaves_lit"
+	lit.shader = Shader.new()
+	lit.shader.code = (
+		"shader_type spatial;\nvoid fragment() { ALBEDO = vec3(0.2, 0.6, 0.1); }\n"
+		+ "void light() { DIFFUSE_LIGHT += ATTENUATION * LIGHT_COLOR; }\n"
+	)
+	var through: ShaderMaterial = ShaderMaterial.new()
+	through.resource_name = "leaves_through"
+	through.shader = Shader.new()
+	through.shader.code = "shader_type spatial;\nvoid fragment() { ALBEDO = vec3(0.2); BACKLIGHT = vec3(0.5); }\n"
+	var plain: ShaderMaterial = ShaderMaterial.new()
+	plain.shader = Shader.new()
+	plain.shader.code = "shader_type spatial;\n// no light() here\nvoid fragment() { ALBEDO = vec3(0.5); }\n"
+	var mesh: ArrayMesh = ArrayMesh.new()
+	for material: Material in [
+		lit, through, plain, StandardMaterial3D.new(), PlantMaterialScript.adopt(StandardMaterial3D.new(), false)
+	]:
+		var surface: SurfaceTool = SurfaceTool.new()
+		surface.begin(Mesh.PRIMITIVE_TRIANGLES)
+		for vertex: Vector3 in [Vector3.ZERO, Vector3.UP, Vector3.RIGHT]:
+			surface.add_vertex(vertex)
+		surface.set_material(material)
+		surface.commit(mesh)
+	var grown: SunflowerPlant = SunflowerPlant.new()
+	grown.set_part_mesh(0, 0, mesh)
+	var problems: PackedStringArray = ImpostorBaker.lighting_not_baked(grown)
+	check_eq(problems.size(), 2, "two materials named: %s" % str(problems))
+	check(
+		problems.size() == 2 and problems[0].contains("leaves_lit") and problems[0].contains("light()"), "its light()"
+	)
+	check(
+		problems.size() == 2 and problems[1].contains("leaves_through") and problems[1].contains("BACKLIGHT"),
+		"its back-light"
+	)
