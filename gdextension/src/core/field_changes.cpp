@@ -7,18 +7,10 @@
 namespace sunflower {
 
 RowSet Regrowth::set(const ParameterSpec &p_spec, double p_value) {
-	double *held = nullptr;
 	if (&p_spec == &param::PLANT_RECOVER_AFTER) {
-		held = &flattened_seconds;
-	} else if (&p_spec == &param::PLANT_REGROW_AFTER) {
-		held = &cut_seconds;
-	} else {
-		return RowSet::OTHER;
+		return set_row_value(flattened_seconds, p_spec, p_value);
 	}
-	const double value = sanitize(p_spec, p_value, *held);
-	const bool changed = value != *held;
-	*held = value;
-	return changed ? RowSet::CHANGED : RowSet::SAME;
+	return &p_spec == &param::PLANT_REGROW_AFTER ? set_row_value(cut_seconds, p_spec, p_value) : RowSet::OTHER;
 }
 
 namespace {

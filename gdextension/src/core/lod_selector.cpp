@@ -15,10 +15,7 @@ constexpr FloatRow<LodParams> LOD_ROWS[] = { { &param::LOD_HYSTERESIS, &LodParam
 
 RowSet LodParams::set(const ParameterSpec &p_spec, const float *p_values) {
 	if (&p_spec == &param::FORCE_LOD) {
-		const int value = int(sanitize(p_spec, double(p_values[0]), double(force_level)));
-		const bool changed = value != force_level;
-		force_level = value;
-		return changed ? RowSet::CHANGED : RowSet::SAME;
+		return set_row_value(force_level, p_spec, double(p_values[0]));
 	}
 	if (&p_spec == &param::LOD_DISTANCES) {
 		if (!check_lod_distances(p_values, distances.size()).empty() || std::equal(distances.begin(), distances.end(), p_values)) {

@@ -189,18 +189,24 @@ enum class RowSet : uint8_t {
 	SAME, // the value, by the row's rules, is the one held
 	CHANGED,
 };
+// Sets r_held, a unit's value of row p_spec (a float, an int, a double), to p_value by the row's
+// rules.
+template <class T>
+RowSet set_row_value(T &r_held, const ParameterSpec &p_spec, double p_value) {
+	const T value = T(sanitize(p_spec, p_value, double(r_held)));
+	if (value == r_held) {
+		return RowSet::SAME;
+	}
+	r_held = value;
+	return RowSet::CHANGED;
+}
+
 // Sets r_params' member of row p_spec among p_rows to p_value by the row's rules.
 template <class Params, size_t N>
 RowSet set_float_row(Params &r_params, const FloatRow<Params> (&p_rows)[N], const ParameterSpec &p_spec, float p_value) {
 	for (const FloatRow<Params> &row : p_rows) {
 		if (row.spec == &p_spec) {
-			float &held = r_params.*row.member;
-			const float value = sanitize(p_spec, p_value, held);
-			if (value == held) {
-				return RowSet::SAME;
-			}
-			held = value;
-			return RowSet::CHANGED;
+			return set_row_value(r_params.*row.member, p_spec, double(p_value));
 		}
 	}
 	return RowSet::OTHER;

@@ -74,10 +74,7 @@ constexpr FloatRow<WindParams> WIND_ROWS[] = { { &param::WIND_POWER, &WindParams
 
 RowSet WindParams::set(const ParameterSpec &p_spec, const float *p_values) {
 	if (&p_spec == &param::WIND_MODEL) {
-		const int value = int(sanitize(p_spec, double(p_values[0]), double(model)));
-		const bool changed = value != model;
-		model = value;
-		return changed ? RowSet::CHANGED : RowSet::SAME;
+		return set_row_value(model, p_spec, double(p_values[0]));
 	}
 	if (&p_spec == &param::WIND_DIRECTION) {
 		const glm::vec2 value = sanitize_wind_direction(glm::vec2(p_values[0], p_values[1]));
