@@ -22,12 +22,14 @@ const FieldBuild: GDScript = preload("field_build.gd")
 const FieldInteraction: GDScript = preload("field_interaction.gd")
 const FieldPlay: GDScript = preload("sunflower_field_play.gd")
 const FieldSettings: GDScript = preload("field_settings.gd")
+const ProjectKnobs: GDScript = preload("field_project_settings.gd")
 const FieldNodes: GDScript = preload("field_nodes.gd")
 const FieldObserver: GDScript = preload("field_observer.gd")
 const ImpostorSet: GDScript = preload("impostor_set.gd")
 const PartMeshes: GDScript = preload("part_meshes.gd")
 ## Maps of at least this many bytes (about as many cells) build in the background when the field's
-## background_build is on; smaller ones take a few milliseconds and build at once.
+## project setting sunflower_field/performance/background_build is on; smaller ones take a few
+## milliseconds and build at once.
 const BACKGROUND_BUILD_MIN_BYTES: int = 65536
 ## Near plants cast from their impostors from this far inside their switch to the level that does
 ## (less the hysteresis): an observer walking in between two LOD passes finds no plant without one.
@@ -68,6 +70,7 @@ var _field: Node3D
 
 func _init(field: Node3D) -> void:
 	_field = field
+	ProjectSettings.settings_changed.connect(_send_project_settings)
 	interaction = FieldInteraction.new(field)
 	play = FieldPlay.new(field, simulation, interaction.get_body_rids)
 	_bucket_count = Native.constant(&"BUCKET_COUNT")
@@ -115,7 +118,7 @@ func rebuild(background: bool = false) -> void:
 	var job: FieldBuild.Job = FieldBuild.Job.for_field(_field, plants, native_simulation)
 	# Where the observer is now, so that the far tiles' records are ordered for it from the start.
 	FieldObserver.push(_field, _field.observer, _field.frustum_culling, native_simulation)
-	background = background and _field.background_build and field_map.text.size() >= BACKGROUND_BUILD_MIN_BYTES
+	background = background and ProjectKnobs.background_build() and field_map.text.size() >= BACKGROUND_BUILD_MIN_BYTES
 	build = FieldBuild.new(_field, impostor_sets, job, background, drawn)
 	if background or build.needs_frames():
 		building.append(_field)
@@ -281,8 +284,16 @@ func send_settings(rows: Dictionary) -> void:
 ## and the quality it is drawn at (what changed while it was built included).
 func _configure_drawn() -> void:
 	FieldSettings.of(_field, plants).apply_to(drawn.simulation)  # its cost: the build had these rows
+	_send_project_settings()
 	drawn.simulation.set_quality(quality())
 	send_near_shadows()
+
+
+## Gives the field drawn the machine-wide settings the core uses (Project Settings: its threads).
+func _send_project_settings() -> void:
+	if drawn:
+		var threads: String = "ProjectSettings." + ProjectKnobs.WORKER_THREADS
+		FieldSettings.send(drawn.simulation, {threads: ProjectKnobs.worker_threads()})
 
 
 ## Tells each plant type's far tiles from where they cast the near plants' shadows

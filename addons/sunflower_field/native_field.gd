@@ -367,6 +367,11 @@ func get_bucket_instance_count(bucket: int) -> int:
 	return native.get_bucket_instance_count(bucket)
 
 
+## The threads the near plants are moved on, the caller included.
+func get_worker_threads() -> int:
+	return native.get_worker_threads()
+
+
 ## How long the last update took, microseconds.
 func get_last_update_usec() -> int:
 	return native.get_last_update_usec()

@@ -3,7 +3,8 @@ extends EditorPlugin
 ## Registers the importer that turns [code].field[/code] maps into [SunflowerFieldMap] resources,
 ## shows the progress of fields building in the background in the 3D editor's toolbar, adds the
 ## "Bake impostors" button to the inspector of plants and fields and "Plant from scene…" above a
-## field's plant, and paints the selected field's map with the brush toolbar (field_painter.gd).
+## field's plant, paints the selected field's map with the brush toolbar (field_painter.gd), and adds
+## the machine-wide settings to Project Settings (field_project_settings.gd).
 ## The [SunflowerField] node itself is registered by its [code]class_name[/code].
 
 const Native: GDScript = preload("native.gd")
@@ -19,6 +20,8 @@ var _scene_plant_inspector: EditorInspectorPlugin
 func _enter_tree() -> void:
 	if not Native.is_available():
 		Native.report_missing()
+	else:
+		preload("field_project_settings.gd").register()  # the machine-wide settings, with their limits
 	_importer = preload("field_map_import_plugin.gd").new()
 	add_import_plugin(_importer)
 	_progress = preload("build_progress_bar.gd").new()

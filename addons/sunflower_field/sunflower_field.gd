@@ -40,6 +40,7 @@ const Native: GDScript = preload("native.gd")
 const NativeField: GDScript = preload("native_field.gd")
 const FieldDriver: GDScript = preload("field_driver.gd")
 const FieldSettings: GDScript = preload("field_settings.gd")
+const ProjectKnobs: GDScript = preload("field_project_settings.gd")
 const FieldGround: GDScript = preload("field_ground.gd")
 const FieldLegend: GDScript = preload("field_legend.gd")
 const FieldNodes: GDScript = preload("field_nodes.gd")
@@ -150,7 +151,8 @@ const WIND_PROPERTIES: Dictionary = {
 ## straight down hits a physics body in [member ground_collision_mask], between
 ## [member ground_ray_above] and [member ground_ray_below] of the node — any terrain with collision
 ## (a HeightMapShape3D, a trimesh, a terrain plugin's). The rays run on the main thread, a
-## [member build_budget_ms] share per frame, from the physics frame after the build starts.
+## share per frame (Project Settings: [code]sunflower_field/performance/build_budget_ms[/code]),
+## from the physics frame after the build starts.
 ## [b]Height Map[/b]: on [member height_map], read on the build's worker thread. Cells with no
 ## ground under their plant (a hole, past the colliders or the map) get no plant; legend objects
 ## stand on the ground too.
@@ -403,27 +405,6 @@ const WIND_PROPERTIES: Dictionary = {
 @export_flags_3d_physics var collision_layer: int = 1
 ## The physics layers the stalk colliders scan.
 @export_flags_3d_physics var collision_mask: int = 1
-@export_group("Advanced: building")
-## Build large maps without stalling: the map is read and laid out on a worker thread, then the
-## field's nodes are made a few at a time, at most [member build_budget_ms] per frame. The previous
-## field stays drawn until the new one is complete ([signal build_progress] reports, the editor shows
-## a progress bar). Off: every build completes in the frame it starts, like
-## [method load_map_file] and [method advance] always do.
-@export var background_build: bool = true
-## Main-thread time a background build may take per frame. When frames are slower than twice this
-## anyway (software rendering), a step may take up to half the last frame's time, at most 100 ms.
-@export_range(1.0, 100.0, 0.5, "suffix:ms") var build_budget_ms: float = 8.0:
-	set(value):
-		build_budget_ms = Native.accept("SunflowerField.build_budget_ms", value, build_budget_ms)
-## Threads that move the plants near the observer, the main thread included: 0 uses the machine's
-## cores (at most 4), 1 keeps the work on the main thread. The work is split only when enough plants
-## are near ([code]SunflowerSimulation.PARALLEL_MIN_PLANTS[/code]); the result is the same either way.
-@export_range(0, 16) var worker_threads: int = 0:
-	set(value):
-		value = Native.accept_int("SunflowerField.worker_threads", value, worker_threads)
-		if value != worker_threads:
-			worker_threads = value
-			_tell(&"worker_threads")
 @export_group("Advanced: frame budget")
 ## A frame budget the field holds by itself: the most triangles its near meshes may hold in a frame
 ## (the main view's; each shadow pass draws its own), 0: no cap. Over it, the field lowers its
@@ -585,13 +566,14 @@ func _notification(what: int) -> void:
 
 
 func _process(delta: float) -> void:
-	_driver.process(delta, build_budget_ms)
+	_driver.process(delta, ProjectKnobs.build_budget_ms())
 
 
 ## Reads a map from [param path] ([code]res://[/code], [code]user://[/code] or an absolute path)
 ## and builds the field. On error the current field stays, [signal map_error] is emitted and the
 ## error is returned. The build completes before this returns, unless [param background] is true
-## (and [member background_build] on): then [signal field_built] tells when it is ready.
+## (and the project setting [code]sunflower_field/performance/background_build[/code] on): then
+## [signal field_built] tells when it is ready.
 func load_map_file(path: String, background: bool = false) -> Error:
 	var errors: Array[String] = []
 	var field_map: SunflowerFieldMap = SunflowerFieldMap.from_file(path, errors)
@@ -671,7 +653,9 @@ func get_quality() -> float:
 
 
 ## What the field drawn costs now, for a HUD or a benchmark: [code]update_ms[/code] (the native
-## update of the last frame), [code]memory_bytes[/code] (CPU memory the native field holds),
+## update of the last frame), [code]worker_threads[/code] (the threads it ran on: the project
+## setting [code]sunflower_field/performance/worker_threads[/code] resolved), [code]memory_bytes[/code]
+## (CPU memory the native field holds),
 ## [code]near_meshes[/code] (plants written at each mesh level last frame, after culling: three
 ## counts, every plant type together), [code]near_primitives[/code] (their triangles, what
 ## [member budget_primitives] caps), [code]gpu_ms[/code] (the smoothed GPU time the budget saw, 0
@@ -684,6 +668,7 @@ func get_frame_stats() -> Dictionary:
 	if simulation == null:
 		return {
 			"update_ms": 0.0,
+			"worker_threads": 0,
 			"memory_bytes": 0,
 			"near_meshes": near,
 			"near_primitives": 0,
@@ -696,6 +681,7 @@ func get_frame_stats() -> Dictionary:
 	var governor: RefCounted = _driver.governor()
 	return {
 		"update_ms": simulation.get_last_update_usec() / 1000.0,
+		"worker_threads": simulation.get_worker_threads(),
 		"memory_bytes": simulation.get_memory_bytes(),
 		"near_meshes": near,
 		"near_primitives": _driver.near_primitives(),
@@ -886,6 +872,14 @@ func _get(property: StringName) -> Variant:
 
 
 func _set(property: StringName, value: Variant) -> bool:
+	if ProjectKnobs.FORMER_PROPERTIES.has(property):
+		push_warning(
+			(
+				"SunflowerField.%s is a project setting now (%s, in Project Settings): this field's %s is not used"
+				% [property, ProjectKnobs.FORMER_PROPERTIES[property], value]
+			)
+		)
+		return true
 	var slot: Vector2i = PartMeshes.slot_of(property)
 	if slot.x < 0:
 		return false

@@ -197,8 +197,8 @@ func _place_view_camera() -> void:
 
 
 ## Loads a map; an imported res:// map is used as a resource, any other path is read directly.
-## A large map builds in the background while the current field stays (see [member
-## SunflowerField.background_build]).
+## A large map builds in the background while the current field stays (the project setting
+## sunflower_field/performance/background_build).
 func load_map(path: String) -> void:
 	if PLANTS_MAPS.has(path.get_file()) and not _field.legend.has("t"):
 		_hud.show_message("making the plants of the Plants map (their impostors bake on first use)…")

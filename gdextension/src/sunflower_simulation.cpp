@@ -86,6 +86,7 @@ void SunflowerSimulation::bind_methods() {
 	gdx::bind_method(CLASS, "get_bucket_instance_count", &SunflowerSimulation::get_bucket_instance_count, { "bucket" });
 	gdx::bind_method(CLASS, "get_filled_buckets", &SunflowerSimulation::get_filled_buckets);
 	gdx::bind_method(CLASS, "get_last_update_usec", &SunflowerSimulation::get_last_update_usec);
+	gdx::bind_method(CLASS, "get_worker_threads", &SunflowerSimulation::get_worker_threads);
 	gdx::bind_method(CLASS, "get_memory_bytes", &SunflowerSimulation::get_memory_bytes);
 
 	gdx::bind_method(CLASS, "sanitize_parameter", &SunflowerSimulation::sanitize_parameter, { "name", "value", "current" });

@@ -125,6 +125,8 @@ public:
 	int64_t get_bucket_instance_count(int64_t p_bucket) const;
 	gdx::PackedByteArray get_filled_buckets() const;
 	int64_t get_last_update_usec() const;
+	// The threads the near plants are moved on (the caller included), as the setting resolved them.
+	int64_t get_worker_threads() const { return _sim.near().get_worker_threads(); }
 	int64_t get_memory_bytes() const;
 
 	// The core's parameter table (parameters.h), for the node's setters: one validator per value.

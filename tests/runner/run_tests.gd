@@ -114,6 +114,7 @@ func _run() -> void:
 			case.before_each()
 			await case.call(name)
 			case.after_each()
+			case.restore_project_settings()
 			await process_frame
 			for error: String in _log.take():
 				var allowed: bool = false

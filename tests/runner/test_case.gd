@@ -9,6 +9,7 @@ var log: Object
 var failures: PackedStringArray = []
 ## Substrings of engine errors this test provokes on purpose; any other error fails the test.
 var allowed_errors: PackedStringArray = []
+var _project_settings: Dictionary = {}  # what set_project_setting changed → its value before
 
 
 func before_each() -> void:
@@ -17,6 +18,22 @@ func before_each() -> void:
 
 func after_each() -> void:
 	pass
+
+
+## Sets a Project Settings value for this test; the runner puts it back after the test.
+func set_project_setting(setting: String, value: Variant) -> void:
+	if not _project_settings.has(setting):
+		_project_settings[setting] = (
+			ProjectSettings.get_setting(setting) if ProjectSettings.has_setting(setting) else null
+		)
+	ProjectSettings.set_setting(setting, value)
+
+
+## (The runner calls this after each test.) Puts back what [method set_project_setting] changed.
+func restore_project_settings() -> void:
+	for setting: String in _project_settings:
+		ProjectSettings.set_setting(setting, _project_settings[setting])  # null removes it
+	_project_settings.clear()
 
 
 ## Where a test writes [param file] (a path under tests/artifacts/, or under the folder the

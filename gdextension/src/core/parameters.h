@@ -117,11 +117,11 @@ inline constexpr ParameterSpec THINNING_MIN_DENSITY{ "SunflowerField.thinning_mi
 inline constexpr ParameterSpec TILE_MERGE_DISTANCE{ "SunflowerField.tile_merge_distance", 200.0, 0.0, NO_MAX, ParameterSpec::CLAMP, 200.0, ParameterSpec::REBUILD };
 inline constexpr ParameterSpec MAX_DRAW_DISTANCE{ "SunflowerField.max_draw_distance", 0.0, 0.0, NO_MAX, ParameterSpec::CLAMP, 0.0 };
 
-// Performance. 0 threads: the machine's cores, at most MAX_AUTO_THREADS.
-inline constexpr ParameterSpec BUILD_BUDGET_MS{ "SunflowerField.build_budget_ms", 8.0, 1.0, 100.0, ParameterSpec::CLAMP, 8.0 };
+// Performance, machine-wide (Project Settings). 0 threads: the machine's cores, at most MAX_AUTO_THREADS.
+inline constexpr ParameterSpec BUILD_BUDGET_MS{ "ProjectSettings.sunflower_field/performance/build_budget_ms", 8.0, 1.0, 100.0, ParameterSpec::CLAMP, 8.0 };
 constexpr uint32_t MAX_AUTO_THREADS = 4;
 constexpr uint32_t MAX_THREADS = 16;
-inline constexpr ParameterSpec WORKER_THREADS{ "SunflowerField.worker_threads", 0.0, 0.0, MAX_THREADS, ParameterSpec::CLAMP, 0.0 };
+inline constexpr ParameterSpec WORKER_THREADS{ "ProjectSettings.sunflower_field/performance/worker_threads", 0.0, 0.0, MAX_THREADS, ParameterSpec::CLAMP, 0.0 };
 // A frame budget (field_budget.gd): a cap on the near meshes' triangles a frame and a target for the
 // viewport's GPU time (0: none), and the least share of its distances the field goes down to.
 inline constexpr ParameterSpec BUDGET_PRIMITIVES{ "SunflowerField.budget_primitives", 0.0, 0.0, 2e9, ParameterSpec::CLAMP, 0.0 };

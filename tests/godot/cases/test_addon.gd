@@ -1,6 +1,8 @@
 extends TestCase
 ## The addon loads: the native class, the node, the resources and the imported demo map.
 
+const ProjectKnobs: GDScript = preload("res://addons/sunflower_field/field_project_settings.gd")
+
 
 func test_native_class_is_registered() -> void:
 	check(ClassDB.class_exists("SunflowerSimulation"), "SunflowerSimulation is not registered")
@@ -53,6 +55,9 @@ func test_inspector_defaults_equal_the_cores() -> void:
 	check(names.size() >= 20, "the core lists its parameters (%d)" % names.size())
 	for qualified: String in names:
 		var pieces: PackedStringArray = qualified.split(".")
+		if pieces[0] == "ProjectSettings":  # a machine-wide setting: one the addon registers
+			check(pieces[1] in ProjectKnobs.TABLE_SETTINGS, "%s is no setting the addon registers" % qualified)
+			continue
 		var object: Object = owners.get(pieces[0])
 		if not check(object != null and pieces[1] in object, "%s is no inspector property" % qualified):
 			continue
@@ -188,7 +193,14 @@ func test_the_inspectors_ranges_are_the_tables() -> void:
 		"SunflowerPlant": SunflowerPlant.new()
 	}
 	var checked: int = 0
+	ProjectKnobs.register()  # (the editor plugin does): Project Settings show their limits too
+	for property: Dictionary in ProjectSettings.get_property_list():
+		if property["name"] in ProjectKnobs.TABLE_SETTINGS:
+			checked += 1
+			_check_range("ProjectSettings." + property["name"], property["name"], property["hint_string"])
 	for row: String in SunflowerField.Native.parameter_names():
+		if row.begins_with("ProjectSettings."):
+			continue
 		var owner: Object = objects[row.get_slice(".", 0)]
 		var names: Array = [row.get_slice(".", 1)]
 		if owner is SunflowerWind:

@@ -55,7 +55,7 @@ func _visible_multimesh_nodes() -> int:
 
 func test_a_large_map_builds_over_frames_while_the_old_field_is_drawn() -> void:
 	var old_nodes: int = _visible_multimesh_nodes()
-	field.build_budget_ms = 1.0
+	set_project_setting("sunflower_field/performance/build_budget_ms", 1.0)
 	field.map = _square_map(600)
 	await frames(2)
 	check(field.is_building(), "a 360 000-plant map builds in the background")
@@ -108,14 +108,14 @@ func test_blocking_paths_complete_the_build_at_once() -> void:
 	field.advance(0.0)
 	check(not field.is_building(), "advance() completes a queued build")
 	check_eq(field.get_plant_count(), 90000, "built by advance()")
-	field.background_build = false
+	set_project_setting("sunflower_field/performance/background_build", false)
 	field.map = _square_map(310)
 	await frames(2)
 	check(not field.is_building(), "background_build off: built in the frame it started")
 	check_eq(field.get_plant_count(), 96100, "the second map")
 	check_eq(field.get_build_stats()["background"], false, "stats say blocking")
-	field.background_build = true
-	field.build_budget_ms = 1.0
+	set_project_setting("sunflower_field/performance/background_build", true)
+	set_project_setting("sunflower_field/performance/build_budget_ms", 1.0)
 	field.map = _square_map(700)
 	for i: int in 5:
 		if not progress.is_empty():
@@ -132,7 +132,7 @@ func test_the_progress_bar_shows_running_builds_only() -> void:
 	tree.root.add_child(bar)
 	bar.call("refresh")
 	check(not bar.visible, "hidden while nothing builds")
-	field.build_budget_ms = 1.0
+	set_project_setting("sunflower_field/performance/build_budget_ms", 1.0)
 	field.map = _square_map(500)
 	var seen: Array[float] = []
 	for i: int in 2000:
@@ -151,7 +151,7 @@ func test_the_progress_bar_shows_running_builds_only() -> void:
 
 
 func test_parameter_changes_during_a_build_reach_the_new_field() -> void:
-	field.build_budget_ms = 1.0
+	set_project_setting("sunflower_field/performance/build_budget_ms", 1.0)
 	field.map = _square_map(600)
 	await frames(2)
 	while field.is_building() and field.get_build_progress() <= 0.1:

@@ -214,7 +214,7 @@ func test_collider_rays_keep_frames_within_the_build_budget() -> void:
 	for row: int in 200:
 		rows.append("*".repeat(200))
 	var field: SunflowerField = _field(SunflowerField.GroundSource.COLLIDERS)
-	field.build_budget_ms = 4.0
+	set_project_setting("sunflower_field/performance/build_budget_ms", 4.0)
 	field.map = _map(rows)
 	await frames(1)
 	var waited: int = await frames_until(func() -> bool: return not field.is_building(), 2000)

@@ -3,6 +3,8 @@ extends TestCase
 ## the simulation drawn by their rows of the core's table, the core says what a change costs, and
 ## the driver keeps no copy of them (a field built meanwhile gets what the node holds).
 
+const ProjectKnobs: GDScript = preload("res://addons/sunflower_field/field_project_settings.gd")
+
 var field: SunflowerField
 var observer: Node3D
 
@@ -70,7 +72,7 @@ func test_a_setting_the_layout_depends_on_builds_the_field_anew() -> void:
 ## A setting changed while a field builds in the background reaches that field once it is drawn,
 ## although the build began before (the driver reads the node; it keeps no copy).
 func test_a_setting_changed_while_a_field_builds_reaches_it() -> void:
-	field.build_budget_ms = 1.0
+	set_project_setting("sunflower_field/performance/build_budget_ms", 1.0)
 	var lines: PackedStringArray = ["400 400"]
 	for row: int in 400:
 		lines.append("*".repeat(400))
@@ -113,3 +115,27 @@ func test_the_quality_scales_the_switch_distances_in_the_core() -> void:
 		1e-3,
 		"kept"
 	)
+
+
+## The machine-wide settings live in Project Settings (field_project_settings.gd): a field takes
+## their changes at run time, a bad value is warned about naming the setting, and a scene saved with
+## one of them as a node property loads with a warning saying where it went.
+func test_machine_wide_settings_live_in_project_settings() -> void:
+	set_project_setting("sunflower_field/performance/worker_threads", 1)
+	await frames(1)  # (Project Settings tell their changes at the end of the frame)
+	check_eq(field.get_frame_stats()["worker_threads"], 1, "one thread, as the project says")
+	set_project_setting("sunflower_field/performance/worker_threads", 2)
+	await frames(1)
+	check_eq(field.get_frame_stats()["worker_threads"], 2, "two, without a build")
+	set_project_setting("sunflower_field/performance/worker_threads", 99)
+	await frames(1)
+	check_eq(field.get_frame_stats()["worker_threads"], 16, "held to the table's 16")
+	check(warned("sunflower_field/performance/worker_threads: 99 is outside 0–16; using 16"), "and warned, naming it")
+	set_project_setting("sunflower_field/performance/build_budget_ms", "fast")
+	check_eq(ProjectKnobs.build_budget_ms(), 8.0, "a budget that is no number: the default")
+	check(warned("sunflower_field/performance/build_budget_ms"), "and warned")
+	var old: Node3D = SunflowerField.new()
+	old.set("background_build", false)  # what a scene saved before carries
+	check(warned("background_build is a project setting now (sunflower_field/performance/background_build"), "said")
+	check_eq(old.get("background_build"), null, "and not kept on the node")
+	old.free()

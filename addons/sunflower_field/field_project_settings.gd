@@ -1,0 +1,89 @@
+@tool
+extends RefCounted
+## The addon's machine-wide settings, in Project Settings under [code]sunflower_field/performance/[/code]:
+## what a machine affords every field alike (the threads that move near plants, whether large maps
+## build in the background, the main-thread time a build step may take), so no scene carries them.
+## Each has its row in the core's table (its default, limits and what a bad value becomes), named
+## [code]"ProjectSettings." + the setting[/code]; a bad value is warned about once, naming the setting.
+## A game may change them at run time ([method ProjectSettings.set_setting]); fields follow.
+
+const Native: GDScript = preload("native.gd")
+
+## Threads that move the plants near the observer, the main thread included: 0 uses the machine's
+## cores (at most 4), 1 keeps the work on the main thread.
+const WORKER_THREADS: String = "sunflower_field/performance/worker_threads"
+## Build large maps without stalling: read and laid out on a worker thread, their nodes made a few
+## at a time, within [constant BUILD_BUDGET_MS] a frame.
+const BACKGROUND_BUILD: String = "sunflower_field/performance/background_build"
+## Main-thread milliseconds a background build may take a frame.
+const BUILD_BUDGET_MS: String = "sunflower_field/performance/build_budget_ms"
+## The settings with a row in the core's table (background_build, a switch, has none: on).
+const TABLE_SETTINGS: PackedStringArray = [WORKER_THREADS, BUILD_BUDGET_MS]
+## What each setting was called when it was a SunflowerField property (scenes saved then still
+## carry it: see [method SunflowerField._set]).
+const FORMER_PROPERTIES: Dictionary = {
+	&"worker_threads": WORKER_THREADS, &"background_build": BACKGROUND_BUILD, &"build_budget_ms": BUILD_BUDGET_MS
+}
+
+static var _warned: Dictionary = {}  # setting → the bad value last warned about
+
+
+## Adds the settings to Project Settings (the editor plugin does, so they show there with their
+## limits); a project that set one keeps its value.
+static func register() -> void:
+	for setting: String in TABLE_SETTINGS + PackedStringArray([BACKGROUND_BUILD]):
+		var fallback: Variant = default_of(setting)
+		if not ProjectSettings.has_setting(setting):
+			ProjectSettings.set_setting(setting, fallback)
+		ProjectSettings.set_initial_value(setting, fallback)
+		ProjectSettings.set_as_basic(setting, true)
+		var info: Dictionary = {"name": setting, "type": typeof(fallback)}
+		if setting in TABLE_SETTINGS:
+			var low: float = ClassDB.class_call_static(Native.CLASS, &"get_parameter_limit", _row(setting), false)
+			var high: float = ClassDB.class_call_static(Native.CLASS, &"get_parameter_limit", _row(setting), true)
+			info["hint"] = PROPERTY_HINT_RANGE
+			info["hint_string"] = "%s,%s,%s" % [low, high, 1 if fallback is int else 0.5]
+		ProjectSettings.add_property_info(info)
+
+
+## The setting's default: its table row's, or on for [constant BACKGROUND_BUILD].
+static func default_of(setting: String) -> Variant:
+	if setting == BACKGROUND_BUILD:
+		return true
+	var value: float = Native.default_of(_row(setting)) if Native.is_available() else 0.0
+	return int(value) if setting == WORKER_THREADS else value
+
+
+## The worker threads a field uses now.
+static func worker_threads() -> int:
+	return int(_checked(WORKER_THREADS))
+
+
+## Whether large maps build in the background now.
+static func background_build() -> bool:
+	return bool(ProjectSettings.get_setting(BACKGROUND_BUILD, true))
+
+
+## The main-thread milliseconds a background build step may take now.
+static func build_budget_ms() -> float:
+	return _checked(BUILD_BUDGET_MS)
+
+
+## The table row of [param setting].
+static func _row(setting: String) -> String:
+	return "ProjectSettings." + setting
+
+
+## [param setting]'s value by its row's rules; a value the rules change is warned about once.
+static func _checked(setting: String) -> float:
+	var fallback: float = float(default_of(setting))
+	var value: Variant = ProjectSettings.get_setting(setting, fallback)
+	var asked: float = float(value) if value is float or value is int else NAN
+	if not Native.is_available():
+		return asked
+	var used: float = ClassDB.class_call_static(Native.CLASS, &"sanitize_parameter", _row(setting), asked, fallback)
+	if used != asked and _warned.get(setting, "") != str(value):
+		_warned[setting] = str(value)
+		var why: String = ClassDB.class_call_static(Native.CLASS, &"explain_parameter", _row(setting), asked, used)
+		push_warning("Project Settings %s: %s (%s)" % [setting, why, value])
+	return used
