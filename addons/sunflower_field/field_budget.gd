@@ -10,10 +10,11 @@ extends RefCounted
 ## [constant HEADROOM_SECONDS] under [constant HEADROOM], and never above a quality that went over
 ## budget in the last [constant CEILING_SECONDS]: no pumping between two qualities.
 ##
-## The GPU time is the viewport's, not a field's: every field with a GPU target in one viewport shares
-## one budget for it ([method governor_of]), stepped once a frame towards the smallest target they
-## set, so that two fields do not both answer one overrun. A field draws at the lesser of that shared
-## quality and its own (its triangles).
+## The budget is the viewport's, not a field's: every field drawn in one viewport shares one
+## ([method governor_of]), with the project's targets (Project Settings,
+## [code]sunflower_field/frame_budget/[/code]), the triangles of all their near meshes summed and the
+## viewport's GPU time; it steps once a round (every field of the viewport has told its triangles),
+## so that two fields do not both answer one overrun, and every field draws at its quality.
 
 ## Seconds between steps: a step's LOD pass has run and its cost shows before the next one.
 const STEP_SECONDS: float = 0.25
@@ -31,7 +32,9 @@ const CEILING_SECONDS: float = 10.0
 ## The GPU time is smoothed over about this many seconds (it jitters frame to frame).
 const GPU_SMOOTHING_SECONDS: float = 0.15
 
-static var _governors: Dictionary = {}  # viewport RID → the budget its fields share for the GPU time
+const ProjectKnobs: GDScript = preload("field_project_settings.gd")
+
+static var _governors: Dictionary = {}  # viewport RID → the budget its fields share
 
 ## The cap on the near meshes' triangles a frame (0: none).
 var max_primitives: int = 0
@@ -50,46 +53,49 @@ var _under_for: float = 0.0
 var _ceiling: float = INF
 var _ceiling_age: float = 0.0
 
-var _stepped_frame: int = -1  # the process frame a shared budget last stepped in
-var _offers: Array = [INF, INF]  # this frame's smallest GPU target and least quality offered
-var _offer_frame: int = -1
+var _round: Dictionary = {}  # field (instance id) → its near triangles in the round being summed
 
 
-## The budget every field drawn in the viewport [param viewport] shares for its GPU time.
+## The budget every field drawn in the viewport [param viewport] shares.
 static func governor_of(viewport: RID) -> RefCounted:
 	if not _governors.has(viewport):
 		_governors[viewport] = new()
 	return _governors[viewport]
 
 
-## One frame of a shared budget (see [method governor_of]), called by each field in its viewport
-## with its own GPU target [param target_ms] and least quality [param least]: the first call of a
-## frame steps it, towards the smallest target offered the frame before, with the viewport's GPU
-## time [param frame_gpu_ms]; the other calls only offer their targets. True when it stepped and the
-## quality changed.
-func step_shared(delta: float, frame_gpu_ms: float, target_ms: float, least: float) -> bool:
-	var frame: int = Engine.get_process_frames()
-	if _offer_frame >= 0 and _offer_frame < frame - 1:  # no field offered last frame: start afresh
-		quality = 1.0
-		gpu_ms = 0.0
+## One frame of a viewport's shared budget (see [method governor_of]), called by each field drawn
+## there with the triangles its near meshes held [param field_primitives] and the viewport's GPU time
+## [param frame_gpu_ms] (0: not measured). A field calling again completes the round: the budget
+## steps, with the project's targets, on the round's triangles summed over its fields. True when it
+## stepped and the quality changed.
+func step_shared(delta: float, field: Object, field_primitives: int, frame_gpu_ms: float) -> bool:
+	var key: int = field.get_instance_id()
+	var changed: bool = false
+	if _round.has(key):
+		var total: int = 0
+		for triangles: int in _round.values():
+			total += triangles
+		_round.clear()
+		changed = _step_with_project_targets(delta, total, frame_gpu_ms)
+	_round[key] = field_primitives
+	return changed
+
+
+## A step with the targets of Project Settings (a changed one is judged afresh; none: full quality).
+func _step_with_project_targets(delta: float, total: int, frame_gpu_ms: float) -> bool:
+	var cap: int = ProjectKnobs.budget_primitives()
+	var target: float = ProjectKnobs.budget_gpu_ms()
+	if cap != max_primitives or not is_equal_approx(target, gpu_ms):
 		retarget()
-		_offer_frame = -1
-	if _offer_frame != frame:
-		if _offer_frame >= 0:
-			if not is_equal_approx(_offers[0], gpu_ms):
-				retarget()
-			gpu_ms = _offers[0]
-			min_quality = _offers[1]
-		_offers = [INF, INF]
-		_offer_frame = frame
-	_offers = [minf(_offers[0], target_ms), minf(_offers[1], least)]
-	if _stepped_frame == frame:
-		return false
-	_stepped_frame = frame
-	if gpu_ms <= 0.0:  # the first frame: its own offer
-		gpu_ms = target_ms
-		min_quality = least
-	return step(delta, 0, frame_gpu_ms)
+	max_primitives = cap
+	gpu_ms = target
+	min_quality = ProjectKnobs.budget_min_quality()
+	if not is_active():
+		var was: float = quality
+		quality = 1.0
+		smoothed_gpu_ms = 0.0
+		return was != quality
+	return step(delta, total, frame_gpu_ms)
 
 
 ## Whether a target is set.

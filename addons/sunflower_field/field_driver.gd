@@ -51,11 +51,6 @@ var interaction: FieldInteraction
 var play: FieldPlay
 ## The far levels' look per species, shared by the field drawn and one being built.
 var impostor_sets: Array[ImpostorSet] = []
-## The frame budget for the near meshes' triangles the fields drawn are held to, and the quality it
-## chose; the GPU time's budget is the viewport's ([method governor]). See [method quality].
-var budget: FieldBudget = FieldBudget.new()
-## The GPU-time target (0: none) and least quality the node sets, offered to its viewport's budget.
-var gpu_target_ms: float = 0.0
 ## The plant types drawn (SunflowerPlant): species 0 the node's plant ('*'), then the legend's.
 var plants: Array = []
 var _layout_key: Array = []
@@ -332,44 +327,29 @@ func set_thinning_start() -> void:
 	set_impostor_shared(&"thinning_start", _field.thinning_distance * quality())
 
 
-## Sets the budgets' targets (0: none) and least quality; with no target the quality goes back to 1.
-func set_budget(max_primitives: int, gpu_ms: float, min_quality: float) -> void:
-	if max_primitives != budget.max_primitives:
-		budget.retarget()
-	budget.max_primitives = max_primitives
-	budget.min_quality = min_quality
-	if budget.quality < min_quality or not budget.is_active():
-		budget.quality = min_quality if budget.is_active() else 1.0
-	gpu_target_ms = gpu_ms
-	var governor: FieldBudget = governor()
-	if governor and governor.quality < min_quality:
-		governor.quality = min_quality
-	_requalify()
-
-
-## The share of its distances the field draws with: the lesser of its own budget's quality and its
-## viewport's GPU-time budget's (1 without targets).
+## The share of its distances the field draws with: its viewport's frame budget's quality (the
+## project's least quality at least), 1 without a budget.
 func quality() -> float:
 	var governor: FieldBudget = governor()
-	return minf(budget.quality, governor.quality) if governor else budget.quality
+	if governor == null or not ProjectKnobs.has_frame_budget():
+		return 1.0
+	return maxf(governor.quality, ProjectKnobs.budget_min_quality())
 
 
-## The GPU-time budget of the field's viewport, which every field there with a GPU target shares;
-## null without a GPU target or a viewport.
+## The frame budget of the field's viewport, which every field there shares (at full quality while
+## Project Settings set none); null in the editor (a budget holds a running game) or out of the tree.
 func governor() -> FieldBudget:
-	if gpu_target_ms <= 0.0 or not _field.is_inside_tree():
+	if Engine.is_editor_hint() or not _field.is_inside_tree():
 		return null
 	return FieldBudget.governor_of(_field.get_viewport().get_viewport_rid())
 
 
-## A frame of the budgets: the field's own (its triangles) and its viewport's (the GPU time, stepped
-## once a frame whichever field comes first); the field is drawn anew when its quality moved.
+## A frame of the viewport's budget (stepped once a round of its fields' frames); the field is drawn
+## anew when its quality moved, or went back to 1 with the budget gone.
 func _step_budgets(delta: float) -> void:
-	if budget.is_active():
-		budget.step(delta, near_primitives(), 0.0)
 	var governor: FieldBudget = governor()
 	if governor:
-		governor.step_shared(delta, _gpu_ms(), gpu_target_ms, budget.min_quality)
+		governor.step_shared(delta, _field, near_primitives(), _gpu_ms())
 	_requalify()
 
 
@@ -400,7 +380,7 @@ func near_count(species: int, level: int) -> int:
 
 ## The field's viewport's GPU time last frame in milliseconds, measured only with a GPU target.
 func _gpu_ms() -> float:
-	if gpu_target_ms <= 0.0 or not _field.is_inside_tree():
+	if ProjectKnobs.budget_gpu_ms() <= 0.0 or not _field.is_inside_tree():
 		return 0.0
 	var viewport: RID = _field.get_viewport().get_viewport_rid()
 	if viewport != _measuring_viewport:

@@ -1,8 +1,9 @@
 @tool
 extends RefCounted
-## The addon's machine-wide settings, in Project Settings under [code]sunflower_field/performance/[/code]:
-## what a machine affords every field alike (the threads that move near plants, whether large maps
-## build in the background, the main-thread time a build step may take), so no scene carries them.
+## The addon's machine-wide settings, in Project Settings under [code]sunflower_field/[/code]: what a
+## machine affords every field alike (the threads that move near plants, whether large maps build in
+## the background, the main-thread time a build step may take, the frame budget every viewport's
+## fields are held to together), so no scene carries them.
 ## Each has its row in the core's table (its default, limits and what a bad value becomes), named
 ## [code]"ProjectSettings." + the setting[/code]; a bad value is warned about once, naming the setting.
 ## A game may change them at run time ([method ProjectSettings.set_setting]); fields follow.
@@ -17,13 +18,29 @@ const WORKER_THREADS: String = "sunflower_field/performance/worker_threads"
 const BACKGROUND_BUILD: String = "sunflower_field/performance/background_build"
 ## Main-thread milliseconds a background build may take a frame.
 const BUILD_BUDGET_MS: String = "sunflower_field/performance/build_budget_ms"
+## The frame budget (field_budget.gd): the most triangles the near meshes of a viewport's fields
+## may hold in a frame together (0: no cap).
+const BUDGET_PRIMITIVES: String = "sunflower_field/frame_budget/max_primitives"
+## The frame budget: the milliseconds a viewport may take on the GPU a frame (0: no target).
+const BUDGET_GPU_MS: String = "sunflower_field/frame_budget/gpu_ms"
+## The frame budget: the least quality (share of the distances) it goes down to.
+const BUDGET_MIN_QUALITY: String = "sunflower_field/frame_budget/min_quality"
 ## The settings with a row in the core's table (background_build, a switch, has none: on).
-const TABLE_SETTINGS: PackedStringArray = [WORKER_THREADS, BUILD_BUDGET_MS]
+const TABLE_SETTINGS: PackedStringArray = [
+	WORKER_THREADS, BUILD_BUDGET_MS, BUDGET_PRIMITIVES, BUDGET_GPU_MS, BUDGET_MIN_QUALITY
+]
 ## What each setting was called when it was a SunflowerField property (scenes saved then still
 ## carry it: see [method SunflowerField._set]).
 const FORMER_PROPERTIES: Dictionary = {
-	&"worker_threads": WORKER_THREADS, &"background_build": BACKGROUND_BUILD, &"build_budget_ms": BUILD_BUDGET_MS
+	&"worker_threads": WORKER_THREADS,
+	&"background_build": BACKGROUND_BUILD,
+	&"build_budget_ms": BUILD_BUDGET_MS,
+	&"budget_primitives": BUDGET_PRIMITIVES,
+	&"budget_gpu_ms": BUDGET_GPU_MS,
+	&"budget_min_quality": BUDGET_MIN_QUALITY,
 }
+## The settings held as whole numbers.
+const INTEGER_SETTINGS: PackedStringArray = [WORKER_THREADS, BUDGET_PRIMITIVES]
 
 static var _warned: Dictionary = {}  # setting → the bad value last warned about
 
@@ -51,7 +68,7 @@ static func default_of(setting: String) -> Variant:
 	if setting == BACKGROUND_BUILD:
 		return true
 	var value: float = Native.default_of(_row(setting)) if Native.is_available() else 0.0
-	return int(value) if setting == WORKER_THREADS else value
+	return int(value) if setting in INTEGER_SETTINGS else value
 
 
 ## The worker threads a field uses now.
@@ -67,6 +84,26 @@ static func background_build() -> bool:
 ## The main-thread milliseconds a background build step may take now.
 static func build_budget_ms() -> float:
 	return _checked(BUILD_BUDGET_MS)
+
+
+## The frame budget's cap on a viewport's near triangles a frame now (0: none).
+static func budget_primitives() -> int:
+	return int(_checked(BUDGET_PRIMITIVES))
+
+
+## The frame budget's GPU-time target now, milliseconds (0: none).
+static func budget_gpu_ms() -> float:
+	return _checked(BUDGET_GPU_MS)
+
+
+## The least quality the frame budget goes down to now.
+static func budget_min_quality() -> float:
+	return _checked(BUDGET_MIN_QUALITY)
+
+
+## Whether a frame budget is set (a cap or a GPU-time target).
+static func has_frame_budget() -> bool:
+	return budget_primitives() > 0 or budget_gpu_ms() > 0.0
 
 
 ## The table row of [param setting].

@@ -22,7 +22,7 @@ signal field_built(plant_count: int)
 signal map_error(message: String)
 ## Emitted every frame while a field builds in the background; [param progress] runs from 0 to 1.
 signal build_progress(progress: float)
-## Emitted when the frame budget moves the quality (see [member budget_primitives]).
+## Emitted when the frame budget moves the quality (see [method get_quality]).
 signal quality_changed(quality: float)
 
 ## The three parts of a plant, bottom to top (the native core's part indices).
@@ -405,31 +405,6 @@ const WIND_PROPERTIES: Dictionary = {
 @export_flags_3d_physics var collision_layer: int = 1
 ## The physics layers the stalk colliders scan.
 @export_flags_3d_physics var collision_mask: int = 1
-@export_group("Advanced: frame budget")
-## A frame budget the field holds by itself: the most triangles its near meshes may hold in a frame
-## (the main view's; each shadow pass draws its own), 0: no cap. Over it, the field lowers its
-## quality, one scalar that scales [member lod_distances], [member lod_fade],
-## [member thinning_distance] and [member max_draw_distance] together, in steps of at most 30 % four
-## times a second; it gives quality back in steps of at most 10 % after a second with 30 % headroom,
-## never straight back to a quality that went over in the last 10 s (unless a target changed), so it
-## settles instead of pumping. Off in the editor. See [method get_quality].
-@export_range(0, 100000000, 1000, "or_greater") var budget_primitives: int = 0:
-	set(value):
-		budget_primitives = Native.accept_int("SunflowerField.budget_primitives", value, budget_primitives)
-		_tell_budget()
-## The frame budget in GPU time: the milliseconds the field's viewport may take on the GPU a frame
-## (the engine's own measurement, smoothed over about 0.15 s), 0: no target. It includes what
-## else the viewport draws; the field moves only its own quality. With both targets, the tighter
-## one leads.
-@export_range(0.0, 100.0, 0.1, "or_greater", "suffix:ms") var budget_gpu_ms: float = 0.0:
-	set(value):
-		budget_gpu_ms = Native.accept("SunflowerField.budget_gpu_ms", value, budget_gpu_ms)
-		_tell_budget()
-## The least quality the budget goes down to (a share of the distances).
-@export_range(0.05, 1.0, 0.01) var budget_min_quality: float = 0.25:
-	set(value):
-		budget_min_quality = Native.accept("SunflowerField.budget_min_quality", value, budget_min_quality)
-		_tell_budget()
 
 ## What the running game does to the plants: cut, flatten, remove and give back plants, its events
 ## (trampled, changed, recovered, pushers in and out), regrowth's clock and the save (see
@@ -501,10 +476,6 @@ func _tell(property: StringName) -> void:
 
 func _tell_wind() -> void:
 	_driver.send_settings(FieldSettings.rows_of(wind, "SunflowerWind"))
-
-
-func _tell_budget() -> void:
-	_driver.set_budget(budget_primitives, budget_gpu_ms, budget_min_quality)
 
 
 func _on_built(plants: int) -> void:
@@ -647,7 +618,15 @@ func get_lod_counts() -> PackedInt32Array:
 
 
 ## The share of its distances the field draws with now: 1 unless a frame budget
-## ([member budget_primitives], [member budget_gpu_ms]) lowered it.
+## lowered it. The frame budget is the project's (Project Settings, [code]sunflower_field/frame_budget/[/code]:
+## [code]max_primitives[/code], the most triangles the near meshes of a viewport's fields may hold in a
+## frame together, the main view's; [code]gpu_ms[/code], the milliseconds the viewport may take on the
+## GPU, as the engine measures it, smoothed over about 0.15 s; [code]min_quality[/code]), held by one
+## quality per viewport that every field there draws at: a scalar scaling [member lod_distances],
+## [member lod_fade], [member thinning_distance] and [member max_draw_distance] together, lowered in
+## steps of at most 30 % four times a second and given back in steps of at most 10 % after a second
+## with 30 % headroom, never straight back to a quality that went over in the last 10 s (unless a
+## target changed), so it settles instead of pumping. Off in the editor.
 func get_quality() -> float:
 	return _driver.quality()
 
@@ -658,8 +637,9 @@ func get_quality() -> float:
 ## (CPU memory the native field holds),
 ## [code]near_meshes[/code] (plants written at each mesh level last frame, after culling: three
 ## counts, every plant type together), [code]near_primitives[/code] (their triangles, what
-## [member budget_primitives] caps), [code]gpu_ms[/code] (the smoothed GPU time the budget saw, 0
-## without [member budget_gpu_ms]) and [code]quality[/code] ([method get_quality]). Zeros before a
+## the frame budget's [code]max_primitives[/code] caps, with the viewport's other fields'),
+## [code]gpu_ms[/code] (the smoothed GPU time the budget saw, 0 without a GPU target) and
+## [code]quality[/code] ([method get_quality]). Zeros before a
 ## field is drawn.
 func get_frame_stats() -> Dictionary:
 	var near: PackedInt32Array = PackedInt32Array()
@@ -685,7 +665,7 @@ func get_frame_stats() -> Dictionary:
 		"memory_bytes": simulation.get_memory_bytes(),
 		"near_meshes": near,
 		"near_primitives": _driver.near_primitives(),
-		"gpu_ms": governor.smoothed_gpu_ms if governor else 0.0,
+		"gpu_ms": governor.smoothed_gpu_ms if governor and ProjectKnobs.budget_gpu_ms() > 0.0 else 0.0,
 		"quality": get_quality(),
 	}
 

@@ -23,8 +23,9 @@ extends Node3D
 ##   --cheap-shadows off      near plants at mesh 1 and 2 cast shadows from the mesh they are drawn with
 ##   --impostor-shadows FROM  near plants at this level on cast from impostors: mesh2, mesh3 (default), never
 ##   --shadows off            the sun casts no shadows (the fragment cost alone, for the far-plant benchmark)
-##   --budget-primitives N    hold the near meshes to N triangles a frame (SunflowerField.budget_primitives)
-##   --budget-gpu-ms MS       hold the frame's GPU time to MS milliseconds (SunflowerField.budget_gpu_ms)
+##   --budget-primitives N    hold the near meshes to N triangles a frame (Project Settings:
+##                            sunflower_field/frame_budget/max_primitives)
+##   --budget-gpu-ms MS       hold the frame's GPU time to MS milliseconds (sunflower_field/frame_budget/gpu_ms)
 ##   --no-hud                 hide the heads-up display (pictures for measurements)
 ##   --load-changes           restore the plants as the last run left them (trampled, cut: saved at quit)
 ##   --cut-every K            recording mode: swing the scythe (X) every K-th frame
@@ -48,6 +49,9 @@ const HILLS_MAPS: PackedStringArray = ["hills.field", "plants.field", "hillside.
 ## The maps whose legend grows the test plants (DemoPlants).
 const PLANTS_MAPS: PackedStringArray = ["plants.field", "hillside.field"]
 const INCREMENTS: PackedFloat32Array = [0.1, 10.0]
+## The frame budget's Project Settings (the addon's field_project_settings.gd).
+const BUDGET_PRIMITIVES: String = "sunflower_field/frame_budget/max_primitives"
+const BUDGET_GPU_MS: String = "sunflower_field/frame_budget/gpu_ms"
 const TRIANGLES_SPRITE: int = 4
 const TRIANGLES_BILLBOARD: int = 2
 ## Below this eye height the camera is a pusher: the flowers part around it.
@@ -129,9 +133,9 @@ func _ready() -> void:
 			"--shadows":
 				($Sun as DirectionalLight3D).shadow_enabled = value != "off"
 			"--budget-primitives":
-				_field.budget_primitives = value.to_int()
+				ProjectSettings.set_setting(BUDGET_PRIMITIVES, value.to_int())
 			"--budget-gpu-ms":
-				_field.budget_gpu_ms = value.to_float()
+				ProjectSettings.set_setting(BUDGET_GPU_MS, value.to_float())
 			"--no-hud":
 				_hud.visible = false
 				i -= 1
@@ -373,15 +377,15 @@ func _stats_text() -> String:
 ## The frame budget's line (its targets, what it saw and the quality it chose) on a line of its own;
 ## nothing without a budget.
 func _budget_text(costs: Dictionary) -> String:
-	if _field.budget_primitives <= 0 and _field.budget_gpu_ms <= 0.0:
+	var cap: int = ProjectSettings.get_setting(BUDGET_PRIMITIVES, 0)
+	var gpu_ms: float = ProjectSettings.get_setting(BUDGET_GPU_MS, 0.0)
+	if cap <= 0 and gpu_ms <= 0.0:
 		return ""
 	var targets: PackedStringArray = []
-	if _field.budget_primitives > 0:
-		targets.append(
-			"%.2f M / %.2f M near triangles" % [costs["near_primitives"] / 1.0e6, _field.budget_primitives / 1.0e6]
-		)
-	if _field.budget_gpu_ms > 0.0:
-		targets.append("GPU %.1f / %.1f ms" % [costs["gpu_ms"], _field.budget_gpu_ms])
+	if cap > 0:
+		targets.append("%.2f M / %.2f M near triangles" % [costs["near_primitives"] / 1.0e6, cap / 1.0e6])
+	if gpu_ms > 0.0:
+		targets.append("GPU %.1f / %.1f ms" % [costs["gpu_ms"], gpu_ms])
 	return "\nbudget: %s, quality %.2f" % [", ".join(targets), costs["quality"]]
 
 

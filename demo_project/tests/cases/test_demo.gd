@@ -40,7 +40,7 @@ func test_the_hud_shows_the_frame_budget_and_the_quality_it_chose() -> void:
 	await frames(3)
 	var line: String = demo.call("_stats_text")
 	check(not line.contains("budget"), "without a budget the HUD has no budget line")
-	field.budget_primitives = 1  # below anything: the quality goes down
+	set_project_setting("sunflower_field/frame_budget/max_primitives", 1)  # below anything: the quality goes down
 	field.set_process(false)
 	for frame: int in 60:
 		field.advance(1.0 / 60.0)

@@ -122,11 +122,11 @@ inline constexpr ParameterSpec BUILD_BUDGET_MS{ "ProjectSettings.sunflower_field
 constexpr uint32_t MAX_AUTO_THREADS = 4;
 constexpr uint32_t MAX_THREADS = 16;
 inline constexpr ParameterSpec WORKER_THREADS{ "ProjectSettings.sunflower_field/performance/worker_threads", 0.0, 0.0, MAX_THREADS, ParameterSpec::CLAMP, 0.0 };
-// A frame budget (field_budget.gd): a cap on the near meshes' triangles a frame and a target for the
-// viewport's GPU time (0: none), and the least share of its distances the field goes down to.
-inline constexpr ParameterSpec BUDGET_PRIMITIVES{ "SunflowerField.budget_primitives", 0.0, 0.0, 2e9, ParameterSpec::CLAMP, 0.0 };
-inline constexpr ParameterSpec BUDGET_GPU_MS{ "SunflowerField.budget_gpu_ms", 0.0, 0.0, 10000.0, ParameterSpec::CLAMP, 0.0 };
-inline constexpr ParameterSpec BUDGET_MIN_QUALITY{ "SunflowerField.budget_min_quality", 0.25, 0.05, 1.0, ParameterSpec::CLAMP, 0.25 };
+// A frame budget (field_budget.gd), machine-wide: a cap on a viewport's near meshes' triangles a frame
+// and a target for its GPU time (0: none), and the least share of their distances its fields go down to.
+inline constexpr ParameterSpec BUDGET_PRIMITIVES{ "ProjectSettings.sunflower_field/frame_budget/max_primitives", 0.0, 0.0, 2e9, ParameterSpec::CLAMP, 0.0 };
+inline constexpr ParameterSpec BUDGET_GPU_MS{ "ProjectSettings.sunflower_field/frame_budget/gpu_ms", 0.0, 0.0, 10000.0, ParameterSpec::CLAMP, 0.0 };
+inline constexpr ParameterSpec BUDGET_MIN_QUALITY{ "ProjectSettings.sunflower_field/frame_budget/min_quality", 0.25, 0.05, 1.0, ParameterSpec::CLAMP, 0.25 };
 
 // Plants that part around bodies: the largest push (as a bend, radians of tilt at the bottom part
 // times its stiffness: the same unit as the wind's), and the seconds a plant takes to spring back.

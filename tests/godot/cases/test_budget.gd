@@ -3,6 +3,7 @@ extends TestCase
 ## cap on its near meshes' triangles in simulated frames (a 60th of a second each, headless).
 
 const FieldBudget: GDScript = preload("res://addons/sunflower_field/field_budget.gd")
+const ProjectKnobs: GDScript = preload("res://addons/sunflower_field/field_project_settings.gd")
 const Maps: GDScript = preload("res://runner/maps.gd")
 const Stage: GDScript = preload("res://runner/stage.gd")
 const FRAME: float = 1.0 / 60.0
@@ -56,7 +57,7 @@ func test_the_field_holds_a_cap_on_its_triangles_and_settles() -> void:
 	check(free_cost > 1000000, "at head height the near meshes hold over a million triangles (%d)" % free_cost)
 	check_eq(field.get_quality(), 1.0, "no budget: full quality")
 	var cap: int = free_cost / 3
-	field.budget_primitives = cap
+	set_project_setting(ProjectKnobs.BUDGET_PRIMITIVES, cap)
 	var changes: Array[float] = []
 	field.quality_changed.connect(func(quality: float) -> void: changes.append(quality))
 	var reaching: Array[PackedFloat32Array] = _run(3.0)
@@ -68,7 +69,9 @@ func test_the_field_holds_a_cap_on_its_triangles_and_settles() -> void:
 		)
 	)
 	check(last_cost <= cap, "within the cap after 3 s: %d ≤ %d" % [last_cost, cap])
-	check(field.get_quality() < 1.0 and field.get_quality() >= field.budget_min_quality, "the quality went down")
+	check(
+		field.get_quality() < 1.0 and field.get_quality() >= ProjectKnobs.budget_min_quality(), "the quality went down"
+	)
 	check(not changes.is_empty() and changes[-1] == field.get_quality(), "quality_changed told each step")
 	var settled: Array[PackedFloat32Array] = _run(10.0)
 	var low: float = Array(settled[0]).min()
@@ -78,9 +81,9 @@ func test_the_field_holds_a_cap_on_its_triangles_and_settles() -> void:
 		(high - low) / high < 0.05, "settled: the quality varies %.1f %% (under 5 %%)" % (100.0 * (high - low) / high)
 	)
 	check(Array(settled[1]).max() <= cap, "within the cap all the while")
-	field.budget_primitives = int(field.get_frame_stats()["near_primitives"] * 0.8)
+	set_project_setting(ProjectKnobs.BUDGET_PRIMITIVES, int(field.get_frame_stats()["near_primitives"] * 0.8))
 	_run(1.0)  # over it: a step down, and the quality that went over is a ceiling for 10 s
-	field.budget_primitives = free_cost * 4  # a new target forgets the ceiling
+	set_project_setting(ProjectKnobs.BUDGET_PRIMITIVES, free_cost * 4)  # a new target forgets the ceiling
 	var freed: Array[PackedFloat32Array] = _run(12.0)
 	print("     the cap raised to 4× right after: quality %.3f after 12 s" % field.get_quality())
 	check_eq(field.get_quality(), 1.0, "quality given back under a generous cap")
@@ -89,9 +92,9 @@ func test_the_field_holds_a_cap_on_its_triangles_and_settles() -> void:
 	for i: int in range(1, rise.size()):
 		largest = maxf(largest, rise[i] / rise[i - 1])
 	check(largest <= 1.0 + FieldBudget.MAX_STEP_UP + 1e-4, "given back in small steps (largest ×%.3f)" % largest)
-	field.budget_primitives = cap
+	set_project_setting(ProjectKnobs.BUDGET_PRIMITIVES, cap)
 	_run(2.0)
-	field.budget_primitives = 0
+	set_project_setting(ProjectKnobs.BUDGET_PRIMITIVES, 0)
 	check_eq(field.get_quality(), 1.0, "no target: full quality at once")
 
 
@@ -101,7 +104,7 @@ func test_the_budget_costs_little_a_frame() -> void:
 	_run(0.5)
 	var medians: Array[float] = []
 	for cap: int in [0, 100000000]:
-		field.budget_primitives = cap
+		set_project_setting(ProjectKnobs.BUDGET_PRIMITIVES, cap)
 		var times: Array[float] = []
 		for frame: int in 600:
 			var start: int = Time.get_ticks_usec()
@@ -116,40 +119,49 @@ func test_the_budget_costs_little_a_frame() -> void:
 func test_the_quality_scales_the_distances_the_plants_switch_at() -> void:
 	_run(0.5)
 	var full: PackedInt32Array = field.get_lod_counts()
-	field.budget_primitives = 1  # far below anything: down to the least quality
-	field.budget_min_quality = 0.5
+	set_project_setting(ProjectKnobs.BUDGET_PRIMITIVES, 1)  # far below anything: down to the least quality
+	set_project_setting(ProjectKnobs.BUDGET_MIN_QUALITY, 0.5)
 	_run(3.0)
 	check_eq(field.get_quality(), 0.5, "at the least quality")
 	var halved: PackedInt32Array = field.get_lod_counts()
 	print("     plants per level at quality 1: %s, at 0.5: %s" % [full, halved])
 	check(halved[0] < full[0] and halved[0] > 0, "fewer plants at mesh 1")
 	check(halved[0] + halved[1] + halved[2] < (full[0] + full[1] + full[2]) / 2, "under half as many meshes")
-	field.budget_min_quality = 0.8
+	set_project_setting(ProjectKnobs.BUDGET_MIN_QUALITY, 0.8)
 	check_eq(field.get_quality(), 0.8, "raising the least quality lifts it at once")
 
 
 ## The controller alone, against a cost that grows with the square of the quality (the near
 ## meshes') and a fixed part, in steps of a 60th of a second: it reaches the target from 4× over
 ## within 3 s and then holds one quality; the GPU target works the same way.
-## Every field with a GPU target in one viewport shares one budget for its GPU time: it steps once a
-## frame whichever field comes first, towards the smallest target offered, so that two fields do not
-## both answer one overrun (each did, with a budget of its own per node and one GPU time per viewport).
-func test_fields_in_one_viewport_share_its_gpu_time_budget() -> void:
+## Every field drawn in one viewport shares one budget: the project's targets against their near
+## triangles summed, stepped once a round (every field has told its triangles), so that two fields do
+## not both answer one overrun (each did, with a budget of its own per node). Two fields of 600 000
+## triangles under a cap of 1 000 000: each alone is within it, together they are over.
+func test_fields_in_one_viewport_share_its_budget() -> void:
+	set_project_setting(ProjectKnobs.BUDGET_PRIMITIVES, 1000000)
 	var viewport: RID = RenderingServer.viewport_create()
 	var shared: RefCounted = FieldBudget.governor_of(viewport)
 	check(FieldBudget.governor_of(viewport) == shared, "one budget per viewport")
 	check(FieldBudget.governor_of(tree.root.get_viewport_rid()) != shared, "another for another viewport")
-	var alone: RefCounted = FieldBudget.new()  # one field's budget, as it was
-	alone.gpu_ms = 10.0
-	for frame: int in 3:
-		# Two fields offer 20 ms and 10 ms; the viewport took 20 ms on the GPU (twice the smaller target).
-		shared.step_shared(0.3, 20.0, 20.0 if frame > 0 else 10.0, 0.25)
-		shared.step_shared(0.3, 20.0, 10.0, 0.25)
-		alone.step(0.3, 0, 20.0)
-		check_near(shared.quality, alone.quality, 1e-6, "frame %d: one step towards 10 ms, as one field's" % frame)
-		await frames(1)
-	check(shared.quality < 0.8, "it went down (%.3f)" % shared.quality)
+	var first: RefCounted = RefCounted.new()  # two fields, as the budget tells them apart
+	var second: RefCounted = RefCounted.new()
+	var other: RID = RenderingServer.viewport_create()
+	var alone: RefCounted = FieldBudget.governor_of(other)
+	for round: int in 3:
+		shared.step_shared(0.3, first, 600000, 0.0)
+		shared.step_shared(0.3, second, 600000, 0.0)
+		alone.step_shared(0.3, first, 600000, 0.0)
+	check(shared.quality < 1.0, "together over the cap: it went down (%.3f)" % shared.quality)
+	check_eq(alone.quality, 1.0, "one field alone is within it")
+	var before: float = shared.quality
+	shared.step_shared(0.3, first, 600000, 0.0)  # a new round: one step for the two fields' last round
+	check(shared.quality < before, "a step a round (%.3f after %.3f)" % [shared.quality, before])
+	var stepped: float = shared.quality
+	shared.step_shared(0.3, second, 600000, 0.0)  # the same round: no second step
+	check_eq(shared.quality, stepped, "one step a round, whichever field comes first")
 	RenderingServer.free_rid(viewport)
+	RenderingServer.free_rid(other)
 
 
 func test_the_controller_reaches_a_target_and_holds_it() -> void:
@@ -184,7 +196,7 @@ func test_the_controller_reaches_a_target_and_holds_it() -> void:
 
 ## The viewport's GPU time at full quality (the target far above it), the middle two of four frames.
 func _gpu_ms_at_full_quality() -> float:
-	field.budget_gpu_ms = 9000.0  # measured, never reached
+	set_project_setting(ProjectKnobs.BUDGET_GPU_MS, 9000.0)  # measured, never reached
 	await frames(2)  # (the viewport's GPU time is measured from the frame after a budget is set)
 	var measured: Array = []
 	for frame: int in 4:
@@ -212,7 +224,7 @@ func test_the_field_holds_a_gpu_time_target_on_the_software_renderer() -> void:
 	stage.root.add_child(camera)
 	camera.make_current()
 	camera.look_at_from_position(Vector3(15.0, 1.7, 25.0), Vector3(15.0, 1.4, 0.0))
-	field.budget_gpu_ms = 9000.0
+	set_project_setting(ProjectKnobs.BUDGET_GPU_MS, 9000.0)
 	await frames(4)  # the first frames compile shaders
 	# The software "GPU" is the CPU: under the test command's second lane its time swings with that
 	# lane's load. When the frames after the measurement all come in under the target (the load fell
@@ -226,7 +238,7 @@ func test_the_field_holds_a_gpu_time_target_on_the_software_renderer() -> void:
 		if not check(full_ms > 0.0, "the engine measures the viewport's GPU time (%.2f ms)" % full_ms):
 			stage.root.free()
 			return
-		field.budget_gpu_ms = full_ms * 0.7
+		set_project_setting(ProjectKnobs.BUDGET_GPU_MS, full_ms * 0.7)
 		qualities.clear()
 		times.clear()
 		# 20 frames: under the second lane, after 12 frames the quality was still stepping down to the
@@ -235,12 +247,12 @@ func test_the_field_holds_a_gpu_time_target_on_the_software_renderer() -> void:
 			await frames(1)
 			qualities.append(field.get_quality())
 			times.append(field.get_frame_stats()["gpu_ms"])
-		if field.get_quality() < 1.0 or Array(times).max() > field.budget_gpu_ms:
+		if field.get_quality() < 1.0 or Array(times).max() > ProjectKnobs.budget_gpu_ms():
 			break
 		print("     every frame under the target (%.1f ms) at full quality: measured again" % Array(times).max())
 	var last: Array = Array(qualities.slice(-6))
 	var last_times: Array = Array(times.slice(-6))
-	var figures: Array = [full_ms, field.budget_gpu_ms, qualities.size(), field.get_quality()]
+	var figures: Array = [full_ms, ProjectKnobs.budget_gpu_ms(), qualities.size(), field.get_quality()]
 	figures.append_array([last.min(), last.max(), last_times.min(), last_times.max()])
 	var line: String = "     GPU time at full quality %.1f ms, target %.1f ms: after %d frames quality %.3f"
 	print((line + " (last 6: %.3f–%.3f), %.1f–%.1f ms") % figures)

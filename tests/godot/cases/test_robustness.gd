@@ -111,12 +111,13 @@ func test_bad_values_are_rejected_or_clamped_with_a_warning() -> void:
 	field.impostor_shadows_from = 7
 	check_eq(field.impostor_shadows_from, SunflowerField.Lod.SPRITE, "a level past Never is Never")
 	check(warned("SunflowerField.impostor_shadows_from: 7"), "and warns")
-	field.budget_gpu_ms = NAN
-	check_eq(field.budget_gpu_ms, 0.0, "a NaN GPU budget keeps none")
-	check(warned("SunflowerField.budget_gpu_ms: nan"), "and warns")
-	field.budget_primitives = -5
-	check_eq(field.budget_primitives, 0, "a negative cap is none")
-	check(warned("SunflowerField.budget_primitives"), "and warns")
+	var knobs: GDScript = load("res://addons/sunflower_field/field_project_settings.gd")
+	set_project_setting(knobs.BUDGET_GPU_MS, NAN)
+	check_eq(knobs.budget_gpu_ms(), 0.0, "a NaN GPU budget in Project Settings keeps none")
+	check(warned("sunflower_field/frame_budget/gpu_ms: nan is not a finite number"), "and warns, naming it")
+	set_project_setting(knobs.BUDGET_PRIMITIVES, -5)
+	check_eq(knobs.budget_primitives(), 0, "a negative cap is none")
+	check(warned("sunflower_field/frame_budget/max_primitives"), "and warns")
 	field.plant_height = NAN
 	check_eq(field.plant_height, 2.0, "NaN plant height is rejected")
 	check(warned("SunflowerPlant.height"), "bad height warns")
