@@ -56,6 +56,7 @@ static func levels_of(scene: PackedScene) -> Dictionary:
 		return {"levels": [null, null, null], "generated": false, "triangles": [0, 0, 0], "problems": problems}
 	var pieces: Array[Dictionary] = ScenePieces.of(root, problems)
 	root.free()
+	problems.append_array(ScenePieces.model_space_problems(pieces))
 	var parameters: Dictionary = _instance_parameters(pieces, problems)
 	var variants: bool = pieces.any(func(piece: Dictionary) -> bool: return piece.level >= 0)
 	var levels: Array = []

@@ -43,11 +43,15 @@ static func legend(host: Node) -> Dictionary:
 
 
 ## What the bake of [param scene_path] depends on, as a short code: the scene file's and the addon's
-## baker's and plant material's contents.
+## baker's (its light passes included) and plant material's contents.
 static func _fingerprint(scene_path: String) -> String:
 	var sources: String = ""
 	for path: String in [
-		scene_path, ImpostorBaker.resource_path, ImpostorBaker.PlantMaterial.resource_path, PLANT_SURFACE_PATH
+		scene_path,
+		ImpostorBaker.resource_path,
+		ImpostorBaker.BakeLight.resource_path,
+		ImpostorBaker.BakeLight.PlantMaterial.resource_path,
+		PLANT_SURFACE_PATH
 	]:
 		sources += FileAccess.get_md5(path)
 	return sources.md5_text().left(12)

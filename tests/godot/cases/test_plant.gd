@@ -12,6 +12,7 @@ const ImpostorSetScript: GDScript = preload("res://addons/sunflower_field/impost
 const PlantMaterialScript: GDScript = preload("res://addons/sunflower_field/plant_material.gd")
 const Dressing: GDScript = preload("res://runner/dressing.gd")
 const ImpostorBaker: GDScript = preload("res://addons/sunflower_field/impostor_baker.gd")
+const BakeLight: GDScript = preload("res://addons/sunflower_field/bake_light.gd")
 
 var fields: Array[SunflowerField] = []
 
@@ -712,7 +713,7 @@ func test_a_shader_whose_own_light_the_bake_cannot_capture_is_named() -> void:
 		surface.commit(mesh)
 	var grown: SunflowerPlant = SunflowerPlant.new()
 	grown.set_part_mesh(0, 0, mesh)
-	var problems: PackedStringArray = ImpostorBaker.lighting_not_baked(grown)
+	var problems: PackedStringArray = BakeLight.lighting_not_baked(grown, ImpostorBaker.bake_level(grown))
 	check_eq(problems.size(), 2, "two materials named: %s" % str(problems))
 	check(
 		problems.size() == 2 and problems[0].contains("leaves_lit") and problems[0].contains("light()"), "its light()"

@@ -285,3 +285,36 @@ func test_instance_shader_parameters_are_carried_to_the_field() -> void:
 	)
 	camera.free()
 	field.free()
+
+
+## A shader that reads model-space positions on a node that is moved or scaled in the scene is named
+## (#60 item 3): merged, the node's transform is in the plant's vertices, so the shader sees other
+## positions than in the scene. The same shader on a node at the root's transform, and a shader
+## that reads none, are not named.
+func test_a_shader_reading_model_space_on_a_moved_node_is_named() -> void:
+	var by_height: ShaderMaterial = ShaderMaterial.new()
+	by_height.shader = Shader.new()
+	by_height.shader.code = (
+		"shader_type spatial;\nvarying float h;\nvoid vertex() {\n\th = VERTEX.y;\n}\n"
+		+ "void fragment() {\n\tALBEDO = mix(vec3(0.3, 0.4, 0.5), vec3(1.0, 0.9, 0.2), h);\n}\n"
+	)
+	var plain: ShaderMaterial = ShaderMaterial.new()
+	plain.shader = Shader.new()
+	plain.shader.code = "shader_type spatial;\nvoid fragment() {\n\tALBEDO = vec3(0.2, 0.5, 0.1);\n}\n"
+	var root: Node3D = _root()
+	var trunk: MeshInstance3D = _box_node("Trunk", Vector3(0.2, 2.0, 0.2), Vector3.ZERO)
+	trunk.material_override = by_height  # at the root's transform: the same model space
+	root.add_child(trunk)
+	var leaves: MeshInstance3D = _box_node("Leaves", Vector3(1.0, 1.0, 1.0), Vector3(0.0, 2.5, 0.0))
+	leaves.scale = Vector3.ONE * 0.5
+	leaves.material_override = by_height
+	root.add_child(leaves)
+	var stone: MeshInstance3D = _box_node("Stone", Vector3(0.3, 0.3, 0.3), Vector3(0.5, 0.15, 0.0))
+	stone.material_override = plain
+	root.add_child(stone)
+	var plant: SunflowerPlant = SunflowerPlant.from_scene(Scenes.packed(root))
+	check(plant != null, "a plant")
+	var warnings: String = "\n".join(take_warnings())
+	check(warnings.contains("Leaves: its shader (built in) reads model-space positions"), "the moved node named")
+	check(not warnings.contains("Trunk:"), "not the node at the root's transform")
+	check(not warnings.contains("Stone:"), "not a shader that reads no position")
