@@ -59,7 +59,7 @@ static func register() -> void:
 			var low: float = ClassDB.class_call_static(Native.CLASS, &"get_parameter_limit", _row(setting), false)
 			var high: float = ClassDB.class_call_static(Native.CLASS, &"get_parameter_limit", _row(setting), true)
 			info["hint"] = PROPERTY_HINT_RANGE
-			info["hint_string"] = "%s,%s,%s" % [low, high, 1 if fallback is int else 0.5]
+			info["hint_string"] = "%s,%s,%s" % [low, high, 1 if fallback is int else 0.01]
 		ProjectSettings.add_property_info(info)
 
 
