@@ -54,6 +54,7 @@ var _ceiling: float = INF
 var _ceiling_age: float = 0.0
 
 var _round: Dictionary = {}  # field (instance id) → its near triangles in the round being summed
+var _called_frame: int = -1  # the process frame a field last stepped it in
 
 
 ## The budget every field drawn in the viewport [param viewport] shares.
@@ -66,9 +67,17 @@ static func governor_of(viewport: RID) -> RefCounted:
 ## One frame of a viewport's shared budget (see [method governor_of]), called by each field drawn
 ## there with the triangles its near meshes held [param field_primitives] and the viewport's GPU time
 ## [param frame_gpu_ms] (0: not measured). A field calling again completes the round: the budget
-## steps, with the project's targets, on the round's triangles summed over its fields. True when it
-## stepped and the quality changed.
+## steps, with the project's targets, on the round's triangles summed over its fields. A budget no
+## field stepped in the last frame starts afresh (full quality: fields that come back, or a budget
+## set again, are not held where it left off). True when it stepped and the quality changed.
 func step_shared(delta: float, field: Object, field_primitives: int, frame_gpu_ms: float) -> bool:
+	var frame: int = Engine.get_process_frames()
+	if _called_frame >= 0 and frame - _called_frame > 1:  # no field stepped it last frame: start afresh
+		quality = 1.0
+		smoothed_gpu_ms = 0.0
+		retarget()
+		_round.clear()
+	_called_frame = frame
 	var key: int = field.get_instance_id()
 	var changed: bool = false
 	if _round.has(key):

@@ -241,9 +241,11 @@ func test_the_field_holds_a_gpu_time_target_on_the_software_renderer() -> void:
 		set_project_setting(ProjectKnobs.BUDGET_GPU_MS, full_ms * 0.7)
 		qualities.clear()
 		times.clear()
-		# 20 frames: under the second lane, after 12 frames the quality was still stepping down to the
-		# target once (0.830 → 0.723, at 1 818–2 039 ms for a target of 1 879 ms); alone it settles within 6.
-		for frame: int in 20:
+		# 30 frames: under the second lane, after 12 frames the quality was still stepping down to the
+		# target once (0.830 → 0.723, at 1 818–2 039 ms for a target of 1 879 ms), and after 20 once
+		# near the least quality (0.272–0.309), where the software GPU time hardly follows the quality;
+		# alone it settles within 6.
+		for frame: int in 30:
 			await frames(1)
 			qualities.append(field.get_quality())
 			times.append(field.get_frame_stats()["gpu_ms"])
