@@ -6,8 +6,6 @@ extends RefCounted
 
 const PlantMaterial: GDScript = preload("plant_material.gd")
 const PartMeshes: GDScript = preload("part_meshes.gd")
-## The addon's own files: its shaders are baked with what they light.
-const ADDON_FOLDER: String = "res://addons/sunflower_field/"
 ## The emission pass is rendered again with a range this many times wider while a pixel saturates,
 ## at most this many times in all: 8 to 8 × 8⁴ = 32 768, [member SunflowerPlant.impostor_emission_range]'s
 ## top.
@@ -41,7 +39,7 @@ static func lighting_not_baked(plant: SunflowerPlant, level: int) -> PackedStrin
 			if material == null or material.shader == null or seen.has(material):
 				continue
 			seen[material] = true
-			if material.shader.resource_path.begins_with(ADDON_FOLDER):
+			if material.shader.resource_path.begins_with(PlantMaterial.ADDON_FOLDER):
 				continue  # the plant material: its back-light is baked
 			var own: PackedStringArray = []
 			if light_function.search(material.shader.code):

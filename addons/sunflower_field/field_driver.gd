@@ -287,7 +287,7 @@ func _configure_drawn() -> void:
 ## Gives the field drawn the machine-wide settings the core uses (Project Settings: its threads).
 func _send_project_settings() -> void:
 	if drawn:
-		var threads: String = "ProjectSettings." + ProjectKnobs.WORKER_THREADS
+		var threads: String = ProjectKnobs.row(ProjectKnobs.WORKER_THREADS)
 		FieldSettings.send(drawn.simulation, {threads: ProjectKnobs.worker_threads()})
 
 
@@ -344,11 +344,12 @@ func governor() -> FieldBudget:
 	return FieldBudget.governor_of(_field.get_viewport().get_viewport_rid())
 
 
-## A frame of the viewport's budget (stepped once a round of its fields' frames); the field is drawn
-## anew when its quality moved, or went back to 1 with the budget gone.
+## A frame of the viewport's budget, while Project Settings set one (stepped once a round of its
+## fields' frames; a budget set again starts afresh, FieldBudget.step_shared); the field is drawn anew
+## when its quality moved, or went back to 1 with the budget gone.
 func _step_budgets(delta: float) -> void:
 	var governor: FieldBudget = governor()
-	if governor:
+	if governor and ProjectKnobs.has_frame_budget():
 		governor.step_shared(delta, _field, near_primitives(), _gpu_ms())
 	_requalify()
 

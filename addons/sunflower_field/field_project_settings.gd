@@ -56,10 +56,8 @@ static func register() -> void:
 		ProjectSettings.set_as_basic(setting, true)
 		var info: Dictionary = {"name": setting, "type": typeof(fallback)}
 		if setting in TABLE_SETTINGS:
-			var low: float = ClassDB.class_call_static(Native.CLASS, &"get_parameter_limit", _row(setting), false)
-			var high: float = ClassDB.class_call_static(Native.CLASS, &"get_parameter_limit", _row(setting), true)
 			info["hint"] = PROPERTY_HINT_RANGE
-			info["hint_string"] = "%s,%s,%s" % [low, high, 1 if fallback is int else 0.01]
+			info["hint_string"] = Native.range_hint(row(setting), "0,1,%s" % (1 if fallback is int else 0.01))
 		ProjectSettings.add_property_info(info)
 
 
@@ -67,7 +65,7 @@ static func register() -> void:
 static func default_of(setting: String) -> Variant:
 	if setting == BACKGROUND_BUILD:
 		return true
-	var value: float = Native.default_of(_row(setting)) if Native.is_available() else 0.0
+	var value: float = Native.default_of(row(setting)) if Native.is_available() else 0.0
 	return int(value) if setting in INTEGER_SETTINGS else value
 
 
@@ -107,7 +105,7 @@ static func has_frame_budget() -> bool:
 
 
 ## The table row of [param setting].
-static func _row(setting: String) -> String:
+static func row(setting: String) -> String:
 	return "ProjectSettings." + setting
 
 
@@ -116,11 +114,8 @@ static func _checked(setting: String) -> float:
 	var fallback: float = float(default_of(setting))
 	var value: Variant = ProjectSettings.get_setting(setting, fallback)
 	var asked: float = float(value) if value is float or value is int else NAN
-	if not Native.is_available():
-		return asked
-	var used: float = ClassDB.class_call_static(Native.CLASS, &"sanitize_parameter", _row(setting), asked, fallback)
-	if used != asked and _warned.get(setting, "") != str(value):
+	var judged: Array = Native.judge(row(setting), asked, fallback)
+	if not judged[1].is_empty() and _warned.get(setting, "") != str(value):
 		_warned[setting] = str(value)
-		var why: String = ClassDB.class_call_static(Native.CLASS, &"explain_parameter", _row(setting), asked, used)
-		push_warning("Project Settings %s: %s (%s)" % [setting, why, value])
-	return used
+		push_warning("Project Settings %s: %s (%s)" % [setting, judged[1], value])
+	return judged[0]

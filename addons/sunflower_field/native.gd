@@ -81,13 +81,21 @@ static func mesh_bucket(level: int, part: int) -> int:
 ## [param value] is asked for while [param current] is set; warns, naming the property, when that
 ## differs from [param value]. The core's table is the only place the limits are written.
 static func accept(property: String, value: float, current: float) -> float:
+	var judged: Array = judge(property, value, current)
+	if not judged[1].is_empty():
+		push_warning("%s: %s" % [property, judged[1]])
+	return judged[0]
+
+
+## The core's table on [param value] for [param property] while [param current] is set: the value
+## it takes, and why that differs from [param value] ("" when it does not, or without the library).
+static func judge(property: String, value: float, current: float) -> Array:
 	if not is_available():
-		return value
+		return [value, ""]
 	var used: float = ClassDB.class_call_static(CLASS, &"sanitize_parameter", property, value, current)
-	if used != value:  # also for NaN, which equals nothing
-		var why: String = ClassDB.class_call_static(CLASS, &"explain_parameter", property, value, used)
-		push_warning("%s: %s" % [property, why])
-	return used
+	if used == value:  # (NaN equals nothing: explained)
+		return [used, ""]
+	return [used, ClassDB.class_call_static(CLASS, &"explain_parameter", property, value, used)]
 
 
 ## [method accept] for integer properties.

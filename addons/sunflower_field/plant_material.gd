@@ -61,12 +61,15 @@ const CHANNELS: Array[Vector4] = [
 	Vector4(0.333333, 0.333333, 0.333333, 0.0),
 ]
 
+## The addon's folder: a shader there is the addon's own (the plant material's and its includes).
+const ADDON_FOLDER: String = "res://addons/sunflower_field/"
+
 ## The project setting under which a material's emission energy also depends on emission_intensity.
 const PHYSICAL_LIGHT_UNITS: String = "rendering/lights_and_shadows/use_physical_light_units"
 
 ## The line that gives a shader of your own the fades ([method fading]), and the call that makes its
 ## fragment() keep only its level's share of the pixels in a cross-fade (COLOR.a: the field's share).
-const FADE_INCLUDE_PATH: String = "res://addons/sunflower_field/shaders/screen_door.gdshaderinc"
+const FADE_INCLUDE_PATH: String = ADDON_FOLDER + "shaders/screen_door.gdshaderinc"
 const FADE_INCLUDE: String = '#include "' + FADE_INCLUDE_PATH + '"'
 const FADE_CALL: String = "if (plant_fade_discards(FRAGCOORD.xy, COLOR.a)) { discard; }"
 const SHADER_TYPE_PATTERN: String = "(?m)^\\s*shader_type\\s+(\\w+)\\s*;"
@@ -80,7 +83,7 @@ const FUNCTION_PATTERN: String = "void\\s+%s\\s*\\(\\s*\\)\\s*\\{"
 ## The line that lets a shader of your own bend as a plant drawn whole ([method bending]), the call
 ## that places each vertex first in its [code]vertex()[/code], and what keeps a shader from it: UV2
 ## (which the merged mesh's vertices hold their part in), world-space vertices, a call of its own.
-const BEND_INCLUDE_PATH: String = "res://addons/sunflower_field/shaders/plant_bend.gdshaderinc"
+const BEND_INCLUDE_PATH: String = ADDON_FOLDER + "shaders/plant_bend.gdshaderinc"
 const BEND_INCLUDE: String = '#include "' + BEND_INCLUDE_PATH + '"'
 const BEND_ARGUMENTS: String = "VERTEX, NORMAL, TANGENT, BINORMAL, INSTANCE_CUSTOM, UV2.x, MODEL_MATRIX[3].xz, TIME"
 const BEND_CALL: String = "plant_place(" + BEND_ARGUMENTS + ");"

@@ -9,6 +9,7 @@ extends RefCounted
 ## [member GeometryInstance3D.visibility_range_begin]/[code]_end[/code] (the nearest range level 1).
 ## What it cannot take is a problem naming the node and the reason.
 
+const PlantMaterial: GDScript = preload("plant_material.gd")
 ## The mesh levels a scene's variants fill.
 const LEVELS: int = 3
 
@@ -278,7 +279,7 @@ static func model_space_problems(pieces: Array[Dictionary]) -> PackedStringArray
 			continue
 		for material: Material in piece.materials:
 			var shader: Shader = (material as ShaderMaterial).shader if material is ShaderMaterial else null
-			if shader == null or shader.resource_path.begins_with("res://addons/sunflower_field/"):
+			if shader == null or shader.resource_path.begins_with(PlantMaterial.ADDON_FOLDER):
 				continue
 			if _model_space.search(shader.code) or _reads_vertex_in_vertex(shader.code):
 				named[piece.name] = true
