@@ -71,6 +71,8 @@ func generate(field: SunflowerField, progress: Callable = Callable()) -> Error:
 	var task: int = WorkerThreadPool.add_task(
 		func() -> void: out.append(placement.generate(0, 0, size.x, size.y, 0)), false, "Sunflower Field: placement"
 	)
+	# At least one frame passes, however fast the rules: a press in the same frame always cancels.
+	await Engine.get_main_loop().process_frame
 	while not WorkerThreadPool.is_task_completed(task):
 		await Engine.get_main_loop().process_frame
 	WorkerThreadPool.wait_for_task_completion(task)
