@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Checks the docs: each failure on a line with its file and line. Ends with "docs: N passed, N failed".
 
-    tools/check_docs.py [--godot GODOT] [--gdparse GDPARSE] [--only links|snippets|architecture|api|history]
+    tools/check_docs.py [--godot GODOT] [--gdparse GDPARSE] [--only links|snippets|architecture|api|face|history]
 
 - links: every relative link and image in README.md, CONTRIBUTING.md, CHANGELOG.md, ARCHITECTURE.md
   and docs/ resolves, to a file and, for a #fragment, to a heading or anchor in it;
@@ -10,6 +10,8 @@
 - architecture: ARCHITECTURE.md names every script and shader of the addon and every source file of
   the extension, and no such file that does not exist;
 - api: docs/api/ is what tools/make_api_docs.py makes from the in-editor docs now;
+- face: addons/sunflower_field/native_field.gd is what tools/make_native_face.py makes from the
+  native classes' docs now;
 - history: no development history (the word session or turn and a number) outside CHANGELOG.md and
   commit messages.
 """
@@ -139,6 +141,15 @@ def check_api(godot):
         fail("docs/api", (result.stdout + result.stderr).strip())
 
 
+def check_face():
+    result = subprocess.run([sys.executable, str(REPO / "tools" / "make_native_face.py"), "--check"],
+                            capture_output=True, text=True)
+    if result.returncode == 0:
+        ok()
+    else:
+        fail("addons/sunflower_field/native_field.gd", (result.stdout + result.stderr).strip())
+
+
 def check_history():
     listed = subprocess.run(["git", "ls-files"], cwd=REPO, capture_output=True, text=True).stdout.split()
     pattern = re.compile(r"\b(session|turn) [0-9]+", re.I)
@@ -163,13 +174,14 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--godot", default="")
     parser.add_argument("--gdparse", default=str(REPO / ".cache" / "venv" / "bin" / "gdparse"))
-    parser.add_argument("--only", choices=["links", "snippets", "architecture", "api", "history"])
+    parser.add_argument("--only", choices=["links", "snippets", "architecture", "api", "face", "history"])
     args = parser.parse_args()
     checks = {
         "links": check_links,
         "snippets": lambda: check_snippets(args.gdparse),
         "architecture": check_architecture,
         "api": lambda: check_api(args.godot),
+        "face": check_face,
         "history": check_history,
     }
     for name, check in checks.items():

@@ -22,7 +22,8 @@ REPO = pathlib.Path(__file__).resolve().parent.parent
 API = REPO / "docs" / "api"
 # The classes a user meets, in the order the index lists them.
 CLASSES = ["SunflowerField", "SunflowerFieldPlay", "SunflowerPlant", "SunflowerWind", "SunflowerFieldMap", "SunflowerPlacementRules",
-           "SunflowerPlacementLayer", "SunflowerSimulation", "SunflowerPlacement", "SunflowerMap"]
+           "SunflowerPlacementLayer", "SunflowerSimulation", "SunflowerDrawing", "SunflowerChanges", "SunflowerParameters",
+           "SunflowerPlacement", "SunflowerMap"]
 ENGINE_DOCS = "https://docs.godotengine.org/en/stable/classes/class_{}.html"
 
 

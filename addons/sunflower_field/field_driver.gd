@@ -174,6 +174,7 @@ func show(nodes: FieldNodes, scenes: Dictionary = {}, cell_size: float = 0.0) ->
 	play._carry(old, drawn.simulation)
 	FieldObserver.push(_field, _field.observer, _field.frustum_culling, drawn.simulation)
 	drawn.simulation.update(0.0)
+	drawn.simulation.draw()
 	drawn.show_filled_buckets()
 	drawn.update_masks()
 	drawn.update_hidden_cells()
@@ -202,6 +203,7 @@ func update_field(delta: float) -> void:
 	if not Engine.is_editor_hint():
 		play._step(native_simulation, delta, interaction.pusher_nodes, _field.trample_share)
 	native_simulation.update(delta)
+	native_simulation.draw()
 	drawn.show_filled_buckets()
 	drawn.update_masks()
 	drawn.update_hidden_cells()

@@ -6,6 +6,11 @@ extends RefCounted
 ## library fits the platform; there, exactly one error says so and how to build one.
 
 const CLASS: StringName = &"SunflowerSimulation"
+## The native classes attached to a simulation: what it draws, and play's changes to its plants.
+const DRAWING_CLASS: StringName = &"SunflowerDrawing"
+const CHANGES_CLASS: StringName = &"SunflowerChanges"
+## The native class of the core's parameter table (static methods only).
+const PARAMETERS_CLASS: StringName = &"SunflowerParameters"
 ## The native class of placement by rules.
 const PLACEMENT_CLASS: StringName = &"SunflowerPlacement"
 ## The native class of a map read and edited on its own.
@@ -31,6 +36,14 @@ static func create_simulation() -> RefCounted:
 		report_missing()
 		return null
 	return ClassDB.instantiate(CLASS) as RefCounted
+
+
+## A new native object of [param native_class] (a class attached to a simulation, [constant
+## DRAWING_CLASS] or [constant CHANGES_CLASS]) attached to [param simulation].
+static func attach(native_class: StringName, simulation: RefCounted) -> RefCounted:
+	var attached: RefCounted = ClassDB.instantiate(native_class) as RefCounted
+	attached.attach(simulation)
+	return attached
 
 
 ## A new native placement (rules to cells), or null (with the one missing-library error).
@@ -66,15 +79,21 @@ static func missing_message() -> String:
 	)
 
 
-## An integer constant of the native class ([code]BUCKET_COUNT[/code], [code]PART_COUNT[/code]…);
-## 0 without the library (when nothing is drawn anyway).
+## An integer constant of the native classes ([code]BUCKET_COUNT[/code], [code]MAX_SPECIES[/code]…,
+## each defined by one of them); 0 without the library (when nothing is drawn anyway).
 static func constant(name: StringName) -> int:
-	return ClassDB.class_get_integer_constant(CLASS, name) if is_available() else 0
+	if not is_available():
+		return 0
+	for native_class: StringName in [CLASS, DRAWING_CLASS, PARAMETERS_CLASS]:
+		if ClassDB.class_has_integer_constant(native_class, name):
+			return ClassDB.class_get_integer_constant(native_class, name)
+	push_error("Sunflower Field: no native class has the constant %s" % name)
+	return 0
 
 
 ## The bucket of a mesh level's part in the native buckets ([code]level × parts + part[/code] there).
 static func mesh_bucket(level: int, part: int) -> int:
-	return ClassDB.class_call_static(CLASS, &"mesh_bucket", level, part) if is_available() else -1
+	return ClassDB.class_call_static(DRAWING_CLASS, &"mesh_bucket", level, part) if is_available() else -1
 
 
 ## The value the core accepts for [param property] (e.g. [code]"SunflowerWind.power"[/code]) when
@@ -92,10 +111,10 @@ static func accept(property: String, value: float, current: float) -> float:
 static func judge(property: String, value: float, current: float) -> Array:
 	if not is_available():
 		return [value, ""]
-	var used: float = ClassDB.class_call_static(CLASS, &"sanitize_parameter", property, value, current)
+	var used: float = ClassDB.class_call_static(PARAMETERS_CLASS, &"sanitize_parameter", property, value, current)
 	if used == value:  # (NaN equals nothing: explained)
 		return [used, ""]
-	return [used, ClassDB.class_call_static(CLASS, &"explain_parameter", property, value, used)]
+	return [used, ClassDB.class_call_static(PARAMETERS_CLASS, &"explain_parameter", property, value, used)]
 
 
 ## [method accept] for integer properties.
@@ -105,7 +124,7 @@ static func accept_int(property: String, value: int, current: int) -> int:
 
 ## The core's default for [param property] (tests compare the inspector's defaults with it).
 static func default_of(property: String) -> float:
-	return ClassDB.class_call_static(CLASS, &"get_parameter_default", property)
+	return ClassDB.class_call_static(PARAMETERS_CLASS, &"get_parameter_default", property)
 
 
 ## [param hint_string], a range hint of [param property] ([code]"min,max,step[,flags]"[/code] of its
@@ -123,7 +142,7 @@ static func range_hint(property: String, hint_string: String) -> String:
 	var degrees: bool = flags.has("radians_as_degrees") or flags.has("radians")
 	var unbounded: float = 1e30  # the table's largest finite float stands for "no limit"
 	for side: int in 2:
-		var limit: float = ClassDB.class_call_static(CLASS, &"get_parameter_limit", property, side == 1)
+		var limit: float = ClassDB.class_call_static(PARAMETERS_CLASS, &"get_parameter_limit", property, side == 1)
 		var flag: String = "or_less" if side == 0 else "or_greater"
 		var shown: float = rad_to_deg(limit) if degrees else limit
 		if side == 1 and flags.has(flag) and float(parts[1]) < shown:
@@ -152,12 +171,12 @@ static func parameter_row(property: String) -> int:
 ## What a change of [param property] costs by the core's table: 0 nothing more than the value, 1 a
 ## rebuild of the field (the layout depends on it); -1 for a property the table does not have.
 static func parameter_cost(property: String) -> int:
-	return ClassDB.class_call_static(CLASS, &"get_parameter_cost", property) if is_available() else -1
+	return ClassDB.class_call_static(PARAMETERS_CLASS, &"get_parameter_cost", property) if is_available() else -1
 
 
 ## Every property the core's table knows, as [code]"Class.property"[/code].
 static func parameter_names() -> PackedStringArray:
-	return String(ClassDB.class_call_static(CLASS, &"get_parameter_names")).split(",")
+	return String(ClassDB.class_call_static(PARAMETERS_CLASS, &"get_parameter_names")).split(",")
 
 
 ## Parses a map's [param text] without laying it out: an empty string when it is valid, else
@@ -180,12 +199,16 @@ static func map_figures(text: PackedByteArray, max_plants: int) -> PackedInt32Ar
 
 ## What is wrong with these LOD switch distances, or an empty string.
 static func check_lod_distances(distances: PackedFloat32Array) -> String:
-	return ClassDB.class_call_static(CLASS, &"check_lod_distances", distances) if is_available() else ""
+	return ClassDB.class_call_static(PARAMETERS_CLASS, &"check_lod_distances", distances) if is_available() else ""
 
 
 ## The wind direction the core uses for [param direction] (a zero vector means +x).
 static func sanitize_wind_direction(direction: Vector2) -> Vector2:
-	return ClassDB.class_call_static(CLASS, &"sanitize_wind_direction", direction) if is_available() else direction
+	return (
+		ClassDB.class_call_static(PARAMETERS_CLASS, &"sanitize_wind_direction", direction)
+		if is_available()
+		else direction
+	)
 
 
 ## Transforms from the native instance layout: 12 floats each, the 3 × 4 matrix [basis | origin]

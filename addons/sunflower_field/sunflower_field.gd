@@ -632,7 +632,7 @@ func get_quality() -> float:
 
 
 ## What the field drawn costs now, for a HUD or a benchmark: [code]update_ms[/code] (the native
-## update of the last frame), [code]worker_threads[/code] (the threads it ran on: the project
+## update and draw of the last frame), [code]worker_threads[/code] (the threads it ran on: the project
 ## setting [code]sunflower_field/performance/worker_threads[/code] resolved), [code]memory_bytes[/code]
 ## (CPU memory the native field holds),
 ## [code]near_meshes[/code] (plants written at each mesh level last frame, after culling: three
@@ -660,7 +660,7 @@ func get_frame_stats() -> Dictionary:
 			near[level] += _driver.near_count(species, level)
 	var governor: RefCounted = _driver.governor()
 	return {
-		"update_ms": simulation.get_last_update_usec() / 1000.0,
+		"update_ms": (simulation.get_last_update_usec() + simulation.get_last_draw_usec()) / 1000.0,
 		"worker_threads": simulation.get_worker_threads(),
 		"memory_bytes": simulation.get_memory_bytes(),
 		"near_meshes": near,
@@ -743,7 +743,7 @@ func get_plant_at(point: Vector3, max_distance: float = 0.5) -> int:
 	var nearest: int = -1
 	var best: float = INF
 	var simulation: NativeField = _driver.simulation()
-	for plant: int in simulation.get_plants_near(point, max_distance) if simulation else PackedInt32Array():
+	for plant: int in simulation.get_plants_near(point, max_distance, false) if simulation else PackedInt32Array():
 		var root: Vector3 = simulation.get_plant_position(plant)
 		var distance: float = Vector2(root.x, root.z).distance_squared_to(Vector2(point.x, point.z))
 		if distance < best:

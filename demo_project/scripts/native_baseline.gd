@@ -32,7 +32,7 @@ func build(
 ) -> int:
 	var simulation: SunflowerSimulation = SunflowerSimulation.new()
 	# The layout's settings go in before the map (by their rows of the core's table).
-	var rows: PackedStringArray = SunflowerSimulation.get_parameter_names().split(",")
+	var rows: PackedStringArray = SunflowerParameters.get_parameter_names().split(",")
 	var layout: PackedInt32Array = [rows.find("SunflowerField.cell_size"), rows.find("SunflowerField.chunk_size")]
 	simulation.set_settings(0, layout, PackedFloat32Array([field.cell_size, CHUNK_SIZE]))
 	simulation.set_layout_seed(field.seed, field.independent_jitter)
@@ -48,7 +48,7 @@ func build(
 	var far_mesh: QuadMesh = _front_view_quad(plant, hashed) if far_quads else null
 	var far_from: float = field.lod_distances[2] if far_quads else cut_off
 	# Parts are one model unit each, stacked three high.
-	var scale_factor: float = field.plant_height / SunflowerSimulation.PART_COUNT
+	var scale_factor: float = field.plant_height / SunflowerDrawing.PART_COUNT
 	var chunks: Dictionary = {}
 	for i: int in simulation.get_plant_count():
 		var position: Vector3 = simulation.get_plant_position(i)

@@ -1,8 +1,10 @@
-// The library's entry point: loads the binding, registers SunflowerSimulation, SunflowerPlacement,
-// SunflowerMap and their docs.
+// The library's entry point: loads the binding, registers the library's classes and their docs.
 #include "binding/class_binder.h"
 #include "binding/rendering_server.h"
+#include "sunflower_changes.h"
+#include "sunflower_drawing.h"
 #include "sunflower_map.h"
+#include "sunflower_parameters.h"
 #include "sunflower_placement.h"
 #include "sunflower_simulation.h"
 
@@ -17,9 +19,12 @@ bool registered = false;
 void initialize(void *, GDExtensionInitializationLevel p_level) {
 	if (p_level == GDEXTENSION_INITIALIZATION_SCENE) {
 		// The RenderingServer singleton is not published yet at this level: it is looked up on first use.
-		gdx::register_class<SunflowerSimulation>("SunflowerSimulation", "RefCounted");
-		gdx::register_class<SunflowerPlacement>("SunflowerPlacement", "RefCounted");
-		gdx::register_class<SunflowerMap>("SunflowerMap", "RefCounted");
+		gdx::register_class<SunflowerSimulation>("RefCounted");
+		gdx::register_class<SunflowerDrawing>("RefCounted");
+		gdx::register_class<SunflowerChanges>("RefCounted");
+		gdx::register_class<SunflowerParameters>("RefCounted");
+		gdx::register_class<SunflowerPlacement>("RefCounted");
+		gdx::register_class<SunflowerMap>("RefCounted");
 		registered = true;
 	} else if (p_level == GDEXTENSION_INITIALIZATION_EDITOR && registered) {
 		for (const char *xml : sunflower_doc::XML) {

@@ -2,7 +2,7 @@
 #include "sunflower_map.h"
 
 #include "binding/class_binder.h"
-#include "binding/convert.h"
+#include "convert.h"
 #include "binding/error_macros.h"
 
 #include <vector>
@@ -10,7 +10,6 @@
 using namespace sunflower;
 
 void SunflowerMap::bind_methods() {
-	const char *CLASS = "SunflowerMap";
 	gdx::bind_method(CLASS, "load", &SunflowerMap::load, { "text", "source", "legend", "plant_symbols", "max_plants" });
 	gdx::bind_method(CLASS, "check", &SunflowerMap::check, { "text", "source", "legend", "plant_symbols", "max_plants", "any_symbol" });
 	gdx::bind_method(CLASS, "get_figures", &SunflowerMap::get_figures, { "text", "max_plants" });

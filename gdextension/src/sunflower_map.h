@@ -7,6 +7,7 @@
 
 class SunflowerMap {
 public:
+	static constexpr const char *CLASS = "SunflowerMap";
 	static void bind_methods();
 
 	// Reads a map (see fields/FORMAT.md): the error, or empty. On an error the map read before stays.

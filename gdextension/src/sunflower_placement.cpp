@@ -8,8 +8,6 @@
 
 namespace {
 
-constexpr const char *CLASS = "SunflowerPlacement";
-
 template <class T, class P>
 std::vector<T> to_vector(const P &p_array) {
 	const T *data = p_array.data();

@@ -9,6 +9,7 @@
 
 class SunflowerPlacement {
 public:
+	static constexpr const char *CLASS = "SunflowerPlacement";
 	static void bind_methods();
 
 	// The names of a layer row's numbers, in order, separated by commas.

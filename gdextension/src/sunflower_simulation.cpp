@@ -3,7 +3,7 @@
 #include "sunflower_simulation.h"
 
 #include "binding/class_binder.h"
-#include "binding/convert.h"
+#include "convert.h"
 #include "binding/error_macros.h"
 #include "binding/rendering_server.h"
 
@@ -15,14 +15,13 @@
 using namespace sunflower;
 
 void SunflowerSimulation::bind_methods() {
-	const char *CLASS = "SunflowerSimulation";
 	gdx::bind_method(CLASS, "load_map", &SunflowerSimulation::load_map, { "text", "source", "legend", "plant_symbols", "max_plants" });
 	gdx::bind_method(CLASS, "get_species_count", &SunflowerSimulation::get_species_count);
 	gdx::bind_method(CLASS, "get_map_columns", &SunflowerSimulation::get_map_columns);
 	gdx::bind_method(CLASS, "get_map_rows", &SunflowerSimulation::get_map_rows);
 	gdx::bind_method(CLASS, "get_map_objects", &SunflowerSimulation::get_map_objects);
 	gdx::bind_method(CLASS, "set_settings", &SunflowerSimulation::set_settings, { "species", "rows", "values" });
-	gdx::bind_method(CLASS, "set_layout_seed", &SunflowerSimulation::set_layout_seed, { "seed", "independent_jitter" });
+	gdx::bind_method(CLASS, "set_layout_seed", &SunflowerSimulation::set_layout_seed, { "layout_seed", "independent_jitter" });
 	gdx::bind_method(CLASS, "set_ground_flat", &SunflowerSimulation::set_ground_flat);
 	gdx::bind_method(CLASS, "set_ground_height_map", &SunflowerSimulation::set_ground_height_map,
 			{ "rgba", "width", "depth", "origin", "size", "height_min", "height_max", "tilt" });
@@ -40,41 +39,7 @@ void SunflowerSimulation::bind_methods() {
 	gdx::bind_method(CLASS, "set_pushers", &SunflowerSimulation::set_pushers, { "pushers" });
 	gdx::bind_method(CLASS, "get_pushed_count", &SunflowerSimulation::get_pushed_count);
 	gdx::bind_method(CLASS, "get_plants_near", &SunflowerSimulation::get_plants_near, { "position", "radius", "standing_only" });
-	gdx::bind_method(CLASS, "set_bucket_multimesh", &SunflowerSimulation::set_bucket_multimesh, { "bucket", "multimesh" });
-	gdx::bind_method(CLASS, "set_bucket_shadow_multimesh", &SunflowerSimulation::set_bucket_shadow_multimesh, { "bucket", "multimesh" });
-	gdx::bind_method(CLASS, "set_tile_multimesh", &SunflowerSimulation::set_tile_multimesh, { "tile", "multimesh" });
-	gdx::bind_method(CLASS, "release_multimeshes", &SunflowerSimulation::release_multimeshes);
-	gdx::bind_method(CLASS, "adopt_tile_multimesh", &SunflowerSimulation::adopt_tile_multimesh, { "tile", "multimesh" });
-	gdx::bind_method(CLASS, "get_tile_count", &SunflowerSimulation::get_tile_count);
-	gdx::bind_method(CLASS, "get_tile_ids", &SunflowerSimulation::get_tile_ids);
-	gdx::bind_method(CLASS, "get_tile_places", &SunflowerSimulation::get_tile_places);
-	gdx::bind_method(CLASS, "get_tile_merge_rule", &SunflowerSimulation::get_tile_merge_rule);
-	gdx::bind_method(CLASS, "choose_tile_level", &SunflowerSimulation::choose_tile_level, { "distance" });
-	gdx::bind_method(CLASS, "get_active_mask", &SunflowerSimulation::get_active_mask, { "species" });
-	gdx::bind_method(CLASS, "get_mask_version", &SunflowerSimulation::get_mask_version);
-	gdx::bind_method(CLASS, "get_tiles_drawn", &SunflowerSimulation::get_tiles_drawn);
-	gdx::bind_method(CLASS, "get_chunk_grid", &SunflowerSimulation::get_chunk_grid);
-	gdx::bind_method(CLASS, "compute_chunk_signatures", &SunflowerSimulation::compute_chunk_signatures);
-	gdx::bind_method(CLASS, "get_chunk_count", &SunflowerSimulation::get_chunk_count);
-	gdx::bind_method(CLASS, "get_chunk_aabb", &SunflowerSimulation::get_chunk_aabb, { "chunk" });
 	gdx::bind_method(CLASS, "update", &SunflowerSimulation::update, { "delta" });
-	gdx::bind_method(CLASS, "change_cells", &SunflowerSimulation::change_cells, { "cells", "action", "now" });
-	gdx::bind_method(CLASS, "put_cells", &SunflowerSimulation::put_cells, { "cells", "species" });
-	gdx::bind_method(CLASS, "get_unplaced_cells", &SunflowerSimulation::get_unplaced_cells);
-	gdx::bind_method(CLASS, "get_cell_roots", &SunflowerSimulation::get_cell_roots, { "cells" });
-	gdx::bind_method(CLASS, "set_cell_heights", &SunflowerSimulation::set_cell_heights, { "cells", "heights" });
-	gdx::bind_method(CLASS, "advance_changes", &SunflowerSimulation::advance_changes, { "now" });
-	gdx::bind_method(CLASS, "get_cell_change", &SunflowerSimulation::get_cell_change, { "cell" });
-	gdx::bind_method(CLASS, "get_change_count", &SunflowerSimulation::get_change_count);
-	gdx::bind_method(CLASS, "get_cells_in_circle", &SunflowerSimulation::get_cells_in_circle, { "center", "radius" });
-	gdx::bind_method(CLASS, "get_cells_in_rect", &SunflowerSimulation::get_cells_in_rect, { "min", "max" });
-	gdx::bind_method(CLASS, "trample", &SunflowerSimulation::trample, { "share", "now" });
-	gdx::bind_method(CLASS, "get_plant_cell", &SunflowerSimulation::get_plant_cell, { "plant" });
-	gdx::bind_method(CLASS, "get_hidden_cells", &SunflowerSimulation::get_hidden_cells);
-	gdx::bind_method(CLASS, "get_hidden_version", &SunflowerSimulation::get_hidden_version);
-	gdx::bind_method(CLASS, "save_changes", &SunflowerSimulation::save_changes, { "now" });
-	gdx::bind_method(CLASS, "load_changes", &SunflowerSimulation::load_changes, { "bytes" });
-	gdx::bind_method(CLASS, "get_loaded_clock", &SunflowerSimulation::get_loaded_clock);
 	gdx::bind_method(CLASS, "get_plant_count", &SunflowerSimulation::get_plant_count);
 	gdx::bind_method(CLASS, "get_lod_counts", &SunflowerSimulation::get_lod_counts);
 	gdx::bind_method(CLASS, "get_lod_counts_by_species", &SunflowerSimulation::get_lod_counts_by_species);
@@ -83,45 +48,15 @@ void SunflowerSimulation::bind_methods() {
 	gdx::bind_method(CLASS, "get_plant_lod", &SunflowerSimulation::get_plant_lod, { "plant" });
 	gdx::bind_method(CLASS, "get_plant_tile_level", &SunflowerSimulation::get_plant_tile_level, { "plant" });
 	gdx::bind_method(CLASS, "get_plant_parts", &SunflowerSimulation::get_plant_parts, { "plant" });
-	gdx::bind_method(CLASS, "get_bucket_instance_count", &SunflowerSimulation::get_bucket_instance_count, { "bucket" });
-	gdx::bind_method(CLASS, "get_filled_buckets", &SunflowerSimulation::get_filled_buckets);
 	gdx::bind_method(CLASS, "get_last_update_usec", &SunflowerSimulation::get_last_update_usec);
 	gdx::bind_method(CLASS, "get_worker_threads", &SunflowerSimulation::get_worker_threads);
 	gdx::bind_method(CLASS, "get_memory_bytes", &SunflowerSimulation::get_memory_bytes);
 
-	gdx::bind_method(CLASS, "sanitize_parameter", &SunflowerSimulation::sanitize_parameter, { "name", "value", "current" });
-	gdx::bind_method(CLASS, "explain_parameter", &SunflowerSimulation::explain_parameter, { "name", "value", "used" });
-	gdx::bind_method(CLASS, "get_parameter_default", &SunflowerSimulation::get_parameter_default, { "name" });
-	gdx::bind_method(CLASS, "get_parameter_limit", &SunflowerSimulation::get_parameter_limit, { "name", "upper" });
-	gdx::bind_method(CLASS, "get_parameter_cost", &SunflowerSimulation::get_parameter_cost, { "name" });
-	gdx::bind_method(CLASS, "get_parameter_components", &SunflowerSimulation::get_parameter_components, { "name" });
-	gdx::bind_method(CLASS, "get_parameter_names", &SunflowerSimulation::get_parameter_names);
-	gdx::bind_method(CLASS, "check_lod_distances", &SunflowerSimulation::check_lod_distances, { "distances" });
-	gdx::bind_method(CLASS, "sanitize_wind_direction", &SunflowerSimulation::sanitize_wind_direction, { "direction" });
-	gdx::bind_method(CLASS, "mesh_bucket", &SunflowerSimulation::mesh_bucket, { "level", "part" });
-
-	gdx::bind_integer_constant(CLASS, "", "PART_COUNT", PART_COUNT);
-	gdx::bind_integer_constant(CLASS, "", "MESH_LEVEL_COUNT", LOD_MESH_COUNT);
-	gdx::bind_integer_constant(CLASS, "", "LOD_COUNT", LOD_COUNT);
-	gdx::bind_integer_constant(CLASS, "", "BUCKET_IMPOSTOR", BUCKET_IMPOSTOR);
-	gdx::bind_integer_constant(CLASS, "", "BUCKET_COUNT", BUCKET_COUNT);
 	gdx::bind_integer_constant(CLASS, "", "MAX_SPECIES", FieldMap::MAX_SPECIES);
-	gdx::bind_integer_constant(CLASS, "", "TILE_IDS", TILE_IDS);
-	gdx::bind_integer_constant(CLASS, "", "TILE_PLACES", TILE_PLACES);
-	gdx::bind_integer_constant(CLASS, "", "FLOATS_PER_INSTANCE", FLOATS_PER_INSTANCE);
-	gdx::bind_integer_constant(CLASS, "", "WHOLE_FLOATS_PER_INSTANCE", WHOLE_FLOATS_PER_INSTANCE);
-	gdx::bind_integer_constant(CLASS, "", "FAR_FLOATS_PER_INSTANCE", FAR_FLOATS_PER_INSTANCE);
-	gdx::bind_integer_constant(CLASS, "", "FAR_SIGNED_STEPS", far_steps::SIGNED);
-	gdx::bind_integer_constant(CLASS, "", "FAR_BRIGHTNESS_STEPS", far_steps::BRIGHTNESS);
-	gdx::bind_integer_constant(CLASS, "", "FAR_STEP_BITS", far_steps::STEP_BITS);
-	gdx::bind_integer_constant(CLASS, "", "FAR_CELL_BITS", far_steps::CELL_BITS);
-	gdx::bind_integer_constant(CLASS, "", "PARALLEL_MIN_PLANTS", NearField::PARALLEL_MIN_PLANTS);
-	gdx::bind_integer_constant(CLASS, "", "MAX_AUTO_THREADS", param::MAX_AUTO_THREADS);
-	gdx::bind_integer_constant(CLASS, "", "MAX_THREADS", param::MAX_THREADS);
 }
 
 int64_t SunflowerSimulation::set_settings(int64_t p_species, const gdx::PackedInt32Array &p_rows, const gdx::PackedFloat32Array &p_values) {
-	SF_FAIL_COND_V_MSG(!_is_species(p_species), -1, "set_settings: no plant type " + std::to_string(p_species));
+	SF_FAIL_COND_V_MSG(!is_species(p_species), -1, "set_settings: no plant type " + std::to_string(p_species));
 	const int32_t *rows = p_rows.data();
 	size_t needed = 0;
 	for (int64_t i = 0; i < p_rows.size(); ++i) {
@@ -141,7 +76,7 @@ int64_t SunflowerSimulation::set_settings(int64_t p_species, const gdx::PackedIn
 		values += spec.components;
 	}
 	if (!(_sim.plants().get_layout_params() == layout)) {
-		release_multimeshes(); // the chunks changed (a field not laid out yet)
+		++_chunks_version; // the chunks changed (a field not laid out yet)
 	}
 	return int64_t(cost);
 }
@@ -151,13 +86,13 @@ void SunflowerSimulation::set_layout_seed(int64_t p_seed, bool p_independent_jit
 	params.seed = static_cast<uint64_t>(p_seed);
 	params.independent_jitter = p_independent_jitter;
 	if (_sim.set_layout_params(params)) {
-		release_multimeshes(); // the chunks changed
+		++_chunks_version; // the chunks changed
 	}
 }
 
 void SunflowerSimulation::set_ground_flat() {
 	_sim.set_ground(Ground{});
-	release_multimeshes(); // the chunks changed
+	++_chunks_version; // the chunks changed
 }
 
 gdx::String SunflowerSimulation::set_ground_height_map(const gdx::PackedFloat32Array &p_rgba, int64_t p_width, int64_t p_depth,
@@ -170,7 +105,7 @@ gdx::String SunflowerSimulation::set_ground_height_map(const gdx::PackedFloat32A
 		return gdx::String(problem); // the field keeps its ground
 	}
 	_sim.set_ground(std::move(ground));
-	release_multimeshes();
+	++_chunks_version; // the chunks changed
 	return gdx::String();
 }
 
@@ -188,7 +123,7 @@ gdx::String SunflowerSimulation::set_ground_heights(const gdx::PackedFloat32Arra
 	ground.heights.assign(p_heights.data(), p_heights.data() + p_heights.size());
 	ground.normals.assign(p_normals.data(), p_normals.data() + p_normals.size());
 	_sim.set_ground(std::move(ground));
-	release_multimeshes();
+	++_chunks_version; // the chunks changed
 	return gdx::String();
 }
 
@@ -232,14 +167,14 @@ int64_t SunflowerSimulation::get_species_count() const {
 	return _sim.plants().get_species_count();
 }
 
-bool SunflowerSimulation::_is_species(int64_t p_species) const {
+bool SunflowerSimulation::is_species(int64_t p_species) {
 	SF_FAIL_COND_V_MSG(p_species < 0 || p_species >= FieldMap::MAX_SPECIES, false,
 			"species " + std::to_string(p_species) + " is out of range (0 to " + std::to_string(FieldMap::MAX_SPECIES - 1) + ")");
 	return true;
 }
 
 void SunflowerSimulation::set_plant_lod_scale(int64_t p_species, double p_scale) {
-	if (!_is_species(p_species)) {
+	if (!is_species(p_species)) {
 		return;
 	}
 	PlantShape shape = _sim.plants().get_shape(uint32_t(p_species));
@@ -248,7 +183,7 @@ void SunflowerSimulation::set_plant_lod_scale(int64_t p_species, double p_scale)
 }
 
 void SunflowerSimulation::set_plant_whole(int64_t p_species, bool p_whole) {
-	if (!_is_species(p_species)) {
+	if (!is_species(p_species)) {
 		return;
 	}
 	PlantShape shape = _sim.plants().get_shape(uint32_t(p_species));
@@ -271,7 +206,7 @@ void SunflowerSimulation::set_quality(double p_quality) {
 }
 
 double SunflowerSimulation::get_finer_distance(int64_t p_species, int64_t p_switch) const {
-	return _is_species(p_species) && p_switch >= 0 ? double(_sim.near().get_finer_distance(uint32_t(p_species), uint32_t(p_switch))) : -1.0;
+	return is_species(p_species) && p_switch >= 0 ? double(_sim.near().get_finer_distance(uint32_t(p_species), uint32_t(p_switch))) : -1.0;
 }
 
 void SunflowerSimulation::set_pushers(const gdx::PackedFloat32Array &p_pushers) {
@@ -281,3 +216,8 @@ void SunflowerSimulation::set_pushers(const gdx::PackedFloat32Array &p_pushers) 
 	_sim.near().get_pushes().set_pushers(_pushers.data(), _pushers.size());
 }
 
+void SunflowerSimulation::update(double p_delta) {
+	const auto start = std::chrono::steady_clock::now();
+	_sim.update(static_cast<float>(p_delta));
+	_last_update_usec = std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::steady_clock::now() - start).count();
+}

@@ -3,7 +3,7 @@
 #include "sunflower_simulation.h"
 
 #include "binding/class_binder.h"
-#include "binding/convert.h"
+#include "convert.h"
 #include "binding/error_macros.h"
 #include "binding/rendering_server.h"
 
@@ -22,7 +22,7 @@ gdx::String SunflowerSimulation::load_map(const gdx::PackedByteArray &p_text, co
 				p_source.utf8(), limits, error)) {
 		return gdx::String(error.to_string());
 	}
-	release_multimeshes(); // the old field's chunks no longer exist
+	++_chunks_version; // the old field's chunks no longer exist
 	return gdx::String();
 }
 

@@ -3,7 +3,7 @@
 #include "sunflower_simulation.h"
 
 #include "binding/class_binder.h"
-#include "binding/convert.h"
+#include "convert.h"
 #include "binding/error_macros.h"
 #include "binding/rendering_server.h"
 
@@ -82,20 +82,6 @@ gdx::PackedFloat32Array SunflowerSimulation::get_plant_parts(int64_t p_plant) co
 	return out;
 }
 
-int64_t SunflowerSimulation::get_bucket_instance_count(int64_t p_bucket) const {
-	return p_bucket >= 0 && p_bucket < int64_t(_sim.near().get_bucket_count()) ? _sim.near().get_bucket(uint32_t(p_bucket)).get_count() : 0;
-}
-
-gdx::PackedByteArray SunflowerSimulation::get_filled_buckets() const {
-	gdx::PackedByteArray out;
-	out.resize(_sim.near().get_bucket_count());
-	uint8_t *filled = out.data();
-	for (uint32_t b = 0; b < _sim.near().get_bucket_count(); ++b) {
-		filled[b] = _sim.near().get_bucket(b).get_count() > 0 ? 1 : 0;
-	}
-	return out;
-}
-
 int64_t SunflowerSimulation::get_last_update_usec() const {
 	return _last_update_usec;
 }
@@ -119,60 +105,3 @@ gdx::PackedInt32Array SunflowerSimulation::get_plants_near(gdx::Vector3 p_positi
 int64_t SunflowerSimulation::get_memory_bytes() const {
 	return static_cast<int64_t>(_sim.get_memory_bytes());
 }
-
-double SunflowerSimulation::sanitize_parameter(const gdx::String &p_name, double p_value, double p_current) {
-	const ParameterSpec *spec = find_parameter(p_name.utf8());
-	SF_FAIL_COND_V_MSG(spec == nullptr, p_value, "no parameter is called '" + p_name.utf8() + "'");
-	return sanitize(*spec, p_value, p_current);
-}
-
-gdx::String SunflowerSimulation::explain_parameter(const gdx::String &p_name, double p_value, double p_used) {
-	const ParameterSpec *spec = find_parameter(p_name.utf8());
-	SF_FAIL_COND_V_MSG(spec == nullptr, gdx::String(), "no parameter is called '" + p_name.utf8() + "'");
-	return gdx::String(explain_sanitized(*spec, p_value, p_used));
-}
-
-double SunflowerSimulation::get_parameter_default(const gdx::String &p_name) {
-	const ParameterSpec *spec = find_parameter(p_name.utf8());
-	SF_FAIL_COND_V_MSG(spec == nullptr, 0.0, "no parameter is called '" + p_name.utf8() + "'");
-	return spec->default_value;
-}
-
-double SunflowerSimulation::get_parameter_limit(const gdx::String &p_name, bool p_upper) {
-	const ParameterSpec *spec = find_parameter(p_name.utf8());
-	SF_FAIL_COND_V_MSG(spec == nullptr, 0.0, "no parameter is called '" + p_name.utf8() + "'");
-	return p_upper ? spec->max : spec->min;
-}
-
-int64_t SunflowerSimulation::get_parameter_cost(const gdx::String &p_name) {
-	const ParameterSpec *spec = find_parameter(p_name.utf8());
-	return spec ? int64_t(spec->cost) : -1;
-}
-
-int64_t SunflowerSimulation::get_parameter_components(const gdx::String &p_name) {
-	const ParameterSpec *spec = find_parameter(p_name.utf8());
-	return spec ? int64_t(spec->components) : -1;
-}
-
-gdx::String SunflowerSimulation::get_parameter_names() {
-	std::string names;
-	for (const ParameterSpec *spec : param::ALL) {
-		names += (names.empty() ? "" : ",") + std::string(spec->name);
-	}
-	return gdx::String(names);
-}
-
-gdx::String SunflowerSimulation::check_lod_distances(const gdx::PackedFloat32Array &p_distances) {
-	return gdx::String(sunflower::check_lod_distances(p_distances.data(), size_t(p_distances.size())));
-}
-
-gdx::Vector2 SunflowerSimulation::sanitize_wind_direction(gdx::Vector2 p_direction) {
-	return gdx::to_godot(sunflower::sanitize_wind_direction(gdx::to_core(p_direction)));
-}
-
-int64_t SunflowerSimulation::mesh_bucket(int64_t p_level, int64_t p_part) {
-	SF_FAIL_COND_V_MSG(p_level < 0 || p_level >= LOD_MESH_COUNT || p_part < 0 || p_part >= PART_COUNT, -1,
-			"mesh level " + std::to_string(p_level) + " / part " + std::to_string(p_part) + " is out of range (0–2 each)");
-	return sunflower::mesh_bucket(uint32_t(p_level), uint32_t(p_part));
-}
-

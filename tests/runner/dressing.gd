@@ -6,8 +6,8 @@ extends RefCounted
 ## with) replaced by a copy whose surfaces all use what [param material_of] returns for that part
 ## (a Callable taking level and part), through the owner's set_part_mesh. Empty slots stay empty.
 static func dress_parts(owner: Object, material_of: Callable) -> void:
-	for level: int in SunflowerSimulation.MESH_LEVEL_COUNT:
-		for part: int in SunflowerSimulation.PART_COUNT:
+	for level: int in SunflowerDrawing.MESH_LEVEL_COUNT:
+		for part: int in SunflowerDrawing.PART_COUNT:
 			var drawn: Mesh = (
 				owner.get_part_mesh(level, part) if owner is SunflowerField else owner.mesh_drawn(level, part)
 			)

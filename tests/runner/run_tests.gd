@@ -39,6 +39,12 @@ class ErrorLog:
 		_mutex.unlock()
 		return errors
 
+	func peek() -> PackedStringArray:
+		_mutex.lock()
+		var errors: PackedStringArray = _errors.duplicate()
+		_mutex.unlock()
+		return errors
+
 	func take_warnings() -> PackedStringArray:
 		_mutex.lock()
 		var warnings: PackedStringArray = _warnings

@@ -77,6 +77,15 @@ func allow_error(fragment: String) -> void:
 	allowed_errors.append(fragment)
 
 
+## Checks that the engine reported an error containing [param fragment] during this test (and lets it).
+func expect_engine_error(fragment: String) -> bool:
+	allow_error(fragment)
+	for error: String in log.call("peek"):
+		if error.contains(fragment):
+			return true
+	return check(false, "no engine error said '%s'" % fragment)
+
+
 func check(condition: bool, message: String = "") -> bool:
 	if not condition:
 		failures.append("%s: %s" % [_caller(), message if message else "check failed"])

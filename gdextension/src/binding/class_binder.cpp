@@ -1,5 +1,6 @@
 #include "class_binder.h"
 
+#include <cstring>
 #include <deque>
 #include <memory>
 
@@ -22,7 +23,7 @@ Registry *registry() {
 	return instance;
 }
 
-GDExtensionPropertyInfo property_info(GDExtensionVariantType p_type, const char *p_name) {
+GDExtensionPropertyInfo property_info(GDExtensionVariantType p_type, const char *p_name, const char *p_class = nullptr) {
 	Registry *reg = registry();
 	if (!reg->empty_name) { // one empty class name and hint string serve every property
 		reg->empty_name = intern_name("");
@@ -31,7 +32,7 @@ GDExtensionPropertyInfo property_info(GDExtensionVariantType p_type, const char 
 	GDExtensionPropertyInfo info{};
 	info.type = p_type;
 	info.name = const_cast<StringName *>(intern_name(p_name))->ptr();
-	info.class_name = const_cast<StringName *>(reg->empty_name)->ptr();
+	info.class_name = const_cast<StringName *>(p_class ? intern_name(p_class) : reg->empty_name)->ptr();
 	info.hint = 0; // PROPERTY_HINT_NONE
 	info.hint_string = const_cast<String *>(reg->empty_string)->ptr();
 	info.usage = 6; // PROPERTY_USAGE_DEFAULT
@@ -49,10 +50,33 @@ void ptrcall_trampoline(void *p_method, GDExtensionClassInstancePtr p_instance, 
 	static_cast<MethodBind *>(p_method)->ptrcall(p_instance, p_args, r_return);
 }
 
+// What an engine object of one of our classes carries as its instance binding (our library's
+// token): its class and its instance, so that an object argument is known for what it is.
+struct Bound {
+	const ClassInfo *info;
+	void *instance;
+};
+
+void *no_binding_made(void *, void *) {
+	return nullptr; // (only our own objects have one, set when they are made)
+}
+
+void free_bound(void *, void *, void *p_binding) {
+	delete static_cast<Bound *>(p_binding);
+}
+
+GDExtensionBool bound_may_die(void *, void *, GDExtensionBool) {
+	return true; // the binding keeps no reference of its own
+}
+
+const GDExtensionInstanceBindingCallbacks BOUND_CALLBACKS = { &no_binding_made, &free_bound, &bound_may_die };
+
 GDExtensionObjectPtr create_instance(void *p_class, GDExtensionBool /*p_notify_postinitialize*/) {
 	const ClassInfo *info = static_cast<const ClassInfo *>(p_class);
 	GDExtensionObjectPtr object = api.classdb_construct_object2(info->parent->ptr());
-	api.object_set_instance(object, info->name->ptr(), info->create());
+	void *instance = info->create();
+	api.object_set_instance(object, info->name->ptr(), instance);
+	api.object_set_instance_binding(object, api.library, new Bound{ info, instance }, &BOUND_CALLBACKS);
 	return object;
 }
 
@@ -68,6 +92,17 @@ const StringName *intern_name(const char *p_name) {
 
 const String *intern_string(const char *p_text) {
 	return &registry()->strings.emplace_back(p_text);
+}
+
+void *registered_instance(GDExtensionConstObjectPtr p_object, const char *p_class) {
+	if (!p_object) {
+		return nullptr;
+	}
+	// (Without callbacks the engine makes no binding: an object of another library's or the engine's
+	// class has none of ours.)
+	const Bound *bound = static_cast<const Bound *>(
+			api.object_get_instance_binding(const_cast<GDExtensionObjectPtr>(p_object), api.library, nullptr));
+	return bound && std::strcmp(bound->info->utf8_name, p_class) == 0 ? bound->instance : nullptr;
 }
 
 bool variant_to(GDExtensionVariantType p_type, GDExtensionConstVariantPtr p_variant, GDExtensionTypePtr r_storage) {
@@ -104,7 +139,7 @@ void register_method(const char *p_class, const char *p_name, MethodBind *p_bind
 	auto name = p_arg_names.begin();
 	for (size_t i = 0; i < p_args.size(); ++i) {
 		const std::string fallback = "arg" + std::to_string(i);
-		arg_info.push_back(property_info(p_args[i].type, name != p_arg_names.end() ? *name++ : fallback.c_str()));
+		arg_info.push_back(property_info(p_args[i].type, name != p_arg_names.end() ? *name++ : fallback.c_str(), p_args[i].class_name));
 		arg_meta.push_back(p_args[i].metadata);
 	}
 	GDExtensionPropertyInfo return_info = property_info(p_return.type, "");

@@ -25,6 +25,7 @@ template <GDExtensionVariantType TYPE, class Storage, GDExtensionClassMethodArgu
 struct PodTraits {
 	static constexpr GDExtensionVariantType type = TYPE;
 	static constexpr GDExtensionClassMethodArgumentMetadata metadata = META;
+	static constexpr const char *class_name = nullptr; // an object argument's class
 	using StorageType = Storage;
 };
 
@@ -67,6 +68,40 @@ template <>
 struct Traits<PackedInt64Array> : SameTraits<PackedInt64Array, GDEXTENSION_VARIANT_TYPE_PACKED_INT64_ARRAY> {};
 template <>
 struct Traits<PackedFloat32Array> : SameTraits<PackedFloat32Array, GDEXTENSION_VARIANT_TYPE_PACKED_FLOAT32_ARRAY> {};
+
+// The instance of a class this library registers (T::CLASS, or a class inheriting it) behind an
+// engine object, null when the engine object is null or of another class.
+void *registered_instance(GDExtensionConstObjectPtr p_object, const char *p_class);
+
+// An object argument of one of this library's classes: its instance (null: none given, or an object
+// of another class) and its engine object's id, which stays unique after the object is freed.
+template <class T>
+struct Instance {
+	T *instance = nullptr;
+	uint64_t id = 0;
+};
+template <class T>
+struct Traits<Instance<T>> : PodTraits<GDEXTENSION_VARIANT_TYPE_OBJECT, GDExtensionObjectPtr> {
+	static constexpr const char *class_name = T::CLASS;
+	static Instance<T> get(const GDExtensionObjectPtr &p_s) {
+		T *instance = static_cast<T *>(registered_instance(p_s, T::CLASS));
+		return Instance<T>{ instance, instance ? api.object_get_instance_id(p_s) : 0 };
+	}
+};
+
+// A registered instance held by its engine object's id (Instance::id): found again at each use, so
+// an object freed meanwhile is found gone (null), never dangling.
+template <class T>
+class Held {
+public:
+	Held() = default;
+	explicit Held(const Instance<T> &p_instance) :
+			_id(p_instance.id) {}
+	T *get() const { return _id ? static_cast<T *>(registered_instance(api.object_get_instance_from_id(_id), T::CLASS)) : nullptr; }
+
+private:
+	uint64_t _id = 0;
+};
 
 template <class T>
 using TraitsOf = Traits<std::remove_cv_t<std::remove_reference_t<T>>>;
@@ -195,6 +230,7 @@ private:
 struct ArgumentInfo {
 	GDExtensionVariantType type;
 	GDExtensionClassMethodArgumentMetadata metadata;
+	const char *class_name; // an object's class, or null
 };
 
 void register_method(const char *p_class, const char *p_name, MethodBind *p_bind, bool p_const, bool p_static,
@@ -203,7 +239,8 @@ void register_method(const char *p_class, const char *p_name, MethodBind *p_bind
 
 template <class Args, size_t... I>
 std::vector<ArgumentInfo> argument_infos(std::index_sequence<I...>) {
-	return { ArgumentInfo{ TraitsOf<std::tuple_element_t<I, Args>>::type, TraitsOf<std::tuple_element_t<I, Args>>::metadata }... };
+	return { ArgumentInfo{ TraitsOf<std::tuple_element_t<I, Args>>::type, TraitsOf<std::tuple_element_t<I, Args>>::metadata,
+			TraitsOf<std::tuple_element_t<I, Args>>::class_name }... };
 }
 
 template <class F>
@@ -211,9 +248,9 @@ void bind_method(const char *p_class, const char *p_name, F p_function, std::ini
 	using FT = FunctionTraits<F>;
 	using R = typename FT::Return;
 	const std::vector<ArgumentInfo> args = argument_infos<typename FT::Args>(std::make_index_sequence<std::tuple_size_v<typename FT::Args>>{});
-	ArgumentInfo ret{ GDEXTENSION_VARIANT_TYPE_NIL, GDEXTENSION_METHOD_ARGUMENT_METADATA_NONE };
+	ArgumentInfo ret{ GDEXTENSION_VARIANT_TYPE_NIL, GDEXTENSION_METHOD_ARGUMENT_METADATA_NONE, nullptr };
 	if constexpr (!std::is_void_v<R>) {
-		ret = ArgumentInfo{ TraitsOf<R>::type, TraitsOf<R>::metadata };
+		ret = ArgumentInfo{ TraitsOf<R>::type, TraitsOf<R>::metadata, TraitsOf<R>::class_name };
 	}
 	register_method(p_class, p_name, new MethodBindT<F>(p_function), FT::is_const, FT::is_static, !std::is_void_v<R>, ret,
 			args, p_arg_names);
@@ -221,9 +258,10 @@ void bind_method(const char *p_class, const char *p_name, F p_function, std::ini
 
 void bind_integer_constant(const char *p_class, const char *p_enum, const char *p_name, int64_t p_value);
 
-// Registers T (default-constructible; the engine object that wraps it is not kept) as a subclass of
-// p_parent, then calls T::bind_methods().
+// Registers T (default-constructible, named T::CLASS; the engine object that wraps it is not kept)
+// as a subclass of p_parent, then calls T::bind_methods().
 struct ClassInfo {
+	const char *utf8_name; // (static storage)
 	const StringName *name;
 	const StringName *parent;
 	void *(*create)();
@@ -233,8 +271,8 @@ void register_class(const ClassInfo &p_info);
 void unregister_classes();
 
 template <class T>
-void register_class(const char *p_name, const char *p_parent) {
-	register_class(ClassInfo{ intern_name(p_name), intern_name(p_parent),
+void register_class(const char *p_parent) {
+	register_class(ClassInfo{ T::CLASS, intern_name(T::CLASS), intern_name(p_parent),
 			[]() -> void * { return new T(); },
 			[](void *p_instance) { delete static_cast<T *>(p_instance); } });
 	T::bind_methods();

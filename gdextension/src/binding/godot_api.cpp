@@ -85,6 +85,12 @@ bool load_api(GDExtensionInterfaceGetProcAddress p_get_proc_address, GDExtension
 	ok &= load(api.classdb_construct_object2, "classdb_construct_object2");
 	ok &= load(api.classdb_get_method_bind, "classdb_get_method_bind");
 	ok &= load(api.object_set_instance, "object_set_instance");
+	ok &= load(api.object_set_instance_binding, "object_set_instance_binding");
+	ok &= load(api.object_get_instance_binding, "object_get_instance_binding");
+	ok &= load(api.object_get_instance_id, "object_get_instance_id");
+	ok &= load(api.object_get_instance_from_id, "object_get_instance_from_id");
+	ok &= load(api.object_cast_to, "object_cast_to");
+	ok &= load(api.classdb_get_class_tag, "classdb_get_class_tag");
 	ok &= load(api.object_method_bind_ptrcall, "object_method_bind_ptrcall");
 	ok &= load(api.global_get_singleton, "global_get_singleton");
 	ok &= load(api.editor_help_load_xml_from_utf8_chars_and_len, "editor_help_load_xml_from_utf8_chars_and_len");

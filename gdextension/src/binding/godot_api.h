@@ -42,6 +42,12 @@ struct Api {
 	GDExtensionInterfaceClassdbConstructObject2 classdb_construct_object2 = nullptr;
 	GDExtensionInterfaceClassdbGetMethodBind classdb_get_method_bind = nullptr;
 	GDExtensionInterfaceObjectSetInstance object_set_instance = nullptr;
+	GDExtensionInterfaceObjectSetInstanceBinding object_set_instance_binding = nullptr;
+	GDExtensionInterfaceObjectGetInstanceBinding object_get_instance_binding = nullptr;
+	GDExtensionInterfaceObjectGetInstanceId object_get_instance_id = nullptr;
+	GDExtensionInterfaceObjectGetInstanceFromId object_get_instance_from_id = nullptr;
+	GDExtensionInterfaceObjectCastTo object_cast_to = nullptr;
+	GDExtensionInterfaceClassdbGetClassTag classdb_get_class_tag = nullptr;
 	GDExtensionInterfaceObjectMethodBindPtrcall object_method_bind_ptrcall = nullptr;
 	GDExtensionInterfaceGlobalGetSingleton global_get_singleton = nullptr;
 	GDExtensionsInterfaceEditorHelpLoadXmlFromUtf8CharsAndLen editor_help_load_xml_from_utf8_chars_and_len = nullptr;

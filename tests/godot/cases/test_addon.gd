@@ -2,24 +2,77 @@ extends TestCase
 ## The addon loads: the native class, the node, the resources and the imported demo map.
 
 const ProjectKnobs: GDScript = preload("res://addons/sunflower_field/field_project_settings.gd")
+const NATIVE_CLASSES: PackedStringArray = [
+	"SunflowerSimulation",
+	"SunflowerDrawing",
+	"SunflowerChanges",
+	"SunflowerParameters",
+	"SunflowerMap",
+	"SunflowerPlacement"
+]
 
 
 func test_native_class_is_registered() -> void:
 	check(ClassDB.class_exists("SunflowerSimulation"), "SunflowerSimulation is not registered")
 	check(ClassDB.is_parent_class("SunflowerSimulation", "RefCounted"), "SunflowerSimulation is not a RefCounted")
-	check_eq(SunflowerSimulation.BUCKET_COUNT, 10, "bucket constant")
+	check_eq(SunflowerDrawing.BUCKET_COUNT, 10, "bucket constant")
+
+
+## The native classes' docs (gdextension/doc_classes/, the editor's help and the source of the
+## generated native_field.gd) name exactly the methods each class registers, with their arguments,
+## types and return types, and its constants with their values. No class has more than 36 methods.
+func test_the_native_docs_are_the_registration() -> void:
+	var folder: String = ProjectSettings.globalize_path("res://").path_join("../../gdextension/doc_classes")
+	for native_class: String in NATIVE_CLASSES:
+		var documented: Dictionary = _documented(folder.path_join(native_class + ".xml"))
+		var registered: Dictionary = {}
+		for method: Dictionary in ClassDB.class_get_method_list(native_class, true):
+			var args: PackedStringArray = []
+			for arg: Dictionary in method["args"]:
+				args.append("%s: %s" % [arg["name"], _type_name(arg)])
+			registered["method " + method["name"]] = "(%s) -> %s" % [", ".join(args), _type_name(method["return"])]
+		for constant: String in ClassDB.class_get_integer_constant_list(native_class, true):
+			registered["constant " + constant] = str(ClassDB.class_get_integer_constant(native_class, constant))
+		for key: String in registered:
+			check_eq(documented.get(key, "(not documented)"), registered[key], "%s %s" % [native_class, key])
+		for key: String in documented:
+			check(registered.has(key), "%s documents %s, which it does not register" % [native_class, key])
+		var methods: int = ClassDB.class_get_method_list(native_class, true).size()
+		check(methods <= 36, "%s has %d methods" % [native_class, methods])
+
+
+## An object argument is checked for what it is: a drawing attached to no simulation, to an object of
+## another class or to a simulation freed since says so and draws nothing, and crashes nothing.
+func test_a_drawing_without_its_simulation_says_so() -> void:
+	var drawing: SunflowerDrawing = SunflowerDrawing.new()
+	drawing.draw()
+	expect_engine_error("draw: no simulation to draw")
+	drawing.call(&"attach", SunflowerMap.new())  # (a typed call does not parse: the argument's class is bound)
+	expect_engine_error("attach: takes a SunflowerSimulation")
+	var simulation: SunflowerSimulation = SunflowerSimulation.new()
+	check_eq(simulation.load_map("2 2\n**\n**\n".to_utf8_buffer(), "two.field", "", "", 0), "", "a small map")
+	drawing.attach(simulation)
+	check_eq(drawing.get_chunk_count(), 1, "the drawing reads the simulation attached")
+	var changes: SunflowerChanges = SunflowerChanges.new()
+	changes.attach(simulation)
+	check_eq(changes.change_cells(PackedInt32Array([0]), 2, 0.0), PackedInt32Array([0]), "a cell cut")
+	simulation = null  # (the last reference: freed)
+	check_eq(drawing.get_chunk_count(), 0, "nothing once the simulation is gone")
+	expect_engine_error("get_chunk_count: no simulation to draw")
+	check_eq(changes.get_change_count(), 0, "no changes once the simulation is gone")
+	expect_engine_error("get_change_count: no simulation to change")
 
 
 func test_the_node_names_the_cores_indices() -> void:
-	check_eq(SunflowerField.Part.size(), SunflowerSimulation.PART_COUNT, "parts")
-	check_eq(SunflowerField.Lod.size(), SunflowerSimulation.LOD_COUNT, "levels")
+	check_eq(SunflowerField.Part.size(), SunflowerDrawing.PART_COUNT, "parts")
+	check_eq(SunflowerField.Lod.size(), SunflowerDrawing.LOD_COUNT, "levels")
 	check_eq(
-		SunflowerField.Lod.SPRITE, SunflowerSimulation.MESH_LEVEL_COUNT, "the first impostor level follows the meshes"
+		SunflowerField.Lod.SPRITE, SunflowerDrawing.MESH_LEVEL_COUNT, "the first impostor level follows the meshes"
 	)
-	check_eq(SunflowerField.FieldNodes.PART_NAMES.size(), SunflowerSimulation.PART_COUNT, "part names")
-	check_eq(SunflowerPlant.PartMeshes.LEVELS, SunflowerSimulation.MESH_LEVEL_COUNT, "a plant's levels")
-	check_eq(SunflowerSimulation.mesh_bucket(2, SunflowerField.Part.HEAD), 8, "the last mesh bucket")
-	check_eq(SunflowerSimulation.BUCKET_IMPOSTOR, 9, "the impostors follow the mesh buckets")
+	check_eq(SunflowerField.FieldNodes.PART_NAMES.size(), SunflowerDrawing.PART_COUNT, "part names")
+	check_eq(SunflowerPlant.PartMeshes.LEVELS, SunflowerDrawing.MESH_LEVEL_COUNT, "a plant's levels")
+	check_eq(SunflowerDrawing.mesh_bucket(2, SunflowerField.Part.HEAD), 8, "the last mesh bucket")
+	check_eq(SunflowerDrawing.BUCKET_IMPOSTOR, 9, "the impostors follow the mesh buckets")
 
 
 ## The impostor shader decodes far records with the library's numbers: every RECORD_X constant of
@@ -33,12 +86,11 @@ func test_the_shaders_record_layout_is_the_librarys() -> void:
 		var name: String = "FAR_" + match.get_string(1)
 		found += 1
 		if check(
-			ClassDB.class_has_integer_constant(&"SunflowerSimulation", name),
-			"the library has no %s for %s" % [name, path]
+			ClassDB.class_has_integer_constant(&"SunflowerDrawing", name), "the library has no %s for %s" % [name, path]
 		):
 			check_eq(
 				match.get_string(2).to_float(),
-				float(ClassDB.class_get_integer_constant(&"SunflowerSimulation", name)),
+				float(ClassDB.class_get_integer_constant(&"SunflowerDrawing", name)),
 				"%s in %s" % [name, path]
 			)
 	check(found >= 4, "%s defines the record's numbers (%d found)" % [path, found])
@@ -223,7 +275,7 @@ func _check_range(row: String, name: String, hint: String) -> void:
 	var parts: PackedStringArray = hint.split(",")
 	var degrees: bool = parts.has("radians_as_degrees")
 	for side: int in 2:
-		var limit: float = ClassDB.class_call_static(&"SunflowerSimulation", &"get_parameter_limit", row, side == 1)
+		var limit: float = ClassDB.class_call_static(&"SunflowerParameters", &"get_parameter_limit", row, side == 1)
 		var flag: String = "or_less" if side == 0 else "or_greater"
 		var expected: float = rad_to_deg(limit) if degrees else limit
 		if absf(limit) >= 1e30:
@@ -288,3 +340,51 @@ func _shown_anywhere(object: Object, name: String) -> bool:
 		if property["name"] == name:
 			return property["usage"] & PROPERTY_USAGE_EDITOR != 0
 	return false
+
+
+## A class's docs as "method name" → "(arg: Type, …) -> Type" and "constant NAME" → its value.
+func _documented(path: String) -> Dictionary:
+	var out: Dictionary = {}
+	var parser: XMLParser = XMLParser.new()
+	if not check_eq(parser.open(path), OK, "the docs " + path):
+		return out
+	var method: String = ""
+	var args: Dictionary = {}  # index → "name: Type"
+	var returns: String = "void"
+	while parser.read() == OK:
+		var kind: XMLParser.NodeType = parser.get_node_type()
+		if kind != XMLParser.NODE_ELEMENT and kind != XMLParser.NODE_ELEMENT_END:
+			continue
+		var node: String = parser.get_node_name()
+		if kind == XMLParser.NODE_ELEMENT_END and node == "method":
+			var ordered: PackedStringArray = []
+			for index: int in args.size():
+				ordered.append(args.get(index, "?"))
+			out["method " + method] = "(%s) -> %s" % [", ".join(ordered), returns]
+			continue
+		if kind == XMLParser.NODE_ELEMENT_END:
+			continue
+		if node == "method":
+			method = parser.get_named_attribute_value("name")
+			args = {}
+			returns = "void"
+			if parser.is_empty():
+				out["method " + method] = "() -> void"
+		elif node == "return" and not method.is_empty():
+			returns = parser.get_named_attribute_value("type")
+		elif node == "param":
+			args[parser.get_named_attribute_value("index").to_int()] = (
+				"%s: %s" % [parser.get_named_attribute_value("name"), parser.get_named_attribute_value("type")]
+			)
+		elif node == "constant":
+			out["constant " + parser.get_named_attribute_value("name")] = parser.get_named_attribute_value("value")
+	return out
+
+
+## A registered argument's or return's type as the docs write it.
+func _type_name(info: Dictionary) -> String:
+	if info["type"] == TYPE_NIL:
+		return "void"
+	if info["type"] == TYPE_OBJECT:
+		return info["class_name"]
+	return type_string(info["type"])

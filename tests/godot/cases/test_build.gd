@@ -72,7 +72,9 @@ func test_a_large_map_builds_over_frames_while_the_old_field_is_drawn() -> void:
 	check_eq(built, [360000] as Array[int], "one field_built, with the new plant count")
 	check_eq(field.get_plant_count(), 360000, "the new field is counted")
 	# The sunflower is drawn whole: a node per mesh level and one of the near impostors, then the tiles.
-	var expected_nodes: int = SunflowerSimulation.MESH_LEVEL_COUNT + 1 + field.get_simulation().get_tile_count()
+	var expected_nodes: int = (
+		SunflowerDrawing.MESH_LEVEL_COUNT + 1 + NativeField.new(field.get_simulation()).get_tile_count()
+	)
 	check_eq(field.get_child_count(true) - field.get_child_count(false), expected_nodes, "only the new nodes remain")
 	check(progress.size() >= 3, "progress reported while building (%d times)" % progress.size())
 	var monotonic: bool = true
@@ -170,14 +172,12 @@ func test_parameter_changes_during_a_build_reach_the_new_field() -> void:
 	# nodes (and their shadow casters) have its node as visibility parent.
 	var begins: Dictionary = {}  # node name → where its tile is shown from
 	var parents: Dictionary = {}  # node name → its tile's parent's node name ("" for none)
-	var simulation: RefCounted = field.get_simulation()
+	var simulation: NativeField = NativeField.new(field.get_simulation())
 	for tile: int in simulation.get_tile_count():
-		var parent: int = FarTileTable.new(NativeField.new(simulation)).parent(tile)
-		var node_name: String = "FarTile%d" % FarTileTable.new(NativeField.new(simulation)).key(tile)
-		begins[node_name] = FarTileTable.new(NativeField.new(simulation)).shown_from(tile)
-		parents[node_name] = (
-			"FarTile%d" % FarTileTable.new(NativeField.new(simulation)).key(parent) if parent >= 0 else ""
-		)
+		var parent: int = FarTileTable.new(simulation).parent(tile)
+		var node_name: String = "FarTile%d" % FarTileTable.new(simulation).key(tile)
+		begins[node_name] = FarTileTable.new(simulation).shown_from(tile)
+		parents[node_name] = ("FarTile%d" % FarTileTable.new(simulation).key(parent) if parent >= 0 else "")
 	check(begins.values().any(func(begin: float) -> bool: return begin > 0.0), "the field has merged tiles")
 	var wrong_ranges: int = 0
 	var wrong_parents: int = 0
@@ -236,7 +236,7 @@ func test_a_small_change_of_a_large_map_makes_nodes_only_for_the_tiles_it_touche
 	field.chunk_size = 8.0
 	field.map = _square_map(200)  # 100 × 100 m: 13 × 13 chunks of 8 m, 2 × 2 tiles of 8 × 8 chunks
 	field.finish_build()
-	var simulation: RefCounted = field.get_simulation()
+	var simulation: NativeField = NativeField.new(field.get_simulation())
 	check_eq(simulation.get_chunk_count(), 169)
 	check_eq(simulation.get_tile_count(), 5, "2 × 2 tiles and the merged tile over them")
 	check_eq(field.get_build_stats().tiles_made, 5, "a new map makes every tile")
@@ -250,7 +250,7 @@ func test_a_small_change_of_a_large_map_makes_nodes_only_for_the_tiles_it_touche
 	holed.text = "\n".join(lines).to_utf8_buffer()
 	field.map = holed
 	field.finish_build()
-	simulation = field.get_simulation()
+	simulation = NativeField.new(field.get_simulation())
 	var stats: Dictionary = field.get_build_stats()
 	check_eq(field.get_plant_count(), 40000 - 100, "the hole's plants are gone")
 	check_eq(stats.tiles_made, 2, "nodes made only for the touched tile and the merged one")
@@ -259,18 +259,18 @@ func test_a_small_change_of_a_large_map_makes_nodes_only_for_the_tiles_it_touche
 	# the merged tile holds its share. Each node tells the shader its tile's place among the levels.
 	var by_name: Dictionary = {}
 	for tile: int in simulation.get_tile_count():
-		by_name["FarTile%d" % FarTileTable.new(NativeField.new(simulation)).key(tile)] = tile
+		by_name["FarTile%d" % FarTileTable.new(simulation).key(tile)] = tile
 	var instances: PackedInt32Array = [0, 0]  # per level
 	for node: Node in field.get_children(true):
 		if not node.name.begins_with("FarTile"):
 			continue
 		var tile: int = by_name[str(node.name)]
-		var level: int = FarTileTable.new(NativeField.new(simulation)).level(tile)
+		var level: int = FarTileTable.new(simulation).level(tile)
 		var buffer: PackedFloat32Array = RenderingServer.multimesh_get_buffer(
 			(node as MultiMeshInstance3D).multimesh.get_rid()
 		)
-		instances[level] += buffer.size() / SunflowerSimulation.FAR_FLOATS_PER_INSTANCE
-		var merge: Vector4 = FarTileTable.new(NativeField.new(simulation)).merge(tile)
+		instances[level] += buffer.size() / SunflowerDrawing.FAR_FLOATS_PER_INSTANCE
+		var merge: Vector4 = FarTileTable.new(simulation).merge(tile)
 		check_eq(
 			(node as GeometryInstance3D).get_instance_shader_parameter(&"tile_merge"),
 			merge,
@@ -284,14 +284,12 @@ func test_a_small_change_of_a_large_map_makes_nodes_only_for_the_tiles_it_touche
 	field.tile_merge_distance = 500.0
 	field.finish_build()
 	check_eq(field.get_build_stats().tiles_kept, 5, "the same tiles: all kept")
-	simulation = field.get_simulation()
+	simulation = NativeField.new(field.get_simulation())
 	var merged: int = simulation.get_tile_count() - 1
-	check_eq(
-		FarTileTable.new(NativeField.new(simulation)).begin(merged), 500.0, "the merged tile begins at the new distance"
-	)
+	check_eq(FarTileTable.new(simulation).begin(merged), 500.0, "the merged tile begins at the new distance")
 	var merged_node: GeometryInstance3D = null
 	for node: Node in field.get_children(true):
-		if node.name == "FarTile%d" % FarTileTable.new(NativeField.new(simulation)).key(merged):
+		if node.name == "FarTile%d" % FarTileTable.new(simulation).key(merged):
 			merged_node = node
 	if check(merged_node != null, "the merged tile's node"):
 		# From where all its plants are at least 500 m away.
@@ -322,7 +320,7 @@ func test_a_small_change_of_a_large_map_makes_nodes_only_for_the_tiles_it_touche
 		field.tile_merge_distance = 450.0
 		field.finish_build()
 		for node: Node in field.get_children(true):
-			if node.name == "FarTile%d" % FarTileTable.new(NativeField.new(simulation)).key(merged):
+			if node.name == "FarTile%d" % FarTileTable.new(simulation).key(merged):
 				merged_node = node
 				check(_casts(merged_node), "a merged tile built within a sun's shadows casts them")
 		sun.free()

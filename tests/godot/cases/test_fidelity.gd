@@ -8,6 +8,7 @@ extends TestCase
 ## Prints the figures; with FIDELITY_FULL=1 it measures every view and switch (tools/measure_lod.sh),
 ## otherwise the views and the switch that tell most, within the test command's time.
 
+const NativeField: GDScript = preload("res://addons/sunflower_field/native_field.gd")
 const Stage: GDScript = preload("res://runner/stage.gd")
 const Picture: GDScript = preload("res://runner/picture.gd")
 const Maps: GDScript = preload("res://runner/maps.gd")
@@ -272,7 +273,7 @@ func test_no_pops_where_plants_switch_level() -> void:
 func test_no_pops_where_far_tiles_merge() -> void:
 	var frames: int = MERGE_WALK_FRAMES * (2 if full else 1)
 	var merged: Array[PackedFloat32Array] = await _walk_onto_merge(MERGE_DISTANCE, frames)
-	var fade: float = field.get_simulation().choose_tile_level(MERGE_LOOK.length()).y
+	var fade: float = NativeField.new(field.get_simulation()).choose_tile_level(MERGE_LOOK.length()).y
 	var never: Array[PackedFloat32Array] = await _walk_onto_merge(0.0, frames)
 	var ratio: float = _largest(merged[0]) / maxf(_largest(never[0]), 1e-6)
 	print(

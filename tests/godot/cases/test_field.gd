@@ -5,7 +5,7 @@ extends TestCase
 const FarTileTable: GDScript = preload("res://addons/sunflower_field/far_tile_table.gd")
 const NativeField: GDScript = preload("res://addons/sunflower_field/native_field.gd")
 ## Floats per instance in the native MultiMesh buffers (transform, then colour).
-const STRIDE: int = SunflowerSimulation.FLOATS_PER_INSTANCE
+const STRIDE: int = SunflowerDrawing.FLOATS_PER_INSTANCE
 
 var field: SunflowerField
 var observer: Node3D
@@ -166,14 +166,14 @@ func test_near_plants_cast_shadows_from_their_impostors_from_a_level_on() -> voi
 func test_buffers_reach_the_rendering_server() -> void:
 	observer.position = Vector3(10.0, 1.7, 7.5)
 	field.advance(0.3)
-	var simulation: SunflowerSimulation = field.get_simulation()
+	var simulation: NativeField = NativeField.new(field.get_simulation())
 	# The built-in sunflower is drawn whole: one instance per mesh-1 plant, in the level's first bucket.
 	var heads: MultiMeshInstance3D = _node("Mesh1")
 	var rid: RID = heads.multimesh.get_rid()
-	var count: int = simulation.get_bucket_instance_count(SunflowerSimulation.mesh_bucket(0, 0))
-	var whole: int = SunflowerSimulation.WHOLE_FLOATS_PER_INSTANCE
+	var count: int = simulation.get_bucket_instance_count(SunflowerDrawing.mesh_bucket(0, 0))
+	var whole: int = SunflowerDrawing.WHOLE_FLOATS_PER_INSTANCE
 	check(count > 100, "mesh-1 plants written: %d" % count)
-	check_eq(simulation.get_bucket_instance_count(SunflowerSimulation.mesh_bucket(0, 2)), 0, "no instances per part")
+	check_eq(simulation.get_bucket_instance_count(SunflowerDrawing.mesh_bucket(0, 2)), 0, "no instances per part")
 	check_eq(RenderingServer.multimesh_get_visible_instances(rid), count, "visible instances")
 	var buffer: PackedFloat32Array = RenderingServer.multimesh_get_buffer(rid)
 	check(buffer.size() >= count * whole, "buffer holds the instances")
@@ -271,10 +271,10 @@ func test_merged_far_tiles_draw_each_place_once_across_levels() -> void:
 	field.tile_merge_distance = 10.0
 	field.lod_distances = PackedFloat32Array([1.0, 2.0, 3.0, 4.0])  # the far tiles draw nearly all
 	field.finish_build()
-	var simulation: RefCounted = field.get_simulation()
+	var simulation: NativeField = NativeField.new(field.get_simulation())
 	var levels: Dictionary = {}
 	for tile: int in simulation.get_tile_count():
-		levels[FarTileTable.new(NativeField.new(simulation)).level(tile)] = true
+		levels[FarTileTable.new(simulation).level(tile)] = true
 	check_eq(levels.keys(), [0, 1, 2], "three tile levels")
 	var path: Array[Vector3] = [Vector3(10, 1.7, 7), Vector3(-25, 1.7, 7), Vector3(-30, 20, -30), Vector3(-70, 10, 7)]
 	var counted: Vector2i = _check_drawn_once_along(path)
@@ -307,7 +307,7 @@ func test_far_tiles_are_written_again_nearest_the_observer_first_as_it_moves() -
 			if not node.name.begins_with("FarTile"):
 				continue
 			var buffer: PackedFloat32Array = RenderingServer.multimesh_get_buffer(node.multimesh.get_rid())
-			var far: int = SunflowerSimulation.FAR_FLOATS_PER_INSTANCE
+			var far: int = SunflowerDrawing.FAR_FLOATS_PER_INSTANCE
 			var count: int = buffer.size() / far
 			if count < 2:
 				continue
@@ -343,10 +343,10 @@ func _check_drawn_once_along(path: Array[Vector3]) -> Vector2i:
 	var positions: Dictionary = {}
 	for i: int in field.get_plant_count():
 		positions[_key(field.get_plant_info(i)["position"])] = i
-	var simulation: RefCounted = field.get_simulation()
+	var simulation: NativeField = NativeField.new(field.get_simulation())
 	var tile_of_node: Dictionary = {}  # node name → tile
 	for tile: int in simulation.get_tile_count():
-		tile_of_node["FarTile%d" % FarTileTable.new(NativeField.new(simulation)).key(tile)] = tile
+		tile_of_node["FarTile%d" % FarTileTable.new(simulation).key(tile)] = tile
 	var crossfades: int = 0
 	var left_out: int = 0
 	faded = 0
@@ -375,20 +375,18 @@ func _check_drawn_once_along(path: Array[Vector3]) -> Vector2i:
 			# records (a far tile's carry their chunk's cell, the near bucket's a share); near plants
 			# drawn whole are one instance each, with custom data.
 			var stride: int = buffer.size() / RenderingServer.multimesh_get_instance_count(rid)
-			var compact: bool = stride == SunflowerSimulation.FAR_FLOATS_PER_INSTANCE
+			var compact: bool = stride == SunflowerDrawing.FAR_FLOATS_PER_INSTANCE
 			check(
-				stride in [STRIDE, SunflowerSimulation.WHOLE_FLOATS_PER_INSTANCE] or compact,
+				stride in [STRIDE, SunflowerDrawing.WHOLE_FLOATS_PER_INSTANCE] or compact,
 				"%s's records are of a known layout (%d floats)" % [node.name, stride]
 			)
 			# A tile skips the plants of the chunks its material's mask marks (the near buckets draw them).
 			var mask: PackedByteArray = _mask_of(node) if tile else PackedByteArray()
 			var merge: Vector4 = node.get_instance_shader_parameter(&"tile_merge") if tile else Vector4()
 			if tile:
-				var expected: Vector4 = FarTileTable.new(NativeField.new(simulation)).merge(
-					tile_of_node[str(node.name)]
-				)
+				var expected: Vector4 = FarTileTable.new(simulation).merge(tile_of_node[str(node.name)])
 				check_eq(merge, expected, "%s's merge" % node.name)
-			var far: int = SunflowerSimulation.FAR_FLOATS_PER_INSTANCE
+			var far: int = SunflowerDrawing.FAR_FLOATS_PER_INSTANCE
 			for k: int in instances:
 				var root: Vector3 = _root(buffer, k, compact, stride)
 				var share: float = 1.0
@@ -488,7 +486,9 @@ func _mask_of(node: MultiMeshInstance3D) -> PackedByteArray:
 	var material: ShaderMaterial = node.multimesh.mesh.surface_get_material(0) as ShaderMaterial
 	var texture: Texture2D = material.get_shader_parameter("active_chunks")
 	var bytes: PackedByteArray = texture.get_image().get_data() if texture else PackedByteArray()
-	check_eq(bytes, field.get_simulation().get_active_mask(0), "%s's mask is the simulation's" % node.name)
+	check_eq(
+		bytes, NativeField.new(field.get_simulation()).get_active_mask(0), "%s's mask is the simulation's" % node.name
+	)
 	return bytes
 
 
@@ -496,7 +496,7 @@ func _mask_of(node: MultiMeshInstance3D) -> PackedByteArray:
 ## record's (instance_buffer.h: floats 3, 7 and 2 of 8).
 func _root(buffer: PackedFloat32Array, k: int, compact: bool, stride: int) -> Vector3:
 	if compact:
-		var far: int = SunflowerSimulation.FAR_FLOATS_PER_INSTANCE
+		var far: int = SunflowerDrawing.FAR_FLOATS_PER_INSTANCE
 		return Vector3(buffer[k * far + 3], buffer[k * far + 7], buffer[k * far + 2])
 	return Vector3(buffer[k * stride + 3], buffer[k * stride + 7], buffer[k * stride + 11])
 

@@ -184,7 +184,7 @@ func test_a_plants_variety_spreads_sizes_and_yaws_within_its_ranges() -> void:
 	check(widest <= PI / 2.0 + 1e-4 and widest > 1.3, "yaws within ±90° (widest %.2f rad)" % widest)
 	# Colour variety: the near buckets' instance colours (after the transform) vary by the range.
 	var heads: MultiMesh = _heads_node(field).multimesh
-	var stride: int = SunflowerSimulation.WHOLE_FLOATS_PER_INSTANCE
+	var stride: int = SunflowerDrawing.WHOLE_FLOATS_PER_INSTANCE
 	var white: bool = true
 	for k: int in mini(RenderingServer.multimesh_get_buffer(heads.get_rid()).size() / stride, 50):
 		white = white and RenderingServer.multimesh_get_buffer(heads.get_rid())[k * stride + 12] == 1.0
@@ -228,13 +228,18 @@ func test_changing_a_shared_plant_rebuilds_every_field_that_grows_it() -> void:
 	var plant: SunflowerPlant = _plant_of_sunflower_parts()
 	var first: SunflowerField = _field(plant)
 	var second: SunflowerField = _field(plant)
-	var before: float = second.get_simulation().get_chunk_aabb(0).end.y
+	var before: float = NativeField.new(second.get_simulation()).get_chunk_aabb(0).end.y
 	plant.height = 4.0
 	await frames(1)
 	first.finish_build()
 	second.finish_build()
 	for field: SunflowerField in [first, second]:
-		check_near(field.get_simulation().get_chunk_aabb(0).end.y, before * 2.0, 0.05, "chunk bounds follow the height")
+		check_near(
+			NativeField.new(field.get_simulation()).get_chunk_aabb(0).end.y,
+			before * 2.0,
+			0.05,
+			"chunk bounds follow the height"
+		)
 	# Drawn whole: a part that merges as well is swapped into both fields' merged meshes in place.
 	var other_bottom: Mesh = SunflowerPlant.default_plant().get_part_mesh(1, 0)
 	plant.set_part_mesh(2, 0, other_bottom)

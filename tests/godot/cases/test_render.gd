@@ -115,7 +115,7 @@ func test_thinning_keeps_the_same_plants_whatever_their_order_in_a_buffer() -> v
 		if node.name.begins_with("FarTile"):
 			var rid: RID = (node as MultiMeshInstance3D).multimesh.get_rid()
 			var buffer: PackedFloat32Array = RenderingServer.multimesh_get_buffer(rid)
-			var stride: int = SunflowerSimulation.FAR_FLOATS_PER_INSTANCE
+			var stride: int = SunflowerDrawing.FAR_FLOATS_PER_INSTANCE
 			var count: int = buffer.size() / stride
 			var flipped: PackedFloat32Array = PackedFloat32Array()
 			flipped.resize(buffer.size())
@@ -148,7 +148,7 @@ func test_plants_cut_or_put_at_run_time_change_the_far_field_at_once() -> void:
 	field.legend = {"m": SunflowerPlant.default_plant().duplicate()}  # a second type, which the map does not grow
 	await _built_and_drawn(field)
 	var before: Image = tree.root.get_viewport().get_texture().get_image()
-	var simulation: RefCounted = field.get_simulation()
+	var simulation: NativeField = NativeField.new(field.get_simulation())
 	var cells: PackedInt32Array = simulation.get_cells_in_circle(Vector2(100.0, 90.0), 25.0)
 	var plants_before: int = field.get_plant_count()
 	var cut: PackedInt32Array = simulation.change_cells(cells, 2, 0.0)
@@ -279,10 +279,10 @@ func test_the_engine_draws_each_far_place_by_one_tile() -> void:
 	field.tile_merge_distance = 10.0
 	field.lod_distances = PackedFloat32Array([1.0, 2.0, 3.0, 4.0])  # the far tiles draw nearly all
 	field.finish_build()
-	var simulation: RefCounted = field.get_simulation()
+	var simulation: NativeField = NativeField.new(field.get_simulation())
 	var tiles: Dictionary = {}  # node → its tile
 	for tile: int in simulation.get_tile_count():
-		tiles[field.get_node_or_null(NodePath("FarTile%d" % FarTileTable.new(NativeField.new(simulation)).key(tile)))] = tile
+		tiles[field.get_node_or_null(NodePath("FarTile%d" % FarTileTable.new(simulation).key(tile)))] = tile
 	check(not tiles.has(null), "every tile has its node")
 	var camera: Camera3D = scene.get_viewport().get_camera_3d()
 	var views_merged: int = 0
@@ -296,9 +296,7 @@ func test_the_engine_draws_each_far_place_by_one_tile() -> void:
 			if not _picked_by_the_cut(simulation, tiles[node], node, eye):
 				node.visible = false
 			picked += 1 if node.visible else 0
-			merged += (
-				1 if (node.visible and FarTileTable.new(NativeField.new(simulation)).level(tiles[node]) > 0) else 0
-			)
+			merged += (1 if (node.visible and FarTileTable.new(simulation).level(tiles[node]) > 0) else 0)
 		views_merged += 1 if merged > 0 else 0
 		var alone: int = await _field_draw_calls(field)
 		for node: MultiMeshInstance3D in tiles:
@@ -322,7 +320,7 @@ func test_the_engine_draws_each_far_place_by_one_tile() -> void:
 ## Whether a tile is drawn from [param eye] by the rule of FieldSimulation's cut: in its range, and no
 ## tile above it in its own.
 func _picked_by_the_cut(simulation: RefCounted, tile: int, node: GeometryInstance3D, eye: Vector3) -> bool:
-	var tiles: FarTileTable = FarTileTable.new(NativeField.new(simulation))
+	var tiles: FarTileTable = FarTileTable.new(simulation)
 	var shown_from: Callable = func(t: int) -> bool:
 		var box: AABB = node.global_transform * tiles.aabb(t)
 		return eye.distance_to(box.get_center()) >= tiles.shown_from(t)

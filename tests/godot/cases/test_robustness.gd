@@ -3,6 +3,7 @@ extends TestCase
 ## the field keeps what it had; bad values are rejected or clamped with a warning naming the
 ## property; adding, removing, re-parenting, duplicating and freeing leave nothing behind.
 
+const NativeField: GDScript = preload("res://addons/sunflower_field/native_field.gd")
 const DEMO_MAP: SunflowerFieldMap = preload("res://fields/demo.field")
 const LARGE_MAP: SunflowerFieldMap = preload("res://fields/large.field")
 
@@ -199,7 +200,7 @@ func _lifecycle_round(killer_script: GDScript) -> void:
 	check_eq(copy.get_plant_count(), 1103, "a duplicate builds its own field")
 	var internal: int = copy.get_child_count(true) - copy.get_child_count(false)
 	# The sunflower is drawn whole: a node per mesh level and one of the near impostors, then the tiles.
-	var expected: int = SunflowerSimulation.MESH_LEVEL_COUNT + 1 + copy.get_simulation().get_tile_count()
+	var expected: int = SunflowerDrawing.MESH_LEVEL_COUNT + 1 + NativeField.new(copy.get_simulation()).get_tile_count()
 	check_eq(internal, expected, "the duplicate holds its own nodes only, not copies of the original's")
 	subject.map = null
 	await frames(1)

@@ -95,14 +95,12 @@ func test_a_legend_plant_is_a_species_with_its_own_buckets_impostors_and_counts(
 	check_near(shift, 0.3, 1e-6, "the new shift is drawn")
 	check(not field.is_building(), "without a rebuild")
 	# Tiles hold one type each, with that type's impostor quads.
-	var simulation: RefCounted = field.get_simulation()
+	var simulation: NativeField = NativeField.new(field.get_simulation())
 	var types_seen: Dictionary = {}
 	for tile: int in simulation.get_tile_count():
-		var species: int = FarTileTable.new(NativeField.new(simulation)).species(tile)
+		var species: int = FarTileTable.new(simulation).species(tile)
 		types_seen[species] = true
-		var impostors: MultiMeshInstance3D = _node_named(
-			field, "FarTile%d" % FarTileTable.new(NativeField.new(simulation)).key(tile)
-		)
+		var impostors: MultiMeshInstance3D = _node_named(field, "FarTile%d" % FarTileTable.new(simulation).key(tile))
 		var material: ShaderMaterial = impostors.multimesh.mesh.surface_get_material(0) as ShaderMaterial
 		check(
 			(

@@ -1,6 +1,6 @@
 #pragma once
 // The one place where engine types and core (GLM / std) types meet.
-#include "godot_api.h"
+#include "binding/godot_api.h"
 
 #include "core/ground.h"
 #include "core/plant_pushes.h"
