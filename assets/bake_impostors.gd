@@ -1,5 +1,5 @@
 extends SceneTree
-## Renders a plant's impostor atlases with the addon's baker (addons/sunflower_field/impostor_baker.gd,
+## Renders a plant's impostor atlases with the addon's baker (addons/sunflower_field/plant/impostor_baker.gd,
 ## the editor's "Bake impostors"), into the given folder as <name>_views.png, <name>_normals.png and <name>_depths.png:
 ## the built-in sunflower ("sunflower"), or the plant resource given with its name; the alpha cuts
 ## the bake measures go into the plant's .tres ([member SunflowerPlant.impostor_alpha_cuts]).

@@ -10,7 +10,7 @@
 - architecture: ARCHITECTURE.md names every script and shader of the addon and every source file of
   the extension, and no such file that does not exist;
 - api: docs/api/ is what tools/make_api_docs.py makes from the in-editor docs now;
-- face: addons/sunflower_field/native_field.gd is what tools/make_native_face.py makes from the
+- face: addons/sunflower_field/native/native_field.gd is what tools/make_native_face.py makes from the
   native classes' docs now;
 - history: no development history (the word session or turn and a number) outside CHANGELOG.md and
   commit messages.
@@ -118,7 +118,7 @@ def check_architecture():
     architecture = REPO / "ARCHITECTURE.md"
     text = architecture.read_text(encoding="utf-8")
     named = set(re.findall(r"`([\w./]+\.(?:gd|gdshader|gdshaderinc|h|cpp))`", text))
-    files = {p.relative_to(ADDON).as_posix() for p in ADDON.glob("*.gd")}
+    files = {p.relative_to(ADDON).as_posix() for p in ADDON.rglob("*.gd")}
     files |= {p.relative_to(ADDON).as_posix() for p in (ADDON / "shaders").iterdir()
               if p.suffix in (".gdshader", ".gdshaderinc")}
     sources = {p.relative_to(SOURCES).as_posix() for p in SOURCES.rglob("*") if p.suffix in (".h", ".cpp")}
@@ -147,7 +147,7 @@ def check_face():
     if result.returncode == 0:
         ok()
     else:
-        fail("addons/sunflower_field/native_field.gd", (result.stdout + result.stderr).strip())
+        fail("addons/sunflower_field/native/native_field.gd", (result.stdout + result.stderr).strip())
 
 
 def check_history():

@@ -80,7 +80,7 @@ def type_of(node):
     if node.get("enum"):
         t = node.get("enum")
     # A script's own type (a preloaded constant, no class_name) is named after its file:
-    # "addons/sunflower_field/native_field.gd" reads NativeField.
+    # "addons/sunflower_field/native/native_field.gd" reads NativeField.
     script = re.fullmatch(r'"?(?:res://)?[\w/]*/(\w+)\.gd"?', t)
     if script:
         t = "".join(word.capitalize() for word in script.group(1).split("_"))

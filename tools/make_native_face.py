@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Writes addons/sunflower_field/native_field.gd, the typed face of the native simulation, from the
+"""Writes addons/sunflower_field/native/native_field.gd, the typed face of the native simulation, from the
 native classes' docs (gdextension/doc_classes/, which an engine test holds to the library's
 registration: the same methods, arguments and types).
 
@@ -19,7 +19,7 @@ import xml.etree.ElementTree as ET
 
 REPO = pathlib.Path(__file__).resolve().parent.parent
 DOCS = REPO / "gdextension" / "doc_classes"
-TARGET = REPO / "addons" / "sunflower_field" / "native_field.gd"
+TARGET = REPO / "addons" / "sunflower_field" / "native" / "native_field.gd"
 # Each class with the member of NativeField that holds its object.
 CLASSES = [("SunflowerSimulation", "native"), ("SunflowerDrawing", "drawing"), ("SunflowerChanges", "changes")]
 WIDTH = 120

@@ -19,13 +19,13 @@ extends Resource
 ## above it. The built-in sunflower is [method default_plant]: the plant a field grows when it is
 ## given none, never a source of parts for another plant.
 
-const Native: GDScript = preload("native.gd")
+const Native: GDScript = preload("native/native.gd")
 const DEFAULT_PATH: String = "res://addons/sunflower_field/plants/sunflower.tres"
-const PartMeshes: GDScript = preload("part_meshes.gd")
-const ImpostorBaker: GDScript = preload("impostor_baker.gd")
-const WholePlantMesh: GDScript = preload("whole_plant_mesh.gd")
-const PlantMaterial: GDScript = preload("plant_material.gd")
-const ScenePlant: GDScript = preload("scene_plant.gd")
+const PartMeshes: GDScript = preload("plant/part_meshes.gd")
+const ImpostorBaker: GDScript = preload("plant/impostor_baker.gd")
+const WholePlantMesh: GDScript = preload("plant/whole_plant_mesh.gd")
+const PlantMaterial: GDScript = preload("plant/plant_material.gd")
+const ScenePlant: GDScript = preload("plant/scene_plant.gd")
 ## The impostor atlases' views: columns around the plant (the first from its front, +z, turning
 ## towards +x), rows of elevation from the side (0°, top row) to straight above (90°, bottom row).
 const ATLAS_VIEWS: Vector2i = Vector2i(12, 10)

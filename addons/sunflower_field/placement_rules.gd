@@ -12,9 +12,9 @@ extends Resource
 ## The rules run in the native core on worker threads (a million cells in about 0.1 s here), and
 ## the same rules and seed give the same map on every platform.
 
-const Native: GDScript = preload("native.gd")
-const FieldLegend: GDScript = preload("field_legend.gd")
-const FieldGround: GDScript = preload("field_ground.gd")
+const Native: GDScript = preload("native/native.gd")
+const FieldLegend: GDScript = preload("runtime/field_legend.gd")
+const FieldGround: GDScript = preload("runtime/field_ground.gd")
 ## Main-thread time a frame the editor spends reading a field's ground for its rules (a ray a cell on
 ## colliders), when Generate runs them or a brush follows one.
 const GROUND_READ_BUDGET_USEC: int = 20_000

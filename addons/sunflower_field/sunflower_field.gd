@@ -36,15 +36,15 @@ enum GroundSource {
 	HEIGHT_MAP = FieldGround.Source.HEIGHT_MAP,
 }
 
-const Native: GDScript = preload("native.gd")
-const NativeField: GDScript = preload("native_field.gd")
-const FieldDriver: GDScript = preload("field_driver.gd")
-const FieldSettings: GDScript = preload("field_settings.gd")
-const ProjectKnobs: GDScript = preload("field_project_settings.gd")
-const FieldGround: GDScript = preload("field_ground.gd")
-const FieldLegend: GDScript = preload("field_legend.gd")
-const FieldNodes: GDScript = preload("field_nodes.gd")
-const PartMeshes: GDScript = preload("part_meshes.gd")
+const Native: GDScript = preload("native/native.gd")
+const NativeField: GDScript = preload("native/native_field.gd")
+const FieldDriver: GDScript = preload("runtime/field_driver.gd")
+const FieldSettings: GDScript = preload("runtime/field_settings.gd")
+const ProjectKnobs: GDScript = preload("runtime/field_project_settings.gd")
+const FieldGround: GDScript = preload("runtime/field_ground.gd")
+const FieldLegend: GDScript = preload("runtime/field_legend.gd")
+const FieldNodes: GDScript = preload("runtime/field_nodes.gd")
+const PartMeshes: GDScript = preload("plant/part_meshes.gd")
 ## The thesis' switch distances, [member lod_distances]' default.
 const DEFAULT_LOD_DISTANCES: PackedFloat32Array = [6.0, 10.0, 20.0, 25.0]
 ## The properties that edit [member wind]: stored there, so not in the scene a second time.

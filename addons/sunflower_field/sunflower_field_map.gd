@@ -8,7 +8,7 @@ extends Resource
 ## [method from_file] at run time. The text is kept as bytes and parsed by the native core, which
 ## reports errors with file, line and column.
 
-const Native: GDScript = preload("native.gd")
+const Native: GDScript = preload("native/native.gd")
 
 ## Where the map came from; names the file in error messages.
 @export var source_path: String = ""

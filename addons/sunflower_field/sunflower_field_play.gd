@@ -50,8 +50,8 @@ enum State {
 
 ## A save file's suffix while it is written (renamed over the save once complete).
 const PARTIAL_SUFFIX: String = ".partial"
-const NativeField: GDScript = preload("native_field.gd")
-const FieldGround: GDScript = preload("field_ground.gd")
+const NativeField: GDScript = preload("native/native_field.gd")
+const FieldGround: GDScript = preload("runtime/field_ground.gd")
 
 var _field: Node3D
 var _simulation: Callable  # the field's NativeField drawn now, or null

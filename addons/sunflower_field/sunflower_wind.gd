@@ -18,7 +18,7 @@ extends Resource
 ## The wind models.
 enum Model { THESIS, NATURAL }
 
-const Native: GDScript = preload("native.gd")
+const Native: GDScript = preload("native/native.gd")
 
 ## [b]Natural[/b]: a downwind lean, sway and rolling gusts, for games. [b]Thesis[/b]: the thesis'
 ## equations exactly, swinging about upright (for reproducing it).

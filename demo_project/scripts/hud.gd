@@ -48,7 +48,7 @@ func _ready() -> void:
 	_maps.item_selected.connect(func(index: int) -> void: map_chosen.emit(_map_paths[index]))
 	add_child(_maps)
 	# The addon's own progress display, shown while a large map builds in the background.
-	var progress: Control = preload("res://addons/sunflower_field/build_progress_bar.gd").new()
+	var progress: Control = preload("res://addons/sunflower_field/editor/build_progress_bar.gd").new()
 	progress.anchor_left = 1.0
 	progress.anchor_right = 1.0
 	progress.offset_left = -260.0

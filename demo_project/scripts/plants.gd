@@ -15,7 +15,7 @@ const SCENES: Dictionary = {
 const FOLDER: String = "user://demo_plants"
 ## Their leaves' flutter in the wind ([member SunflowerPlant.flutter]).
 const FLUTTER: float = 0.2
-const ImpostorBaker: GDScript = preload("res://addons/sunflower_field/impostor_baker.gd")
+const ImpostorBaker: GDScript = preload("res://addons/sunflower_field/plant/impostor_baker.gd")
 const PLANT_SURFACE_PATH: String = "res://addons/sunflower_field/shaders/plant_surface.gdshaderinc"
 
 

@@ -5,7 +5,6 @@
 #include "binding/class_binder.h"
 #include "convert.h"
 #include "binding/error_macros.h"
-#include "binding/rendering_server.h"
 
 #include <algorithm>
 #include <chrono>

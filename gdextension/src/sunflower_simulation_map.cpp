@@ -2,15 +2,7 @@
 #include "sunflower_map.h"
 #include "sunflower_simulation.h"
 
-#include "binding/class_binder.h"
 #include "convert.h"
-#include "binding/error_macros.h"
-#include "binding/rendering_server.h"
-
-#include <algorithm>
-#include <chrono>
-#include <cmath>
-#include <iterator>
 
 using namespace sunflower;
 

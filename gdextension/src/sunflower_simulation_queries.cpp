@@ -1,16 +1,11 @@
-// SunflowerSimulation's queries: plants and their levels, counts, buckets filled, costs, and the
-// core's parameter rules for the node's setters.
+// SunflowerSimulation's queries: plants and their levels, counts, pushes and costs.
 #include "sunflower_simulation.h"
 
-#include "binding/class_binder.h"
 #include "convert.h"
 #include "binding/error_macros.h"
-#include "binding/rendering_server.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
-#include <iterator>
 
 using namespace sunflower;
 

@@ -8,8 +8,8 @@ extends EditorPlugin
 ## of the editor each time. Prints "probe: ok" or what failed, then quits the editor.
 
 const PLANT_PATH: String = "res://my_plant.tres"
-const SceneDropButton: GDScript = preload("res://addons/sunflower_field/scene_drop_button.gd")
-const ScenePlant: GDScript = preload("res://addons/sunflower_field/scene_plant.gd")
+const SceneDropButton: GDScript = preload("res://addons/sunflower_field/editor/scene_drop_button.gd")
+const ScenePlant: GDScript = preload("res://addons/sunflower_field/plant/scene_plant.gd")
 ## The test plants dropped (PROBE_PLANTS, comma-separated, or the grass clump alone: baking a tree or
 ## a bush in the software-rendered editor takes minutes).
 const TEST_PLANTS: PackedStringArray = ["maple_tree", "bottlebrush_bush", "grass_clump"]

@@ -28,7 +28,7 @@ func _run() -> void:
 	EditorInterface.edit_node(field)
 	await _frames(5)
 	field.finish_build()
-	var painter: RefCounted = load("res://addons/sunflower_field/field_painter.gd").get("active")
+	var painter: RefCounted = load("res://addons/sunflower_field/editor/field_painter.gd").get("active")
 	_check(painter != null and painter.toolbar.visible, "the painter's toolbar shows for a selected field")
 	await _check_toolbar_follows_the_field(painter, field)
 	var camera: Camera3D = Camera3D.new()

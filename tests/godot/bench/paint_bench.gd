@@ -6,7 +6,7 @@ extends SceneTree
 ## the previews made against those they kept.
 
 const FRAMES: int = 90
-const FieldPainter: GDScript = preload("res://addons/sunflower_field/field_painter.gd")
+const FieldPainter: GDScript = preload("res://addons/sunflower_field/editor/field_painter.gd")
 
 
 func _initialize() -> void:

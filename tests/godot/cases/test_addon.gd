@@ -1,7 +1,7 @@
 extends TestCase
 ## The addon loads: the native class, the node, the resources and the imported demo map.
 
-const ProjectKnobs: GDScript = preload("res://addons/sunflower_field/field_project_settings.gd")
+const ProjectKnobs: GDScript = preload("res://addons/sunflower_field/runtime/field_project_settings.gd")
 const NATIVE_CLASSES: PackedStringArray = [
 	"SunflowerSimulation",
 	"SunflowerDrawing",
@@ -228,8 +228,10 @@ func _stored(root: Node) -> PackedStringArray:
 ## The drop button in a field's inspector never widens the dock (its text was 170 px wider than the
 ## dock's default width), whatever step of an import it shows.
 func test_the_drop_button_fits_a_narrow_dock() -> void:
-	var button: Button = load("res://addons/sunflower_field/scene_drop_button.gd").new()
-	for label: String in [button.text] + Array(load("res://addons/sunflower_field/scene_plant_inspector.gd").STEPS):
+	var button: Button = load("res://addons/sunflower_field/editor/scene_drop_button.gd").new()
+	for label: String in (
+		[button.text] + Array(load("res://addons/sunflower_field/editor/scene_plant_inspector.gd").STEPS)
+	):
 		button.text = label
 		check(button.get_minimum_size().x <= 120.0, "'%s' asks for %.0f px" % [label, button.get_minimum_size().x])
 	button.free()

@@ -3,7 +3,7 @@ extends TestCase
 ## the parts' colours where they stand and whose normals point the way the faces seen do; a field
 ## growing it draws them; the built-in sunflower baked again matches the atlases the addon ships.
 
-const ImpostorBaker: GDScript = preload("res://addons/sunflower_field/impostor_baker.gd")
+const ImpostorBaker: GDScript = preload("res://addons/sunflower_field/plant/impostor_baker.gd")
 const FOLDER: String = "user://bake_test"
 const RED: Color = Color(0.85, 0.1, 0.1)
 const GREEN: Color = Color(0.1, 0.6, 0.15)

@@ -2,8 +2,8 @@ extends TestCase
 ## The frame budget: the controller alone against a cost model, and a field at head height held to a
 ## cap on its near meshes' triangles in simulated frames (a 60th of a second each, headless).
 
-const FieldBudget: GDScript = preload("res://addons/sunflower_field/field_budget.gd")
-const ProjectKnobs: GDScript = preload("res://addons/sunflower_field/field_project_settings.gd")
+const FieldBudget: GDScript = preload("res://addons/sunflower_field/runtime/field_budget.gd")
+const ProjectKnobs: GDScript = preload("res://addons/sunflower_field/runtime/field_project_settings.gd")
 const Maps: GDScript = preload("res://runner/maps.gd")
 const Stage: GDScript = preload("res://runner/stage.gd")
 const FRAME: float = 1.0 / 60.0

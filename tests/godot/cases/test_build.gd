@@ -3,10 +3,10 @@ extends TestCase
 ## frames while the previous field stays drawn; progress is reported (also by the editor's progress
 ## bar) and ends in one field_built; a bad large map leaves the field as it was.
 
-const FarTileTable: GDScript = preload("res://addons/sunflower_field/far_tile_table.gd")
-const NativeField: GDScript = preload("res://addons/sunflower_field/native_field.gd")
+const FarTileTable: GDScript = preload("res://addons/sunflower_field/runtime/far_tile_table.gd")
+const NativeField: GDScript = preload("res://addons/sunflower_field/native/native_field.gd")
 const DEMO_MAP: SunflowerFieldMap = preload("res://fields/demo.field")
-const ProgressBarScript: GDScript = preload("res://addons/sunflower_field/build_progress_bar.gd")
+const ProgressBarScript: GDScript = preload("res://addons/sunflower_field/editor/build_progress_bar.gd")
 
 var field: SunflowerField
 var progress: Array[float] = []

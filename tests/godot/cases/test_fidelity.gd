@@ -8,7 +8,7 @@ extends TestCase
 ## Prints the figures; with FIDELITY_FULL=1 it measures every view and switch (tools/measure_lod.sh),
 ## otherwise the views and the switch that tell most, within the test command's time.
 
-const NativeField: GDScript = preload("res://addons/sunflower_field/native_field.gd")
+const NativeField: GDScript = preload("res://addons/sunflower_field/native/native_field.gd")
 const Stage: GDScript = preload("res://runner/stage.gd")
 const Picture: GDScript = preload("res://runner/picture.gd")
 const Maps: GDScript = preload("res://runner/maps.gd")

@@ -2,8 +2,8 @@ extends TestCase
 ## SunflowerField in a scene: layout against the map, LOD against the observer, buffers in the
 ## RenderingServer, wind, and the exactly-once invariant reconstructed from engine state.
 
-const FarTileTable: GDScript = preload("res://addons/sunflower_field/far_tile_table.gd")
-const NativeField: GDScript = preload("res://addons/sunflower_field/native_field.gd")
+const FarTileTable: GDScript = preload("res://addons/sunflower_field/runtime/far_tile_table.gd")
+const NativeField: GDScript = preload("res://addons/sunflower_field/native/native_field.gd")
 ## Floats per instance in the native MultiMesh buffers (transform, then colour).
 const STRIDE: int = SunflowerDrawing.FLOATS_PER_INSTANCE
 

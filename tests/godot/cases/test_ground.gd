@@ -234,7 +234,7 @@ func test_collider_rays_keep_frames_within_the_build_budget() -> void:
 func test_the_painters_brush_sits_on_the_height_map() -> void:
 	var field: SunflowerField = _field(SunflowerField.GroundSource.HEIGHT_MAP)
 	field.finish_build()
-	var painter: RefCounted = load("res://addons/sunflower_field/field_painter.gd").new(null)
+	var painter: RefCounted = load("res://addons/sunflower_field/editor/field_painter.gd").new(null)
 	painter.edit(field)
 	var camera: Camera3D = Camera3D.new()
 	tree.root.add_child(camera)

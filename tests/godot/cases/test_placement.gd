@@ -228,12 +228,12 @@ func test_a_brush_following_a_rule_paints_only_where_the_rule_lets_plants_grow()
 	level.spacing_distance = 1.5
 	field.placement_rules = SunflowerPlacementRules.new()
 	field.placement_rules.layers = [trees, level]
-	var brush: RefCounted = load("res://addons/sunflower_field/rule_brush.gd").new()
+	var brush: RefCounted = load("res://addons/sunflower_field/editor/rule_brush.gd").new()
 	check_eq(brush.problem(field), "", "no layer followed: nothing in the way")
 	await brush.follow(field, 1)
 	check_eq(brush.problem(field), "", "the ground is read")
 	# A tree at cell (50, 30) in the map the stroke begins on.
-	var native: GDScript = load("res://addons/sunflower_field/native.gd")
+	var native: GDScript = load("res://addons/sunflower_field/native/native.gd")
 	var editor: RefCounted = native.create_map()
 	var text: String = "62 62\n" + "\n".repeat(30) + ".".repeat(50) + "g\n"
 	check_eq(editor.load(text.to_utf8_buffer(), "brush.field", "S", "g", 0), "", "the map reads")

@@ -5,14 +5,14 @@ extends TestCase
 ## the impostor quads cut to what the plant's views show; an atlas read with the rows it was baked
 ## with; plain StandardMaterial3D parts taken over by the plant material.
 
-const FarTileTable: GDScript = preload("res://addons/sunflower_field/far_tile_table.gd")
-const NativeField: GDScript = preload("res://addons/sunflower_field/native_field.gd")
+const FarTileTable: GDScript = preload("res://addons/sunflower_field/runtime/far_tile_table.gd")
+const NativeField: GDScript = preload("res://addons/sunflower_field/native/native_field.gd")
 const DEMO_MAP: SunflowerFieldMap = preload("res://fields/demo.field")
-const ImpostorSetScript: GDScript = preload("res://addons/sunflower_field/impostor_set.gd")
-const PlantMaterialScript: GDScript = preload("res://addons/sunflower_field/plant_material.gd")
+const ImpostorSetScript: GDScript = preload("res://addons/sunflower_field/runtime/impostor_set.gd")
+const PlantMaterialScript: GDScript = preload("res://addons/sunflower_field/plant/plant_material.gd")
 const Dressing: GDScript = preload("res://runner/dressing.gd")
-const ImpostorBaker: GDScript = preload("res://addons/sunflower_field/impostor_baker.gd")
-const BakeLight: GDScript = preload("res://addons/sunflower_field/bake_light.gd")
+const ImpostorBaker: GDScript = preload("res://addons/sunflower_field/plant/impostor_baker.gd")
+const BakeLight: GDScript = preload("res://addons/sunflower_field/plant/bake_light.gd")
 
 var fields: Array[SunflowerField] = []
 

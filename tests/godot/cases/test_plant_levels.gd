@@ -7,9 +7,9 @@ const Picture: GDScript = preload("res://runner/picture.gd")
 const Stage: GDScript = preload("res://runner/stage.gd")
 const Maps: GDScript = preload("res://runner/maps.gd")
 const Scenes: GDScript = preload("res://runner/scenes.gd")
-const ScenePlant: GDScript = preload("res://addons/sunflower_field/scene_plant.gd")
-const MeshPieces: GDScript = preload("res://addons/sunflower_field/mesh_pieces.gd")
-const CardSlices: GDScript = preload("res://addons/sunflower_field/card_slices.gd")
+const ScenePlant: GDScript = preload("res://addons/sunflower_field/plant/scene_plant.gd")
+const MeshPieces: GDScript = preload("res://addons/sunflower_field/plant/mesh_pieces.gd")
+const CardSlices: GDScript = preload("res://addons/sunflower_field/plant/card_slices.gd")
 ## The Sapling test plants (TEST_PLANTS in TEST_PLANT_FOLDER).
 const ScenePlantTests: GDScript = preload("res://cases/test_scene_plant.gd")
 

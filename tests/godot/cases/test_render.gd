@@ -2,8 +2,8 @@ extends TestCase
 ## Renders the demo field from a fixed viewpoint with the real renderer (run under Xvfb), saves
 ## the screenshot to tests/artifacts/, and checks that sunflower colours are where the field is.
 
-const FarTileTable: GDScript = preload("res://addons/sunflower_field/far_tile_table.gd")
-const NativeField: GDScript = preload("res://addons/sunflower_field/native_field.gd")
+const FarTileTable: GDScript = preload("res://addons/sunflower_field/runtime/far_tile_table.gd")
+const NativeField: GDScript = preload("res://addons/sunflower_field/native/native_field.gd")
 const Picture: GDScript = preload("res://runner/picture.gd")
 const Stage: GDScript = preload("res://runner/stage.gd")
 const Maps: GDScript = preload("res://runner/maps.gd")

@@ -3,7 +3,7 @@ extends TestCase
 ## the field keeps what it had; bad values are rejected or clamped with a warning naming the
 ## property; adding, removing, re-parenting, duplicating and freeing leave nothing behind.
 
-const NativeField: GDScript = preload("res://addons/sunflower_field/native_field.gd")
+const NativeField: GDScript = preload("res://addons/sunflower_field/native/native_field.gd")
 const DEMO_MAP: SunflowerFieldMap = preload("res://fields/demo.field")
 const LARGE_MAP: SunflowerFieldMap = preload("res://fields/large.field")
 
@@ -112,7 +112,7 @@ func test_bad_values_are_rejected_or_clamped_with_a_warning() -> void:
 	field.impostor_shadows_from = 7
 	check_eq(field.impostor_shadows_from, SunflowerField.Lod.SPRITE, "a level past Never is Never")
 	check(warned("SunflowerField.impostor_shadows_from: 7"), "and warns")
-	var knobs: GDScript = load("res://addons/sunflower_field/field_project_settings.gd")
+	var knobs: GDScript = load("res://addons/sunflower_field/runtime/field_project_settings.gd")
 	set_project_setting(knobs.BUDGET_GPU_MS, NAN)
 	check_eq(knobs.budget_gpu_ms(), 0.0, "a NaN GPU budget in Project Settings keeps none")
 	check(warned("sunflower_field/frame_budget/gpu_ms: nan is not a finite number"), "and warns, naming it")

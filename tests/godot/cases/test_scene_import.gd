@@ -8,7 +8,7 @@ extends TestCase
 ## Needs a renderer (the engine suite): a MultiMesh keeps its instances in the rendering server,
 ## which --headless does not keep.
 
-const ScenePlant: GDScript = preload("res://addons/sunflower_field/scene_plant.gd")
+const ScenePlant: GDScript = preload("res://addons/sunflower_field/plant/scene_plant.gd")
 const Scenes: GDScript = preload("res://runner/scenes.gd")
 
 

@@ -9,10 +9,10 @@ const Picture: GDScript = preload("res://runner/picture.gd")
 const Stage: GDScript = preload("res://runner/stage.gd")
 const Maps: GDScript = preload("res://runner/maps.gd")
 const Dressing: GDScript = preload("res://runner/dressing.gd")
-const ScenePlant: GDScript = preload("res://addons/sunflower_field/scene_plant.gd")
-const ScenePieces: GDScript = preload("res://addons/sunflower_field/scene_pieces.gd")
+const ScenePlant: GDScript = preload("res://addons/sunflower_field/plant/scene_plant.gd")
+const ScenePieces: GDScript = preload("res://addons/sunflower_field/plant/scene_pieces.gd")
 const Scenes: GDScript = preload("res://runner/scenes.gd")
-const ImpostorBaker: GDScript = preload("res://addons/sunflower_field/impostor_baker.gd")
+const ImpostorBaker: GDScript = preload("res://addons/sunflower_field/plant/impostor_baker.gd")
 const CROWN_PLACE: Vector3 = Vector3(0.5, 3.0, 0.0)
 const CROWN_SCALE: float = 1.5
 ## Plants made by Blender's Sapling Tree Gen (assets/test_plants/make_test_plants.py).

@@ -3,7 +3,7 @@ extends TestCase
 ## the simulation drawn by their rows of the core's table, the core says what a change costs, and
 ## the driver keeps no copy of them (a field built meanwhile gets what the node holds).
 
-const ProjectKnobs: GDScript = preload("res://addons/sunflower_field/field_project_settings.gd")
+const ProjectKnobs: GDScript = preload("res://addons/sunflower_field/runtime/field_project_settings.gd")
 
 var field: SunflowerField
 var observer: Node3D

@@ -4,8 +4,8 @@ extends TestCase
 ## the field's. A render of a hilly field mixing the sunflower and the red sunflower shows both,
 ## standing on the hills (saved to tests/artifacts/render_hilly_mixed.png).
 
-const FarTileTable: GDScript = preload("res://addons/sunflower_field/far_tile_table.gd")
-const NativeField: GDScript = preload("res://addons/sunflower_field/native_field.gd")
+const FarTileTable: GDScript = preload("res://addons/sunflower_field/runtime/far_tile_table.gd")
+const NativeField: GDScript = preload("res://addons/sunflower_field/native/native_field.gd")
 const RED: SunflowerPlant = preload("res://addons/sunflower_field/plants/red_sunflower.tres")
 const SHOT: String = "render_hilly_mixed.png"
 

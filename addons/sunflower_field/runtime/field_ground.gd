@@ -8,7 +8,7 @@ extends RefCounted
 ## The ground sources (the node's [code]ground_source[/code]).
 enum Source { FLAT, COLLIDERS, HEIGHT_MAP }
 
-const NativeField: GDScript = preload("native_field.gd")
+const NativeField: GDScript = preload("../native/native_field.gd")
 ## Rays cast between two clock reads (about 0.1 ms of them); a step stops when one more batch
 ## would overrun its budget.
 const RAYS_PER_CLOCK_READ: int = 64

@@ -12,8 +12,8 @@ extends RefCounted
 ## What a drag does.
 enum Mode { OFF, PAINT, ERASE }
 
-const Native: GDScript = preload("native.gd")
-const NativeField: GDScript = preload("native_field.gd")
+const Native: GDScript = preload("../native/native.gd")
+const NativeField: GDScript = preload("../native/native_field.gd")
 const RuleBrush: GDScript = preload("rule_brush.gd")
 const MapFiles: GDScript = preload("map_files.gd")
 ## The stroke's preview is rebuilt at most this often, milliseconds.

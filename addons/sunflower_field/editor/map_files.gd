@@ -5,8 +5,8 @@ extends RefCounted
 ## given the written map at once and the file reimported at a later frame, when no import runs.
 ## The painter (field_painter.gd), the map inspector's buttons and Generate from rules write through it.
 
-const Native: GDScript = preload("native.gd")
-const FieldLegend: GDScript = preload("field_legend.gd")
+const Native: GDScript = preload("../native/native.gd")
+const FieldLegend: GDScript = preload("../runtime/field_legend.gd")
 
 ## The last error ("" when none), for tests and the painter's toolbar.
 var last_error: String = ""

@@ -9,8 +9,8 @@ extends RefCounted
 ## ignores, and the node applies them itself. A new float the core uses needs its table row, an
 ## export of the same name and the unit that uses it; nothing here (CONTRIBUTING.md shows one).
 
-const Native: GDScript = preload("native.gd")
-const NativeField: GDScript = preload("native_field.gd")
+const Native: GDScript = preload("../native/native.gd")
+const NativeField: GDScript = preload("../native/native_field.gd")
 
 ## What a change costs (the table's [code]ParameterSpec::Cost[/code]): taken at the next update.
 const FREE: int = 0

@@ -10,7 +10,7 @@ extends RefCounted
 ## reads it) and again after the field's settings change; the layers themselves are read again at
 ## every stroke, so an edited rule applies at the next stroke.
 
-const FieldLegend: GDScript = preload("field_legend.gd")
+const FieldLegend: GDScript = preload("../runtime/field_legend.gd")
 
 ## The layer followed, counted from 0; -1: none (the brush paints anywhere).
 var layer: int = -1

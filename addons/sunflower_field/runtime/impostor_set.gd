@@ -10,8 +10,8 @@ extends RefCounted
 ## twin (shaders/impostor_shadow.gdshader), drawn from the same records by nodes that cast shadows
 ## only; every other parameter is set on all four.
 
-const SHADER: Shader = preload("shaders/impostor.gdshader")
-const SHADOW_SHADER: Shader = preload("shaders/impostor_shadow.gdshader")
+const SHADER: Shader = preload("../shaders/impostor.gdshader")
+const SHADOW_SHADER: Shader = preload("../shaders/impostor_shadow.gdshader")
 ## The shader's sampler of each of [constant SunflowerPlant.IMPOSTOR_TEXTURES].
 const ATLAS_PARAMETERS: Dictionary = {"views": "view_atlas", "normals": "normal_atlas", "depths": "depth_atlas"}
 

@@ -6,8 +6,8 @@ extends RefCounted
 ## as [code]<map>.field.generated[/code] (the same text format, not imported): a cell where the map
 ## differs from it was edited by hand, and keeps its edit.
 
-const Native: GDScript = preload("native.gd")
-const FieldLegend: GDScript = preload("field_legend.gd")
+const Native: GDScript = preload("../native/native.gd")
+const FieldLegend: GDScript = preload("../runtime/field_legend.gd")
 ## Added to a map's path for the last generation's cells.
 const GENERATED_SUFFIX: String = ".generated"
 ## What [member _running] holds for a field while its ground is read, and once that is cancelled.

@@ -4,8 +4,8 @@ extends RefCounted
 ## its box, level, parent and distances), read from the library in three calls when a field's tile
 ## nodes are made, instead of several calls per tile.
 
-const Native: GDScript = preload("native.gd")
-const NativeField: GDScript = preload("native_field.gd")
+const Native: GDScript = preload("../native/native.gd")
+const NativeField: GDScript = preload("../native/native_field.gd")
 
 ## Tiles in the field.
 var count: int = 0

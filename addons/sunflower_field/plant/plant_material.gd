@@ -16,7 +16,7 @@ extends RefCounted
 ## are baked from the albedo, the light given off and the back-light of the parts drawn through the
 ## plant material.)
 
-const PARTS_SHADER: Shader = preload("shaders/plant_parts.gdshader")
+const PARTS_SHADER: Shader = preload("../shaders/plant_parts.gdshader")
 ## The StandardMaterial3D properties carried over (or, for cull_mode, allowed either way).
 const CARRIED: PackedStringArray = [
 	"albedo_color",

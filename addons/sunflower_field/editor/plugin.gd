@@ -7,7 +7,7 @@ extends EditorPlugin
 ## the machine-wide settings to Project Settings (field_project_settings.gd).
 ## The [SunflowerField] node itself is registered by its [code]class_name[/code].
 
-const Native: GDScript = preload("native.gd")
+const Native: GDScript = preload("../native/native.gd")
 
 var _importer: EditorImportPlugin
 var _progress: Control
@@ -21,7 +21,7 @@ func _enter_tree() -> void:
 	if not Native.is_available():
 		Native.report_missing()
 	else:
-		preload("field_project_settings.gd").register()  # the machine-wide settings, with their limits
+		preload("../runtime/field_project_settings.gd").register()  # the machine-wide settings, with their limits
 	_importer = preload("field_map_import_plugin.gd").new()
 	add_import_plugin(_importer)
 	_progress = preload("build_progress_bar.gd").new()

@@ -8,7 +8,7 @@ extends RefCounted
 ## [code]"ProjectSettings." + the setting[/code]; a bad value is warned about once, naming the setting.
 ## A game may change them at run time ([method ProjectSettings.set_setting]); fields follow.
 
-const Native: GDScript = preload("native.gd")
+const Native: GDScript = preload("../native/native.gd")
 
 ## Threads that move the plants near the observer, the main thread included: 0 uses the machine's
 ## cores (at most 4), 1 keeps the work on the main thread.

@@ -11,20 +11,19 @@ extends RefCounted
 ## the near plants, and the scenes the legend places; and per species the active-chunk mask that
 ## keeps the tiles from drawing the plants the near buckets draw. The only script that makes
 ## MultiMeshes or sets visibility ranges. Tile nodes can be made a few at a time, hidden, and shown
-## at once.
+## at once. (The cells' textures the impostors read are cell_textures.gd's; how far the sun's shadows
+## reach, sun_reach.gd's.)
 
-const Native: GDScript = preload("native.gd")
-const NativeField: GDScript = preload("native_field.gd")
+const Native: GDScript = preload("../native/native.gd")
+const NativeField: GDScript = preload("../native/native_field.gd")
 const ImpostorSet: GDScript = preload("impostor_set.gd")
 const FarTileTable: GDScript = preload("far_tile_table.gd")
-const PartMeshes: GDScript = preload("part_meshes.gd")
-## Godot's default DirectionalLight3D.directional_shadow_max_distance: how far the sun's shadows
-## reach when the field's viewport has no shadow-casting directional light (yet).
-const SUN_SHADOW_DISTANCE: float = 100.0
+const PartMeshes: GDScript = preload("../plant/part_meshes.gd")
+const CellTextures: GDScript = preload("cell_textures.gd")
+const SunReach: GDScript = preload("sun_reach.gd")
+const LegendScenes: GDScript = preload("legend_scenes.gd")
 ## The name of the child of each impostor node that draws its shadows.
 const CASTER_NAME: String = "ShadowCaster"
-## The hidden cells' texture is this many bytes wide (the shader's HIDDEN_TEXTURE_WIDTH).
-const HIDDEN_TEXTURE_WIDTH: int = 4096
 ## The parts of a plant, bottom to top, as node names use them.
 const PART_NAMES: PackedStringArray = PartMeshes.PART_NAMES
 
@@ -53,17 +52,13 @@ var _mesh_nodes: Array[MultiMeshInstance3D] = []  # the near mesh levels' nodes,
 var _mesh_node_levels: PackedInt32Array = []
 var _mesh_node_species: PackedInt32Array = []
 var _whole: Array[bool] = []  # per species: its near plants drawn whole (one node per level)
-var _masks: Array[ImageTexture] = []  # per species: which chunk cells the near buckets draw
-var _mask_version: int = -1  # the simulation's mask version the textures show
-var _hidden: ImageTexture  # the cells whose plant play took down, once there are any
-var _hidden_version: int = -1  # the simulation's hidden-cells version it shows
+var _cell_textures: CellTextures
 var _cell_size: float = 0.0
 ## The field drawn before this one: tiles that draw the same here take its nodes and GPU buffers.
 var _previous: RefCounted
 var _previous_by_key: Dictionary = {}  # tile key → the previous field's tile
-var _shadow_reach: float = -1.0  # what the tiles' shadows follow (see _sun_shadow_reach; −1: not looked up yet)
-var _suns: Array = []  # DirectionalLight3D nodes, some perhaps freed since (see _find_suns)
-var _suns_stale: bool = true
+var _shadow_reach: float = -1.0  # what the tiles' shadows follow (see follow_sun; −1: not looked up yet)
+var _sun: SunReach
 
 
 ## Nodes of [param owner] for [param field_simulation], its far levels drawn with [param impostors]
@@ -72,6 +67,8 @@ func _init(owner: Node3D, field_simulation: NativeField, impostors: Array[Impost
 	_owner = owner
 	simulation = field_simulation
 	_impostors = impostors
+	_cell_textures = CellTextures.new(field_simulation, impostors)
+	_sun = SunReach.new(owner)
 
 
 ## Builds on [param previous] (the FieldNodes drawn now, or null): a tile that lies where one of
@@ -165,7 +162,7 @@ func _link_parents() -> void:
 ## shadows its tiles cast none, which keeps them out of every shadow pass their boxes reach into.
 func _set_shadow(node: MultiMeshInstance3D, tile: int) -> void:
 	if _shadow_reach < 0.0:
-		_shadow_reach = _sun_shadow_reach()
+		_shadow_reach = _sun.reach()
 	_caster_of(node).visible = tiles.begin(tile) < _shadow_reach
 
 
@@ -174,49 +171,13 @@ func _set_shadow(node: MultiMeshInstance3D, tile: int) -> void:
 ## few properties of the suns it knows, and looks for suns again only when the scene tree gained or
 ## lost a DirectionalLight3D.
 func follow_sun() -> void:
-	var reach: float = _sun_shadow_reach()
+	var reach: float = _sun.reach()
 	if reach == _shadow_reach:
 		return
 	_shadow_reach = reach
 	for tile: int in _tile_nodes.size():
 		if _tile_nodes[tile]:
 			_set_shadow(_tile_nodes[tile], tile)
-
-
-## How far the sun's shadows reach: the farthest directional_shadow_max_distance of the shadow-casting
-## DirectionalLight3D nodes in the field's viewport; SUN_SHADOW_DISTANCE when there is none.
-func _sun_shadow_reach() -> float:
-	if _suns_stale:
-		_find_suns()
-	var reach: float = 0.0
-	for entry: Variant in _suns:
-		if not is_instance_valid(entry):
-			continue
-		var sun: DirectionalLight3D = entry
-		if sun.shadow_enabled and sun.is_visible_in_tree():
-			reach = maxf(reach, sun.directional_shadow_max_distance)
-	return reach if reach > 0.0 else SUN_SHADOW_DISTANCE
-
-
-## The DirectionalLight3D nodes in the field's viewport, looked up again after the tree gains or
-## loses one.
-func _find_suns() -> void:
-	_suns_stale = false
-	_suns.clear()
-	if not _owner.is_inside_tree():
-		_suns_stale = true  # look again once the field is in a tree
-		return
-	var tree: SceneTree = _owner.get_tree()
-	if not tree.node_added.is_connected(_on_tree_changed):
-		tree.node_added.connect(_on_tree_changed)
-		tree.node_removed.connect(_on_tree_changed)
-	for sun: Node in _owner.get_viewport().find_children("*", "DirectionalLight3D", true, false):
-		_suns.append(sun)
-
-
-func _on_tree_changed(node: Node) -> void:
-	if node is DirectionalLight3D:
-		_suns_stale = true
 
 
 ## Hands [param tile]'s node to a field built on this one (and forgets it); null when it has none
@@ -278,7 +239,7 @@ func finish(species_plants: Array, legend: Dictionary, cell_size: float, sway_ma
 		_add_dynamic(impostors, first + Native.constant(&"BUCKET_IMPOSTOR"))
 		_add_caster(impostors, _impostors[species].caster())
 	set_impostor_shadows_from(impostor_shadows_from)
-	_place_objects(legend, cell_size)
+	_object_nodes.append_array(LegendScenes.place(_owner, simulation, legend, cell_size))
 	for tile: int in _tile_nodes.size():
 		var node: MultiMeshInstance3D = _tile_nodes[tile]
 		node.visible = true
@@ -294,61 +255,19 @@ func finish(species_plants: Array, legend: Dictionary, cell_size: float, sway_ma
 ## texture per species, a byte per chunk cell, given to that species' impostor material; and hides
 ## the tiles whose chunks are all drawn near (an instance the shader skips still costs a draw call).
 func update_masks() -> void:
-	var version: int = simulation.get_mask_version()
-	if version == _mask_version:
+	if not _cell_textures.masks_changed():
 		return
-	_mask_version = version
 	var drawn: PackedByteArray = simulation.get_tiles_drawn()
 	# A tile whose chunks are all drawn near is hidden, unless its caster casts for near plants.
 	for tile: int in mini(_tile_nodes.size(), drawn.size()):
 		if _tile_nodes[tile]:
 			_tile_nodes[tile].visible = drawn[tile] != 0 or _casts_from(tile_table().species(tile)) < PartMeshes.LEVELS
-	var grid: PackedInt32Array = simulation.get_chunk_grid()
-	if grid[0] * grid[1] == 0:
-		return  # no field laid out
-	for species: int in simulation.get_species_count():
-		var image: Image = Image.create_from_data(
-			grid[0], grid[1], false, Image.FORMAT_R8, simulation.get_active_mask(species)
-		)
-		if species >= _masks.size():
-			_masks.append(null)
-		_masks[species] = _show_image(_masks[species], image)
-		_impostors[species].set_active_chunks(_masks[species], grid[0])
+	_cell_textures.update_masks()
 
 
-## Hides the impostors of the plants play took down (the simulation's hidden cells), when they
-## changed: a bit a cell, laid out in rows of [constant HIDDEN_TEXTURE_WIDTH] bytes for the shader.
+## Hides the impostors of the plants play took down, when they changed (cell_textures.gd).
 func update_hidden_cells() -> void:
-	var version: int = simulation.get_hidden_version()
-	if version == _hidden_version:
-		return
-	_hidden_version = version
-	var bytes: PackedByteArray = simulation.get_hidden_cells()
-	if bytes.is_empty():
-		for impostors: ImpostorSet in _impostors:
-			impostors.set_shared(&"hidden_cell_size", 0.0)  # nothing hidden
-		return
-	var row_bytes: int = bytes.size() / simulation.get_map_rows()  # (the simulation's rows of bits)
-	var width: int = mini(bytes.size(), HIDDEN_TEXTURE_WIDTH)
-	var height: int = ceili(float(bytes.size()) / width)
-	bytes.resize(width * height)
-	_hidden = _show_image(_hidden, Image.create_from_data(width, height, false, Image.FORMAT_R8, bytes))
-	for impostors: ImpostorSet in _impostors:
-		impostors.set_shared(&"hidden_cells", _hidden)
-		impostors.set_shared(&"hidden_row_bytes", row_bytes)
-		impostors.set_shared(&"hidden_cell_size", _cell_size)
-
-
-## [param texture] showing [param image] now: updated in place when it has the image's size, else
-## made (or given the image) anew.
-static func _show_image(texture: ImageTexture, image: Image) -> ImageTexture:
-	if texture == null:
-		return ImageTexture.create_from_image(image)
-	if texture.get_size() != Vector2(image.get_size()):
-		texture.set_image(image)
-	else:
-		texture.update(image)
-	return texture
+	_cell_textures.update_hidden_cells(_cell_size)
 
 
 ## Near plants of species s from mesh [code]levels[s][/code] on cast no mesh shadows (the far tiles'
@@ -356,7 +275,7 @@ static func _show_image(texture: ImageTexture, image: Image) -> ImageTexture:
 ## levels cast from their meshes or their shadow twins. 3: every mesh level casts.
 func set_impostor_shadows_from(levels: PackedInt32Array) -> void:
 	if levels != impostor_shadows_from:
-		_mask_version = -1  # tiles whose chunks are all near stay drawn for their casters, or not
+		_cell_textures.forget_masks()  # tiles whose chunks are all near stay drawn for their casters, or not
 	impostor_shadows_from = levels
 	for i: int in _mesh_nodes.size():
 		var node: MultiMeshInstance3D = _mesh_nodes[i]
@@ -549,51 +468,3 @@ func _field_aabb() -> AABB:
 		var tile_box: AABB = tiles.aabb(tile)
 		box = tile_box if tile == 0 else box.merge(tile_box)
 	return box
-
-
-func _place_objects(legend: Dictionary, cell_size: float) -> void:
-	var objects: PackedInt32Array = simulation.get_map_objects()
-	var heights: PackedFloat32Array = simulation.get_object_heights()
-	var grounded: int = 0
-	for i: int in range(0, objects.size(), 3):
-		if is_nan(heights[i / 3]):
-			continue  # no ground under it: counted below
-		grounded += 1
-		var symbol: String = String.chr(objects[i + 2])
-		var scene: PackedScene = legend.get(symbol) as PackedScene
-		if scene == null:
-			push_warning(
-				(
-					"SunflowerField.legend: '%s' has no PackedScene; cell (%d, %d) stays empty"
-					% [symbol, objects[i], objects[i + 1]]
-				)
-			)
-			continue
-		var instance: Node = scene.instantiate() if scene.can_instantiate() else null
-		if instance == null:
-			push_warning(
-				(
-					"SunflowerField.legend: '%s' names a scene that makes no node (%s); cell (%d, %d) stays empty"
-					% [
-						symbol,
-						scene.resource_path if not scene.resource_path.is_empty() else "an empty scene",
-						objects[i],
-						objects[i + 1]
-					]
-				)
-			)
-			continue
-		instance.name = "%s_%d_%d" % [instance.name, objects[i], objects[i + 1]]
-		if instance is Node3D:
-			(instance as Node3D).position = Vector3(
-				(objects[i] + 0.5) * cell_size, heights[i / 3], (objects[i + 1] + 0.5) * cell_size
-			)
-		_owner.add_child(instance, false, Node.INTERNAL_MODE_BACK)
-		_object_nodes.append(instance)
-	if grounded < heights.size():
-		push_warning(
-			(
-				"SunflowerField.legend: %d of %d objects have no ground under them and are not placed"
-				% [heights.size() - grounded, heights.size()]
-			)
-		)

@@ -3,7 +3,7 @@ extends EditorImportPlugin
 ## Imports [code].field[/code] text maps as [SunflowerFieldMap] resources. A malformed map fails
 ## to import with an error naming the file, line and column.
 
-const Native: GDScript = preload("native.gd")
+const Native: GDScript = preload("../native/native.gd")
 
 
 func _get_importer_name() -> String:

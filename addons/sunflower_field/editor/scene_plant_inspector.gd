@@ -8,7 +8,7 @@ extends EditorInspectorPlugin
 ## cells to the plant's width when they are narrower (trees 0.5 m apart would stand in each other).
 
 const SceneDropButton: GDScript = preload("scene_drop_button.gd")
-const ScenePlant: GDScript = preload("scene_plant.gd")
+const ScenePlant: GDScript = preload("../plant/scene_plant.gd")
 ## What the progress bar shows, step by step.
 const STEPS: PackedStringArray = ["Merging the scene's meshes…", "Saving the plant…", "Baking its impostors…"]
 

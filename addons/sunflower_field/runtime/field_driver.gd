@@ -15,18 +15,18 @@ signal map_error(message: String)
 ## The frame budget moved the quality (see FieldBudget).
 signal quality_changed(quality: float)
 
-const Native: GDScript = preload("native.gd")
-const NativeField: GDScript = preload("native_field.gd")
+const Native: GDScript = preload("../native/native.gd")
+const NativeField: GDScript = preload("../native/native_field.gd")
 const FieldBudget: GDScript = preload("field_budget.gd")
 const FieldBuild: GDScript = preload("field_build.gd")
 const FieldInteraction: GDScript = preload("field_interaction.gd")
-const FieldPlay: GDScript = preload("sunflower_field_play.gd")
+const FieldPlay: GDScript = preload("../sunflower_field_play.gd")
 const FieldSettings: GDScript = preload("field_settings.gd")
 const ProjectKnobs: GDScript = preload("field_project_settings.gd")
 const FieldNodes: GDScript = preload("field_nodes.gd")
 const FieldObserver: GDScript = preload("field_observer.gd")
 const ImpostorSet: GDScript = preload("impostor_set.gd")
-const PartMeshes: GDScript = preload("part_meshes.gd")
+const PartMeshes: GDScript = preload("../plant/part_meshes.gd")
 ## Maps of at least this many bytes (about as many cells) build in the background when the field's
 ## project setting sunflower_field/performance/background_build is on; smaller ones take a few
 ## milliseconds and build at once.

@@ -5,7 +5,7 @@ extends RefCounted
 ## a static capsule on the physics server for each plant within reach of a pusher or the observer,
 ## made as plants come into reach and freed as they leave (no nodes per plant).
 
-const NativeField: GDScript = preload("native_field.gd")
+const NativeField: GDScript = preload("../native/native_field.gd")
 ## Meta key a pusher may carry to set its own radius (metres); else the field's pusher_radius.
 const RADIUS_META: StringName = &"push_radius"
 

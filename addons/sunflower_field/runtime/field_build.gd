@@ -10,8 +10,8 @@ extends RefCounted
 ## the plants laid out on them (worker), nodes made (main thread).
 enum Phase { READ, RAYS, NODES }
 
-const Native: GDScript = preload("native.gd")
-const NativeField: GDScript = preload("native_field.gd")
+const Native: GDScript = preload("../native/native.gd")
+const NativeField: GDScript = preload("../native/native_field.gd")
 const FieldGround: GDScript = preload("field_ground.gd")
 const FieldLegend: GDScript = preload("field_legend.gd")
 const FieldNodes: GDScript = preload("field_nodes.gd")

@@ -4,7 +4,7 @@ extends RefCounted
 ## the viewport's camera (in the editor, the editor's), and what the simulation needs of it (the
 ## position and, for a camera, the view's planes) in the field's space.
 
-const NativeField: GDScript = preload("native_field.gd")
+const NativeField: GDScript = preload("../native/native_field.gd")
 
 
 ## The observer node of [param field], or null when there is none.

@@ -10,8 +10,8 @@ extends RefCounted
 ## so a plant of one material is one draw call per level. A mesh with another material could not
 ## place its parts, so such a plant is drawn part by part.
 
-const PARTS_SHADER: Shader = preload("shaders/plant_parts.gdshader")
-const WHOLE_SHADER: Shader = preload("shaders/plant_whole.gdshader")
+const PARTS_SHADER: Shader = preload("../shaders/plant_parts.gdshader")
+const WHOLE_SHADER: Shader = preload("../shaders/plant_whole.gdshader")
 const PlantMaterial: GDScript = preload("plant_material.gd")
 ## The vertex arrays a merged surface keeps (the surfaces merged into it must all have the same).
 const KEPT: Array[int] = [Mesh.ARRAY_VERTEX, Mesh.ARRAY_NORMAL, Mesh.ARRAY_TANGENT, Mesh.ARRAY_COLOR, Mesh.ARRAY_TEX_UV]
