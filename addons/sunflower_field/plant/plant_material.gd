@@ -299,7 +299,7 @@ static func _made_shader(shader: Shader, bend: bool, material: Material = null) 
 						+ " names the line); the plant's parts drawn with it keep it unchanged, without the levels'"
 						+ " cross-fade"
 					)
-					% [_named(shader), _named(material) if material else "(none)"]
+					% [named(shader), named(material) if material else "(none)"]
 				)
 			)
 		var code: String = "" if broken else (bending_code(shader.code) if bend else fading_code(shader.code))
@@ -321,7 +321,7 @@ static func _fails_to_compile(shader: Shader) -> bool:
 
 
 ## [param resource] as a message names it: its file (or the file it is built into) and its name.
-static func _named(resource: Resource) -> String:
+static func named(resource: Resource) -> String:
 	var path: String = resource.resource_path if not resource.resource_path.is_empty() else "(built in, unsaved)"
 	return path + (' "%s"' % resource.resource_name if not resource.resource_name.is_empty() else "")
 

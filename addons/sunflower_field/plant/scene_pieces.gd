@@ -9,15 +9,11 @@ extends RefCounted
 ## [member GeometryInstance3D.visibility_range_begin]/[code]_end[/code] (the nearest range level 1).
 ## What it cannot take is a problem naming the node and the reason.
 
-const PlantMaterial: GDScript = preload("plant_material.gd")
 ## The mesh levels a scene's variants fill.
 const LEVELS: int = 3
 
 static var _suffix: RegEx
 static var _instance_uniform: RegEx
-static var _model_space: RegEx
-static var _vertex_function: RegEx
-static var _vertex_word: RegEx
 
 
 ## The pieces [param root] draws: each a Dictionary of [code]"name"[/code] (the node's path in the
@@ -260,54 +256,6 @@ static func instance_parameters(instance: GeometryInstance3D, materials: Array[M
 			if value != null:
 				found[uniform.get_string(1)] = value
 	return found
-
-
-## The pieces whose shader reads model-space positions (the vertex position in its
-## [code]vertex()[/code] function, [code]MODEL_MATRIX[/code], [code]NODE_POSITION_*[/code]) while
-## their node is moved, turned or scaled in the scene: merged, their vertices carry that transform,
-## so the shader sees other positions than in the scene (a colour ramp by height lands elsewhere).
-## A sentence each, naming the node and the shader. The addon's own shaders are not named.
-static func model_space_problems(pieces: Array[Dictionary]) -> PackedStringArray:
-	if _model_space == null:
-		_model_space = RegEx.create_from_string("\\b(MODEL_MATRIX|NODE_POSITION_WORLD|NODE_POSITION_VIEW)\\b")
-		_vertex_function = RegEx.create_from_string("void\\s+vertex\\s*\\(\\s*\\)\\s*\\{")
-		_vertex_word = RegEx.create_from_string("\\bVERTEX\\b")
-	var named: Dictionary = {}  # node path → true (a MultiMesh's instances are one node)
-	var problems: PackedStringArray = []
-	for piece: Dictionary in pieces:
-		if named.has(piece.name) or (piece.transform as Transform3D).is_equal_approx(Transform3D.IDENTITY):
-			continue
-		for material: Material in piece.materials:
-			var shader: Shader = (material as ShaderMaterial).shader if material is ShaderMaterial else null
-			if shader == null or shader.resource_path.begins_with(PlantMaterial.ADDON_FOLDER):
-				continue
-			if _model_space.search(shader.code) or _reads_vertex_in_vertex(shader.code):
-				named[piece.name] = true
-				problems.append(
-					(
-						(
-							"%s: its shader %s reads model-space positions, and the node's transform is merged into the"
-							+ " plant's vertices: it sees the plant's model space, not the node's (keep the node at the"
-							+ " scene root's transform, or read positions the plant's way)"
-						)
-						% [piece.name, shader.resource_path if not shader.resource_path.is_empty() else "(built in)"]
-					)
-				)
-				break
-	return problems
-
-
-## Whether [param code]'s [code]vertex()[/code] function reads [code]VERTEX[/code].
-static func _reads_vertex_in_vertex(code: String) -> bool:
-	var start: RegExMatch = _vertex_function.search(code)
-	if start == null:
-		return false
-	var depth: int = 1
-	var at: int = start.get_end()
-	while at < code.length() and depth > 0:
-		depth += 1 if code[at] == "{" else (-1 if code[at] == "}" else 0)
-		at += 1
-	return _vertex_word.search(code.substr(start.get_end(), at - start.get_end())) != null
 
 
 ## Levels from the names' suffixes: the suffixes present, lowest first, are levels 1, 2, 3 (a gap,

@@ -39,6 +39,7 @@ const NORMAL_MERGE_ANGLE: float = 60.0
 const NORMAL_SPLIT_ANGLE: float = 25.0
 const WholePlantMesh: GDScript = preload("whole_plant_mesh.gd")
 const ScenePieces: GDScript = preload("scene_pieces.gd")
+const NodeSpace: GDScript = preload("node_space.gd")
 const MeshPieces: GDScript = preload("mesh_pieces.gd")
 const PlantCover: GDScript = preload("plant_cover.gd")
 const CardSlices: GDScript = preload("card_slices.gd")
@@ -56,7 +57,7 @@ static func levels_of(scene: PackedScene) -> Dictionary:
 		return {"levels": [null, null, null], "generated": false, "triangles": [0, 0, 0], "problems": problems}
 	var pieces: Array[Dictionary] = ScenePieces.of(root, problems)
 	root.free()
-	problems.append_array(ScenePieces.model_space_problems(pieces))
+	NodeSpace.keep(pieces, problems)
 	var parameters: Dictionary = _instance_parameters(pieces, problems)
 	var variants: bool = pieces.any(func(piece: Dictionary) -> bool: return piece.level >= 0)
 	var levels: Array = []

@@ -287,34 +287,97 @@ func test_instance_shader_parameters_are_carried_to_the_field() -> void:
 	field.free()
 
 
-## A shader that reads model-space positions on a node that is moved or scaled in the scene is named
-## (#60 item 3): merged, the node's transform is in the plant's vertices, so the shader sees other
-## positions than in the scene. The same shader on a node at the root's transform, and a shader
-## that reads none, are not named.
-func test_a_shader_reading_model_space_on_a_moved_node_is_named() -> void:
+## A shader of your own that colours by the height VERTEX has in its vertex(), on a node moved and
+## scaled in the scene, looks as in the scene (#60 item 3): the merge puts the node's transform into
+## the plant's vertices, and the part is drawn by a copy of the shader that takes them back into the
+## node's space. The lone plant drawn at mesh 1 shows the same share of the shader's two colours as
+## the scene drawn plainly (without the copy: none of the lower colour). A shader reading
+## MODEL_MATRIX, which each plant of a field has its own of, is named instead.
+func test_a_shader_reading_positions_on_a_moved_node_sees_the_nodes_space() -> void:
 	var by_height: ShaderMaterial = ShaderMaterial.new()
 	by_height.shader = Shader.new()
 	by_height.shader.code = (
-		"shader_type spatial;\nvarying float h;\nvoid vertex() {\n\th = VERTEX.y;\n}\n"
-		+ "void fragment() {\n\tALBEDO = mix(vec3(0.3, 0.4, 0.5), vec3(1.0, 0.9, 0.2), h);\n}\n"
+		"shader_type spatial;\nrender_mode unshaded;\nvarying float h;\nvoid vertex() {\n\th = VERTEX.y;\n}\n"
+		+ "void fragment() {\n\tALBEDO = h > 0.0 ? vec3(1.0, 0.9, 0.0) : vec3(0.0, 0.2, 1.0);\n}\n"
 	)
-	var plain: ShaderMaterial = ShaderMaterial.new()
-	plain.shader = Shader.new()
-	plain.shader.code = "shader_type spatial;\nvoid fragment() {\n\tALBEDO = vec3(0.2, 0.5, 0.1);\n}\n"
 	var root: Node3D = _root()
-	var trunk: MeshInstance3D = _box_node("Trunk", Vector3(0.2, 2.0, 0.2), Vector3.ZERO)
-	trunk.material_override = by_height  # at the root's transform: the same model space
-	root.add_child(trunk)
-	var leaves: MeshInstance3D = _box_node("Leaves", Vector3(1.0, 1.0, 1.0), Vector3(0.0, 2.5, 0.0))
-	leaves.scale = Vector3.ONE * 0.5
+	var leaves: MeshInstance3D = _box_node("Leaves", Vector3(1.0, 1.0, 1.0), Vector3(0.0, 1.5, 0.0))
+	leaves.scale = Vector3.ONE * 0.8
+	leaves.rotation.y = 0.3
 	leaves.material_override = by_height
 	root.add_child(leaves)
+	var plant: SunflowerPlant = SunflowerPlant.from_scene(Scenes.packed(root.duplicate()))
+	if not check(plant != null, "a plant"):
+		root.free()
+		return
+	check(not "\n".join(take_warnings()).contains("Leaves:"), "a shader reading VERTEX is carried, not warned about")
+	var drawn: Material = plant.get_part_mesh(0, 0).surface_get_material(0)
+	check(
+		drawn is ShaderMaterial and (drawn as ShaderMaterial).shader.code.contains("plant_node_inverse"),
+		"the leaves are drawn by a copy that sees the node's space"
+	)
+	var by_matrix: ShaderMaterial = ShaderMaterial.new()
+	by_matrix.shader = Shader.new()
+	by_matrix.shader.code = (
+		"shader_type spatial;\nvarying float h;\nvoid vertex() {\n\th = MODEL_MATRIX[3].y;\n}\n"
+		+ "void fragment() {\n\tALBEDO = vec3(h);\n}\n"
+	)
 	var stone: MeshInstance3D = _box_node("Stone", Vector3(0.3, 0.3, 0.3), Vector3(0.5, 0.15, 0.0))
-	stone.material_override = plain
-	root.add_child(stone)
-	var plant: SunflowerPlant = SunflowerPlant.from_scene(Scenes.packed(root))
-	check(plant != null, "a plant")
+	stone.material_override = by_matrix
+	var named_root: Node3D = root.duplicate()
+	named_root.add_child(stone)
+	SunflowerPlant.from_scene(Scenes.packed(named_root))
 	var warnings: String = "\n".join(take_warnings())
-	check(warnings.contains("Leaves: its shader (built in) reads model-space positions"), "the moved node named")
-	check(not warnings.contains("Trunk:"), "not the node at the root's transform")
-	check(not warnings.contains("Stone:"), "not a shader that reads no position")
+	check(
+		warnings.contains("Stone: its shader (built in, unsaved) reads model-space positions (it reads MODEL_MATRIX"),
+		warnings
+	)
+	check(not warnings.contains("Leaves:"), "the leaves' shader carried there too")
+	if DisplayServer.get_name() == "headless":
+		print("     (headless: nothing drawn to look at; the engine suite checks the picture)")
+		root.free()
+		return
+	var camera: Camera3D = Camera3D.new()
+	tree.root.add_child(camera)
+	camera.look_at_from_position(Vector3(0.0, 1.5, 4.0), Vector3(0.0, 1.5, 0.0))
+	camera.make_current()
+	tree.root.add_child(root)
+	await frames(3)
+	var scene_share: float = _lower_colour_share(tree.root.get_viewport().get_texture().get_image())
+	root.free()
+	var field: SunflowerField = SunflowerField.new()
+	plant.scale_min = 1.0
+	plant.scale_max = 1.0
+	plant.yaw_range = 0.0
+	plant.middle_variation = 0.0
+	field.plant = plant
+	field.map = SunflowerFieldMap.new()
+	field.map.source_path = "user://node_space.field"
+	field.map.text = "1 1\n*\n".to_utf8_buffer()
+	field.cell_size = 1.0
+	field.wind_power = 0.0
+	field.force_lod = SunflowerField.Lod.MESH_1
+	tree.root.add_child(field)
+	field.finish_build()
+	field.position = -field.get_plant_info(0)["position"]
+	field.advance(0.0)
+	await frames(3)
+	var image: Image = tree.root.get_viewport().get_texture().get_image()
+	image.save_png(artifact_path("scene_import_node_space.png"))
+	var plant_share: float = _lower_colour_share(image)
+	print("     the lower colour's share: %.2f of the scene's leaves, %.2f of the plant's" % [scene_share, plant_share])
+	check(scene_share > 0.3, "the scene shows both colours (%.2f)" % scene_share)
+	check_near(plant_share, scene_share, 0.1, "the plant's leaves are coloured as the scene's")
+	camera.free()
+	field.free()
+
+
+## The share of the lower (blue) colour among the pixels of either of the test shader's colours.
+func _lower_colour_share(image: Image) -> float:
+	var counts: Vector2 = Vector2.ZERO  # (upper, lower)
+	for y: int in range(0, image.get_height(), 2):
+		for x: int in range(0, image.get_width(), 2):
+			var pixel: Color = image.get_pixel(x, y)
+			counts.x += 1.0 if pixel.r > 0.8 and pixel.g > 0.7 and pixel.b < 0.3 else 0.0
+			counts.y += 1.0 if pixel.b > 0.8 and pixel.r < 0.2 else 0.0
+	return counts.y / maxf(counts.x + counts.y, 1.0)
