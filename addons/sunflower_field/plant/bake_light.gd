@@ -6,6 +6,10 @@ extends RefCounted
 
 const PlantMaterial: GDScript = preload("plant_material.gd")
 const PartMeshes: GDScript = preload("part_meshes.gd")
+## What a shader of your own writes to let light through: its back-light is baked
+## ([method backlight]); its SSS transmittance is not.
+const BACKLIGHT_WRITE: String = "\\bBACKLIGHT\\s*="
+const TRANSMITTANCE_WRITE: String = "\\bSSS_TRANSMITTANCE_\\w+\\s*="
 ## The emission pass is rendered again with a range this many times wider while a pixel saturates,
 ## at most this many times in all: 8 to 8 × 8⁴ = 32 768, [member SunflowerPlant.impostor_emission_range]'s
 ## top.
@@ -23,15 +27,16 @@ class Glow:
 ## What of [param plant]'s own shaders at mesh [param level] (the one baked) the bake cannot capture,
 ## a sentence per material naming it:
 ## the views are drawn unshaded (each surface's albedo), so a ShaderMaterial of its own that lights
-## its surface itself (a [code]light()[/code] function) or lets light through
-## ([code]BACKLIGHT[/code], [code]SSS_TRANSMITTANCE_*[/code]) is baked without that light: its far
-## plants are lit by the impostor shader's own model and may look darker or otherwise than its
-## meshes. (The plant material's back-light and any material's emission are baked.)
+## its surface itself (a [code]light()[/code] function) or lets light through as SSS transmittance
+## ([code]SSS_TRANSMITTANCE_*[/code]) is baked without that light: its far plants are lit by the
+## impostor shader's own model and may look darker or otherwise than its meshes. (The plant
+## material's back-light, a shader's own [code]BACKLIGHT[/code] and any material's emission are
+## baked.)
 static func lighting_not_baked(plant: SunflowerPlant, level: int) -> PackedStringArray:
 	var problems: PackedStringArray = []
 	var seen: Dictionary = {}
 	var light_function: RegEx = RegEx.create_from_string("\\bvoid\\s+light\\s*\\(")
-	var let_through: RegEx = RegEx.create_from_string("\\b(BACKLIGHT|SSS_TRANSMITTANCE_\\w+)\\s*=")
+	var transmittance: RegEx = RegEx.create_from_string(TRANSMITTANCE_WRITE)
 	for part: int in PartMeshes.PART_NAMES.size():
 		var mesh: Mesh = plant.mesh_drawn(level, part)
 		for surface: int in mesh.get_surface_count() if mesh else 0:
@@ -44,8 +49,8 @@ static func lighting_not_baked(plant: SunflowerPlant, level: int) -> PackedStrin
 			var own: PackedStringArray = []
 			if light_function.search(material.shader.code):
 				own.append("its light() function")
-			if let_through.search(material.shader.code):
-				own.append("the light it lets through (BACKLIGHT, SSS transmittance)")
+			if transmittance.search(material.shader.code):
+				own.append("the light it lets through as SSS transmittance")
 			if not own.is_empty():
 				(
 					problems
@@ -71,9 +76,9 @@ static func _material_name(material: ShaderMaterial, part: int) -> String:
 
 ## The light the parts let through from behind (their back-light), drawn as their colour, unshaded:
 ## each part's material as the plant material draws it ([code]plant_material.gd[/code]), with its
-## back-light as the colour; a part the plant material cannot draw is black where it covers (a
-## StandardMaterial3D keeps its alpha cut; another material is drawn whole). No image when no part
-## lets light through.
+## back-light as the colour; a ShaderMaterial of your own that sets [code]BACKLIGHT[/code] drawn by a
+## copy showing it as its colour; any other part is black where it covers (a StandardMaterial3D
+## keeps its alpha cut; another material is drawn whole). No image when no part lets light through.
 static func backlight(stage: RefCounted, read_pass: Callable) -> Image:
 	var copies: Dictionary = {}  # material → the one drawn in this pass
 	var lets_through: bool = false
@@ -84,7 +89,10 @@ static func backlight(stage: RefCounted, read_pass: Callable) -> Image:
 			var material: Material = mesh.surface_get_material(surface)
 			if not copies.has(material):
 				var through: ShaderMaterial = _through_material(material)
-				lets_through = lets_through or through != null and _has_backlight(through)
+				lets_through = (
+					lets_through
+					or through != null and (through.shader != PlantMaterial.PARTS_SHADER or _has_backlight(through))
+				)
 				copies[material] = through if through else _black_material(material)
 	if not lets_through:
 		return null
@@ -109,9 +117,31 @@ static func _through_material(material: Material) -> ShaderMaterial:
 		through = through.duplicate() as ShaderMaterial
 	else:
 		through = PlantMaterial.adopt(material, false)
-	if through:
-		through.set_shader_parameter(&"backlight_as_albedo", true)
+	if through == null:
+		return _own_through(material)
+	through.set_shader_parameter(&"backlight_as_albedo", true)
 	return through
+
+
+## A copy of [param material], a ShaderMaterial of your own that sets [code]BACKLIGHT[/code] in its
+## [code]fragment()[/code], showing that light as its colour ([code]ALBEDO = BACKLIGHT;[/code] last
+## in its [code]fragment()[/code], which cannot return early); null when it sets none.
+static func _own_through(material: Material) -> ShaderMaterial:
+	var own: ShaderMaterial = material as ShaderMaterial
+	if own == null or own.shader == null or own.shader == PlantMaterial.PARTS_SHADER:
+		return null
+	var code: String = own.shader.code
+	var body: Vector2i = PlantMaterial.function_body(code, "fragment")
+	if body.x < 0:
+		return null
+	var inside: String = code.substr(body.x, body.y - body.x)
+	if not RegEx.create_from_string(BACKLIGHT_WRITE).search(inside):
+		return null
+	var shader: Shader = Shader.new()
+	shader.code = code.substr(0, body.y) + " ALBEDO = BACKLIGHT; " + code.substr(body.y)
+	var copy: ShaderMaterial = own.duplicate() as ShaderMaterial
+	copy.shader = shader
+	return copy
 
 
 ## Whether the plant material [param material] has a back-light (a colour or a texture).

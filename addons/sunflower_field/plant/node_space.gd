@@ -7,7 +7,8 @@ extends RefCounted
 ## [code]BINORMAL[/code] into the node's space first and back into the plant's after, the node's
 ## transform a uniform of the copy (one copy per material and transform). What cannot be carried is
 ## named: a shader that reads [code]MODEL_MATRIX[/code] or [code]NODE_POSITION_*[/code] (each plant
-## of a field is an instance of its own), or whose [code]vertex()[/code] returns early.
+## of a field is an instance of its own). (A processor function cannot return early, so the last
+## line of its body is its end.)
 
 const PlantMaterial: GDScript = preload("plant_material.gd")
 ## The copy's uniforms: the node's transform in the plant, and its inverse.
@@ -28,7 +29,6 @@ const INTO_PLANT: String = (
 	+ " TANGENT = normalize(mat3(plant_node_transform) * TANGENT);"
 	+ " BINORMAL = normalize(mat3(plant_node_transform) * BINORMAL); "
 )
-const VERTEX_HEAD: String = "void\\s+vertex\\s*\\(\\s*\\)\\s*\\{"
 const READS_MATRIX: String = "\\b(MODEL_MATRIX|NODE_POSITION_WORLD|NODE_POSITION_VIEW)\\b"
 
 
@@ -78,8 +78,8 @@ static func keep(pieces: Array[Dictionary], problems: PackedStringArray) -> void
 static func node_space_code(code: String) -> String:
 	if not _why_not(code).is_empty():
 		return ""
-	var body: Vector2i = _vertex_body(code)
-	var head: RegExMatch = RegEx.create_from_string(VERTEX_HEAD).search(code)
+	var body: Vector2i = PlantMaterial.function_body(code, "vertex")
+	var head: RegExMatch = RegEx.create_from_string(PlantMaterial.FUNCTION_PATTERN % "vertex").search(code)
 	# On the lines they change: the shader's errors keep your line numbers.
 	return (
 		code.substr(0, head.get_start())
@@ -98,26 +98,10 @@ static func _why_not(code: String) -> String:
 	var matrix: RegExMatch = RegEx.create_from_string(READS_MATRIX).search(code)
 	if matrix:
 		return "it reads %s, which is each plant's in a field" % matrix.get_string(1)
-	var body: Vector2i = _vertex_body(code)
+	var body: Vector2i = PlantMaterial.function_body(code, "vertex")
 	if body.x < 0 or RegEx.create_from_string("\\bVERTEX\\b").search(code.substr(body.x, body.y - body.x)) == null:
 		return "reads none"
-	if RegEx.create_from_string("\\breturn\\b").search(code.substr(body.x, body.y - body.x)):
-		return "its vertex() returns early"
 	return ""
-
-
-## Where [param code]'s vertex() body begins (after its brace) and ends (at its closing brace); x −1
-## when it has none.
-static func _vertex_body(code: String) -> Vector2i:
-	var head: RegExMatch = RegEx.create_from_string(VERTEX_HEAD).search(code)
-	if head == null:
-		return Vector2i(-1, -1)
-	var depth: int = 1
-	var at: int = head.get_end()
-	while at < code.length() and depth > 0:
-		depth += 1 if code[at] == "{" else (-1 if code[at] == "}" else 0)
-		at += 1
-	return Vector2i(head.get_end(), at - 1)
 
 
 static func _copy(own: ShaderMaterial, transform: Transform3D) -> ShaderMaterial:

@@ -244,6 +244,20 @@ static func _first_in(code: String, function: String, line: String) -> String:
 	return code + "\nvoid %s() {\n\t%s\n}\n" % [function, line]
 
 
+## Where the body of [param code]'s function [param function] begins (after its opening brace) and
+## ends (at its closing brace); x −1 when it has none.
+static func function_body(code: String, function: String) -> Vector2i:
+	var head: RegExMatch = _regex(FUNCTION_PATTERN % function).search(code)
+	if head == null:
+		return Vector2i(-1, -1)
+	var depth: int = 1
+	var at: int = head.get_end()
+	while at < code.length() and depth > 0:
+		depth += 1 if code[at] == "{" else (-1 if code[at] == "}" else 0)
+		at += 1
+	return Vector2i(head.get_end(), at - 1)
+
+
 ## [param code] with [param line], the include of [param path], after its [code]shader_type[/code]
 ## line and the [code]render_mode[/code] line right after it (unless it includes the file already):
 ## in the blank line that follows them when there is one, so the shader's errors keep your line numbers.

@@ -307,6 +307,55 @@ func test_a_backlit_plant_lets_the_sun_through_as_far_impostors() -> void:
 	check(without < 0.7, "without the atlas they would be darker: %.3f" % without)
 
 
+## A plant whose leaf is drawn by a shader of the user's that sets BACKLIGHT itself (#60 item 2)
+## gets the same: a back-light atlas holding that light where the leaf stands (the bake draws a copy
+## of the shader that shows BACKLIGHT as its colour), no warning, and a field of it against the sun
+## as bright as impostors as with every plant as mesh 1 (darker without the atlas).
+func test_a_shader_of_the_users_that_sets_backlight_lets_the_sun_through_as_far_impostors() -> void:
+	DirAccess.make_dir_recursive_absolute(FOLDER)
+	var leaf: Mesh = _gltf_part(Color(0.1, 0.3, 0.05), Vector3(0.9, 1.0, 0.02), "own_leaf.gltf")
+	if not check(leaf != null, "the glTF leaf loads"):
+		return
+	var own: ShaderMaterial = ShaderMaterial.new()
+	own.resource_name = "own_backlit"
+	own.shader = Shader.new()
+	own.shader.code = (
+		"shader_type spatial;\nuniform vec3 through = vec3(0.8, 0.9, 0.3);\n"
+		+ "void fragment() {\n\tALBEDO = vec3(0.1, 0.3, 0.05);\n\tBACKLIGHT = through;\n}\n"
+	)
+	leaf.surface_set_material(0, own)
+	var plant: SunflowerPlant = SunflowerPlant.new()
+	plant.name = "Own backlit plant"
+	plant.mesh_level_1 = [leaf, null, null]
+	plant.height_units = 1.0
+	take_warnings()
+	check_eq(await plant.bake_impostors(tree.root, FOLDER, "own_backlit_plant"), OK, "baked")
+	var warnings: String = "\n".join(take_warnings())
+	check(not warnings.contains("BACKLIGHT"), "its back-light is not named as lost: %s" % warnings)
+	if not check(plant.impostor_backlight != null, "the plant has a back-light atlas"):
+		return
+	var through: Image = plant.impostor_backlight.get_image()
+	through.clear_mipmaps()
+	var cell: int = ImpostorBaker.CELL_PIXELS
+	var lit: Color = _view(through, 0, 0).get_pixel(cell / 2, cell / 2).srgb_to_linear()
+	check(
+		absf(lit.r - 0.8) < 0.03 and absf(lit.g - 0.9) < 0.03 and absf(lit.b - 0.3) < 0.03,
+		"the leaf's back-light, %s, is the shader's (0.8, 0.9, 0.3)" % lit
+	)
+	var seen: Vector3 = await _field_in_the_dark(
+		plant, Vector3(5.0, 3.0, -45.0), SunflowerPlant.BACKLIGHT_TEXTURE, true, "own_backlit"
+	)
+	print(
+		(
+			"     a shader's own back-light, far plants against the sun: %.3f of the meshes' brightness (%.3f without)"
+			% [seen.y, seen.z]
+		)
+	)
+	check(seen.x > 0.005, "the meshes let the sun through: mean brightness %.4f" % seen.x)
+	check(seen.y > 0.85 and seen.y < 1.15, "the impostors let it through as the meshes do: %.3f" % seen.y)
+	check(seen.z < 0.7, "without the atlas they would be darker: %.3f" % seen.z)
+
+
 ## A 20 × 20 field of [param plant] (10 m square) in a stage with no ambient light and a black
 ## background, seen from [param eye] with a 15° view (the field fills the picture): all impostors,
 ## every plant as mesh 1, and all impostors with the plant's [param atlas] taken away (saved as

@@ -688,9 +688,9 @@ func test_plain_standard_materials_are_taken_over_and_others_kept() -> void:
 	check_eq(plant.mesh_for_field(1, 0).surface_get_material(0), rimmed, "that part keeps its material")
 
 
-## A shader of the user's that lights its surface itself (light()) or lets light through is named
-## in a warning when the impostors are baked: the bake draws albedo only (#60); the plant material
-## and a StandardMaterial3D are not named.
+## A shader of the user's that lights its surface itself (light()) or lets light through as SSS
+## transmittance is named in a warning when the impostors are baked (#60); one that sets BACKLIGHT
+## (its back-light is baked: test_bake), the plant material and a StandardMaterial3D are not named.
 func test_a_shader_whose_own_light_the_bake_cannot_capture_is_named() -> void:
 	var lit: ShaderMaterial = ShaderMaterial.new()
 	lit.resource_name = "leaves_lit"
@@ -702,13 +702,23 @@ func test_a_shader_whose_own_light_the_bake_cannot_capture_is_named() -> void:
 	var through: ShaderMaterial = ShaderMaterial.new()
 	through.resource_name = "leaves_through"
 	through.shader = Shader.new()
-	through.shader.code = "shader_type spatial;\nvoid fragment() { ALBEDO = vec3(0.2); BACKLIGHT = vec3(0.5); }\n"
+	var transmits: String = "SSS_TRANSMITTANCE_COLOR = vec4(0.5);"
+	through.shader.code = "shader_type spatial;\nvoid fragment() { ALBEDO = vec3(0.2); %s }\n" % transmits
+	var backlit: ShaderMaterial = ShaderMaterial.new()
+	backlit.resource_name = "leaves_backlit"
+	backlit.shader = Shader.new()
+	backlit.shader.code = "shader_type spatial;\nvoid fragment() { ALBEDO = vec3(0.2); BACKLIGHT = vec3(0.5); }\n"
 	var plain: ShaderMaterial = ShaderMaterial.new()
 	plain.shader = Shader.new()
 	plain.shader.code = "shader_type spatial;\n// no light() here\nvoid fragment() { ALBEDO = vec3(0.5); }\n"
 	var mesh: ArrayMesh = ArrayMesh.new()
 	for material: Material in [
-		lit, through, plain, StandardMaterial3D.new(), PlantMaterialScript.adopt(StandardMaterial3D.new(), false)
+		lit,
+		through,
+		backlit,
+		plain,
+		StandardMaterial3D.new(),
+		PlantMaterialScript.adopt(StandardMaterial3D.new(), false)
 	]:
 		var surface: SurfaceTool = SurfaceTool.new()
 		surface.begin(Mesh.PRIMITIVE_TRIANGLES)
@@ -724,6 +734,6 @@ func test_a_shader_whose_own_light_the_bake_cannot_capture_is_named() -> void:
 		problems.size() == 2 and problems[0].contains("leaves_lit") and problems[0].contains("light()"), "its light()"
 	)
 	check(
-		problems.size() == 2 and problems[1].contains("leaves_through") and problems[1].contains("BACKLIGHT"),
-		"its back-light"
+		problems.size() == 2 and problems[1].contains("leaves_through") and problems[1].contains("SSS transmittance"),
+		"its transmittance"
 	)
