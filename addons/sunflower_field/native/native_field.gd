@@ -326,7 +326,7 @@ func get_chunk_count() -> int:
 	return drawing.get_chunk_count()
 
 
-## A chunk's bounding box.
+## A chunk's bounding box in the field's space (its plants' culling spheres).
 func get_chunk_aabb(chunk: int) -> AABB:
 	return drawing.get_chunk_aabb(chunk)
 
