@@ -135,7 +135,7 @@ static func _own_through(material: Material) -> ShaderMaterial:
 	if body.x < 0:
 		return null
 	var inside: String = code.substr(body.x, body.y - body.x)
-	if not RegEx.create_from_string(BACKLIGHT_WRITE).search(inside):
+	if not PlantMaterial.regex(BACKLIGHT_WRITE).search(inside):
 		return null
 	var shader: Shader = Shader.new()
 	shader.code = code.substr(0, body.y) + " ALBEDO = BACKLIGHT; " + code.substr(body.y)

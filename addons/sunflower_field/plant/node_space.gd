@@ -79,7 +79,7 @@ static func node_space_code(code: String) -> String:
 	if not _why_not(code).is_empty():
 		return ""
 	var body: Vector2i = PlantMaterial.function_body(code, "vertex")
-	var head: RegExMatch = RegEx.create_from_string(PlantMaterial.FUNCTION_PATTERN % "vertex").search(code)
+	var head: RegExMatch = PlantMaterial.regex(PlantMaterial.FUNCTION_PATTERN % "vertex").search(code)
 	# On the lines they change: the shader's errors keep your line numbers.
 	return (
 		code.substr(0, head.get_start())
@@ -95,11 +95,11 @@ static func node_space_code(code: String) -> String:
 ## Why [param code]'s positions cannot be carried into the node's space: "" when they can, "reads
 ## none" when it reads no model-space position.
 static func _why_not(code: String) -> String:
-	var matrix: RegExMatch = RegEx.create_from_string(READS_MATRIX).search(code)
+	var matrix: RegExMatch = PlantMaterial.regex(READS_MATRIX).search(code)
 	if matrix:
 		return "it reads %s, which is each plant's in a field" % matrix.get_string(1)
 	var body: Vector2i = PlantMaterial.function_body(code, "vertex")
-	if body.x < 0 or RegEx.create_from_string("\\bVERTEX\\b").search(code.substr(body.x, body.y - body.x)) == null:
+	if body.x < 0 or PlantMaterial.regex("\\bVERTEX\\b").search(code.substr(body.x, body.y - body.x)) == null:
 		return "reads none"
 	return ""
 
@@ -112,14 +112,8 @@ static func _copy(own: ShaderMaterial, transform: Transform3D) -> ShaderMaterial
 	shader.code = code
 	shader.resource_name = own.shader.resource_name
 	if shader.get_shader_uniform_list().is_empty():
-		return null  # it does not compile (it declares two uniforms)
-	var copy: ShaderMaterial = ShaderMaterial.new()
-	copy.resource_name = own.resource_name
-	copy.shader = shader
-	copy.render_priority = own.render_priority
-	copy.next_pass = own.next_pass
-	for uniform: Dictionary in own.shader.get_shader_uniform_list():
-		copy.set_shader_parameter(uniform.name, own.get_shader_parameter(uniform.name))
+		return null  # it does not compile (it declares two uniforms, maybe not at a line's start)
+	var copy: ShaderMaterial = PlantMaterial.copy_with_shader(own, shader)
 	copy.set_shader_parameter(TRANSFORM_UNIFORM, Projection(transform))
 	copy.set_shader_parameter(INVERSE_UNIFORM, Projection(transform.affine_inverse()))
 	return copy

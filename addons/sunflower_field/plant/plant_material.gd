@@ -219,17 +219,17 @@ static func bending(material: Material) -> ShaderMaterial:
 ## [code]vertex()[/code] comes on top of the field's unless it stands inside
 ## [code]#ifndef PLANT_BENT_BY_FIELD[/code] … [code]#endif[/code] (the include defines it).
 static func bending_code(code: String) -> String:
-	if _regex(NOT_BENDING_PATTERN).search(code) != null or not _copyable(code):
+	if regex(NOT_BENDING_PATTERN).search(code) != null or not _copyable(code):
 		return ""
 	return _with_include(_first_in(code, "vertex", BEND_CALL), BEND_INCLUDE_PATH, BEND_INCLUDE)
 
 
 ## Whether [param code] is a spatial shader whose includes a copy can still find (by res:// paths).
 static func _copyable(code: String) -> bool:
-	var head: RegExMatch = _regex(SHADER_TYPE_PATTERN).search(code)
+	var head: RegExMatch = regex(SHADER_TYPE_PATTERN).search(code)
 	if head == null or head.get_string(1) != "spatial":
 		return false
-	for include: RegExMatch in _regex(INCLUDE_PATTERN).search_all(code):
+	for include: RegExMatch in regex(INCLUDE_PATTERN).search_all(code):
 		if not include.get_string(1).begins_with("res://"):
 			return false
 	return true
@@ -238,7 +238,7 @@ static func _copyable(code: String) -> bool:
 ## [param code] with [param line] first in its function [param function] (or a function of that line
 ## added when it has none).
 static func _first_in(code: String, function: String, line: String) -> String:
-	var head: RegExMatch = _regex(FUNCTION_PATTERN % function).search(code)
+	var head: RegExMatch = regex(FUNCTION_PATTERN % function).search(code)
 	if head:
 		return code.insert(head.get_end(), " " + line)  # on the head's line: your line numbers stay
 	return code + "\nvoid %s() {\n\t%s\n}\n" % [function, line]
@@ -247,7 +247,7 @@ static func _first_in(code: String, function: String, line: String) -> String:
 ## Where the body of [param code]'s function [param function] begins (after its opening brace) and
 ## ends (at its closing brace); x −1 when it has none.
 static func function_body(code: String, function: String) -> Vector2i:
-	var head: RegExMatch = _regex(FUNCTION_PATTERN % function).search(code)
+	var head: RegExMatch = regex(FUNCTION_PATTERN % function).search(code)
 	if head == null:
 		return Vector2i(-1, -1)
 	var depth: int = 1
@@ -264,9 +264,9 @@ static func function_body(code: String, function: String) -> Vector2i:
 static func _with_include(code: String, path: String, line: String) -> String:
 	if code.contains(path):
 		return code
-	var head: RegExMatch = _regex(SHADER_TYPE_PATTERN).search(code)
+	var head: RegExMatch = regex(SHADER_TYPE_PATTERN).search(code)
 	var after: int = head.get_end()
-	var modes: RegExMatch = _regex(RENDER_MODE_PATTERN).search(code, after)
+	var modes: RegExMatch = regex(RENDER_MODE_PATTERN).search(code, after)
 	if modes and code.substr(after, modes.get_start() - after).strip_edges().is_empty():
 		after = modes.get_end()
 	var line_end: int = code.find("\n", after)
@@ -283,8 +283,12 @@ static func _with_include(code: String, path: String, line: String) -> String:
 ## shader from [method _made_shader]); null when that shader cannot be made.
 static func _copy(own: ShaderMaterial, bend: bool) -> ShaderMaterial:
 	var shader: Shader = _made_shader(own.shader, bend, own)
-	if shader == null:
-		return null
+	return copy_with_shader(own, shader) if shader else null
+
+
+## A copy of [param own] drawn by [param shader] (made from its shader): its name, render priority,
+## next pass and the values of its shader's uniforms.
+static func copy_with_shader(own: ShaderMaterial, shader: Shader) -> ShaderMaterial:
 	var copy: ShaderMaterial = ShaderMaterial.new()
 	copy.resource_name = own.resource_name
 	copy.shader = shader
@@ -331,7 +335,7 @@ static func _made_shader(shader: Shader, bend: bool, material: Material = null) 
 ## engine lists the uniforms of a shader it compiled, with any renderer; one without uniforms is not
 ## judged).
 static func _fails_to_compile(shader: Shader) -> bool:
-	return _regex(UNIFORM_PATTERN).search(shader.code) != null and shader.get_shader_uniform_list().is_empty()
+	return regex(UNIFORM_PATTERN).search(shader.code) != null and shader.get_shader_uniform_list().is_empty()
 
 
 ## [param resource] as a message names it: its file (or the file it is built into) and its name.
@@ -340,7 +344,8 @@ static func named(resource: Resource) -> String:
 	return path + (' "%s"' % resource.resource_name if not resource.resource_name.is_empty() else "")
 
 
-static func _regex(pattern: String) -> RegEx:
+## [param pattern] compiled, once per pattern.
+static func regex(pattern: String) -> RegEx:
 	if not _patterns.has(pattern):
 		_patterns[pattern] = RegEx.create_from_string(pattern)
 	return _patterns[pattern]
