@@ -310,11 +310,24 @@ static var _default: SunflowerPlant
 			impostor_alpha_cuts = value
 			emit_changed()
 
+## The mip level of [member impostor_views] from which the plant is [i]thin[/i]: where a plain alpha
+## cut keeps less than half of what the views' texels cover (a crown of leaves smaller than a texel).
+## From there its impostors' alpha test is hashed (each pixel drawn as often as its texel is covered,
+## speckled as the meshes' far leaves are) and each view is read at the quad's own place (reading it
+## where the depths say spread a sparse crown's cover: the Sapling maple's far impostors covered 1.17
+## of its meshes' pixels so, 0.99 without). The baker measures it; −1: not before the far test is
+## hashed anyway (the built-in sunflower, or an atlas baked before it was measured).
+@export_range(-1.0, 3.0, 0.01) var impostor_thin_from: float = -1.0:
+	set(value):
+		if value != impostor_thin_from:
+			impostor_thin_from = value
+			emit_changed()
+
 ## Near plants of this type cast their shadows from its far impostors from the field's
 ## [member SunflowerField.impostor_shadows_from] on (fewer primitives). Off: they cast from their
 ## meshes at every mesh level, for a plant whose impostor shadows are lighter than its meshes' (a
-## tree's thin branches and small leaves: the Sapling maple's field 25 m up at 45° scores SSIM 0.868
-## against its all-mesh-1 picture with it off, 0.799 on; docs/plants.md).
+## tree's thin branches and small leaves: the Sapling maple's field 25 m up at 45° scores SSIM 0.747
+## against its all-mesh-1 picture with it off, 0.673 on; docs/plants.md).
 @export var impostor_shadows: bool = true:
 	set(value):
 		if value != impostor_shadows:

@@ -48,6 +48,13 @@ const SETTLE_FRAMES: int = 1
 ## at 45° drew at 0.88 of its meshes' brightness (0.97 with 2: test_scene_plant). Geometry is not
 ## blurred by it, and a plant whose parts are untextured (the built-in sunflower) bakes the same.
 const TEXTURE_MIP_BIAS: float = 2.0
+## The alpha cut against which [method thin_from] measures a plant's thinness (the field's default
+## [member SunflowerField.alpha_scissor]).
+const THIN_CUT: float = 0.5
+## The latest mip level [method thin_from] reports: where the far test is hashed for every plant
+## anyway (the shader's hashed_from + 1), a thin level changes nothing but the reprojection, which
+## the built-in sunflower's far fields were measured with.
+const THIN_LATEST: float = 3.0
 ## Draws the plant's normals in its own frame as colours (0–1 for −1–1); the viewport converts
 ## what it draws to sRGB, so the shader hands it the linear value that converts to the code.
 const NORMALS_SHADER: String = """
@@ -178,6 +185,7 @@ static func _bake(plant: SunflowerPlant, host: Node, folder: String, base_name: 
 		paths.append(path)
 	plant.impostor_emission_range = glow.energy_range
 	plant.impostor_alpha_cuts = alpha_cuts(images[0])
+	plant.impostor_thin_from = thin_from(images[0])
 	await _tell_drawn(progress, "importing its atlases", 6.0 / STEPS, host.get_tree())
 	await _give_textures(plant, kinds, paths, images, host.get_tree())
 	return OK
@@ -225,6 +233,36 @@ static func alpha_cuts(image: Image) -> PackedFloat32Array:
 			reached += counts[cut]
 		cuts.append(cut / 255.0)
 	return cuts
+
+
+## The mip level of the views [param image] from which the plant is *thin*: where a plain alpha cut
+## ([constant THIN_CUT]) keeps less than half of what its texels cover, interpolated between the two
+## levels about that share (a crown of leaves smaller than a texel: most of its cover is in texels a
+## fraction covered). −1 when that comes after [constant THIN_LATEST] (the built-in sunflower's
+## views cross it at 3.8), or never. See [member SunflowerPlant.impostor_thin_from].
+static func thin_from(image: Image) -> float:
+	var levels: Image = image.duplicate() as Image
+	levels.clear_mipmaps()
+	levels.convert(Image.FORMAT_RGBA8)
+	levels.generate_mipmaps()
+	var data: PackedByteArray = levels.get_data()
+	var cut: int = ceili(THIN_CUT * 255.0)
+	var before: float = 1.0  # the share kept at the level before
+	for level: int in levels.get_mipmap_count() + 1:
+		if level > ceili(THIN_LATEST):
+			break
+		var end: int = levels.get_mipmap_offset(level + 1) if level < levels.get_mipmap_count() else data.size()
+		var all: int = 0
+		var kept: int = 0
+		for k: int in range(levels.get_mipmap_offset(level) + 3, end, 4):
+			all += data[k]
+			kept += data[k] if data[k] >= cut else 0
+		var share: float = float(kept) / all if all > 0 else 1.0
+		if share < 0.5:
+			var crossed: float = level - (0.5 - share) / maxf(before - share, 1e-6) if level > 0 else 0.0
+			return crossed if crossed <= THIN_LATEST else -1.0
+		before = share
+	return -1.0
 
 
 ## The picture of a pass, as 8-bit RGBA at the atlas' size: the stage's tiles drawn one a frame and

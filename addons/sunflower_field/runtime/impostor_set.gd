@@ -56,6 +56,7 @@ func configure(plant: Resource) -> void:
 	_set_all("frame_centre", frame.y)
 	_set_all("shadow_caster_shift", plant.impostor_shadow_shift)
 	set_alpha_cuts(plant.impostor_alpha_cuts)
+	_set_all("thin_from", plant.impostor_thin_from)
 
 
 ## Cuts the views' alpha at each mip level as [param cuts] says ([member SunflowerPlant.impostor_alpha_cuts]:

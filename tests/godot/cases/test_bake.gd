@@ -431,6 +431,23 @@ func test_a_bright_glow_gets_a_wider_range() -> void:
 	field.free()
 
 
+## Where a plain cut keeps less than half the views' cover: views of whole texels are not thin
+## before their shapes blur at the coarse levels (−1: past ImpostorBaker.THIN_LATEST); views of one
+## lit texel in each 2 × 2 are thin from half-way to level 1 (all cover at level 0, none kept at 1).
+func test_the_bake_finds_where_a_plant_is_thin() -> void:
+	var solid: Image = Image.create_empty(64, 64, false, Image.FORMAT_RGBA8)
+	solid.fill_rect(Rect2i(16, 16, 32, 32), Color.WHITE)
+	check_eq(ImpostorBaker.thin_from(solid), -1.0, "a solid square: not thin before the far test is hashed")
+	var specks: Image = Image.create_empty(64, 64, false, Image.FORMAT_RGBA8)
+	for y: int in range(0, 64, 2):
+		for x: int in range(0, 64, 2):
+			specks.set_pixel(x, y, Color.WHITE)
+	check_near(ImpostorBaker.thin_from(specks), 0.5, 0.01, "specks of a texel: thin from mip 0.5")
+	var sparse: Image = Image.create_empty(64, 64, false, Image.FORMAT_RGBA8)
+	sparse.fill_rect(Rect2i(0, 0, 64, 64), Color(1.0, 1.0, 1.0, 0.3))
+	check_eq(ImpostorBaker.thin_from(sparse), 0.0, "texels a third covered: thin from the start")
+
+
 func test_views_are_drawn_in_tiles_as_large_as_the_triangle_budget_allows() -> void:
 	var views: Vector2i = SunflowerPlant.ATLAS_VIEWS
 	check_eq(ImpostorBaker.tile_of(216), views, "a grass clump: every view in one render")
@@ -516,3 +533,6 @@ func test_the_built_in_sunflower_baked_again_matches_the_shipped_textures() -> v
 		check_near(
 			plant.impostor_alpha_cuts[level], shipped_cuts[level], 0.02, "the alpha cut at mip %d, as shipped" % level
 		)
+	# The sunflower is not thin before its far test is hashed anyway (its views cross at mip 3.8).
+	check_eq(plant.impostor_thin_from, -1.0, "the sunflower is not thin from near")
+	check_eq(SunflowerPlant.default_plant().impostor_thin_from, -1.0, "nor is the shipped one")
