@@ -167,16 +167,17 @@ func _window_sum(integral: PackedFloat64Array, x: int, y: int) -> float:
 	return integral[bottom + x + WINDOW] - integral[top + x + WINDOW] - integral[bottom + x] + integral[top + x]
 
 
-## The pixels of [param image] that are not black (covered), and of those the leaf green ones.
-static func covered_and_green(image: Image) -> Vector2:
-	var rgb: Image = image.duplicate() as Image
-	rgb.convert(Image.FORMAT_RGB8)
-	var bytes: PackedByteArray = rgb.get_data()
+## The pixels of [param image] that are not black (covered), of those the leaf green ones, and the
+## light of all its pixels (the sum of their luminance, 0–1 each, as stored).
+static func covered_green_light(image: Image) -> Vector3:
+	var bytes: PackedByteArray = _rgb_bytes(image)
 	var covered: int = 0
 	var green: int = 0
+	var light: float = 0.0
 	for i: int in range(0, bytes.size(), 3):
+		light += 0.2126 * bytes[i] + 0.7152 * bytes[i + 1] + 0.0722 * bytes[i + 2]
 		if bytes[i] + bytes[i + 1] + bytes[i + 2] > 12:
 			covered += 1
 			if bytes[i + 1] > bytes[i] + 8 and bytes[i + 1] > bytes[i + 2] + 8:
 				green += 1
-	return Vector2(covered, green)
+	return Vector3(covered, green, light / 255.0)

@@ -82,7 +82,7 @@ func test_generated_levels_thin_the_cards_and_keep_the_cover() -> void:
 				await frames(3)
 				var image: Image = tree.root.get_viewport().get_texture().get_image()
 				image.save_png(artifact_path("thinned_%s_mesh%d_at_mesh%d.png" % [plant_name, drawn + 1, level + 1]))
-				covered.append(Picture.covered_and_green(image).x)
+				covered.append(Picture.covered_green_light(image).x)
 			var cover: float = covered[1] / maxf(covered[0], 1.0)
 			covers.append("%.2f" % cover)
 			check(

@@ -551,11 +551,13 @@ func test_each_test_plants_impostor_views_are_framed() -> void:
 
 
 ## Each test plant's impostor, alone, against its mesh 1 at the same view (45° above, on black, no
-## ground, calm, unshadowed, from [constant LONE_COVER_TURNS] directions around it), where its
-## impostors begin and twice as far: the pixels it covers, and its leaf green ones, are 0.85–1.15 of
-## the mesh's. Its thin leaves' cover is kept by the bake (supersampled: a pixel's alpha is the share
-## covered), the alpha cut measured per mip level (SunflowerPlant.impostor_alpha_cuts) and, for a
-## plant thin from near (the maple: SunflowerPlant.impostor_thin_from), the hashed test there.
+## ground, calm, unshadowed, from [constant LONE_COVER_TURNS] directions around it), close up (a
+## quarter of the way to where its impostors begin), where they begin and twice as far. Where they
+## begin and twice as far, the pixels it covers and its leaf green ones are 0.85–1.15 of the mesh's.
+## Close up, the brightness of its pixels against the mesh's is reported. Its thin leaves'
+## cover is kept by the bake (supersampled: a pixel's alpha is the share covered), the alpha cut
+## measured per mip level (SunflowerPlant.impostor_alpha_cuts) and, for a plant thin from near (the
+## maple: SunflowerPlant.impostor_thin_from), the hashed test there.
 func test_each_test_plants_lone_impostor_covers_what_its_mesh_covers() -> void:
 	var figures: PackedStringArray = []
 	var window: Vector2i = tree.root.size
@@ -585,8 +587,9 @@ func test_each_test_plants_lone_impostor_covers_what_its_mesh_covers() -> void:
 		var root: Vector3 = field.get_plant_info(0)["position"]
 		var middle: Vector3 = root + Vector3(0.0, plant.height * 0.5, 0.0)
 		var begins: float = field.lod_distances[2] * plant.lod_scale_used()
-		for distance: float in [begins, 2.0 * begins]:
-			var counts: Array[Vector2] = [Vector2.ZERO, Vector2.ZERO]  # (covered, leaf green) per way
+		var parts: PackedStringArray = []
+		for distance: float in [0.25 * begins, begins, 2.0 * begins]:
+			var seen: Array[Vector3] = [Vector3.ZERO, Vector3.ZERO]  # (covered, leaf green, light) per way
 			for way: int in 2:
 				field.force_lod = SunflowerField.Lod.MESH_1 if way == 0 else SunflowerField.Lod.SPRITE
 				field.advance(0.0)
@@ -596,7 +599,7 @@ func test_each_test_plants_lone_impostor_covers_what_its_mesh_covers() -> void:
 					camera.look_at_from_position(middle + towards * distance, middle)
 					await frames(3)
 					var image: Image = tree.root.get_viewport().get_texture().get_image()
-					counts[way] += Picture.covered_and_green(image)
+					seen[way] += Picture.covered_green_light(image)
 					if turn == 0:
 						image.save_png(
 							artifact_path(
@@ -606,28 +609,30 @@ func test_each_test_plants_lone_impostor_covers_what_its_mesh_covers() -> void:
 								)
 							)
 						)
-			var cover: float = counts[1].x / maxf(counts[0].x, 1.0)
-			var green: float = counts[1].y / maxf(counts[0].y, 1.0)
-			figures.append(
+			var ratio: Vector3 = seen[1] / seen[0].max(Vector3.ONE)
+			var what: String = "%s at %.0f m" % [file.get_basename(), distance]
+			if distance < begins:
+				# Reported, not checked: the bush's and the grass's are 1.11 and 1.12 (docs/plants.md).
+				parts.append("close up (%.0f m) brightness %.2f, cover %.2f" % [distance, ratio.z / ratio.x, ratio.x])
+				continue
+			parts.append("%.0f m cover %.2f, leaf green %.2f" % [distance, ratio.x, ratio.y])
+			check(
+				ratio.x >= 0.85 and ratio.x <= 1.15,
 				(
-					"%s (thin from mip %.2f) at %.0f m: cover %.2f, leaf green %.2f"
-					% [file.get_basename(), plant.impostor_thin_from, distance, cover, green]
+					"%s: the impostor covers %.2f of its mesh's pixels (%d of %d), 0.85–1.15"
+					% [what, ratio.x, seen[1].x, seen[0].x]
 				)
 			)
 			check(
-				cover >= 0.85 and cover <= 1.15,
+				ratio.y >= 0.85 and ratio.y <= 1.15,
 				(
-					"%s at %.0f m: the impostor covers %.2f of its mesh's pixels (%d of %d), 0.85–1.15"
-					% [file, distance, cover, counts[1].x, counts[0].x]
+					"%s: the impostor's leaf green pixels are %.2f of its mesh's (%d of %d), 0.85–1.15"
+					% [what, ratio.y, seen[1].y, seen[0].y]
 				)
 			)
-			check(
-				green >= 0.85 and green <= 1.15,
-				(
-					"%s at %.0f m: the impostor's leaf green pixels are %.2f of its mesh's (%d of %d), 0.85–1.15"
-					% [file, distance, green, counts[1].y, counts[0].y]
-				)
-			)
+		figures.append(
+			"%s (thin from mip %.2f): %s" % [file.get_basename(), plant.impostor_thin_from, ", ".join(parts)]
+		)
 		stage.free()
 		stage = null
 	tree.root.size = window
