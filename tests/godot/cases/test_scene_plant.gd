@@ -612,7 +612,7 @@ func test_each_test_plants_lone_impostor_covers_what_its_mesh_covers() -> void:
 			var ratio: Vector3 = seen[1] / seen[0].max(Vector3.ONE)
 			var what: String = "%s at %.0f m" % [file.get_basename(), distance]
 			if distance < begins:
-				# Reported, not checked: the bush's and the grass's are 1.11 and 1.12 (docs/plants.md).
+				# Reported, not checked: the bush's and the grass's are 1.11 and 1.12, their midribs averaged (docs/plants.md).
 				parts.append("close up (%.0f m) brightness %.2f, cover %.2f" % [distance, ratio.z / ratio.x, ratio.x])
 				continue
 			parts.append("%.0f m cover %.2f, leaf green %.2f" % [distance, ratio.x, ratio.y])
