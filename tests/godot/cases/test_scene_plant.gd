@@ -593,11 +593,12 @@ func test_each_test_plants_lone_impostor_covers_what_its_mesh_covers() -> void:
 			for way: int in 2:
 				field.force_lod = SunflowerField.Lod.MESH_1 if way == 0 else SunflowerField.Lod.SPRITE
 				field.advance(0.0)
+				await frames(2)  # the level drawn; then a frame a view
 				for turn: int in LONE_COVER_TURNS:
 					var angle: float = TAU * turn / LONE_COVER_TURNS
 					var towards: Vector3 = Vector3(sin(angle), 1.0, cos(angle)).normalized()
 					camera.look_at_from_position(middle + towards * distance, middle)
-					await frames(3)
+					await frames(1)
 					var image: Image = tree.root.get_viewport().get_texture().get_image()
 					seen[way] += Picture.covered_green_light(image)
 					if turn == 0:
