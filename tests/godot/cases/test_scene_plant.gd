@@ -640,6 +640,72 @@ func test_each_test_plants_lone_impostor_covers_what_its_mesh_covers() -> void:
 	print("     lone impostor against its mesh 1 (45° above, 1 280 × 720): %s" % "; ".join(figures))
 
 
+## The maple's far impostor in motion, where its impostors begin (thin there: its alpha test hashed,
+## each pixel's threshold fixed on the screen): a camera circling it slowly (a quarter of a degree a
+## frame, 45° above) sees its pixels change from frame to frame no more than its mesh's, whose leaves
+## are smaller than a pixel (the mean change of the picture's luminance between frames, of the
+## impostor's against the mesh's, at most 1.2).
+func test_a_thin_plants_far_impostor_sparkles_no_more_than_its_mesh() -> void:
+	var plant: SunflowerPlant = await _baked_test_plant("maple_tree.glb")
+	if not check(plant != null, "baked"):
+		return
+	var window: Vector2i = tree.root.size
+	tree.root.size = window * 2
+	await RenderingServer.frame_post_draw
+	var staged: Stage = Stage.new(tree.root)
+	stage = staged.root
+	staged.show_scenery(false)
+	var field: SunflowerField = SunflowerField.new()
+	field.plant = plant
+	field.map = _one_plant_map()
+	field.wind_power = 0.0
+	field.lod_fade = 0.0
+	stage.add_child(field)
+	field.finish_build()
+	field.set_process(false)
+	var camera: Camera3D = Camera3D.new()
+	camera.far = 2000.0
+	stage.add_child(camera)
+	camera.make_current()
+	var middle: Vector3 = field.get_plant_info(0)["position"] + Vector3(0.0, plant.height * 0.5, 0.0)
+	var distance: float = field.lod_distances[2] * plant.lod_scale_used()
+	var size: Vector2i = tree.root.get_visible_rect().size
+	var picture: Picture = Picture.new(size.x, size.y)
+	# Metres a frame that move the plant half a pixel across the picture.
+	var sideways: float = 0.5 * 2.0 * distance * tan(deg_to_rad(camera.fov * 0.5)) / size.y
+	var towards: Vector3 = Vector3(0.0, 1.0, 1.0).normalized()
+	var figures: PackedStringArray = []
+	for motion: String in ["passing", "circling"]:
+		var change: Array[float] = [0.0, 0.0]
+		for way: int in 2:
+			field.force_lod = SunflowerField.Lod.MESH_1 if way == 0 else SunflowerField.Lod.SPRITE
+			field.advance(0.0)
+			var before: PackedFloat32Array = []
+			for step: int in 13:
+				if motion == "passing":
+					var eye: Vector3 = middle + towards * distance + Vector3(sideways * step, 0.0, 0.0)
+					camera.look_at_from_position(eye, eye - towards)
+				else:
+					var angle: float = deg_to_rad(0.25 * step)
+					camera.look_at_from_position(
+						middle + Vector3(sin(angle), 1.0, cos(angle)).normalized() * distance, middle
+					)
+				await frames(2 if step > 0 else 3)
+				var seen: PackedFloat32Array = picture.luminance(tree.root.get_viewport().get_texture().get_image())
+				if step > 0:
+					change[way] += picture.mean_difference(before, seen)
+				before = seen
+		var ratio: float = change[1] / maxf(change[0], 1e-9)
+		figures.append("%s %.2f" % [motion, ratio])
+		check(
+			ratio <= 1.2, "%s: the far maple's impostor changes %.2f as much as its mesh, at most 1.2" % [motion, ratio]
+		)
+	stage.free()
+	stage = null
+	tree.root.size = window
+	print("     the maple at %.0f m, its impostor's change a frame of its mesh's: %s" % [distance, ", ".join(figures)])
+
+
 ## A plant drawn part by part with empty slots: the empty slots' near buckets are not filled (the
 ## renderer refuses instances of no mesh, an engine error this runner fails on), and the part there
 ## is drawn.
