@@ -43,3 +43,25 @@ func show_scenery(shown: bool) -> void:
 	ground.visible = shown
 	environment.background_mode = Environment.BG_SKY if shown else Environment.BG_COLOR
 	environment.background_color = Color.BLACK
+
+
+## A field of one [param plant] ([param map]: one cell) on the stage, calm, its levels not faded, built
+## and not processed (the test advances it), with the scenery hidden and the sun casting no shadow,
+## and a camera made current that sees 2 km: a lone plant to look at from any distance.
+func lone_plant(plant: SunflowerPlant, map: SunflowerFieldMap) -> SunflowerField:
+	show_scenery(false)
+	for light: Node in root.find_children("*", "DirectionalLight3D", true, false):
+		(light as DirectionalLight3D).shadow_enabled = false
+	var field: SunflowerField = SunflowerField.new()
+	field.plant = plant
+	field.map = map
+	field.wind_power = 0.0
+	field.lod_fade = 0.0
+	root.add_child(field)
+	field.finish_build()
+	field.set_process(false)
+	var camera: Camera3D = Camera3D.new()
+	camera.far = 2000.0
+	root.add_child(camera)
+	camera.make_current()
+	return field

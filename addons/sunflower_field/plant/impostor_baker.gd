@@ -184,8 +184,9 @@ static func _bake(plant: SunflowerPlant, host: Node, folder: String, base_name: 
 			return saved
 		paths.append(path)
 	plant.impostor_emission_range = glow.energy_range
-	plant.impostor_alpha_cuts = alpha_cuts(images[0])
-	plant.impostor_thin_from = thin_from(images[0])
+	var alphas: Array[PackedInt32Array] = alpha_levels(images[0])
+	plant.impostor_alpha_cuts = alpha_cuts(alphas)
+	plant.impostor_thin_from = thin_from(alphas)
 	await _tell_drawn(progress, "importing its atlases", 6.0 / STEPS, host.get_tree())
 	await _give_textures(plant, kinds, paths, images, host.get_tree())
 	return OK
@@ -205,24 +206,33 @@ static func _tell_drawn(progress: Callable, step: String, done: float, tree: Sce
 		await tree.process_frame
 
 
-## The alpha cut of each mip level of the views [param image] (as the import makes them, alpha
-## averaged) that keeps the views' cover: the highest cut that at least the share of the level's
-## texels reaches that the views' mean alpha gives (a leaf a fraction of a texel wide is that
-## fraction of alpha, below a fixed cut; the test on this cut draws as many texels as the leaves
-## cover). See [member SunflowerPlant.impostor_alpha_cuts].
-static func alpha_cuts(image: Image) -> PackedFloat32Array:
+## How many texels of each alpha (0–255) each mip level of the views [param image] holds, as the
+## import makes the levels (alpha averaged): [method alpha_cuts] and [method thin_from] read them.
+static func alpha_levels(image: Image) -> Array[PackedInt32Array]:
 	var levels: Image = image.duplicate() as Image
 	levels.clear_mipmaps()
 	levels.convert(Image.FORMAT_RGBA8)
 	levels.generate_mipmaps()
 	var data: PackedByteArray = levels.get_data()
-	var cuts: PackedFloat32Array = []
+	var out: Array[PackedInt32Array] = []
 	for level: int in levels.get_mipmap_count() + 1:
 		var end: int = levels.get_mipmap_offset(level + 1) if level < levels.get_mipmap_count() else data.size()
 		var counts: PackedInt32Array = []
 		counts.resize(256)
 		for k: int in range(levels.get_mipmap_offset(level) + 3, end, 4):
 			counts[data[k]] += 1
+		out.append(counts)
+	return out
+
+
+## The alpha cut of each mip level of the views ([param levels], [method alpha_levels]) that keeps
+## the views' cover: the highest cut that at least the share of the level's texels reaches that the
+## views' mean alpha gives (a leaf a fraction of a texel wide is that fraction of alpha, below a fixed
+## cut; the test on this cut draws as many texels as the leaves cover). See
+## [member SunflowerPlant.impostor_alpha_cuts].
+static func alpha_cuts(levels: Array[PackedInt32Array]) -> PackedFloat32Array:
+	var cuts: PackedFloat32Array = []
+	for counts: PackedInt32Array in levels:
 		var covered: float = 0.0  # the mean alpha's worth of texels
 		for alpha: int in 256:
 			covered += counts[alpha] * alpha / 255.0
@@ -235,28 +245,21 @@ static func alpha_cuts(image: Image) -> PackedFloat32Array:
 	return cuts
 
 
-## The mip level of the views [param image] from which the plant is *thin*: where a plain alpha cut
-## ([constant THIN_CUT]) keeps less than half of what its texels cover, interpolated between the two
-## levels about that share (a crown of leaves smaller than a texel: most of its cover is in texels a
-## fraction covered). −1 when that comes after [constant THIN_LATEST] (the built-in sunflower's
-## views cross it at 3.8), or never. See [member SunflowerPlant.impostor_thin_from].
-static func thin_from(image: Image) -> float:
-	var levels: Image = image.duplicate() as Image
-	levels.clear_mipmaps()
-	levels.convert(Image.FORMAT_RGBA8)
-	levels.generate_mipmaps()
-	var data: PackedByteArray = levels.get_data()
+## The mip level of the views ([param levels], [method alpha_levels]) from which the plant is
+## *thin*: where a plain alpha cut ([constant THIN_CUT]) keeps less than half of what its texels
+## cover, interpolated between the two levels about that share (a crown of leaves smaller than a
+## texel: most of its cover is in texels a fraction covered). −1 when that comes after
+## [constant THIN_LATEST] (the built-in sunflower's views cross it at 3.8), or never. See
+## [member SunflowerPlant.impostor_thin_from].
+static func thin_from(levels: Array[PackedInt32Array]) -> float:
 	var cut: int = ceili(THIN_CUT * 255.0)
 	var before: float = 1.0  # the share kept at the level before
-	for level: int in levels.get_mipmap_count() + 1:
-		if level > ceili(THIN_LATEST):
-			break
-		var end: int = levels.get_mipmap_offset(level + 1) if level < levels.get_mipmap_count() else data.size()
+	for level: int in mini(levels.size(), ceili(THIN_LATEST) + 1):
 		var all: int = 0
 		var kept: int = 0
-		for k: int in range(levels.get_mipmap_offset(level) + 3, end, 4):
-			all += data[k]
-			kept += data[k] if data[k] >= cut else 0
+		for alpha: int in 256:
+			all += levels[level][alpha] * alpha
+			kept += levels[level][alpha] * alpha if alpha >= cut else 0
 		var share: float = float(kept) / all if all > 0 else 1.0
 		if share < 0.5:
 			var crossed: float = level - (0.5 - share) / maxf(before - share, 1e-6) if level > 0 else 0.0

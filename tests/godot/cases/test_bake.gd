@@ -437,15 +437,23 @@ func test_a_bright_glow_gets_a_wider_range() -> void:
 func test_the_bake_finds_where_a_plant_is_thin() -> void:
 	var solid: Image = Image.create_empty(64, 64, false, Image.FORMAT_RGBA8)
 	solid.fill_rect(Rect2i(16, 16, 32, 32), Color.WHITE)
-	check_eq(ImpostorBaker.thin_from(solid), -1.0, "a solid square: not thin before the far test is hashed")
+	check_eq(
+		ImpostorBaker.thin_from(ImpostorBaker.alpha_levels(solid)),
+		-1.0,
+		"a solid square: not thin before the far test is hashed"
+	)
 	var specks: Image = Image.create_empty(64, 64, false, Image.FORMAT_RGBA8)
 	for y: int in range(0, 64, 2):
 		for x: int in range(0, 64, 2):
 			specks.set_pixel(x, y, Color.WHITE)
-	check_near(ImpostorBaker.thin_from(specks), 0.5, 0.01, "specks of a texel: thin from mip 0.5")
+	check_near(
+		ImpostorBaker.thin_from(ImpostorBaker.alpha_levels(specks)), 0.5, 0.01, "specks of a texel: thin from mip 0.5"
+	)
 	var sparse: Image = Image.create_empty(64, 64, false, Image.FORMAT_RGBA8)
 	sparse.fill_rect(Rect2i(0, 0, 64, 64), Color(1.0, 1.0, 1.0, 0.3))
-	check_eq(ImpostorBaker.thin_from(sparse), 0.0, "texels a third covered: thin from the start")
+	check_eq(
+		ImpostorBaker.thin_from(ImpostorBaker.alpha_levels(sparse)), 0.0, "texels a third covered: thin from the start"
+	)
 
 
 func test_views_are_drawn_in_tiles_as_large_as_the_triangle_budget_allows() -> void:

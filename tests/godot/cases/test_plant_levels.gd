@@ -53,22 +53,9 @@ func test_generated_levels_thin_the_cards_and_keep_the_cover() -> void:
 			)
 		var staged: Stage = Stage.new(tree.root)
 		stage = staged.root
-		staged.show_scenery(false)
-		for light: Node in stage.find_children("*", "DirectionalLight3D", true, false):
-			(light as DirectionalLight3D).shadow_enabled = false
 		plant.yaw_range = 0.0
-		var field: SunflowerField = SunflowerField.new()
-		field.plant = plant
-		field.map = Maps.filled(1, 1, "user://one_thinned_plant.field")
-		field.wind_power = 0.0
-		field.lod_fade = 0.0
-		stage.add_child(field)
-		field.finish_build()
-		field.set_process(false)
-		var camera: Camera3D = Camera3D.new()
-		camera.far = 2000.0
-		stage.add_child(camera)
-		camera.make_current()
+		var field: SunflowerField = staged.lone_plant(plant, Maps.filled(1, 1, "user://one_thinned_plant.field"))
+		var camera: Camera3D = tree.root.get_camera_3d()
 		var root: Vector3 = field.get_plant_info(0)["position"]
 		var middle: Vector3 = root + Vector3(0.0, plant.height * 0.5, 0.0)
 		var covers: PackedStringArray = []
