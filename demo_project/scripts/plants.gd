@@ -67,7 +67,8 @@ static func _forget_bakes(plant_name: String) -> void:
 
 
 ## Gives [param plant] the atlases an earlier run baked for it as [param baked_name] (the test plants
-## give off no light; a back-light atlas when one was baked); false when there are none.
+## give off no light; a back-light atlas when one was baked), and what the bake measures on its
+## views (their alpha cuts and where the plant is thin); false when there are none.
 static func _load_baked(plant: SunflowerPlant, baked_name: String) -> bool:
 	var kinds: PackedStringArray = SunflowerPlant.IMPOSTOR_TEXTURES.duplicate()
 	kinds.append(SunflowerPlant.BACKLIGHT_TEXTURE)
@@ -78,5 +79,7 @@ static func _load_baked(plant: SunflowerPlant, baked_name: String) -> bool:
 			if kind in SunflowerPlant.IMPOSTOR_TEXTURES:
 				return false
 			continue
+		if kind == "views":
+			ImpostorBaker.measure_views(plant, image)  # before the texture premultiplies it
 		plant.set("impostor_" + kind, ImpostorBaker.atlas_texture(image, plant.name))
 	return true

@@ -184,9 +184,7 @@ static func _bake(plant: SunflowerPlant, host: Node, folder: String, base_name: 
 			return saved
 		paths.append(path)
 	plant.impostor_emission_range = glow.energy_range
-	var alphas: Array[PackedInt32Array] = alpha_levels(images[0])
-	plant.impostor_alpha_cuts = alpha_cuts(alphas)
-	plant.impostor_thin_from = thin_from(alphas)
+	measure_views(plant, images[0])
 	await _tell_drawn(progress, "importing its atlases", 6.0 / STEPS, host.get_tree())
 	await _give_textures(plant, kinds, paths, images, host.get_tree())
 	return OK
@@ -204,6 +202,15 @@ static func _tell_drawn(progress: Callable, step: String, done: float, tree: Sce
 	if progress.is_valid():
 		await tree.process_frame
 		await tree.process_frame
+
+
+## Gives [param plant] what the bake measures on its views [param views] (as baked, not
+## premultiplied): [member SunflowerPlant.impostor_alpha_cuts] and
+## [member SunflowerPlant.impostor_thin_from]. For views baked earlier and loaded from their file.
+static func measure_views(plant: SunflowerPlant, views: Image) -> void:
+	var alphas: Array[PackedInt32Array] = alpha_levels(views)
+	plant.impostor_alpha_cuts = alpha_cuts(alphas)
+	plant.impostor_thin_from = thin_from(alphas)
 
 
 ## How many texels of each alpha (0–255) each mip level of the views [param image] holds, as the

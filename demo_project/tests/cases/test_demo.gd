@@ -217,6 +217,27 @@ func test_the_hills_map_stands_the_field_on_the_terrain() -> void:
 	check(not (demo.get_node("Hills") as Node3D).visible and (demo.get_node("Ground") as Node3D).visible)
 
 
+## Atlases an earlier run baked, loaded again, come with what the bake measures on its views: a
+## plant whose views are specks of a texel is thin from mip 0.5 and has a cut for each level, as it
+## had when it was baked (loaded without them, the maple's far impostors lost a third of their cover).
+func test_the_plants_maps_baked_atlases_load_with_their_measures() -> void:
+	await frames(3)
+	var views: Image = Image.create_empty(64, 64, false, Image.FORMAT_RGBA8)
+	for y: int in range(0, 64, 2):
+		for x: int in range(0, 64, 2):
+			views.set_pixel(x, y, Color.WHITE)
+	DirAccess.make_dir_recursive_absolute(DemoPlants.FOLDER)
+	var baked_name: String = "measured_test_000000000000"
+	for kind: String in SunflowerPlant.IMPOSTOR_TEXTURES:
+		views.save_png(DemoPlants.FOLDER.path_join("%s_%s.png" % [baked_name, kind]))
+	var plant: SunflowerPlant = SunflowerPlant.new()
+	check(DemoPlants._load_baked(plant, baked_name), "loaded")
+	check_near(plant.impostor_thin_from, 0.5, 0.01, "thin from where its views say")
+	check_eq(plant.impostor_alpha_cuts.size(), 7, "a cut for each of its views' 7 mip levels")
+	for kind: String in SunflowerPlant.IMPOSTOR_TEXTURES:
+		DirAccess.remove_absolute(DemoPlants.FOLDER.path_join("%s_%s.png" % [baked_name, kind]))
+
+
 ## The Plants map's baked impostors are kept under a name that follows what the bake depends on:
 ## each test plant's is its own and the same from run to run, and a name nothing was baked under
 ## loads nothing (so a changed scene or baker is baked again, not drawn from old atlases).
