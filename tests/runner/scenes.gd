@@ -26,3 +26,13 @@ static func holed_leaves() -> StandardMaterial3D:
 	leaves.alpha_scissor_threshold = 0.5
 	leaves.cull_mode = BaseMaterial3D.CULL_DISABLED
 	return leaves
+
+
+## A ShaderMaterial of a shader of [param code], named [param material_name] (the name the addon's
+## warnings give a material).
+static func shader_material(code: String, material_name: String = "") -> ShaderMaterial:
+	var material: ShaderMaterial = ShaderMaterial.new()
+	material.resource_name = material_name
+	material.shader = Shader.new()
+	material.shader.code = code
+	return material

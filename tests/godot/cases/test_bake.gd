@@ -12,6 +12,7 @@ const BACKLIGHT: Color = Color(0.8, 0.9, 0.3)
 const Stage: GDScript = preload("res://runner/stage.gd")
 const Picture: GDScript = preload("res://runner/picture.gd")
 const Maps: GDScript = preload("res://runner/maps.gd")
+const Scenes: GDScript = preload("res://runner/scenes.gd")
 
 
 ## A part as a glTF file would bring it: a coloured box written to glTF, read back.
@@ -316,12 +317,12 @@ func test_a_shader_of_the_users_that_sets_backlight_lets_the_sun_through_as_far_
 	var leaf: Mesh = _gltf_part(Color(0.1, 0.3, 0.05), Vector3(0.9, 1.0, 0.02), "own_leaf.gltf")
 	if not check(leaf != null, "the glTF leaf loads"):
 		return
-	var own: ShaderMaterial = ShaderMaterial.new()
-	own.resource_name = "own_backlit"
-	own.shader = Shader.new()
-	own.shader.code = (
-		"shader_type spatial;\nuniform vec3 through = vec3(0.8, 0.9, 0.3);\n"
-		+ "void fragment() {\n\tALBEDO = vec3(0.1, 0.3, 0.05);\n\tBACKLIGHT = through;\n}\n"
+	var own: ShaderMaterial = Scenes.shader_material(
+		(
+			"shader_type spatial;\nuniform vec3 through = vec3(0.8, 0.9, 0.3);\n"
+			+ "void fragment() {\n\tALBEDO = vec3(0.1, 0.3, 0.05);\n\tBACKLIGHT = through;\n}\n"
+		),
+		"own_backlit"
 	)
 	leaf.surface_set_material(0, own)
 	var plant: SunflowerPlant = SunflowerPlant.new()

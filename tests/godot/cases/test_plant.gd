@@ -11,6 +11,7 @@ const DEMO_MAP: SunflowerFieldMap = preload("res://fields/demo.field")
 const ImpostorSetScript: GDScript = preload("res://addons/sunflower_field/runtime/impostor_set.gd")
 const PlantMaterialScript: GDScript = preload("res://addons/sunflower_field/plant/plant_material.gd")
 const Dressing: GDScript = preload("res://runner/dressing.gd")
+const Scenes: GDScript = preload("res://runner/scenes.gd")
 const ImpostorBaker: GDScript = preload("res://addons/sunflower_field/plant/impostor_baker.gd")
 const BakeLight: GDScript = preload("res://addons/sunflower_field/plant/bake_light.gd")
 
@@ -692,25 +693,23 @@ func test_plain_standard_materials_are_taken_over_and_others_kept() -> void:
 ## transmittance is named in a warning when the impostors are baked (#60); one that sets BACKLIGHT
 ## (its back-light is baked: test_bake), the plant material and a StandardMaterial3D are not named.
 func test_a_shader_whose_own_light_the_bake_cannot_capture_is_named() -> void:
-	var lit: ShaderMaterial = ShaderMaterial.new()
-	lit.resource_name = "leaves_lit"
-	lit.shader = Shader.new()
-	lit.shader.code = (
-		"shader_type spatial;\nvoid fragment() { ALBEDO = vec3(0.2, 0.6, 0.1); }\n"
-		+ "void light() { DIFFUSE_LIGHT += ATTENUATION * LIGHT_COLOR; }\n"
+	var lit: ShaderMaterial = Scenes.shader_material(
+		(
+			"shader_type spatial;\nvoid fragment() { ALBEDO = vec3(0.2, 0.6, 0.1); }\n"
+			+ "void light() { DIFFUSE_LIGHT += ATTENUATION * LIGHT_COLOR; }\n"
+		),
+		"leaves_lit"
 	)
-	var through: ShaderMaterial = ShaderMaterial.new()
-	through.resource_name = "leaves_through"
-	through.shader = Shader.new()
 	var transmits: String = "SSS_TRANSMITTANCE_COLOR = vec4(0.5);"
-	through.shader.code = "shader_type spatial;\nvoid fragment() { ALBEDO = vec3(0.2); %s }\n" % transmits
-	var backlit: ShaderMaterial = ShaderMaterial.new()
-	backlit.resource_name = "leaves_backlit"
-	backlit.shader = Shader.new()
-	backlit.shader.code = "shader_type spatial;\nvoid fragment() { ALBEDO = vec3(0.2); BACKLIGHT = vec3(0.5); }\n"
-	var plain: ShaderMaterial = ShaderMaterial.new()
-	plain.shader = Shader.new()
-	plain.shader.code = "shader_type spatial;\n// no light() here\nvoid fragment() { ALBEDO = vec3(0.5); }\n"
+	var through: ShaderMaterial = Scenes.shader_material(
+		"shader_type spatial;\nvoid fragment() { ALBEDO = vec3(0.2); %s }\n" % transmits, "leaves_through"
+	)
+	var backlit: ShaderMaterial = Scenes.shader_material(
+		"shader_type spatial;\nvoid fragment() { ALBEDO = vec3(0.2); BACKLIGHT = vec3(0.5); }\n", "leaves_backlit"
+	)
+	var plain: ShaderMaterial = Scenes.shader_material(
+		"shader_type spatial;\n// no light() here\nvoid fragment() { ALBEDO = vec3(0.5); }\n"
+	)
 	var mesh: ArrayMesh = ArrayMesh.new()
 	for material: Material in [
 		lit,

@@ -296,13 +296,13 @@ func test_instance_shader_parameters_are_carried_to_the_field() -> void:
 ## share of the two colours as the scene drawn plainly and no red (VERTEX alone carried: all of the
 ## lower colour). A shader reading the model matrix on a second moved node is carried too.
 func test_a_shader_reading_positions_on_a_moved_node_sees_the_nodes_space() -> void:
-	var by_height: ShaderMaterial = ShaderMaterial.new()
-	by_height.shader = Shader.new()
-	by_height.shader.code = (
-		"shader_type spatial;\nrender_mode unshaded;\nvarying float h;\n"
-		+ "void vertex() {\n\th = (MODEL_MATRIX * vec4(VERTEX, 1.0)).y - 1.5;\n}\n"
-		+ "void fragment() {\n\tALBEDO = h > 0.0 ? vec3(1.0, 0.9, 0.0) : vec3(0.0, 0.2, 1.0);\n"
-		+ "\tALBEDO = abs(NODE_POSITION_WORLD.y - 1.5) > 0.2 ? vec3(1.0, 0.0, 0.0) : ALBEDO;\n}\n"
+	var by_height: ShaderMaterial = Scenes.shader_material(
+		(
+			"shader_type spatial;\nrender_mode unshaded;\nvarying float h;\n"
+			+ "void vertex() {\n\th = (MODEL_MATRIX * vec4(VERTEX, 1.0)).y - 1.5;\n}\n"
+			+ "void fragment() {\n\tALBEDO = h > 0.0 ? vec3(1.0, 0.9, 0.0) : vec3(0.0, 0.2, 1.0);\n"
+			+ "\tALBEDO = abs(NODE_POSITION_WORLD.y - 1.5) > 0.2 ? vec3(1.0, 0.0, 0.0) : ALBEDO;\n}\n"
+		)
 	)
 	var root: Node3D = _root()
 	var leaves: MeshInstance3D = _box_node("Leaves", Vector3(1.0, 1.0, 1.0), Vector3(0.0, 1.5, 0.0))
@@ -320,11 +320,11 @@ func test_a_shader_reading_positions_on_a_moved_node_sees_the_nodes_space() -> v
 		drawn is ShaderMaterial and (drawn as ShaderMaterial).shader.code.contains("plant_node_inverse"),
 		"the leaves are drawn by a copy that sees the node's space"
 	)
-	var by_matrix: ShaderMaterial = ShaderMaterial.new()
-	by_matrix.shader = Shader.new()
-	by_matrix.shader.code = (
-		"shader_type spatial;\nvarying float h;\nvoid vertex() {\n\th = MODEL_MATRIX[3].y;\n}\n"
-		+ "void fragment() {\n\tALBEDO = vec3(h);\n}\n"
+	var by_matrix: ShaderMaterial = Scenes.shader_material(
+		(
+			"shader_type spatial;\nvarying float h;\nvoid vertex() {\n\th = MODEL_MATRIX[3].y;\n}\n"
+			+ "void fragment() {\n\tALBEDO = vec3(h);\n}\n"
+		)
 	)
 	var stone: MeshInstance3D = _box_node("Stone", Vector3(0.3, 0.3, 0.3), Vector3(0.5, 0.15, 0.0))
 	stone.material_override = by_matrix
