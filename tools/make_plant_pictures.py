@@ -78,12 +78,13 @@ def lone_pictures(plant):
 
 
 def lone():
-    columns = max(len(lone_pictures(plant)) for plant in PLANTS)
+    rows = [lone_pictures(plant) for plant in PLANTS]
+    columns = max(len(tiles) for tiles in rows)
     sheet = Image.new("RGB", (LONE_TILE * columns, (LABEL_HEIGHT + LONE_TILE) * len(PLANTS)), "white")
     draw = ImageDraw.Draw(sheet)
-    for row, plant in enumerate(PLANTS):
+    for row, (plant, tiles) in enumerate(zip(PLANTS, rows)):
         top = row * (LABEL_HEIGHT + LONE_TILE)
-        for column, (label, tile) in enumerate(lone_pictures(plant)):
+        for column, (label, tile) in enumerate(tiles):
             draw.text((column * LONE_TILE + 4, top + 4), "%s, %s" % (plant.split("_")[0], label), fill="black")
             sheet.paste(tile, (column * LONE_TILE, top + LABEL_HEIGHT))
     sheet.save(DOCS / "test_plant_lone.png")
