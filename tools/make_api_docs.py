@@ -87,8 +87,31 @@ def type_of(node):
     return t or "Variant"
 
 
-def page(xml_path):
+def with_script_bases(xml_path, sources):
+    """A class's docs with those of the unnamed scripts it extends merged in (SunflowerField's
+    run-time half is runtime/field_node_base.gd): the user meets them as one class. The engine names
+    such a base by its quoted path, and its docs file after the path."""
     root = ET.parse(xml_path).getroot()
+    while True:
+        base = re.fullmatch(r'"(.+\.gd)"', root.get("inherits", ""))
+        if not base:
+            return root
+        base_path = sources.get(base.group(1).replace("/", "--"))
+        if base_path is None:
+            sys.exit(f"make_api_docs: no docs for {root.get('name')}'s base script {base.group(1)}")
+        base_root = ET.parse(base_path).getroot()
+        for section in ("members", "methods", "signals", "constants"):
+            own, inherited = root.find(section), base_root.find(section)
+            if inherited is None:
+                continue
+            if own is None:
+                own = ET.SubElement(root, section)
+            for item in inherited:
+                own.append(item)
+        root.set("inherits", base_root.get("inherits", ""))
+
+
+def page(root):
     name = root.get("name")
     out = [f"# {name}", ""]
     inherits = root.get("inherits")
@@ -171,7 +194,7 @@ def write(target, godot):
         for cls in CLASSES:
             if cls not in sources:
                 sys.exit(f"make_api_docs: no docs for {cls} (looked in the doctool's output and doc_classes/)")
-            name, text, brief = page(sources[cls])
+            name, text, brief = page(with_script_bases(sources[cls], sources))
             (target / f"{name}.md").write_text(text, encoding="utf-8")
             index.append(f"| [{name}]({name}.md) | {one_line(brief, name).replace('](#', f']({name}.md#')} |")
         (target / "README.md").write_text("\n".join(index) + "\n", encoding="utf-8")

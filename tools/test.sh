@@ -218,6 +218,10 @@ if runs lint; then
   mapfile -t scripts < <(git ls-files '*.gd')
   if "$repo/.cache/venv/bin/gdlint" "${scripts[@]}"; then record 1 0 "gdlint"; else record 0 1 "gdlint"; fi
   if "$repo/.cache/venv/bin/gdformat" --check --line-length 120 "${scripts[@]}"; then record 1 0 "gdformat"; else record 0 1 "gdformat"; fi
+  # An addon script does one job and is read whole: at most 500 lines (tests and tools may be longer).
+  long_scripts=$(git ls-files 'addons/*.gd' | xargs wc -l | awk '$2 != "total" && $1 > 500 {print $2 " (" $1 " lines)"}')
+  if [[ -z "$long_scripts" ]]; then record 1 0 "addon scripts of at most 500 lines"
+  else echo "over 500 lines: $long_scripts"; record 0 1 "addon scripts of at most 500 lines"; fi
   suite_done lint
 fi
 

@@ -23,9 +23,8 @@ const Native: GDScript = preload("native/native.gd")
 const DEFAULT_PATH: String = "res://addons/sunflower_field/plants/sunflower.tres"
 const PartMeshes: GDScript = preload("plant/part_meshes.gd")
 const ImpostorBaker: GDScript = preload("plant/impostor_baker.gd")
-const WholePlantMesh: GDScript = preload("plant/whole_plant_mesh.gd")
-const PlantMaterial: GDScript = preload("plant/plant_material.gd")
 const ScenePlant: GDScript = preload("plant/scene_plant.gd")
+const PlantParts: GDScript = preload("plant/plant_parts.gd")
 ## The impostor atlases' views: columns around the plant (the first from its front, +z, turning
 ## towards +x), rows of elevation from the side (0°, top row) to straight above (90°, bottom row).
 const ATLAS_VIEWS: Vector2i = Vector2i(12, 10)
@@ -41,9 +40,8 @@ static var _default: SunflowerPlant
 ## A name for the plant (menus, warnings).
 @export var name: String = "Sunflower":
 	set(value):
-		var accepted: String = value
-		if accepted != name:
-			name = accepted
+		if value != name:
+			name = value
 			emit_changed()
 ## Height from the root to the top of the parts, metres.
 @export_range(0.01, 50.0, 0.01, "or_greater", "suffix:m") var height: float = 2.0:
@@ -57,17 +55,17 @@ static var _default: SunflowerPlant
 ## The most detailed level's parts: bottom, middle, head.
 @export var mesh_level_1: Array[Mesh] = [null, null, null]:
 	set(value):
-		mesh_level_1 = _three(value)
+		mesh_level_1 = PlantParts.three(value)
 		emit_changed()  # always: the same array or texture may hold new contents
 ## The middle level's parts.
 @export var mesh_level_2: Array[Mesh] = [null, null, null]:
 	set(value):
-		mesh_level_2 = _three(value)
+		mesh_level_2 = PlantParts.three(value)
 		emit_changed()  # always: the same array or texture may hold new contents
 ## The simplest level's parts.
 @export var mesh_level_3: Array[Mesh] = [null, null, null]:
 	set(value):
-		mesh_level_3 = _three(value)
+		mesh_level_3 = PlantParts.three(value)
 		emit_changed()  # always: the same array or texture may hold new contents
 ## Draw each near plant as one instance, its parts merged into one mesh per level and placed by the
 ## shader, instead of one instance per part: a third of the draw calls and less per-frame work, and
@@ -78,9 +76,8 @@ static var _default: SunflowerPlant
 ## drawn part by part whatever this says ([method drawn_whole]).
 @export var draw_whole: bool = true:
 	set(value):
-		var accepted: bool = value
-		if accepted != draw_whole:
-			draw_whole = accepted
+		if value != draw_whole:
+			draw_whole = value
 			emit_changed()
 ## Draw the parts' plain StandardMaterial3D surfaces with the addon's plant material of the same
 ## settings ([code]plant_material.gd[/code] says which settings carry over), so that the near levels
@@ -91,9 +88,8 @@ static var _default: SunflowerPlant
 ## its own material.
 @export var use_plant_material: bool = true:
 	set(value):
-		var accepted: bool = value
-		if accepted != use_plant_material:
-			use_plant_material = accepted
+		if value != use_plant_material:
+			use_plant_material = value
 			emit_changed()
 
 ## Values the field gives the [code]instance uniform[/code]s of the parts' shaders on every node that
@@ -139,7 +135,7 @@ static var _default: SunflowerPlant
 ## from the stem), model units: what the impostor views frame.
 @export_range(0.01, 100.0, 0.01, "or_greater") var impostor_width: float = 1.6:
 	set(value):
-		var accepted: float = _positive(value, impostor_width)
+		var accepted: float = value if value > 0.0 and is_finite(value) else impostor_width
 		if accepted != impostor_width:
 			impostor_width = accepted
 			emit_changed()
@@ -314,9 +310,8 @@ static var _default: SunflowerPlant
 ## cut keeps less than half of what the views' texels cover (a crown of leaves smaller than a texel).
 ## From there its impostors' alpha test is hashed (each pixel drawn as often as its texel is covered,
 ## speckled as the meshes' far leaves are) and each view is read at the quad's own place (reading it
-## where the depths say spread a sparse crown's cover: the Sapling maple's far impostors covered 1.17
-## of its meshes' pixels so, 0.99 without). The baker measures it; −1: not before the far test is
-## hashed anyway (the built-in sunflower, or an atlas baked before it was measured).
+## where the depths say spreads a sparse crown's cover). The baker measures it; −1: not before the far
+## test is hashed anyway (the built-in sunflower, or an atlas baked before it was measured).
 @export_range(-1.0, 3.0, 0.01) var impostor_thin_from: float = -1.0:
 	set(value):
 		if value != impostor_thin_from:
@@ -325,9 +320,8 @@ static var _default: SunflowerPlant
 
 ## Near plants of this type cast their shadows from its far impostors from the field's
 ## [member SunflowerField.impostor_shadows_from] on (fewer primitives). Off: they cast from their
-## meshes at every mesh level, for a plant whose impostor shadows are lighter than its meshes' (a
-## tree's thin branches and small leaves: the Sapling maple's field 25 m up at 45° scores SSIM 0.747
-## against its all-mesh-1 picture with it off, 0.673 on; docs/plants.md).
+## meshes at every mesh level, for a plant whose impostor shadows are blots where its meshes' are
+## specks (a tree's thin branches and small leaves; docs/plants.md compares them).
 @export var impostor_shadows: bool = true:
 	set(value):
 		if value != impostor_shadows:
@@ -343,8 +337,7 @@ static var _default: SunflowerPlant
 			impostor_shadow_shift = accepted
 			emit_changed()
 
-var _whole_meshes: Dictionary = {}  # level → [what it was merged from, the merged mesh]
-var _field_meshes: Dictionary = {}  # a part mesh → the mesh the field draws it with
+var _parts: PlantParts = PlantParts.new()  # the copies of its meshes the field draws, made once
 
 
 ## A plant of one part made from [param scene] (a glTF, .blend or .tscn plant): its meshes with
@@ -356,27 +349,7 @@ var _field_meshes: Dictionary = {}  # a part mesh → the mesh the field draws i
 ## leaves out and for a plant that stands wholly below or far above its root.
 ## Bake its impostors next ([method bake_impostors]; the editor's plant inspector does it at once).
 static func from_scene(scene: PackedScene) -> SunflowerPlant:
-	var source: String = scene.resource_path if scene and scene.resource_path else "(unsaved scene)"
-	var made: Dictionary = ScenePlant.levels_of(scene)
-	for problem: String in made.problems:
-		push_warning("SunflowerPlant.from_scene: %s: %s" % [source, problem])
-	var refused: String = ScenePlant.refusal(made.levels[0])
-	if not refused.is_empty():
-		push_error("SunflowerPlant.from_scene: %s %s" % [source, refused])
-		return null
-	var placement: String = ScenePlant.placement_problem(made.levels[0])
-	if not placement.is_empty():
-		push_warning("SunflowerPlant.from_scene: %s: %s" % [source, placement])
-	var plant: SunflowerPlant = SunflowerPlant.new()
-	plant.name = source.get_file().get_basename() if scene.resource_path else "Plant"
-	plant.mesh_level_1 = [made.levels[0], null, null]
-	plant.mesh_level_2 = [made.levels[1], null, null]
-	plant.mesh_level_3 = [made.levels[2], null, null]
-	plant.instance_shader_parameters = made.instance_parameters
-	plant.fit_to_meshes()
-	plant.height = plant.part_lengths.x
-	plant.middle_variation = 0.0  # a plant of one part has no middle to stretch
-	return plant
+	return ScenePlant.plant_of(scene)
 
 
 ## Frames the plant from its level-1 parts as they stack, upright: [member height_units] (the root
@@ -384,34 +357,7 @@ static func from_scene(scene: PackedScene) -> SunflowerPlant:
 ## [member cull_radius_units] (the sphere about the middle that holds the plant tilted by the wind's
 ## largest bend). A plant of one part also gets that part's top as [member part_lengths].x.
 func fit_to_meshes() -> void:
-	var lengths: Vector3 = stacked_lengths()
-	var points: PackedVector3Array = []
-	var base: float = 0.0
-	for part: int in 3:
-		var mesh: Mesh = mesh_level_1[part]
-		if mesh:
-			for point: Vector3 in mesh.get_faces():
-				points.append(point + Vector3(0.0, base, 0.0))
-		base += lengths[part]
-	if points.is_empty():
-		push_warning("SunflowerPlant.fit_to_meshes: '%s' has no level-1 mesh to fit to" % name)
-		return
-	var top: float = 0.0
-	var reach: float = 0.0
-	for point: Vector3 in points:
-		top = maxf(top, point.y)
-		reach = maxf(reach, Vector2(point.x, point.z).length())
-	top = maxf(top, 0.01)
-	var farthest: float = 0.0
-	for point: Vector3 in points:
-		farthest = maxf(farthest, point.distance_to(Vector3(0.0, top * 0.5, 0.0)))
-	if mesh_level_1[1] == null and mesh_level_1[2] == null:
-		part_lengths = Vector3(top, part_lengths.y, part_lengths.z)
-	height_units = top
-	impostor_width = maxf(2.0 * reach, 0.01)
-	# Tilted about the root by θ, the middle moves 2·(top/2)·sin(θ/2): the sphere grows by that.
-	var largest_bend: float = (SunflowerWind as Script).get_property_default_value(&"max_bend")
-	cull_radius_units = farthest + top * sin(0.5 * largest_bend)
+	PlantParts.fit(self)
 
 
 ## The built-in sunflower (shared: duplicate it before changing it).
@@ -423,28 +369,19 @@ static func default_plant() -> SunflowerPlant:
 
 ## The mesh of a part (level 0–2, part 0–2); null where none is set.
 func get_part_mesh(level: int, part: int) -> Mesh:
-	return _level(level)[part]
+	return PlantParts.level_parts(self, level)[part]
 
 
 ## The mesh a part is drawn with: its own, or at a level with no parts at all the nearest level
 ## above that has some (a plant of one set of meshes draws it at all three levels); null for an
 ## empty slot, which draws nothing.
 func mesh_drawn(level: int, part: int) -> Mesh:
-	for source: int in range(level, -1, -1):
-		var meshes: Array[Mesh] = _level(source)
-		if meshes.any(func(mesh: Mesh) -> bool: return mesh != null):
-			return meshes[part]
-	return null
+	return PlantParts.drawn(self, level, part)
 
 
 ## The triangles of one plant at mesh [param level] (0–2), its parts as drawn ([method mesh_drawn]).
 func triangle_count(level: int) -> int:
-	var triangles: int = 0
-	for part: int in PartMeshes.PART_NAMES.size():
-		var mesh: Mesh = mesh_drawn(level, part)
-		if mesh:
-			triangles += mesh.get_faces().size() / 3
-	return triangles
+	return PlantParts.triangles(self, level)
 
 
 ## [member part_lengths] as the parts stack: the slots above the top level-1 part are empty, and
@@ -461,24 +398,7 @@ func stacked_lengths() -> Vector3:
 ## What keeps the parts from stacking as a plant, a sentence each naming the slot: no level-1 part,
 ## or an empty slot below a filled one (the parts above it float over the gap). Empty when it stacks.
 func stacking_problems() -> PackedStringArray:
-	var problems: PackedStringArray = []
-	if mesh_level_1.all(func(mesh: Mesh) -> bool: return mesh == null):
-		problems.append("SunflowerPlant '%s' has no mesh in mesh_level_1: its plants are not drawn near." % name)
-	for level: int in PartMeshes.LEVELS:
-		var parts: Array[Mesh] = _level(level)
-		var top: int = -1
-		for part: int in parts.size():
-			if parts[part] != null:
-				top = part
-		for part: int in top:
-			if parts[part] == null:
-				problems.append(
-					(
-						"SunflowerPlant '%s': mesh_level_%d's %s slot is empty below its %s, which floats over the gap."
-						% [name, level + 1, PartMeshes.PART_NAMES[part], PartMeshes.PART_NAMES[top]]
-					)
-				)
-	return problems
+	return PlantParts.stacking_problems(self)
 
 
 ## The mesh the field's nodes draw a part with: [method mesh_drawn], its plain StandardMaterial3D
@@ -486,25 +406,13 @@ func stacking_problems() -> PackedStringArray:
 ## [member use_plant_material] (a copy made once per mesh: an edit inside the mesh or its materials
 ## shows once the part slot is set again).
 func mesh_for_field(level: int, part: int) -> Mesh:
-	var mesh: Mesh = mesh_drawn(level, part)
-	if not use_plant_material or mesh == null:
-		return mesh
-	if not _field_meshes.has(mesh):
-		if _field_meshes.size() >= PartMeshes.LEVELS * PartMeshes.PART_NAMES.size():
-			_field_meshes.clear()  # parts were swapped: the copies of meshes no longer drawn go
-		_field_meshes[mesh] = PlantMaterial.adopt_mesh(mesh)
-	return _field_meshes[mesh]
+	return _parts.for_field(self, level, part)
 
 
 ## Whether the near levels draw this plant whole ([member draw_whole], and every level's parts as
 ## the field draws them can be merged).
 func drawn_whole() -> bool:
-	if not draw_whole:
-		return false
-	for level: int in PartMeshes.LEVELS:
-		if not WholePlantMesh.can_merge(_drawn_parts(level), use_plant_material):
-			return false
-	return true
+	return _parts.drawn_whole(self)
 
 
 ## The mesh a plant drawn whole is drawn with at [param level] (its parts as drawn, merged), or null
@@ -512,14 +420,7 @@ func drawn_whole() -> bool:
 ## [member flutter]: an edit inside a part mesh or its material shows once a part slot, the lengths
 ## or the flutter change (set the part again).
 func whole_mesh(level: int) -> Mesh:
-	var parts: Array[Mesh] = _drawn_parts(level)
-	var lengths: Vector3 = stacked_lengths()
-	var source: Array = [parts, lengths, flutter, use_plant_material]
-	var made: Array = _whole_meshes.get(level, [])
-	if made.is_empty() or made[0] != source:
-		made = [source, WholePlantMesh.merge(parts, lengths, flutter, use_plant_material)]
-		_whole_meshes[level] = made
-	return made[1]
+	return _parts.whole_mesh(self, level)
 
 
 ## The impostor texture drawn ([constant IMPOSTOR_TEXTURES], [constant EMISSION_TEXTURE] or
@@ -565,15 +466,9 @@ func layout_key() -> Array:
 
 ## Sets the mesh of a part (level 0–2, part 0–2); null clears it.
 func set_part_mesh(level: int, part: int, mesh: Mesh) -> void:
-	var meshes: Array[Mesh] = _level(level).duplicate()
+	var meshes: Array[Mesh] = PlantParts.level_parts(self, level).duplicate()
 	meshes[part] = mesh
-	match level:
-		0:
-			mesh_level_1 = meshes
-		1:
-			mesh_level_2 = meshes
-		_:
-			mesh_level_3 = meshes
+	set(PlantParts.LEVEL_PROPERTIES[level], meshes)
 
 
 ## Renders this plant's impostor textures from its level-1 parts and takes them (see
@@ -588,27 +483,6 @@ func bake_impostors(host: Node, folder: String = "", base_name: String = "", pro
 ## lengths as stacked, without empty slots above the plant's top part; others as they are.
 func _row_value(property: StringName, value: Variant) -> Variant:
 	return stacked_lengths() if property == &"part_lengths" else value
-
-
-func _drawn_parts(level: int) -> Array[Mesh]:
-	var parts: Array[Mesh] = []
-	for part: int in PartMeshes.PART_NAMES.size():
-		parts.append(mesh_for_field(level, part))
-	return parts
-
-
-func _level(level: int) -> Array[Mesh]:
-	return mesh_level_1 if level == 0 else (mesh_level_2 if level == 1 else mesh_level_3)
-
-
-static func _three(meshes: Array[Mesh]) -> Array[Mesh]:
-	var out: Array[Mesh] = meshes.duplicate()
-	out.resize(PartMeshes.PART_NAMES.size())
-	return out
-
-
-static func _positive(value: float, fallback: float) -> float:
-	return value if value > 0.0 and is_finite(value) else fallback
 
 
 ## The inspector's range hints take their limits from the core's table (native.gd: [code]range_hint[/code]).

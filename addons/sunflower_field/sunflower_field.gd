@@ -1,7 +1,7 @@
 @tool
 @icon("icons/sunflower_field.svg")
 class_name SunflowerField
-extends Node3D
+extends "runtime/field_node_base.gd"
 ## A field of sunflowers laid out from a plain-text map, swaying in the wind, drawn through five
 ## levels of detail.
 ##
@@ -25,10 +25,6 @@ signal build_progress(progress: float)
 ## Emitted when the frame budget moves the quality (see [method get_quality]).
 signal quality_changed(quality: float)
 
-## The three parts of a plant, bottom to top (the native core's part indices).
-enum Part { BOTTOM, MIDDLE, HEAD }
-## The five representations, most detailed first (the native core's levels).
-enum Lod { MESH_1, MESH_2, MESH_3, SPRITE, BILLBOARD }
 ## Where plants stand (see [member ground_source]).
 enum GroundSource {
 	FLAT = FieldGround.Source.FLAT,
@@ -36,30 +32,12 @@ enum GroundSource {
 	HEIGHT_MAP = FieldGround.Source.HEIGHT_MAP,
 }
 
-const Native: GDScript = preload("native/native.gd")
-const NativeField: GDScript = preload("native/native_field.gd")
-const FieldDriver: GDScript = preload("runtime/field_driver.gd")
 const FieldSettings: GDScript = preload("runtime/field_settings.gd")
-const ProjectKnobs: GDScript = preload("runtime/field_project_settings.gd")
 const FieldGround: GDScript = preload("runtime/field_ground.gd")
 const FieldLegend: GDScript = preload("runtime/field_legend.gd")
-const FieldNodes: GDScript = preload("runtime/field_nodes.gd")
-const PartMeshes: GDScript = preload("plant/part_meshes.gd")
+const FieldFace: GDScript = preload("runtime/field_face.gd")
 ## The thesis' switch distances, [member lod_distances]' default.
 const DEFAULT_LOD_DISTANCES: PackedFloat32Array = [6.0, 10.0, 20.0, 25.0]
-## The properties that edit [member wind]: stored there, so not in the scene a second time.
-## The settings of one ground source, by the source they belong to (shown only for it).
-const GROUND_SETTINGS: Dictionary = {
-	&"ground_collision_mask": GroundSource.COLLIDERS,
-	&"ground_ray_above": GroundSource.COLLIDERS,
-	&"ground_ray_below": GroundSource.COLLIDERS,
-	&"height_map": GroundSource.HEIGHT_MAP,
-	&"height_map_rect": GroundSource.HEIGHT_MAP,
-	&"height_range": GroundSource.HEIGHT_MAP,
-}
-const WIND_PROPERTIES: Dictionary = {
-	&"wind_power": &"power", &"wind_direction": &"direction", &"wind_increment": &"increment"
-}
 ## The field map. Import a [code].field[/code] file (the plugin turns it into a
 ## [SunflowerFieldMap]) or call [method load_map_file].
 @export var map: SunflowerFieldMap:
@@ -406,42 +384,6 @@ const WIND_PROPERTIES: Dictionary = {
 ## The physics layers the stalk colliders scan.
 @export_flags_3d_physics var collision_mask: int = 1
 
-## What the running game does to the plants: cut, flatten, remove and give back plants, its events
-## (trampled, changed, recovered, pushers in and out), regrowth's clock and the save (see
-## [SunflowerFieldPlay]).
-var play: SunflowerFieldPlay:
-	get:
-		return _driver.play
-## The plant's height from root to head, metres: the [member plant]'s [member SunflowerPlant.height]
-## (setting it gives the field its own copy of the plant).
-var plant_height: float:
-	get:
-		return _plant().height
-	set(value):
-		_own_plant().height = value
-## The far levels' views of the plant: the [member plant]'s [member SunflowerPlant.impostor_views]
-## (setting it gives the field its own copy of the plant).
-var impostor_views: Texture2D:
-	get:
-		return _plant().texture_drawn("views")
-	set(value):
-		_own_plant().impostor_views = value
-## The far levels' normals: the [member plant]'s [member SunflowerPlant.impostor_normals].
-var impostor_normals: Texture2D:
-	get:
-		return _plant().texture_drawn("normals")
-	set(value):
-		_own_plant().impostor_normals = value
-## The far levels' depths: the [member plant]'s [member SunflowerPlant.impostor_depths].
-var impostor_depths: Texture2D:
-	get:
-		return _plant().texture_drawn("depths")
-	set(value):
-		_own_plant().impostor_depths = value
-
-# Everything behind the public face: builds, the field drawn, each frame, impostors, part meshes.
-var _driver: FieldDriver = FieldDriver.new(self)
-var _empty_simulation: RefCounted
 var _own_wind: SunflowerWind  # the wind the node made itself, saved only once it is changed
 
 
@@ -459,21 +401,6 @@ func _init() -> void:
 	set_notify_transform(true)  # the far impostors are placed through the field's transform
 
 
-## The settings the driver keeps for every field it draws, told as they change.
-## [param action] follows the [signal Resource.changed] of [param new] instead of [param old]'s.
-static func _listen(old: Resource, new: Resource, action: Callable) -> void:
-	if old and old.changed.is_connected(action):
-		old.changed.disconnect(action)
-	if new and not new.changed.is_connected(action):
-		new.changed.connect(action)
-
-
-## Tells the field drawn that [param property], a row of the core's table, changed (the core says
-## what that costs: field_settings.gd).
-func _tell(property: StringName) -> void:
-	_driver.send_settings({"SunflowerField." + property: get(property)})
-
-
 func _tell_wind() -> void:
 	_driver.send_settings(FieldSettings.rows_of(wind, "SunflowerWind"))
 
@@ -489,55 +416,15 @@ func _on_map_error(message: String) -> void:
 
 
 func _validate_property(property: Dictionary) -> void:
-	var name: StringName = property["name"]
-	if WIND_PROPERTIES.has(name) or (name == &"wind" and _wind_is_own_default()):
-		property["usage"] &= ~PROPERTY_USAGE_STORAGE
-	# One place for each setting in the inspector: the wind's in [member wind], each ground's own
-	# settings only while it is the ground (they stay stored).
-	if WIND_PROPERTIES.has(name) or GROUND_SETTINGS.get(name, ground_source) != ground_source:
-		property["usage"] &= ~PROPERTY_USAGE_EDITOR
-	if property["hint"] == PROPERTY_HINT_RANGE:
-		var row: String = (
-			"SunflowerWind." + WIND_PROPERTIES[name] if WIND_PROPERTIES.has(name) else "SunflowerField." + name
-		)
-		property["hint_string"] = Native.range_hint(row, property["hint_string"])
+	FieldFace.validate_property(self, property, _own_wind)
 
 
-## The wind settings revert to a new wind's; [member wind], while it is the node's own unchanged
-## one, reverts to itself (else the inspector, comparing it with no default, shows "Wind (1 change)").
 func _property_can_revert(property: StringName) -> bool:
-	return WIND_PROPERTIES.has(property) or (property == &"wind" and _wind_is_own_default())
+	return FieldFace.can_revert(self, property, _own_wind)
 
 
 func _property_get_revert(property: StringName) -> Variant:
-	if property == &"wind":
-		return wind if _wind_is_own_default() else null
-	return SunflowerWind.new().get(WIND_PROPERTIES[property]) if WIND_PROPERTIES.has(property) else null
-
-
-func _wind_is_own_default() -> bool:
-	return wind == _own_wind and wind.is_default()
-
-
-func _ready() -> void:
-	if not Native.is_available():
-		Native.report_missing()  # once per run, however many fields
-	_queue_rebuild()
-
-
-func _notification(what: int) -> void:
-	if what == NOTIFICATION_PREDELETE:
-		_driver.cancel_build()
-		_driver.show(null)
-		_driver.interaction.free_colliders()
-	elif what == NOTIFICATION_EXIT_TREE:
-		_driver.interaction.free_colliders()  # they stand in this world's physics space
-	elif what == NOTIFICATION_TRANSFORM_CHANGED or what == NOTIFICATION_ENTER_TREE:
-		_driver.place_impostors()
-
-
-func _process(delta: float) -> void:
-	_driver.process(delta, ProjectKnobs.build_budget_ms())
+	return FieldFace.revert_value(self, property, _own_wind)
 
 
 ## Reads a map from [param path] ([code]res://[/code], [code]user://[/code] or an absolute path)
@@ -562,37 +449,6 @@ func load_map_file(path: String, background: bool = false) -> Error:
 	return OK
 
 
-## Whether a new field is due (a change waits for the next frame) or being built in the
-## background; the previous field is drawn meanwhile.
-func is_building() -> bool:
-	return _driver.build != null or (_driver.rebuild_queued and is_inside_tree())
-
-
-## How far the coming field is, from 0 to 1 (1 when no build is due or running).
-func get_build_progress() -> float:
-	if _driver.build == null:
-		return 0.0 if is_building() else 1.0
-	return _driver.build.get_progress()
-
-
-## Completes a running background build now, blocking until the field is ready.
-func finish_build() -> void:
-	if _driver.rebuild_queued:
-		_driver.rebuild()
-	if _driver.build:
-		_driver.step_build(-1)
-
-
-## Figures of the last build: [code]total_ms[/code] (start to [signal field_built]),
-## [code]worker_ms[/code] (reading and laying out the map), [code]main_thread_ms[/code] (making
-## nodes and buffers), [code]longest_step_ms[/code] (the longest the build held up one frame),
-## [code]frames[/code] (frames it spanned), [code]background[/code], [code]ground_ray_ms[/code]
-## (main-thread time casting rays at colliders) and [code]cells_without_ground[/code] (plant cells
-## with no ground under their plant, so no plant).
-func get_build_stats() -> Dictionary:
-	return _driver.stats.duplicate()
-
-
 ## The fields building in the background now (for progress displays such as the editor's).
 static func get_building_fields() -> Array[SunflowerField]:
 	var fields: Array[SunflowerField] = []
@@ -600,171 +456,6 @@ static func get_building_fields() -> Array[SunflowerField]:
 		if is_instance_valid(field) and field.is_inside_tree():
 			fields.append(field as SunflowerField)
 	return fields
-
-
-## Number of plants in the field.
-func get_plant_count() -> int:
-	return _driver.plant_count()
-
-
-## Plants per representation (mesh 1, mesh 2, mesh 3, sprite, billboard). Every plant is counted
-## once, whether or not it is in view.
-func get_lod_counts() -> PackedInt32Array:
-	if get_plant_count() == 0:
-		var zeros: PackedInt32Array = PackedInt32Array()
-		zeros.resize(Lod.size())
-		return zeros
-	return _driver.simulation().get_lod_counts()
-
-
-## The share of its distances the field draws with now: 1 unless a frame budget
-## lowered it. The frame budget is the project's (Project Settings, [code]sunflower_field/frame_budget/[/code]:
-## [code]max_primitives[/code], the most triangles the near meshes of a viewport's fields may hold in a
-## frame together, the main view's; [code]gpu_ms[/code], the milliseconds the viewport may take on the
-## GPU, as the engine measures it, smoothed over about 0.15 s; [code]min_quality[/code]), held by one
-## quality per viewport that every field there draws at: a scalar scaling [member lod_distances],
-## [member lod_fade], [member thinning_distance] and [member max_draw_distance] together, lowered in
-## steps of at most 30 % four times a second and given back in steps of at most 10 % after a second
-## with 30 % headroom, never straight back to a quality that went over in the last 10 s (unless a
-## target changed), so it settles instead of pumping. Off in the editor.
-func get_quality() -> float:
-	return _driver.quality()
-
-
-## What the field drawn costs now, for a HUD or a benchmark: [code]update_ms[/code] (the native
-## update and draw of the last frame), [code]worker_threads[/code] (the threads it ran on: the project
-## setting [code]sunflower_field/performance/worker_threads[/code] resolved), [code]memory_bytes[/code]
-## (CPU memory the native field holds),
-## [code]near_meshes[/code] (plants written at each mesh level last frame, after culling: three
-## counts, every plant type together), [code]near_primitives[/code] (their triangles, what
-## the frame budget's [code]max_primitives[/code] caps, with the viewport's other fields'),
-## [code]gpu_ms[/code] (the smoothed GPU time the budget saw, 0 without a GPU target) and
-## [code]quality[/code] ([method get_quality]). Zeros before a
-## field is drawn.
-func get_frame_stats() -> Dictionary:
-	var near: PackedInt32Array = PackedInt32Array()
-	near.resize(Lod.SPRITE)
-	var simulation: NativeField = _driver.simulation()
-	if simulation == null:
-		return {
-			"update_ms": 0.0,
-			"worker_threads": 0,
-			"memory_bytes": 0,
-			"near_meshes": near,
-			"near_primitives": 0,
-			"gpu_ms": 0.0,
-			"quality": get_quality()
-		}
-	for species: int in _species_plants().size():
-		for level: int in Lod.SPRITE:
-			near[level] += _driver.near_count(species, level)
-	var governor: RefCounted = _driver.governor()
-	return {
-		"update_ms": (simulation.get_last_update_usec() + simulation.get_last_draw_usec()) / 1000.0,
-		"worker_threads": simulation.get_worker_threads(),
-		"memory_bytes": simulation.get_memory_bytes(),
-		"near_meshes": near,
-		"near_primitives": _driver.near_primitives(),
-		"gpu_ms": governor.smoothed_gpu_ms if governor and ProjectKnobs.budget_gpu_ms() > 0.0 else 0.0,
-		"quality": get_quality(),
-	}
-
-
-## The plant types grown, species by species: [member plant] (the map's '*'), then the legend's
-## plants in its order. [method get_lod_counts_by_species] follows this order.
-func get_plant_types() -> Array[SunflowerPlant]:
-	var types: Array[SunflowerPlant] = []
-	types.assign(_species_plants())
-	return types
-
-
-## Plants per representation for each plant type of [method get_plant_types] (five counts each, as
-## [method get_lod_counts]).
-func get_lod_counts_by_species() -> Array[PackedInt32Array]:
-	var counts: Array[PackedInt32Array] = []
-	var flat: PackedInt32Array = _driver.simulation().get_lod_counts_by_species() if get_plant_count() > 0 else []
-	for species: int in _species_plants().size():
-		var own: PackedInt32Array = flat.slice(species * Lod.size(), (species + 1) * Lod.size())
-		own.resize(Lod.size())
-		counts.append(own)
-	return counts
-
-
-## A plant's state in the field's space: [code]position[/code] (Vector3, its root),
-## [code]lod[/code] (0–4, see [enum Lod]) and [code]parts[/code] (three [Transform3D], bottom to
-## top, as drawn now; upright for sprites and billboards).
-func get_plant_info(index: int) -> Dictionary:
-	if index < 0 or index >= get_plant_count():
-		push_error("SunflowerField.get_plant_info: index %d is out of range (%d plants)" % [index, get_plant_count()])
-		return {}
-	return {
-		"position": _driver.simulation().get_plant_position(index),
-		"lod": _driver.simulation().get_plant_lod(index),
-		"parts": Native.unpack_transforms(_driver.simulation().get_plant_parts(index)),
-	}
-
-
-## Runs one update now, [param delta] seconds long (for tools and tests; the node also updates
-## itself every frame).
-func advance(delta: float) -> void:
-	finish_build()
-	_driver.update_field(delta)
-
-
-## Replaces one part mesh, like the thesis' [code]setSunflower[/code]: [param lod] 0–2 (mesh level),
-## [param part] 0–2 (see [enum Part]). [code]null[/code] empties the slot (it draws nothing). Parts
-## are modelled with their root at the origin, growing along +y.
-func set_part_mesh(lod: int, part: int, mesh: Mesh) -> void:
-	if PartMeshes.check(lod, part, "set_part_mesh"):
-		_own_plant().set_part_mesh(lod, part, mesh)
-
-
-## The mesh drawn for a part (the built-in sunflower's where the plant has none).
-func get_part_mesh(lod: int, part: int) -> Mesh:
-	return _plant().mesh_drawn(lod, part) if PartMeshes.check(lod, part, "get_part_mesh") else null
-
-
-## Renders the field's plant's impostor textures from its level-1 parts (after [method set_part_mesh]
-## at run time, say) and draws them; await it. A field growing the built-in sunflower gets its own
-## copy first. Files go beside the plant's resource, else to [code]user://[/code]. Needs a renderer.
-func bake_impostors() -> Error:
-	return await _own_plant().bake_impostors(self)
-
-
-## Plants pushed by bodies now or still springing back.
-func get_pushed_count() -> int:
-	return _driver.simulation().get_pushed_count() if _driver.drawn else 0
-
-
-## The plant whose root is nearest to [param point] (field space, on the ground) within
-## [param max_distance] metres, or -1. A plant cut or removed at run time is not there; a flattened
-## one is (see [method SunflowerFieldPlay.get_cell_state]).
-func get_plant_at(point: Vector3, max_distance: float = 0.5) -> int:
-	var nearest: int = -1
-	var best: float = INF
-	var simulation: NativeField = _driver.simulation()
-	for plant: int in simulation.get_plants_near(point, max_distance, false) if simulation else PackedInt32Array():
-		var root: Vector3 = simulation.get_plant_position(plant)
-		var distance: float = Vector2(root.x, root.z).distance_squared_to(Vector2(point.x, point.z))
-		if distance < best:
-			best = distance
-			nearest = plant
-	return nearest
-
-
-## The plant whose stalk collider is [param body] (a ray cast's or a collision's [code]rid[/code],
-## see [member collision_reach]), or -1; -1 too for a plant flattened, cut or removed since (its
-## collider goes at the field's next frame).
-func get_plant_for_body(body: RID) -> int:
-	var plant: int = _driver.interaction.get_plant_of_body(body)
-	if plant < 0 or play.get_cell_state(play.get_cell_of_plant(plant))["state"] != SunflowerFieldPlay.State.STANDING:
-		return -1
-	return plant
-
-
-## How many stalk colliders stand now (see [member collision_reach]).
-func get_collider_count() -> int:
-	return _driver.interaction.get_collider_count()
 
 
 ## Adds [member wind_increment] to the wind power.
@@ -777,64 +468,16 @@ func decrease_wind() -> void:
 	wind_power = wind_power - wind_increment
 
 
-## The native simulation behind the field drawn now ([code]SunflowerSimulation[/code], for tools and
-## tests); an empty one before the first field is built, null without the native library.
-func get_simulation() -> RefCounted:
-	if _driver.drawn:
-		return _driver.simulation().native
-	if _empty_simulation == null:
-		_empty_simulation = Native.create_simulation()
-	return _empty_simulation
-
-
 func _get_configuration_warnings() -> PackedStringArray:
-	var warnings: PackedStringArray = []
-	if not Native.is_available():
-		warnings.append(Native.missing_message())
-	if map == null:
-		warnings.append("No map: import a .field file and assign it to 'map', or call load_map_file().")
-	elif _driver.last_error != "":
-		warnings.append("The map cannot be used: " + _driver.last_error)
-	if not observer.is_empty() and not (get_node_or_null(observer) is Node3D):
-		warnings.append("'observer' does not point to a Node3D; the active camera is used instead.")
-	if is_inside_tree() and not Engine.is_editor_hint() and _driver.observer_node() == null:
-		warnings.append("No observer: set 'observer' or add a current Camera3D; the field keeps its last LOD.")
-	if not scale.is_equal_approx(Vector3.ONE):
-		warnings.append("Keep the field's scale at 1; size it with 'cell_size' and 'plant_height'.")
-	for grown: SunflowerPlant in _species_plants():
-		warnings.append_array(grown.stacking_problems())
-		if grown.stump_height > 0.0 and grown.drawn_whole():
-			warnings.append(
-				(
-					(
-						"SunflowerPlant '%s': stump_height is set, but the plant is drawn whole (no bottom part of its "
-						+ "own): its cut plants leave no stump."
-					)
-					% grown.name
-				)
-			)
-	return warnings
+	return FieldFace.configuration_warnings(self, _driver.last_error, _driver.observer_node())
 
 
 # --- The plant ------------------------------------------------------------------------------------
 
 
-## The plant grown: the one set, else the built-in sunflower.
-func _plant() -> SunflowerPlant:
-	return plant if plant else SunflowerPlant.default_plant()
-
-
-## The plant, made this field's own first when it is the shared built-in sunflower (so changing it
-## through the node's proxies changes no other field).
-func _own_plant() -> SunflowerPlant:
-	if plant == null or plant == SunflowerPlant.default_plant():
-		plant = SunflowerPlant.default_plant().duplicate() as SunflowerPlant
-	return plant
-
-
 ## The plant types grown, species by species: the [member plant] ('*'), then the legend's.
 func _species_plants() -> Array:
-	var plants: Array = [_plant()]
+	var plants: Array = [plant if plant else SunflowerPlant.default_plant()]
 	plants.append_array(FieldLegend.plants(legend))
 	return plants
 
@@ -845,30 +488,10 @@ func _on_plant_changed() -> void:
 	update_configuration_warnings()
 
 
-# Scenes saved before plant types set part meshes as "part_meshes/mesh_N/part"; they still load.
+# Scenes saved by older versions carry names that are gone (field_face.gd takes them).
 func _get(property: StringName) -> Variant:
-	var slot: Vector2i = PartMeshes.slot_of(property)
-	return _plant().get_part_mesh(slot.x, slot.y) if slot.x >= 0 else null
+	return FieldFace.former_value(self, property)
 
 
 func _set(property: StringName, value: Variant) -> bool:
-	if ProjectKnobs.FORMER_PROPERTIES.has(property):
-		push_warning(
-			(
-				"SunflowerField.%s is a project setting now (%s, in Project Settings): this field's %s is not used"
-				% [property, ProjectKnobs.FORMER_PROPERTIES[property], value]
-			)
-		)
-		return true
-	var slot: Vector2i = PartMeshes.slot_of(property)
-	if slot.x < 0:
-		return false
-	if value != null and not (value is Mesh):
-		push_warning("SunflowerField.%s: %s is not a Mesh; the slot is left empty" % [property, value])
-		value = null
-	set_part_mesh(slot.x, slot.y, value as Mesh)
-	return true
-
-
-func _queue_rebuild() -> void:
-	_driver.rebuild_queued = true
+	return FieldFace.set_former(self, property, value)

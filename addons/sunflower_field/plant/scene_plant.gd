@@ -88,6 +88,32 @@ static func levels_of(scene: PackedScene) -> Dictionary:
 	}
 
 
+## A plant of one part made from [param scene] (see [method SunflowerPlant.from_scene]), or null
+## with an error; warnings name the scene.
+static func plant_of(scene: PackedScene) -> SunflowerPlant:
+	var source: String = scene.resource_path if scene and scene.resource_path else "(unsaved scene)"
+	var made: Dictionary = levels_of(scene)
+	for problem: String in made.problems:
+		push_warning("SunflowerPlant.from_scene: %s: %s" % [source, problem])
+	var refused: String = refusal(made.levels[0])
+	if not refused.is_empty():
+		push_error("SunflowerPlant.from_scene: %s %s" % [source, refused])
+		return null
+	var placement: String = placement_problem(made.levels[0])
+	if not placement.is_empty():
+		push_warning("SunflowerPlant.from_scene: %s: %s" % [source, placement])
+	var plant: SunflowerPlant = SunflowerPlant.new()
+	plant.name = source.get_file().get_basename() if scene.resource_path else "Plant"
+	plant.mesh_level_1 = [made.levels[0], null, null]
+	plant.mesh_level_2 = [made.levels[1], null, null]
+	plant.mesh_level_3 = [made.levels[2], null, null]
+	plant.instance_shader_parameters = made.instance_parameters
+	plant.fit_to_meshes()
+	plant.height = plant.part_lengths.x
+	plant.middle_variation = 0.0  # a plant of one part has no middle to stretch
+	return plant
+
+
 ## The instance shader parameters the scene's nodes set, by name, for every part of the plant (the
 ## field draws all of a level with one node); a parameter two nodes set to different values is
 ## named in [param problems], the first node's value kept.

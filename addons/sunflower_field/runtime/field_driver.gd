@@ -381,6 +381,53 @@ func near_count(species: int, level: int) -> int:
 	return drawn.simulation.get_bucket_instance_count(species * _bucket_count + _level_buckets[level]) if drawn else 0
 
 
+## What the field drawn costs now (SunflowerField.get_frame_stats): the native update and draw, its
+## threads and memory, the plants written at each mesh level and their triangles, the budget's GPU
+## time and quality; zeros before a field is drawn.
+func frame_stats() -> Dictionary:
+	var near: PackedInt32Array = PackedInt32Array()
+	near.resize(PartMeshes.LEVELS)
+	var native_field: NativeField = simulation()
+	if native_field == null:
+		return {
+			"update_ms": 0.0,
+			"worker_threads": 0,
+			"memory_bytes": 0,
+			"near_meshes": near,
+			"near_primitives": 0,
+			"gpu_ms": 0.0,
+			"quality": quality(),
+		}
+	for species: int in plants.size():
+		for level: int in PartMeshes.LEVELS:
+			near[level] += near_count(species, level)
+	var budget: FieldBudget = governor()
+	return {
+		"update_ms": (native_field.get_last_update_usec() + native_field.get_last_draw_usec()) / 1000.0,
+		"worker_threads": native_field.get_worker_threads(),
+		"memory_bytes": native_field.get_memory_bytes(),
+		"near_meshes": near,
+		"near_primitives": near_primitives(),
+		"gpu_ms": budget.smoothed_gpu_ms if budget and ProjectKnobs.budget_gpu_ms() > 0.0 else 0.0,
+		"quality": quality(),
+	}
+
+
+## The plant of the field drawn whose root is nearest to [param point] (field space) on the ground
+## within [param max_distance] metres, or -1.
+func nearest_plant(point: Vector3, max_distance: float) -> int:
+	var nearest: int = -1
+	var best: float = INF
+	var native_field: NativeField = simulation()
+	for plant: int in native_field.get_plants_near(point, max_distance, false) if native_field else PackedInt32Array():
+		var root: Vector3 = native_field.get_plant_position(plant)
+		var distance: float = Vector2(root.x, root.z).distance_squared_to(Vector2(point.x, point.z))
+		if distance < best:
+			best = distance
+			nearest = plant
+	return nearest
+
+
 ## The field's viewport's GPU time last frame in milliseconds, measured only with a GPU target.
 func _gpu_ms() -> float:
 	if ProjectKnobs.budget_gpu_ms() <= 0.0 or not _field.is_inside_tree():

@@ -2,6 +2,7 @@ extends TestCase
 ## The addon loads: the native class, the node, the resources and the imported demo map.
 
 const ProjectKnobs: GDScript = preload("res://addons/sunflower_field/runtime/field_project_settings.gd")
+const FieldFace: GDScript = preload("res://addons/sunflower_field/runtime/field_face.gd")
 const NATIVE_CLASSES: PackedStringArray = [
 	"SunflowerSimulation",
 	"SunflowerDrawing",
@@ -69,7 +70,7 @@ func test_the_node_names_the_cores_indices() -> void:
 	check_eq(
 		SunflowerField.Lod.SPRITE, SunflowerDrawing.MESH_LEVEL_COUNT, "the first impostor level follows the meshes"
 	)
-	check_eq(SunflowerField.FieldNodes.PART_NAMES.size(), SunflowerDrawing.PART_COUNT, "part names")
+	check_eq(SunflowerField.PartMeshes.PART_NAMES.size(), SunflowerDrawing.PART_COUNT, "part names")
 	check_eq(SunflowerPlant.PartMeshes.LEVELS, SunflowerDrawing.MESH_LEVEL_COUNT, "a plant's levels")
 	check_eq(SunflowerDrawing.mesh_bucket(2, SunflowerField.Part.HEAD), 8, "the last mesh bucket")
 	check_eq(SunflowerDrawing.BUCKET_IMPOSTOR, 9, "the impostors follow the mesh buckets")
@@ -176,7 +177,7 @@ func test_a_new_field_stores_only_what_was_changed() -> void:
 	check_eq(reloaded.wind_power, 3.0, "the wind power comes back from the stored wind")
 	check_eq(reloaded.lod_hysteresis, 1.0, "the hysteresis comes back")
 	reloaded.get_parent().free()
-	for property: StringName in SunflowerField.WIND_PROPERTIES:
+	for property: StringName in FieldFace.WIND_PROPERTIES:
 		check(field.property_can_revert(property), "%s offers a revert" % property)
 	check_eq(field.property_get_revert(&"wind_power"), 1.0, "wind_power reverts to the wind's default")
 	root.free()
@@ -259,8 +260,8 @@ func test_the_inspectors_ranges_are_the_tables() -> void:
 		var names: Array = [row.get_slice(".", 1)]
 		if owner is SunflowerWind:
 			names.append_array(
-				SunflowerField.WIND_PROPERTIES.keys().filter(
-					func(proxy: StringName) -> bool: return SunflowerField.WIND_PROPERTIES[proxy] == names[0]
+				FieldFace.WIND_PROPERTIES.keys().filter(
+					func(proxy: StringName) -> bool: return FieldFace.WIND_PROPERTIES[proxy] == names[0]
 				)
 			)
 		for name: String in names:
@@ -314,7 +315,7 @@ func test_a_new_fields_first_screen_shows_what_a_first_field_needs() -> void:
 		for other: int in own:
 			for name: String in own[other] if other != source else []:
 				check(not _shown_anywhere(field, name), "ground %d: %s (another ground's) hidden" % [source, name])
-		for name: StringName in SunflowerField.WIND_PROPERTIES:
+		for name: StringName in FieldFace.WIND_PROPERTIES:
 			check(not _shown_anywhere(field, name), "%s only in the wind" % name)
 		field.free()
 
