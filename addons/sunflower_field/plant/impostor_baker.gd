@@ -45,9 +45,13 @@ const SETTLE_FRAMES: int = 1
 ## larger than the plant is where its impostors are shown, so unbiased they read a leaf texture's
 ## fine detail, which the meshes there average away: a grass clump's blades (a dark midrib down a
 ## card 3 texels wide) baked with the midrib in a third of their texels, and the grass field 25 m up
-## at 45° drew at 0.88 of its meshes' brightness (0.97 with 2: test_scene_plant). Geometry is not
-## blurred by it, and a plant whose parts are untextured (the built-in sunflower) bakes the same.
-const TEXTURE_MIP_BIAS: float = 2.0
+## at 45° drew at 0.88 of its meshes' brightness. Biased, the views read textures as the meshes do
+## farther than they are drawn, so close up the impostor is brighter than the mesh. 1 keeps both
+## within a tenth (test_scene_plant, the grass clump and the bush): close up 1.06 and 1.09 of the
+## mesh's brightness (2: 1.12 and 1.11), their fields 0.93–1.01 (2: 0.96–1.03). Geometry is not
+## blurred by it, and a plant whose parts are untextured (the built-in sunflower, the maple) bakes
+## the same.
+const TEXTURE_MIP_BIAS: float = 1.0
 ## The alpha cut against which [method thin_from] measures a plant's thinness (the field's default
 ## [member SunflowerField.alpha_scissor]).
 const THIN_CUT: float = 0.5
