@@ -833,11 +833,20 @@ func _compare_field(plant_name: String, plant: SunflowerPlant) -> void:
 			if inside.count(1) > 0
 			else 1.0
 		)
-		# Leaf green where the impostors are drawn (grown as for the brightness), ours against the meshes'
-		# (reported, not checked: the maple's far field is short of it, docs/plants.md).
+		# Leaf green where the impostors are drawn (grown as for the brightness), ours against the meshes':
+		# at least 0.85 of theirs from 40 m outside and at 45° (the far maple's filtered views mixed each
+		# pixel's leaf and twig: 0.84 at 45°; one texel of one view a pixel where it is thin).
 		var green: Vector2 = Vector2(
 			picture.mean_in(picture.leaf_green(auto), around), picture.mean_in(picture.leaf_green(mesh_1), around)
 		)
+		if view != "inside" and green.y > 0.0:
+			check(
+				green.x / green.y >= 0.85,
+				(
+					"%s field %s: leaf green where the impostors are drawn %.3f of the meshes' (%.3f of %.3f), at least 0.85"
+					% [plant_name, view, green.x / green.y, green.x, green.y]
+				)
+			)
 		check_eq(_yellow_pixels(auto), 0, "%s field %s: no sunflower yellow" % [plant_name, view])
 		auto.shrink_x2()
 		mesh_1.shrink_x2()
@@ -868,7 +877,7 @@ func _compare_field(plant_name: String, plant: SunflowerPlant) -> void:
 		var green: Vector2 = figures[view][3]
 		parts.append(
 			(
-				"%s %.3f / %.3f / %.0f %% / %.0f of %.0f %%"
+				"%s %.3f / %.3f / %.0f %% / %.1f of %.1f %%"
 				% [view, figures[view][0], figures[view][1], 100.0 * figures[view][2], 100.0 * green.x, 100.0 * green.y]
 			)
 		)
