@@ -59,31 +59,43 @@ const THIN_CUT: float = 0.5
 ## anyway (the shader's hashed_from + 1), a thin level changes nothing but the reprojection, which
 ## the built-in sunflower's far fields were measured with.
 const THIN_LATEST: float = 3.0
-## Draws the plant's normals in its own frame as colours (0–1 for −1–1); the viewport converts
-## what it draws to sRGB, so the shader hands it the linear value that converts to the code.
+## Draws the plant's normals in its own frame as colours (0–1 for −1–1), through
+## [constant AS_CODE_SHADER]'s as_code().
 const NORMALS_SHADER: String = """
 shader_type spatial;
 render_mode unshaded, cull_disabled;
+%s
 void fragment() {
 	vec3 world = (INV_VIEW_MATRIX * vec4(NORMAL, 0.0)).xyz;
-	vec3 code = normalize(transpose(mat3(MODEL_MATRIX)) * world) * 0.5 + 0.5;
-	vec3 low = step(code, vec3(0.04045));
-	ALBEDO = mix(pow((code + 0.055) / 1.055, vec3(2.4)), code / 12.92, low);
+	ALBEDO = as_code(normalize(transpose(mat3(MODEL_MATRIX)) * world) * 0.5 + 0.5);
 }
 """
 
 ## Draws how far each point lies along the view from the plant's middle (the plane through its
-## copy's origin, facing the camera), in shares of the view's square: 0.5 + z / square, as a colour
-## the viewport's sRGB conversion turns into that code.
+## copy's origin, facing the camera), in shares of the view's square: 0.5 + z / square, through
+## [constant AS_CODE_SHADER]'s as_code().
 const DEPTHS_SHADER: String = """
 shader_type spatial;
 render_mode unshaded, cull_disabled;
 uniform float square = 1.0;
+%s
 void fragment() {
 	float z = (INV_VIEW_MATRIX * vec4(VERTEX, 1.0)).z;
-	vec3 code = vec3(clamp(0.5 + z / square, 0.0, 1.0));
-	vec3 low = step(code, vec3(0.04045));
-	ALBEDO = mix(pow((code + 0.055) / 1.055, vec3(2.4)), code / 12.92, low);
+	ALBEDO = as_code(vec3(clamp(0.5 + z / square, 0.0, 1.0)));
+}
+"""
+## The colour an unshaded pass writes for the bake to read back [code]code[/code] (0–1): Forward+
+## and Mobile convert what they draw to sRGB, so they are handed the linear value that converts to the
+## code; the Compatibility renderer writes an unshaded colour as it is (handed the linear value, it
+## stored each code as its linear value: a normal's 0.50 as 0.22, which darkened and turned every
+## impostor of a plant baked there; test_bake).
+const AS_CODE_SHADER: String = """
+vec3 as_code(vec3 code) {
+#if CURRENT_RENDERER == RENDERER_COMPATIBILITY
+	return code;
+#else
+	return mix(pow((code + 0.055) / 1.055, vec3(2.4)), code / 12.92, step(code, vec3(0.04045)));
+#endif
 }
 """
 
@@ -155,7 +167,7 @@ static func _bake(plant: SunflowerPlant, host: Node, folder: String, base_name: 
 		if kind != "views":
 			var coded: ShaderMaterial = ShaderMaterial.new()
 			coded.shader = Shader.new()
-			coded.shader.code = NORMALS_SHADER if kind == "normals" else DEPTHS_SHADER
+			coded.shader.code = (NORMALS_SHADER if kind == "normals" else DEPTHS_SHADER) % AS_CODE_SHADER
 			if kind == "depths":
 				coded.set_shader_parameter("square", plant.impostor_frame().x)
 			for instance: Node in viewport.find_children("*", "MeshInstance3D", true, false):
