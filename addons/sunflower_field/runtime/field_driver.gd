@@ -387,30 +387,28 @@ func near_count(species: int, level: int) -> int:
 func frame_stats() -> Dictionary:
 	var near: PackedInt32Array = PackedInt32Array()
 	near.resize(PartMeshes.LEVELS)
+	var stats: Dictionary = {
+		"update_ms": 0.0,
+		"worker_threads": 0,
+		"memory_bytes": 0,
+		"near_meshes": near,
+		"near_primitives": 0,
+		"gpu_ms": 0.0,
+		"quality": quality(),
+	}
 	var native_field: NativeField = simulation()
 	if native_field == null:
-		return {
-			"update_ms": 0.0,
-			"worker_threads": 0,
-			"memory_bytes": 0,
-			"near_meshes": near,
-			"near_primitives": 0,
-			"gpu_ms": 0.0,
-			"quality": quality(),
-		}
+		return stats
 	for species: int in plants.size():
 		for level: int in PartMeshes.LEVELS:
 			near[level] += near_count(species, level)
 	var budget: FieldBudget = governor()
-	return {
-		"update_ms": (native_field.get_last_update_usec() + native_field.get_last_draw_usec()) / 1000.0,
-		"worker_threads": native_field.get_worker_threads(),
-		"memory_bytes": native_field.get_memory_bytes(),
-		"near_meshes": near,
-		"near_primitives": near_primitives(),
-		"gpu_ms": budget.smoothed_gpu_ms if budget and ProjectKnobs.budget_gpu_ms() > 0.0 else 0.0,
-		"quality": quality(),
-	}
+	stats["update_ms"] = (native_field.get_last_update_usec() + native_field.get_last_draw_usec()) / 1000.0
+	stats["worker_threads"] = native_field.get_worker_threads()
+	stats["memory_bytes"] = native_field.get_memory_bytes()
+	stats["near_primitives"] = near_primitives()
+	stats["gpu_ms"] = budget.smoothed_gpu_ms if budget and ProjectKnobs.budget_gpu_ms() > 0.0 else 0.0
+	return stats
 
 
 ## The plant of the field drawn whose root is nearest to [param point] (field space) on the ground
