@@ -308,7 +308,8 @@ static var _default: SunflowerPlant
 
 ## The mip level of [member impostor_views] from which the plant is [i]thin[/i]: where a plain alpha
 ## cut keeps less than half of what the views' texels cover (a crown of leaves smaller than a texel).
-## From there its impostors' alpha test is hashed (each pixel drawn as often as its texel is covered,
+## From there, and for such a plant from mip 0 on in any case (a texel no larger than a pixel), its
+## impostors' alpha test is hashed (each pixel drawn as often as its texel is covered,
 ## speckled as the meshes' far leaves are) and each view is read at the quad's own place (reading it
 ## where the depths say spreads a sparse crown's cover). The baker measures it; −1: not before the far
 ## test is hashed anyway (the built-in sunflower, or an atlas baked before it was measured).

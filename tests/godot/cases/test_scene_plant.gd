@@ -21,8 +21,8 @@ const LONE_COVER_TURNS: int = 8
 const TEST_PLANT_FOLDER: String = "res://test_plants"
 const TEST_PLANTS: PackedStringArray = ["maple_tree.glb", "bottlebrush_bush.glb", "grass_clump.glb"]
 ## The test plants whose near plants cast from their meshes at every level (SunflowerPlant.impostor_shadows
-## off, as docs/plants.md advises for trees): the maple's impostor shadows are lighter than its
-## branches' and leaves' (its field 25 m up at 45° scores SSIM 0.673 with them, 0.747 without).
+## off, as docs/plants.md advises for trees): the maple's impostor shadows are finer specks than its
+## meshes' (its field 25 m up at 45° scores SSIM 0.728 with them, 0.811 without).
 const MESH_SHADOWS: PackedStringArray = ["maple_tree"]
 ## The impostors' brightness is compared over where they are drawn grown by this many pixels each
 ## way: the region they alone make holds none of the sky the meshes show between their leaves (a
@@ -35,8 +35,17 @@ const CEILING_SHIFT: float = 0.05
 ## plainly, alone, where the level begins (measured: 0.85–0.93 at mesh 2, 0.77–0.85 at mesh 3).
 const THINNED_LEAST_SSIM: float = 0.7
 ## The least SSIM of a field of a plant with thinned levels against all its plants at mesh 1, at
-## head height and from 25 m up at 45° (measured: 0.85–0.95 and 0.75–0.89).
-const THINNED_FIELD_LEAST_SSIM: Vector2 = Vector2(0.8, 0.7)
+## head height (measured: 0.85–0.95).
+const THINNED_FIELD_LEAST_SSIM: float = 0.8
+## The least SSIM of a field 25 m up at 45° against all its plants at mesh 1, anti-aliased: 0.85, or
+## where the meshes' own pictures [constant CEILING_SHIFT] apart score less (the maple's far leaves
+## are specks of less than a pixel, which fall on other pixels in any two pictures), within this of
+## theirs (measured: maple 0.811 against its meshes' own 0.816, bush 0.915, grass 0.898).
+const FIELD_SSIM_BELOW_CEILING: float = 0.02
+## The field test's pictures are drawn this many times as wide and high as the window and box-filtered
+## back (anti-aliased), by view: at 45° as the sunflower's aerial views (test_fidelity), where twice
+## (4 samples a pixel) left the maple's meshes 0.654 alike to themselves moved 5 cm.
+const FIELD_SAMPLES_A_SIDE: Dictionary = {"inside": 2, "outside40": 2, "above45": 4}
 ## The test plants made and baked once a run ([method _baked_test_plant]), by file.
 static var baked_plants: Dictionary = {}
 
@@ -779,22 +788,20 @@ func _baked_test_plant(file: String) -> SunflowerPlant:
 ## plant, levels of detail by its size, the field at least three times as deep as the plant's
 ## impostors begin; the maple with its impostor shadows off, MESH_SHADOWS), calm, from head height
 ## in it, from 40 m outside and from 25 m up at 45°, against the same view with every plant at
-## mesh 1 (what a player compares the far levels with): the pictures' SSIM, anti-aliased (drawn at
-## twice the window's width and height, box-filtered back), and the impostors' brightness where
+## mesh 1 (what a player compares the far levels with): the pictures' SSIM, anti-aliased (drawn
+## larger and box-filtered back, [constant FIELD_SAMPLES_A_SIDE]), and the impostors' brightness where
 ## they are drawn (found with every mesh drawn black) and leaf green there against the meshes'. At
 ## 45° it reports how alike the meshes' own pictures are from [constant CEILING_SHIFT] apart.
 func test_a_field_of_each_test_plant_looks_like_its_meshes() -> void:
 	var window: Vector2i = tree.root.size
-	tree.root.size = window * 2
-	await RenderingServer.frame_post_draw
 	for file: String in TEST_PLANTS:
 		var plant: SunflowerPlant = await _baked_test_plant(file)
 		if check(plant != null, "%s: baked" % file):
-			await _compare_field(file.get_basename(), plant)
+			await _compare_field(file.get_basename(), plant, window)
 	tree.root.size = window
 
 
-func _compare_field(plant_name: String, plant: SunflowerPlant) -> void:
+func _compare_field(plant_name: String, plant: SunflowerPlant, window: Vector2i) -> void:
 	var cell: float = maxf(0.5, plant.spacing_metres())
 	var impostors_from: float = SunflowerField.DEFAULT_LOD_DISTANCES[2]
 	var cells: int = ceili(maxf(60.0, 3.0 * plant.lod_scale_used() * impostors_from) / cell)
@@ -814,9 +821,7 @@ func _compare_field(plant_name: String, plant: SunflowerPlant) -> void:
 	camera.far = side * 4.0
 	stage.add_child(camera)
 	camera.make_current()
-	var size: Vector2i = tree.root.get_visible_rect().size
-	var small: Picture = Picture.new(size.x / 2, size.y / 2)
-	var picture: Picture = Picture.new(size.x, size.y)
+	var small: Picture = Picture.new(window.x, window.y)
 	var middle: float = side * 0.5
 	var views: Dictionary = {
 		"inside": [Vector3(middle, 1.7, side * 0.75), Vector3(middle, 1.4, side * 0.75 - 25.0)],
@@ -825,6 +830,10 @@ func _compare_field(plant_name: String, plant: SunflowerPlant) -> void:
 	}
 	var figures: Dictionary = {}
 	for view: String in views:
+		tree.root.size = window * FIELD_SAMPLES_A_SIDE[view]
+		await RenderingServer.frame_post_draw
+		var size: Vector2i = tree.root.get_visible_rect().size
+		var picture: Picture = Picture.new(size.x, size.y)
 		camera.look_at_from_position(views[view][0], views[view][1])
 		var auto: Image = await _field_picture(field, -1, "%s_%s_auto" % [plant_name, view])
 		var mesh_1: Image = await _field_picture(field, 0, "%s_%s_mesh1" % [plant_name, view])
@@ -838,7 +847,7 @@ func _compare_field(plant_name: String, plant: SunflowerPlant) -> void:
 			camera.look_at_from_position(views[view][0], views[view][1])
 		var meshes_black: Image = await _impostors_alone(staged, field, plant, "%s_%s_impostors" % [plant_name, view])
 		var inside: PackedByteArray = picture.region(picture.luminance(meshes_black))
-		var around: PackedByteArray = picture.grown(inside, BRIGHTNESS_GROWTH)
+		var around: PackedByteArray = picture.grown(inside, BRIGHTNESS_GROWTH * FIELD_SAMPLES_A_SIDE[view] / 2)
 		var brightness: float = (
 			(picture.mean_in(picture.luminance(auto), around) / picture.mean_in(picture.luminance(mesh_1), around))
 			if inside.count(1) > 0
@@ -846,7 +855,8 @@ func _compare_field(plant_name: String, plant: SunflowerPlant) -> void:
 		)
 		# Leaf green where the impostors are drawn (grown as for the brightness), ours against the meshes':
 		# at least 0.85 of theirs from 40 m outside and at 45° (the far maple's filtered views mixed each
-		# pixel's leaf and twig: 0.82 at 45°; one texel of one view a pixel where it is thin).
+		# pixel's leaf and twig: 0.82 at 45° drawn at 1 280 × 720; one texel of one view a pixel where it
+		# is thin. At 2 560 × 1 440, thin only from its measured level: 0.65; from mip 0 on, 0.88).
 		var green: Vector2 = Vector2(
 			picture.mean_in(picture.leaf_green(auto), around), picture.mean_in(picture.leaf_green(mesh_1), around)
 		)
@@ -859,12 +869,14 @@ func _compare_field(plant_name: String, plant: SunflowerPlant) -> void:
 				)
 			)
 		check_eq(_yellow_pixels(auto), 0, "%s field %s: no sunflower yellow" % [plant_name, view])
-		auto.shrink_x2()
-		mesh_1.shrink_x2()
+		while auto.get_width() > window.x:
+			auto.shrink_x2()
+			mesh_1.shrink_x2()
+			if moved:
+				moved.shrink_x2()
 		var similarity: float = small.ssim(small.luminance(auto), small.luminance(mesh_1))
 		var ceiling: float = -1.0
 		if moved:
-			moved.shrink_x2()
 			ceiling = small.ssim(small.luminance(moved), small.luminance(mesh_1))
 		var share: float = float(inside.count(1)) / inside.size()
 		figures[view] = [similarity, brightness, share, green, ceiling]
@@ -878,14 +890,18 @@ func _compare_field(plant_name: String, plant: SunflowerPlant) -> void:
 				)
 			)
 	# The Sapling plants' leaves are foliage cards, their levels 2 and 3 thinned: other leaves than mesh 1's.
-	var least: Vector2 = THINNED_FIELD_LEAST_SSIM if plant_name + ".glb" in TEST_PLANTS else Vector2(0.95, 0.85)
+	var least: float = THINNED_FIELD_LEAST_SSIM if plant_name + ".glb" in TEST_PLANTS else 0.95
 	check(
-		figures["inside"][0] >= least.x,
-		"%s field at head height: SSIM %.3f, at least %.2f" % [plant_name, figures["inside"][0], least.x]
+		figures["inside"][0] >= least,
+		"%s field at head height: SSIM %.3f, at least %.2f" % [plant_name, figures["inside"][0], least]
 	)
+	var least_above: float = minf(0.85, figures["above45"][4] - FIELD_SSIM_BELOW_CEILING)
 	check(
-		figures["above45"][0] >= least.y,
-		"%s field 25 m up at 45°, anti-aliased: SSIM %.3f, at least %.2f" % [plant_name, figures["above45"][0], least.y]
+		figures["above45"][0] >= least_above,
+		(
+			"%s field 25 m up at 45°, anti-aliased: SSIM %.3f, at least %.3f (the meshes' own moved: %.3f)"
+			% [plant_name, figures["above45"][0], least_above, figures["above45"][4]]
+		)
 	)
 	var parts: PackedStringArray = []
 	for view: String in figures:
