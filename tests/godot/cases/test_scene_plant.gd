@@ -571,12 +571,15 @@ func test_each_test_plants_impostor_views_are_framed() -> void:
 ## Close up, the brightness of its pixels is 0.90–1.10 of the mesh's. Its thin leaves'
 ## cover is kept by the bake (supersampled: a pixel's alpha is the share covered), the alpha cut
 ## measured per mip level (SunflowerPlant.impostor_alpha_cuts) and, for a plant thin from near (the
-## maple: SunflowerPlant.impostor_thin_from), the hashed test there.
+## maple: SunflowerPlant.impostor_thin_from), the hashed test there. Drawn at twice the window's
+## width and height (a far tree is a few hundred pixels at 640 × 360), or as many times as the
+## environment's LONE_SCALE says (a finer screen: at 6, 3 840 × 2 160).
 func test_each_test_plants_lone_impostor_covers_what_its_mesh_covers() -> void:
 	var figures: PackedStringArray = []
 	var window: Vector2i = tree.root.size
-	tree.root.size = window * 2  # more pixels a plant: a far tree is a few hundred at 640 × 360
+	tree.root.size = window * (int(OS.get_environment("LONE_SCALE")) if OS.has_environment("LONE_SCALE") else 2)
 	await RenderingServer.frame_post_draw
+	var drawn: Vector2i = tree.root.get_visible_rect().size
 	for file: String in TEST_PLANTS:
 		var plant: SunflowerPlant = await _baked_test_plant(file)
 		if not check(plant != null, "%s: baked" % file):
@@ -646,7 +649,7 @@ func test_each_test_plants_lone_impostor_covers_what_its_mesh_covers() -> void:
 		stage.free()
 		stage = null
 	tree.root.size = window
-	print("     lone impostor against its mesh 1 (45° above, 1 280 × 720): %s" % "; ".join(figures))
+	print("     lone impostor against its mesh 1 (45° above, %d × %d): %s" % [drawn.x, drawn.y, "; ".join(figures)])
 
 
 ## The maple's far impostor in motion, where its impostors begin (thin there: its alpha test hashed,
