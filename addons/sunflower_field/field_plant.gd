@@ -308,7 +308,7 @@ static var _default: SunflowerPlant
 
 ## The mip level of [member impostor_views] from which the plant is [i]thin[/i]: where a plain alpha
 ## cut keeps less than half of what the views' texels cover (a crown of leaves smaller than a texel).
-## From there, and for such a plant from mip 0 on in any case (a texel no larger than a pixel), its
+## From there, and for such a plant from mip −0.5 on in any case (a texel over at most 1.4 pixels), its
 ## impostors' alpha test is hashed (each pixel drawn as often as its texel is covered,
 ## speckled as the meshes' far leaves are) and each view is read at the quad's own place (reading it
 ## where the depths say spreads a sparse crown's cover). The baker measures it; −1: not before the far
