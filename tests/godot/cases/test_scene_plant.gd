@@ -838,8 +838,9 @@ func _compare_field(plant_name: String, plant: SunflowerPlant, window: Vector2i)
 	var thin: bool = plant.impostor_thin_from >= 0.0
 	for view: String in views:
 		var samples: int = THIN_FIELD_SAMPLES_A_SIDE if thin and view == "above45" else FIELD_SAMPLES_A_SIDE
-		tree.root.size = window * samples
-		await RenderingServer.frame_post_draw
+		if tree.root.size != window * samples:
+			tree.root.size = window * samples
+			await RenderingServer.frame_post_draw
 		var size: Vector2i = tree.root.get_visible_rect().size
 		var picture: Picture = Picture.new(size.x, size.y)
 		camera.look_at_from_position(views[view][0], views[view][1])
@@ -883,10 +884,11 @@ func _compare_field(plant_name: String, plant: SunflowerPlant, window: Vector2i)
 			mesh_1.shrink_x2()
 			if moved:
 				moved.shrink_x2()
-		var similarity: float = small.ssim(small.luminance(auto), small.luminance(mesh_1))
+		var reference: PackedFloat32Array = small.luminance(mesh_1)
+		var similarity: float = small.ssim(small.luminance(auto), reference)
 		var ceiling: float = -1.0
 		if moved:
-			ceiling = small.ssim(small.luminance(moved), small.luminance(mesh_1))
+			ceiling = small.ssim(small.luminance(moved), reference)
 			print(
 				(
 					"     %s field at 45°, SSIM by eighths of the picture from the top, ours / the meshes' own moved: %s"
