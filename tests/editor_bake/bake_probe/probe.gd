@@ -263,6 +263,9 @@ func _a_large_scene_merges_while_the_editor_draws(tree: SceneTree) -> PackedStri
 	# A freeze, not the 2 s aimed at: a loaded machine (the test command's other lanes) doubles frames.
 	if longest_of_drop > FREEZE_USEC:
 		problems.append("the large scene's drop held the editor %.1f s in one frame" % (longest_of_drop / 1e6))
+	# A thousand plants of 300 000 triangles take lavapipe seconds a frame: the field is hidden for the
+	# frames left before the editor quits (14 s of them drawn, 25 s under the test command's other lane).
+	field.visible = false
 	return problems
 
 
