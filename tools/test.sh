@@ -31,7 +31,7 @@ SUITES=(
 # The engine tests that need no renderer: the "headless" suite runs them alone (the others read back
 # what the renderer holds or draw pictures; the "engine" suite runs every test).
 HEADLESS_TESTS=(test_addon test_settings test_budget test_scene_import '!test_budget.test_the_field_holds_a_gpu_time_*' test_build test_field test_ground test_interaction test_plant test_robustness test_species
-  test_scene_plant '!test_scene_plant.test_a_lone_scene_plant_*' '!test_scene_plant.test_a_plant_of_one_part_*'
+  test_scene_plant '!test_scene_plant.test_a_lone_scene_plant_*'
   '!test_scene_plant.test_each_test_plants_impostor_*' '!test_scene_plant.test_each_test_plants_lone_*'
   '!test_scene_plant.test_empty_slots_of_a_plant_drawn_*'
   '!test_scene_plant.test_a_field_of_each_test_plant_*' '!test_scene_plant.test_a_thin_plants_far_impostor_*'

@@ -321,8 +321,8 @@ static var _default: SunflowerPlant
 
 ## Near plants of this type cast their shadows from its far impostors from the field's
 ## [member SunflowerField.impostor_shadows_from] on (fewer primitives). Off: they cast from their
-## meshes at every mesh level, for a plant whose impostor shadows are blots where its meshes' are
-## specks (a tree's thin branches and small leaves; docs/plants.md compares them).
+## meshes at every mesh level, the meshes' own specks of shade at the meshes' cost (a thin tree's
+## impostor shadows are as dark and as dappled, their specks elsewhere; docs/plants.md compares them).
 @export var impostor_shadows: bool = true:
 	set(value):
 		if value != impostor_shadows:

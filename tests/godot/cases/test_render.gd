@@ -478,7 +478,7 @@ func test_a_shader_of_your_own_fades() -> void:
 	# the same when the shader knows nothing of the field (its red from a uniform) and the field
 	# draws it with the call added (use_plant_material); without the call (use_plant_material off)
 	# the mesh keeps them all (so the checks fail when the call does nothing).
-	var one: SunflowerFieldMap = _one_plant_map()
+	var one: SunflowerFieldMap = Maps.filled(1, 1, "user://one_plant.field")
 	var red: Dictionary = {}
 	for way: String in ["fading", "made to fade", "not fading"]:
 		var shader: Shader = Shader.new()
@@ -782,7 +782,7 @@ func test_near_plants_cast_shadows_from_their_impostors() -> void:
 func _lone_still_plant() -> SunflowerField:
 	var field: SunflowerField = SunflowerField.new()
 	scene.add_child(field)
-	field.map = _one_plant_map()
+	field.map = Maps.filled(1, 1, "user://one_plant.field")
 	field.wind_power = 0.0
 	field.finish_build()
 	field.set_process(false)
@@ -796,14 +796,6 @@ func _narrow_camera() -> Camera3D:
 	camera.fov = 4.0
 	camera.make_current()
 	return camera
-
-
-## A map of one plant.
-func _one_plant_map() -> SunflowerFieldMap:
-	var one: SunflowerFieldMap = SunflowerFieldMap.new()
-	one.source_path = "user://one_plant.field"
-	one.text = "1 1\n*\n".to_utf8_buffer()
-	return one
 
 
 ## Advances [param field] by [param count] frames of 1/60 s.

@@ -21,9 +21,17 @@ const LONE_COVER_TURNS: int = 8
 const TEST_PLANT_FOLDER: String = "res://test_plants"
 const TEST_PLANTS: PackedStringArray = ["maple_tree.glb", "bottlebrush_bush.glb", "grass_clump.glb"]
 ## The test plants whose near plants cast from their meshes at every level (SunflowerPlant.impostor_shadows
-## off, as docs/plants.md advises for trees): the maple's impostor shadows are finer specks than its
-## meshes' (its field 25 m up at 45° scores SSIM 0.726 with them, 0.809 without).
+## off) for the SSIM at 45°: it credits a speck of shade only where the all-mesh-1 picture has one on
+## the same pixel, and the maple's impostors' specks fall elsewhere (0.726 with them, 0.718 with no
+## shadow from those plants, 0.809 from their meshes).
 const MESH_SHADOWS: PackedStringArray = ["maple_tree"]
+## Their 45° view is drawn again with their impostor shadows on, and its shade compared with the
+## meshes' shadows' eighth by eighth: the mean brightness within this share, and the contrast of
+## SHADE_BLOCK-pixel blocks (the dappling) within [constant SHADE_CONTRAST_WITHIN] (the maple: within
+## 0.5 % and 6 %; with no shadow from those plants, up to 8 % brighter and 26 % less contrast).
+const SHADE_BRIGHTNESS_WITHIN: float = 0.02
+const SHADE_CONTRAST_WITHIN: float = 0.1
+const SHADE_BLOCK: int = 5
 ## The impostors' brightness is compared over where they are drawn grown by this many pixels each
 ## way: the region they alone make holds none of the sky the meshes show between their leaves (a
 ## sparse crown's impostor pixels are other pixels than its meshes', as many), so it read the maple's
@@ -190,7 +198,7 @@ func test_a_scene_of_several_meshes_becomes_a_plant_of_one_part_per_level() -> v
 	# A field of it draws its meshes and nothing of the sunflower.
 	var field: SunflowerField = SunflowerField.new()
 	field.plant = plant
-	field.map = _one_plant_map()
+	field.map = Maps.filled(1, 1, "user://one_scene_plant.field")
 	tree.root.add_child(field)
 	field.finish_build()
 	var sunflower: Array = []
@@ -293,7 +301,7 @@ func _compare_lone_plant(plant_name: String, packed: PackedScene) -> void:
 	plant.yaw_range = 0.0
 	var field: SunflowerField = SunflowerField.new()
 	field.plant = plant
-	field.map = _one_plant_map()
+	field.map = Maps.filled(1, 1, "user://one_scene_plant.field")
 	field.wind_power = 0.0
 	field.lod_fade = 0.0
 	field.cheap_shadows = false  # each level casts its own shadow, as the plain scene does
@@ -374,169 +382,6 @@ func _box_on_screen(camera: Camera3D, root: Vector3, plant: SunflowerPlant) -> R
 ## drawn with a ShaderMaterial of its own (the field draws a copy that bends: PlantMaterial.bending),
 ## whose own "wind" (a shift it makes outside a field) the field's bend takes the place of, and when
 ## it is one card of two triangles (its cards are sliced so that they bend: card_slices.gd).
-func test_a_plant_of_one_part_bends_in_the_wind_and_its_base_stands() -> void:
-	var bases: PackedFloat32Array = []
-	for kind: String in ["a StandardMaterial3D", "a shader of its own", "one card"]:
-		var pole: Dictionary = _pole_field(_red_shader() if kind == "a shader of its own" else null, kind == "one card")
-		var field: SunflowerField = pole.field
-		var centres: Array[PackedFloat32Array] = []
-		for power: float in [0.0, 6.0]:
-			field.wind_power = power
-			for step: int in 90:
-				field.advance(1.0 / 30.0)
-			await frames(4)
-			var image: Image = tree.root.get_viewport().get_texture().get_image()
-			image.save_png(artifact_path("scene_plant_pole_wind_%d_%s.png" % [int(power), kind.replace(" ", "_")]))
-			centres.append(PackedFloat32Array([_pole_centre(pole, image, 1.0), _pole_centre(pole, image, 9.5)]))
-		var low: float = centres[1][0] - centres[0][0]
-		var top: float = centres[1][1] - centres[0][1]
-		print("     a 10 m pole (%s) in wind 6: its top moves %.2f m, a point 1 m up %.3f m" % [kind, top, low])
-		check(top > 0.3, "%s: the top sways with the wind (%.2f m)" % [kind, top])
-		check(absf(low) < 0.05 * absf(top), "%s: the base stands (1 m up moves %.3f m)" % [kind, low])
-		bases.append(centres[0][0])
-		stage.free()
-		stage = null
-	check(absf(bases[1] - bases[0]) < 0.05, "the shader's own shift is left out (%.2f m)" % (bases[1] - bases[0]))
-
-
-## Leaves flutter ([member SunflowerPlant.flutter]): the pole bent by wind 6, the field held still (no
-## updates, so its bend stays), drawn over eight frames. With flutter its upper part (8 m up: the
-## top itself dips up to ~1 m as it moves, so a row nearer it may miss it) moves from frame to frame
-## and a point a tenth of its height up under a tenth as far; without, it stays. The pole is in both
-## rows in every frame (a frame without it would count as a large move).
-func test_a_plant_of_one_part_flutters_at_its_top() -> void:
-	var pole: Dictionary = _pole_field()
-	var field: SunflowerField = pole.field
-	field.wind_power = 6.0
-	for step: int in 90:
-		field.advance(1.0 / 30.0)
-	var spreads: Array[Vector2] = []
-	for flutter: float in [0.0, 1.0]:
-		(pole.plant as SunflowerPlant).flutter = flutter
-		await frames(2)
-		var tops: PackedFloat32Array = []
-		var lows: PackedFloat32Array = []
-		for frame: int in 8:
-			await frames(1)
-			var image: Image = tree.root.get_viewport().get_texture().get_image()
-			if frame == 0:
-				image.save_png(artifact_path("scene_plant_pole_flutter_%d.png" % int(flutter)))
-			tops.append(_pole_centre(pole, image, 8.0))
-			lows.append(_pole_centre(pole, image, 1.0))
-		var missing: PackedStringArray = []
-		for frame: int in tops.size():
-			if tops[frame] < 0.0 or lows[frame] < 0.0:
-				missing.append("frame %d (top %.2f, low %.2f)" % [frame, tops[frame], lows[frame]])
-		check(
-			missing.is_empty(), "flutter %.1f: the pole in every frame, missing in %s" % [flutter, ", ".join(missing)]
-		)
-		spreads.append(Vector2(_spread(lows), _spread(tops)))
-	print(
-		(
-			"     the pole in wind 6 over 8 frames, 8 m / 1 m up moving: still %.3f / %.3f m, fluttering %.3f / %.3f m"
-			% [spreads[0].y, spreads[0].x, spreads[1].y, spreads[1].x]
-		)
-	)
-	check(spreads[0].y < 0.02, "without flutter the held field's upper part stays (%.3f m)" % spreads[0].y)
-	check(spreads[1].y > 0.2, "with flutter the upper part moves (%.3f m)" % spreads[1].y)
-	check(spreads[1].x < 0.1 * spreads[1].y, "the base hardly flutters (%.3f m)" % spreads[1].x)
-
-
-## A field of one 10 m red pole from a scene (a plant of one part drawn whole), wind from −x, seen
-## from the side through an orthographic camera 12 m high: field, plant, camera and the pole's root.
-## [param material]: the pole's ([method _red] when null); [param card]: the pole is one quad facing
-## the camera, two triangles from its foot to its top (else a box with vertices all the way up).
-func _pole_field(material: Material = null, card: bool = false) -> Dictionary:
-	stage = Stage.new(tree.root).root
-	var pole: Node3D = Node3D.new()
-	var body: MeshInstance3D = MeshInstance3D.new()
-	if card:
-		var quad: QuadMesh = QuadMesh.new()
-		quad.size = Vector2(0.3, 10.0)
-		quad.material = material if material else _red()
-		body.mesh = quad
-	else:
-		var box: BoxMesh = BoxMesh.new()
-		box.size = Vector3(0.3, 10.0, 0.3)
-		box.subdivide_height = 40  # vertices all the way up, as a trunk has
-		box.material = material if material else _red()
-		body.mesh = box
-	body.position.y = 5.0
-	pole.add_child(body)
-	body.owner = pole
-	var packed: PackedScene = PackedScene.new()
-	packed.pack(pole)
-	pole.free()
-	var plant: SunflowerPlant = SunflowerPlant.from_scene(packed)
-	plant.yaw_range = 0.0
-	check(plant.drawn_whole(), "the pole is drawn whole (its shader bends it)")
-	var field: SunflowerField = SunflowerField.new()
-	field.plant = plant
-	field.map = _one_plant_map()
-	field.wind_direction = Vector2(1.0, 0.0)
-	field.lod_fade = 0.0
-	field.force_lod = SunflowerField.Lod.MESH_1
-	stage.add_child(field)
-	field.finish_build()
-	field.set_process(false)
-	var root: Vector3 = field.get_plant_info(0)["position"]
-	var camera: Camera3D = Camera3D.new()
-	stage.add_child(camera)
-	camera.projection = Camera3D.PROJECTION_ORTHOGONAL
-	camera.size = 12.0
-	camera.look_at_from_position(root + Vector3(0.0, 5.5, 30.0), root + Vector3(0.0, 5.5, 0.0))
-	camera.make_current()
-	return {"field": field, "plant": plant, "camera": camera, "root": root}
-
-
-static func _red() -> StandardMaterial3D:
-	var red: StandardMaterial3D = StandardMaterial3D.new()
-	red.albedo_color = Color(1.0, 0.02, 0.02)
-	return red
-
-
-## A red ShaderMaterial of its own that, outside a field, shifts its mesh 3 m along +x (a wind of its
-## own, which it leaves to the field's bend there).
-static func _red_shader() -> ShaderMaterial:
-	var shader: Shader = Shader.new()
-	shader.code = "shader_type spatial;\nuniform vec4 tint : source_color = vec4(1.0, 0.02, 0.02, 1.0);\n"
-	shader.code += "void vertex() {\n#ifndef PLANT_BENT_BY_FIELD\n\tVERTEX.x += 3.0;\n#endif\n}\n"
-	shader.code += "void fragment() {\n\tALBEDO = tint.rgb;\n}\n"
-	var red: ShaderMaterial = ShaderMaterial.new()
-	red.shader = shader
-	return red
-
-
-## Where the pole of [method _pole_field] is across [param image] at [param height] metres above its
-## root, in metres from the picture's left edge (negative when it is not in that row).
-func _pole_centre(pole: Dictionary, image: Image, height: float) -> float:
-	var camera: Camera3D = pole.camera
-	var pixels_per_metre: float = image.get_height() / camera.size
-	var row: int = int(image.get_height() * 0.5 - (height - 5.5) * pixels_per_metre)
-	return _red_centre(image, row) / pixels_per_metre
-
-
-static func _spread(values: PackedFloat32Array) -> float:
-	var low: float = INF
-	var high: float = -INF
-	for value: float in values:
-		low = minf(low, value)
-		high = maxf(high, value)
-	return high - low
-
-
-## The mean column of the pole's red pixels in [param row] (-1 when none).
-func _red_centre(image: Image, row: int) -> float:
-	var sum: float = 0.0
-	var count: int = 0
-	for x: int in image.get_width():
-		var c: Color = image.get_pixel(x, clampi(row, 0, image.get_height() - 1))
-		if c.r > 0.3 and c.r > 3.0 * c.g and c.r > 3.0 * c.b:
-			sum += x
-			count += 1
-	return sum / count if count > 0 else -1.0
-
-
 ## Each Sapling test plant's impostors, baked: every one of the atlas' views holds its plant and
 ## touches no neighbour (its square's edge is clear all round: the frame from its bounds holds it from
 ## every side and elevation), and no view shows the sunflower's yellow.
@@ -586,7 +431,7 @@ func test_each_test_plants_lone_impostor_covers_what_its_mesh_covers() -> void:
 			continue
 		var staged: Stage = Stage.new(tree.root)
 		stage = staged.root
-		var field: SunflowerField = staged.lone_plant(plant, _one_plant_map())
+		var field: SunflowerField = staged.lone_plant(plant, Maps.filled(1, 1, "user://one_scene_plant.field"))
 		var camera: Camera3D = tree.root.get_camera_3d()
 		var root: Vector3 = field.get_plant_info(0)["position"]
 		var middle: Vector3 = root + Vector3(0.0, plant.height * 0.5, 0.0)
@@ -667,7 +512,7 @@ func test_a_thin_plants_far_impostor_sparkles_no_more_than_its_mesh() -> void:
 	await RenderingServer.frame_post_draw
 	var staged: Stage = Stage.new(tree.root)
 	stage = staged.root
-	var field: SunflowerField = staged.lone_plant(plant, _one_plant_map())
+	var field: SunflowerField = staged.lone_plant(plant, Maps.filled(1, 1, "user://one_scene_plant.field"))
 	var camera: Camera3D = tree.root.get_camera_3d()
 	var middle: Vector3 = field.get_plant_info(0)["position"] + Vector3(0.0, plant.height * 0.5, 0.0)
 	var distance: float = field.lod_distances[2] * plant.lod_scale_used()
@@ -737,7 +582,7 @@ func test_empty_slots_of_a_plant_drawn_part_by_part_fill_no_instances() -> void:
 	plant.part_lengths = Vector3(3.0, 0.0, 0.0)
 	var field: SunflowerField = SunflowerField.new()
 	field.plant = plant
-	field.map = _one_plant_map()
+	field.map = Maps.filled(1, 1, "user://one_scene_plant.field")
 	field.force_lod = SunflowerField.Lod.MESH_1
 	stage.add_child(field)
 	field.finish_build()
@@ -760,13 +605,6 @@ func test_empty_slots_of_a_plant_drawn_part_by_part_fill_no_instances() -> void:
 			drawn += RenderingServer.multimesh_get_instance_count(multimesh.get_rid())
 	check(drawn >= 1, "the trunk's bucket holds the plant")
 	take_warnings()  # the plant has no impostor textures: it warns
-
-
-func _one_plant_map() -> SunflowerFieldMap:
-	var one: SunflowerFieldMap = SunflowerFieldMap.new()
-	one.source_path = "user://one_scene_plant.field"
-	one.text = "1 1\n*\n".to_utf8_buffer()
-	return one
 
 
 ## Pixels of petal yellow (bright red and green, little blue).
@@ -855,6 +693,11 @@ func _compare_field(plant_name: String, plant: SunflowerPlant, window: Vector2i)
 			camera.global_position += camera.global_basis.x * CEILING_SHIFT
 			moved = await _field_picture(field, 0, "%s_%s_mesh1_moved" % [plant_name, view])
 			camera.look_at_from_position(views[view][0], views[view][1])
+		var impostor_shade: Image = null
+		if view == "above45" and plant_name in MESH_SHADOWS:
+			impostor_shade = await _with_impostor_shadows(
+				field, plant, "%s_%s_auto_impostor_shadows" % [plant_name, view]
+			)
 		var meshes_black: Image = await _impostors_alone(staged, field, plant, "%s_%s_impostors" % [plant_name, view])
 		var inside: PackedByteArray = picture.region(picture.luminance(meshes_black))
 		var around: PackedByteArray = picture.grown(inside, BRIGHTNESS_GROWTH * samples / FIELD_SAMPLES_A_SIDE)
@@ -884,6 +727,12 @@ func _compare_field(plant_name: String, plant: SunflowerPlant, window: Vector2i)
 			mesh_1.shrink_x2()
 			if moved:
 				moved.shrink_x2()
+			if impostor_shade:
+				impostor_shade.shrink_x2()
+		if impostor_shade:
+			_compare_shade(
+				plant_name, impostor_shade, auto, small.ssim(small.luminance(impostor_shade), small.luminance(mesh_1))
+			)
 		var reference: PackedFloat32Array = small.luminance(mesh_1)
 		var similarity: float = small.ssim(small.luminance(auto), reference)
 		var ceiling: float = -1.0
@@ -948,6 +797,79 @@ func _compare_field(plant_name: String, plant: SunflowerPlant, window: Vector2i)
 	)
 	stage.free()
 	stage = null
+
+
+## The picture [method _field_picture] draws with [param plant]'s impostor shadows on (its near plants
+## cast from its impostors from SunflowerField.impostor_shadows_from on); then off again.
+func _with_impostor_shadows(field: SunflowerField, plant: SunflowerPlant, name: String) -> Image:
+	plant.impostor_shadows = true
+	field.finish_build()
+	var image: Image = await _field_picture(field, -1, name)
+	plant.impostor_shadows = false
+	field.finish_build()
+	return image
+
+
+## The shade of [param ours] (a field whose near plants cast from their impostors) against
+## [param theirs] (the same field whose plants cast from their meshes), eighth by eighth of the
+## height: mean brightness and dappling ([method _shade]) alike (SSIM [param similarity] to the
+## all-mesh-1 picture is printed, not checked: it credits a speck of shade only where the meshes'
+## falls on the same pixel).
+func _compare_shade(plant_name: String, ours: Image, theirs: Image, similarity: float) -> void:
+	var parts: PackedStringArray = []
+	var worst: Vector2 = Vector2.ZERO  # the largest departures of brightness and contrast
+	var size: Vector2i = ours.get_size()
+	for k: int in 8:
+		var rows: Rect2i = Rect2i(0, k * (size.y / 8), size.x, size.y / 8)
+		var ratio: Vector2 = _shade(ours.get_region(rows)) / _shade(theirs.get_region(rows))
+		parts.append("%.3f / %.2f" % [ratio.x, ratio.y])
+		worst = Vector2(maxf(worst.x, absf(ratio.x - 1.0)), maxf(worst.y, absf(ratio.y - 1.0)))
+	print(
+		(
+			(
+				"     %s field at 45° with its impostor shadows on: SSIM %.3f; by eighths from the top, its"
+				+ " brightness / contrast of the meshes' shadows': %s"
+			)
+			% [plant_name, similarity, " ".join(parts)]
+		)
+	)
+	check(
+		worst.x <= SHADE_BRIGHTNESS_WITHIN,
+		(
+			"%s field at 45°: impostor shadows as dark as the meshes' in every eighth (%.1f %% off, within %.0f %%)"
+			% [plant_name, 100.0 * worst.x, 100.0 * SHADE_BRIGHTNESS_WITHIN]
+		)
+	)
+	check(
+		worst.y <= SHADE_CONTRAST_WITHIN,
+		(
+			"%s field at 45°: impostor shadows dappled as the meshes' in every eighth (%.1f %% off, within %.0f %%)"
+			% [plant_name, 100.0 * worst.y, 100.0 * SHADE_CONTRAST_WITHIN]
+		)
+	)
+
+
+## The mean luminance of [param image] and the mean standard deviation of its luminance within
+## blocks of SHADE_BLOCK × SHADE_BLOCK pixels (its contrast at the scale of dappled shade).
+static func _shade(image: Image) -> Vector2:
+	var size: Vector2i = image.get_size()
+	var values: PackedFloat32Array = Picture.new(size.x, size.y).luminance(image)
+	var blocks: Vector2i = size / SHADE_BLOCK
+	var n: float = SHADE_BLOCK * SHADE_BLOCK
+	var total: float = 0.0
+	var spread: float = 0.0
+	for by: int in blocks.y:
+		for bx: int in blocks.x:
+			var sum: float = 0.0
+			var squares: float = 0.0
+			for y: int in range(by * SHADE_BLOCK, (by + 1) * SHADE_BLOCK):
+				for x: int in range(bx * SHADE_BLOCK, (bx + 1) * SHADE_BLOCK):
+					var value: float = values[y * size.x + x]
+					sum += value
+					squares += value * value
+			total += sum
+			spread += sqrt(maxf(squares / n - (sum / n) * (sum / n), 0.0))
+	return Vector2(total / (blocks.x * blocks.y * n), spread / (blocks.x * blocks.y))
 
 
 ## The SSIM of [param ours] and of [param theirs] against [param reference], each eighth of the
