@@ -43,7 +43,7 @@ static func legend(host: Node) -> Dictionary:
 
 
 ## What the bake of [param scene_path] depends on, as a short code: the scene file's and the addon's
-## baker's (its light passes included) and plant material's contents.
+## baker's (its light passes and views' measures included) and plant material's contents.
 static func _fingerprint(scene_path: String) -> String:
 	var sources: String = ""
 	for path: String in [
@@ -51,6 +51,7 @@ static func _fingerprint(scene_path: String) -> String:
 		ImpostorBaker.resource_path,
 		ImpostorBaker.BakeLight.resource_path,
 		ImpostorBaker.BakeLight.PlantMaterial.resource_path,
+		ImpostorBaker.ViewsMeasure.resource_path,
 		PLANT_SURFACE_PATH
 	]:
 		sources += FileAccess.get_md5(path)
@@ -80,6 +81,6 @@ static func _load_baked(plant: SunflowerPlant, baked_name: String) -> bool:
 				return false
 			continue
 		if kind == "views":
-			ImpostorBaker.measure_views(plant, image)  # before the texture premultiplies it
+			ImpostorBaker.ViewsMeasure.measure(plant, image)  # before the texture premultiplies it
 		plant.set("impostor_" + kind, ImpostorBaker.atlas_texture(image, plant.name))
 	return true

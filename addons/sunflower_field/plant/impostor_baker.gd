@@ -14,8 +14,9 @@ extends RefCounted
 ## [code]--headless[/code]); the work takes frames, so [method bake] is awaited.
 
 const BakeLight: GDScript = preload("bake_light.gd")
+const ViewsMeasure: GDScript = preload("views_measure.gd")
 
-## Pixels per view square.
+## Pixels per view square (a thin plant's views: [constant CELL_PIXELS] × [constant SUPERSAMPLE]).
 const CELL_PIXELS: int = 128
 ## Each view is drawn this many times as wide and high, without multisampling, and averaged down
 ## ([method _read_pass]): a pixel of the atlas then holds the share of it the plant covers (a leaf a
@@ -52,13 +53,6 @@ const SETTLE_FRAMES: int = 1
 ## blurred by it, and a plant whose parts are untextured (the built-in sunflower, the maple) bakes
 ## the same.
 const TEXTURE_MIP_BIAS: float = 1.0
-## The alpha cut against which [method thin_from] measures a plant's thinness (the field's default
-## [member SunflowerField.alpha_scissor]).
-const THIN_CUT: float = 0.5
-## The latest mip level [method thin_from] reports: where the far test is hashed for every plant
-## anyway (the shader's hashed_from + 1), a thin level changes nothing but the reprojection, which
-## the built-in sunflower's far fields were measured with.
-const THIN_LATEST: float = 3.0
 ## Draws the plant's normals in its own frame as colours (0–1 for −1–1), through
 ## [constant AS_CODE_SHADER]'s as_code().
 const NORMALS_SHADER: String = """
@@ -172,7 +166,11 @@ static func _bake(plant: SunflowerPlant, host: Node, folder: String, base_name: 
 				coded.set_shader_parameter("square", plant.impostor_frame().x)
 			for instance: Node in viewport.find_children("*", "MeshInstance3D", true, false):
 				(instance as MeshInstance3D).material_override = coded
-		var image: Image = await _read_pass(stage)
+		var image: Image = null
+		if kind == "views":
+			image = await _read_views(stage)
+		else:
+			image = await _read_pass(stage)
 		if image == null:
 			viewport.queue_free()
 			push_error("Bake impostors: the %s rendered nothing (no renderer?)" % kind)
@@ -200,7 +198,7 @@ static func _bake(plant: SunflowerPlant, host: Node, folder: String, base_name: 
 			return saved
 		paths.append(path)
 	plant.impostor_emission_range = glow.energy_range
-	measure_views(plant, images[0])
+	ViewsMeasure.measure(plant, images[0])
 	await _tell_drawn(progress, "importing its atlases", 6.0 / STEPS, host.get_tree())
 	await _give_textures(plant, kinds, paths, images, host.get_tree())
 	return OK
@@ -220,82 +218,46 @@ static func _tell_drawn(progress: Callable, step: String, done: float, tree: Sce
 		await tree.process_frame
 
 
-## Gives [param plant] what the bake measures on its views [param views] (as baked, not
-## premultiplied): [member SunflowerPlant.impostor_alpha_cuts] and
-## [member SunflowerPlant.impostor_thin_from]. For views baked earlier and loaded from their file.
-static func measure_views(plant: SunflowerPlant, views: Image) -> void:
-	var alphas: Array[PackedInt32Array] = alpha_levels(views)
-	plant.impostor_alpha_cuts = alpha_cuts(alphas)
-	plant.impostor_thin_from = thin_from(alphas)
-
-
-## How many texels of each alpha (0–255) each mip level of the views [param image] holds, as the
-## import makes the levels (alpha averaged): [method alpha_cuts] and [method thin_from] read them.
-static func alpha_levels(image: Image) -> Array[PackedInt32Array]:
-	var levels: Image = image.duplicate() as Image
-	levels.clear_mipmaps()
-	levels.convert(Image.FORMAT_RGBA8)
-	levels.generate_mipmaps()
-	var data: PackedByteArray = levels.get_data()
-	var out: Array[PackedInt32Array] = []
-	for level: int in levels.get_mipmap_count() + 1:
-		var end: int = levels.get_mipmap_offset(level + 1) if level < levels.get_mipmap_count() else data.size()
-		var counts: PackedInt32Array = []
-		counts.resize(256)
-		for k: int in range(levels.get_mipmap_offset(level) + 3, end, 4):
-			counts[data[k]] += 1
-		out.append(counts)
-	return out
-
-
-## The alpha cut of each mip level of the views ([param levels], [method alpha_levels]) that keeps
-## the views' cover: the highest cut that at least the share of the level's texels reaches that the
-## views' mean alpha gives (a leaf a fraction of a texel wide is that fraction of alpha, below a fixed
-## cut; the test on this cut draws as many texels as the leaves cover). See
-## [member SunflowerPlant.impostor_alpha_cuts].
-static func alpha_cuts(levels: Array[PackedInt32Array]) -> PackedFloat32Array:
-	var cuts: PackedFloat32Array = []
-	for counts: PackedInt32Array in levels:
-		var covered: float = 0.0  # the mean alpha's worth of texels
-		for alpha: int in 256:
-			covered += counts[alpha] * alpha / 255.0
-		var cut: int = 255
-		var reached: int = counts[255]
-		while cut > 1 and reached < covered:
-			cut -= 1
-			reached += counts[cut]
-		cuts.append(cut / 255.0)
-	return cuts
-
-
-## The mip level of the views ([param levels], [method alpha_levels]) from which the plant is
-## *thin*: where a plain alpha cut ([constant THIN_CUT]) keeps less than half of what its texels
-## cover, interpolated between the two levels about that share (a crown of leaves smaller than a
-## texel: most of its cover is in texels a fraction covered). −1 when that comes after
-## [constant THIN_LATEST] (the built-in sunflower's views cross it at 3.8), or never. See
-## [member SunflowerPlant.impostor_thin_from].
-static func thin_from(levels: Array[PackedInt32Array]) -> float:
-	var cut: int = ceili(THIN_CUT * 255.0)
-	var before: float = 1.0  # the share kept at the level before
-	for level: int in mini(levels.size(), ceili(THIN_LATEST) + 1):
-		var all: int = 0
-		var kept: int = 0
-		for alpha: int in 256:
-			all += levels[level][alpha] * alpha
-			kept += levels[level][alpha] * alpha if alpha >= cut else 0
-		var share: float = float(kept) / all if all > 0 else 1.0
-		if share < 0.5:
-			var crossed: float = level - (0.5 - share) / maxf(before - share, 1e-6) if level > 0 else 0.0
-			return crossed if crossed <= THIN_LATEST else -1.0
-		before = share
-	return -1.0
-
-
-## The picture of a pass, as 8-bit RGBA at the atlas' size: the stage's tiles drawn one a frame and
-## put together ([constant SUPERSAMPLE] times as large, each pixel covered or not), then brought
-## down by [method _average_down] on a worker thread (it takes most of a second for a 120-view
-## atlas on one core; the editor draws meanwhile). Null when nothing was rendered.
+## The picture of a pass, as 8-bit RGBA at the atlas' size: [method _read_drawn] brought down by
+## [method _average_down] on a worker thread (it takes most of a second for a 120-view atlas on one
+## core; the editor draws meanwhile). Null when nothing was rendered.
 static func _read_pass(stage: Stage) -> Image:
+	var image: Image = await _read_drawn(stage)
+	if image != null:
+		await _on_worker(_average_down.bind(image))
+	return image
+
+
+## The views pass: as [method _read_pass], or, for a thin plant (its views as [method _read_pass]
+## gives them thin by ViewsMeasure.thin_from), at the size drawn ([constant SUPERSAMPLE] times as fine,
+## each texel covered or not, its covered colours bled as [method _average_down] does). A thin
+## crown's leaves are about a texel of the usual views: drawn larger than that (nearer than
+## impostors begin on a screen of 1 600 lines or more, or close up) they were cut to the crown's
+## dense middle (0.63–0.65 of its meshes' cover); twice as fine, they are a texel each where the
+## impostor is drawn up to twice as large.
+static func _read_views(stage: Stage) -> Image:
+	var drawn: Image = await _read_drawn(stage)
+	if drawn == null:
+		return null
+	var averaged: Image = drawn.duplicate() as Image
+	await _on_worker(_average_down.bind(averaged))
+	if ViewsMeasure.thin_from(ViewsMeasure.alpha_levels(averaged)) < 0.0:
+		return averaged
+	await _on_worker(_bleed.bind(drawn))
+	return drawn
+
+
+## Runs [param work] on a worker thread, drawing frames until it is done.
+static func _on_worker(work: Callable) -> void:
+	var task: int = WorkerThreadPool.add_task(work, false, "Sunflower Field: impostor pass")
+	while not WorkerThreadPool.is_task_completed(task):
+		await RenderingServer.frame_post_draw
+	WorkerThreadPool.wait_for_task_completion(task)
+
+
+## The pass as drawn: the stage's tiles drawn one a frame and put together ([constant SUPERSAMPLE]
+## times as large as the atlas, each pixel covered or not). Null when nothing was rendered.
+static func _read_drawn(stage: Stage) -> Image:
 	var views: Vector2i = SunflowerPlant.ATLAS_VIEWS
 	var pixels: int = CELL_PIXELS * SUPERSAMPLE
 	var image: Image = null
@@ -312,10 +274,6 @@ static func _read_pass(stage: Stage) -> Image:
 			if image == null:
 				image = Image.create_empty(views.x * pixels, views.y * pixels, false, drawn.get_format())
 			image.blit_rect(drawn, Rect2i(Vector2i.ZERO, drawn.get_size()), Vector2i(left, top) * pixels)
-	var task: int = WorkerThreadPool.add_task(_average_down.bind(image), false, "Sunflower Field: impostor pass")
-	while not WorkerThreadPool.is_task_completed(task):
-		await RenderingServer.frame_post_draw
-	WorkerThreadPool.wait_for_task_completion(task)
 	return image
 
 
@@ -330,6 +288,13 @@ static func _average_down(image: Image) -> void:
 		image.fix_alpha_edges()  # within 4 pixels: every covered pixel's square of 2 × 2 is reached
 		image.shrink_x2()
 		size /= 2
+	image.fix_alpha_edges()
+
+
+## Turns the drawn picture [param image] (in place) into 8-bit RGBA at its size, its covered pixels'
+## colours bled into their transparent neighbours (for filtering and mipmaps, as [method _average_down]).
+static func _bleed(image: Image) -> void:
+	image.convert(Image.FORMAT_RGBA8)
 	image.fix_alpha_edges()
 
 

@@ -4,6 +4,7 @@ extends TestCase
 ## growing it draws them; the built-in sunflower baked again matches the atlases the addon ships.
 
 const ImpostorBaker: GDScript = preload("res://addons/sunflower_field/plant/impostor_baker.gd")
+const ViewsMeasure: GDScript = preload("res://addons/sunflower_field/plant/views_measure.gd")
 const FOLDER: String = "user://bake_test"
 const RED: Color = Color(0.85, 0.1, 0.1)
 const GREEN: Color = Color(0.1, 0.6, 0.15)
@@ -433,13 +434,13 @@ func test_a_bright_glow_gets_a_wider_range() -> void:
 
 
 ## Where a plain cut keeps less than half the views' cover: views of whole texels are not thin
-## before their shapes blur at the coarse levels (−1: past ImpostorBaker.THIN_LATEST); views of one
+## before their shapes blur at the coarse levels (−1: past ViewsMeasure.THIN_LATEST); views of one
 ## lit texel in each 2 × 2 are thin from half-way to level 1 (all cover at level 0, none kept at 1).
 func test_the_bake_finds_where_a_plant_is_thin() -> void:
 	var solid: Image = Image.create_empty(64, 64, false, Image.FORMAT_RGBA8)
 	solid.fill_rect(Rect2i(16, 16, 32, 32), Color.WHITE)
 	check_eq(
-		ImpostorBaker.thin_from(ImpostorBaker.alpha_levels(solid)),
+		ViewsMeasure.thin_from(ViewsMeasure.alpha_levels(solid)),
 		-1.0,
 		"a solid square: not thin before the far test is hashed"
 	)
@@ -448,12 +449,12 @@ func test_the_bake_finds_where_a_plant_is_thin() -> void:
 		for x: int in range(0, 64, 2):
 			specks.set_pixel(x, y, Color.WHITE)
 	check_near(
-		ImpostorBaker.thin_from(ImpostorBaker.alpha_levels(specks)), 0.5, 0.01, "specks of a texel: thin from mip 0.5"
+		ViewsMeasure.thin_from(ViewsMeasure.alpha_levels(specks)), 0.5, 0.01, "specks of a texel: thin from mip 0.5"
 	)
 	var sparse: Image = Image.create_empty(64, 64, false, Image.FORMAT_RGBA8)
 	sparse.fill_rect(Rect2i(0, 0, 64, 64), Color(1.0, 1.0, 1.0, 0.3))
 	check_eq(
-		ImpostorBaker.thin_from(ImpostorBaker.alpha_levels(sparse)), 0.0, "texels a third covered: thin from the start"
+		ViewsMeasure.thin_from(ViewsMeasure.alpha_levels(sparse)), 0.0, "texels a third covered: thin from the start"
 	)
 
 
