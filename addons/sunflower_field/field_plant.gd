@@ -311,9 +311,11 @@ static var _default: SunflowerPlant
 ## From there, and for such a plant from mip −0.5 on in any case (a texel over at most 1.4 pixels), its
 ## impostors' alpha test is hashed (each pixel drawn as often as its texel is covered,
 ## speckled as the meshes' far leaves are) and each view is read at the quad's own place (reading it
-## where the depths say spreads a sparse crown's cover). The baker measures it; −1: not before the far
-## test is hashed anyway (the built-in sunflower, or an atlas baked before it was measured).
-@export_range(-1.0, 3.0, 0.01) var impostor_thin_from: float = -1.0:
+## where the depths say spreads a sparse crown's cover). The baker measures it, and bakes a thin
+## plant's views twice as fine (256 pixels a view: its leaves stay whole texels drawn larger), so its
+## level is one more there (the Sapling maple's 1.84); −1: not before the far test is hashed anyway
+## (the built-in sunflower, or an atlas baked before it was measured).
+@export_range(-1.0, 4.0, 0.01) var impostor_thin_from: float = -1.0:
 	set(value):
 		if value != impostor_thin_from:
 			impostor_thin_from = value
