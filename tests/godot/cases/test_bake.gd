@@ -456,6 +456,24 @@ func test_the_bake_finds_where_a_plant_is_thin() -> void:
 	check_eq(
 		ViewsMeasure.thin_from(ViewsMeasure.alpha_levels(sparse)), 0.0, "texels a third covered: thin from the start"
 	)
+	# A thin plant's views are kept twice as fine (ImpostorBaker._read_views): the same specks a level
+	# later, and measured so up to THIN_LATEST levels after the usual views' own.
+	var fine: Image = specks.duplicate() as Image
+	fine.resize(128, 128, Image.INTERPOLATE_NEAREST)
+	check_near(ViewsMeasure.thin_from(ViewsMeasure.alpha_levels(fine), 1.0), 1.5, 0.01, "twice as fine: from 1.5")
+	var cell: int = ImpostorBaker.CELL_PIXELS
+	for side: int in [cell, 2 * cell]:
+		var atlas: Image = Image.create_empty(
+			SunflowerPlant.ATLAS_VIEWS.x * side, SunflowerPlant.ATLAS_VIEWS.y * side, false, Image.FORMAT_L8
+		)
+		check_eq(ViewsMeasure.finer_levels(atlas), 0.0 if side == cell else 1.0, "%d pixels a view" % side)
+	var late: Image = Image.create_empty(64, 64, false, Image.FORMAT_RGBA8)  # squares of 8 texels, 16 apart
+	for y: int in range(0, 64, 16):
+		for x: int in range(0, 64, 16):
+			late.fill_rect(Rect2i(x, y, 8, 8), Color.WHITE)
+	var late_levels: Array[PackedInt32Array] = ViewsMeasure.alpha_levels(late)
+	check_eq(ViewsMeasure.thin_from(late_levels), -1.0, "squares thin from 3.5: past the usual views' latest")
+	check_near(ViewsMeasure.thin_from(late_levels, 1.0), 3.5, 0.01, "within twice-as-fine views' latest")
 
 
 func test_views_are_drawn_in_tiles_as_large_as_the_triangle_budget_allows() -> void:
