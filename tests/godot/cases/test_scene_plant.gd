@@ -15,6 +15,8 @@ const Scenes: GDScript = preload("res://runner/scenes.gd")
 const ImpostorBaker: GDScript = preload("res://addons/sunflower_field/plant/impostor_baker.gd")
 const CROWN_PLACE: Vector3 = Vector3(0.5, 3.0, 0.0)
 const CROWN_SCALE: float = 1.5
+## Where the one-plant maps of these tests say they were read from.
+const ONE_PLANT_MAP: String = "user://one_scene_plant.field"
 ## The directions around a lone plant its impostor's cover is counted from (45° above, evenly around).
 const LONE_COVER_TURNS: int = 8
 ## Plants made by Blender's Sapling Tree Gen (assets/test_plants/make_test_plants.py).
@@ -199,7 +201,7 @@ func test_a_scene_of_several_meshes_becomes_a_plant_of_one_part_per_level() -> v
 	# A field of it draws its meshes and nothing of the sunflower.
 	var field: SunflowerField = SunflowerField.new()
 	field.plant = plant
-	field.map = Maps.filled(1, 1, "user://one_scene_plant.field")
+	field.map = Maps.filled(1, 1, ONE_PLANT_MAP)
 	tree.root.add_child(field)
 	field.finish_build()
 	var sunflower: Array = []
@@ -302,7 +304,7 @@ func _compare_lone_plant(plant_name: String, packed: PackedScene) -> void:
 	plant.yaw_range = 0.0
 	var field: SunflowerField = SunflowerField.new()
 	field.plant = plant
-	field.map = Maps.filled(1, 1, "user://one_scene_plant.field")
+	field.map = Maps.filled(1, 1, ONE_PLANT_MAP)
 	field.wind_power = 0.0
 	field.lod_fade = 0.0
 	field.cheap_shadows = false  # each level casts its own shadow, as the plain scene does
@@ -394,8 +396,9 @@ func test_each_test_plants_impostor_views_are_framed() -> void:
 		var views: Image = plant.impostor_views.get_image()
 		views.clear_mipmaps()
 		views.convert(Image.FORMAT_RGBA8)
-		# A thin plant's views are twice as fine (ImpostorBaker._read_views).
-		var cell: int = ImpostorBaker.CELL_PIXELS * (2 if plant.impostor_thin_from >= 0.0 else 1)
+		# A thin plant's views are kept as drawn, SUPERSAMPLE times as fine (ImpostorBaker._read_views).
+		var finer: int = ImpostorBaker.SUPERSAMPLE if plant.impostor_thin_from >= 0.0 else 1
+		var cell: int = ImpostorBaker.CELL_PIXELS * finer
 		check_eq(views.get_size(), SunflowerPlant.ATLAS_VIEWS * cell, "%s: %d pixels a view" % [file, cell])
 		views.save_png(artifact_path("scene_plant_%s_views.png" % file.get_basename()))
 		var touching: PackedStringArray = []
@@ -434,7 +437,7 @@ func test_each_test_plants_lone_impostor_covers_what_its_mesh_covers() -> void:
 			continue
 		var staged: Stage = Stage.new(tree.root)
 		stage = staged.root
-		var field: SunflowerField = staged.lone_plant(plant, Maps.filled(1, 1, "user://one_scene_plant.field"))
+		var field: SunflowerField = staged.lone_plant(plant, Maps.filled(1, 1, ONE_PLANT_MAP))
 		var camera: Camera3D = tree.root.get_camera_3d()
 		var root: Vector3 = field.get_plant_info(0)["position"]
 		var middle: Vector3 = root + Vector3(0.0, plant.height * 0.5, 0.0)
@@ -515,7 +518,7 @@ func test_a_thin_plants_far_impostor_sparkles_no_more_than_its_mesh() -> void:
 	await RenderingServer.frame_post_draw
 	var staged: Stage = Stage.new(tree.root)
 	stage = staged.root
-	var field: SunflowerField = staged.lone_plant(plant, Maps.filled(1, 1, "user://one_scene_plant.field"))
+	var field: SunflowerField = staged.lone_plant(plant, Maps.filled(1, 1, ONE_PLANT_MAP))
 	var camera: Camera3D = tree.root.get_camera_3d()
 	var middle: Vector3 = field.get_plant_info(0)["position"] + Vector3(0.0, plant.height * 0.5, 0.0)
 	var distance: float = field.lod_distances[2] * plant.lod_scale_used()
@@ -585,7 +588,7 @@ func test_empty_slots_of_a_plant_drawn_part_by_part_fill_no_instances() -> void:
 	plant.part_lengths = Vector3(3.0, 0.0, 0.0)
 	var field: SunflowerField = SunflowerField.new()
 	field.plant = plant
-	field.map = Maps.filled(1, 1, "user://one_scene_plant.field")
+	field.map = Maps.filled(1, 1, ONE_PLANT_MAP)
 	field.force_lod = SunflowerField.Lod.MESH_1
 	stage.add_child(field)
 	field.finish_build()
