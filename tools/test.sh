@@ -41,9 +41,11 @@ HEADLESS_TESTS=(test_addon test_settings test_budget test_scene_import '!test_bu
 # The render tests the "opengl" suite repeats: those whose result depends on the renderer (and the
 # back-light bake's, whose far leaves are lit by the renderer's own back-light term, and the test
 # plants' lone impostors, baked on the renderer the test runs on: its normals and depths passes write
-# what each renderer stores differently).
+# what each renderer stores differently, and a dense plant's impostors in the sun: the Compatibility
+# renderer finds where a pixel lies in the shadow from the vertices).
 # (Not the stumps': their shader path is plant_bend's, which every render test's plants draw with.)
 OPENGL_TESTS=(test_render 'test_bake.test_a_backlit_*' 'test_scene_plant.test_each_test_plants_lone_*'
+  'test_scene_plant.test_a_dense_*'
   '!test_render.test_cut_plants_leave_the_stumps_*')
 
 usage() { sed -n '2,12p' "$0" | sed 's/^# \{0,1\}//'; }

@@ -613,13 +613,15 @@ func test_empty_slots_of_a_plant_drawn_part_by_part_fill_no_instances() -> void:
 	take_warnings()  # the plant has no impostor textures: it warns
 
 
-## Pixels of petal yellow (bright red and green, little blue).
+## Pixels of petal yellow (bright red and green, little blue, no greener than red: the petals are
+## (0.81, 0.67, 0.09) to (1.00, 0.98, 0.17); a grass blade's sunlit tip on the Compatibility renderer,
+## (0.60, 0.62, 0.22), is not).
 func _yellow_pixels(image: Image) -> int:
 	var count: int = 0
 	for y: int in range(0, image.get_height(), 2):
 		for x: int in range(0, image.get_width(), 2):
 			var c: Color = image.get_pixel(x, y)
-			if c.r > 0.6 and c.g > 0.45 and c.b < 0.3:
+			if c.r > 0.6 and c.g > 0.45 and c.b < 0.3 and c.r >= c.g:
 				count += 1
 	return count
 
@@ -632,6 +634,60 @@ func _baked_test_plant(file: String) -> SunflowerPlant:
 		var result: Error = await plant.bake_impostors(tree.root, "user://scene_plants", file.get_basename())
 		baked_plants[file] = plant if result == OK and plant.impostor_views != null else null
 	return baked_plants[file]
+
+
+## A patch of bushes (a dense, round plant), 45° above, just past where its impostors begin, in the
+## sun with their shadows (cast from the impostors, SunflowerPlant.impostor_shadows): the impostors as
+## bright as the meshes drawn there, where they are drawn. On the Compatibility renderer, which finds
+## a pixel's place in the shadow from the quad's vertices, a quad through the bush's middle lay
+## inside it, in its own shadow: dark middles, 0.894 of the meshes' brightness; 1.009 at the bush's
+## mean depth along the view (impostor.gdshaderinc, receiver_front).
+func test_a_dense_plants_impostors_in_the_sun_are_as_bright_as_its_meshes() -> void:
+	var plant: SunflowerPlant = await _baked_test_plant("bottlebrush_bush.glb")
+	if not check(plant != null, "bottlebrush_bush: baked"):
+		return
+	plant.impostor_shadows = true
+	var cell: float = plant.spacing_metres()
+	var centre: Vector3 = Vector3(2.5 * cell, 0.0, 2.5 * cell)
+	var staged: Stage = Stage.new(tree.root, 400.0, centre)
+	stage = staged.root
+	var field: SunflowerField = SunflowerField.new()
+	field.plant = plant
+	field.cell_size = cell
+	field.map = Maps.filled(5, 5, "user://dense_patch.field")
+	field.wind_power = 0.0
+	stage.add_child(field)
+	field.finish_build()
+	field.set_process(false)
+	var camera: Camera3D = Camera3D.new()
+	stage.add_child(camera)
+	var away: float = 1.25 * plant.lod_scale_used() * SunflowerField.DEFAULT_LOD_DISTANCES[2]
+	camera.look_at_from_position(centre + Vector3(0.0, away, away) * sqrt(0.5), centre)
+	camera.make_current()
+	var auto: Image = await _field_picture(field, -1, "dense_patch_auto")
+	var mesh_1: Image = await _field_picture(field, 0, "dense_patch_mesh1")
+	var size: Vector2i = auto.get_size()
+	var picture: Picture = Picture.new(size.x, size.y)
+	var inside: PackedByteArray = picture.region(
+		picture.luminance(await _impostors_alone(staged, field, plant, "dense_patch_impostors"))
+	)
+	staged.show_scenery(false)
+	var planted: PackedByteArray = picture.region(
+		picture.luminance(await _field_picture(field, -1, "dense_patch_alone"))
+	)
+	staged.show_scenery(true)
+	var around: PackedByteArray = picture.grown(inside, BRIGHTNESS_GROWTH)
+	var brightness: float = (
+		picture.mean_in(picture.luminance(auto), around) / picture.mean_in(picture.luminance(mesh_1), around)
+	)
+	print(
+		"     bush patch %.1f m away at 45°, in the sun: impostors' brightness %.3f of the meshes'" % [away, brightness]
+	)
+	check(
+		inside.count(1) >= 0.9 * planted.count(1) and planted.count(1) > 0,
+		"the patch is drawn as impostors: %d of its %d pixels" % [inside.count(1), planted.count(1)]
+	)
+	check(absf(brightness - 1.0) <= 0.05, "the impostors' brightness %.3f of the meshes', within ±5 %%" % brightness)
 
 
 ## A field of each test plant, as the editor's Plant from scene… makes it (cells as wide as the
