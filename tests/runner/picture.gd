@@ -141,6 +141,30 @@ func mean_in(picture: PackedFloat32Array, inside: PackedByteArray) -> float:
 	return sum / count if count > 0 else NAN
 
 
+## The mean luminance of [param image] and the mean standard deviation of its luminance within
+## blocks of [param block] × [param block] pixels (its contrast at that scale: dappled shade's).
+static func shade(image: Image, block: int) -> Vector2:
+	var size: Vector2i = image.get_size()
+	var bytes: PackedByteArray = _rgb_bytes(image)
+	var blocks: Vector2i = size / block
+	var n: float = block * block
+	var total: float = 0.0
+	var spread: float = 0.0
+	for by: int in blocks.y:
+		for bx: int in blocks.x:
+			var sum: float = 0.0
+			var squares: float = 0.0
+			for y: int in range(by * block, (by + 1) * block):
+				for x: int in range(bx * block, (bx + 1) * block):
+					var i: int = 3 * (y * size.x + x)
+					var value: float = (0.2126 * bytes[i] + 0.7152 * bytes[i + 1] + 0.0722 * bytes[i + 2]) / 255.0
+					sum += value
+					squares += value * value
+			total += sum
+			spread += sqrt(maxf(squares / n - (sum / n) * (sum / n), 0.0))
+	return Vector2(total / (blocks.x * blocks.y * n), spread / (blocks.x * blocks.y))
+
+
 ## [param image]'s pixels as 8-bit red, green and blue, row by row (the image itself unchanged).
 static func _rgb_bytes(image: Image) -> PackedByteArray:
 	var rgb: Image = image.duplicate() as Image

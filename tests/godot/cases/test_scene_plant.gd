@@ -763,6 +763,13 @@ func _compare_field(plant_name: String, plant: SunflowerPlant, window: Vector2i)
 			impostor_shade = await _with_impostor_shadows(
 				field, plant, "%s_%s_auto_impostor_shadows" % [plant_name, view]
 			)
+		# A measurement's (FIELD_FULL_SHADOWS=1): the all-mesh-1 picture with every plant casting from
+		# mesh 1 (SunflowerField.cheap_shadows off), the shade no approximation changes.
+		var full_shadows: Image = null
+		if impostor_shade and OS.get_environment("FIELD_FULL_SHADOWS") == "1":
+			field.cheap_shadows = false
+			full_shadows = await _field_picture(field, 0, "%s_%s_mesh1_full_shadows" % [plant_name, view])
+			field.cheap_shadows = true
 		var meshes_black: Image = await _impostors_alone(staged, field, plant, "%s_%s_impostors" % [plant_name, view])
 		var inside: PackedByteArray = picture.region(picture.luminance(meshes_black))
 		var around: PackedByteArray = picture.grown(inside, BRIGHTNESS_GROWTH * samples / FIELD_SAMPLES_A_SIDE)
@@ -794,6 +801,24 @@ func _compare_field(plant_name: String, plant: SunflowerPlant, window: Vector2i)
 				moved.shrink_x2()
 			if impostor_shade:
 				impostor_shade.shrink_x2()
+			if full_shadows:
+				full_shadows.shrink_x2()
+		if full_shadows:
+			var full: PackedFloat32Array = small.luminance(full_shadows)
+			print(
+				(
+					(
+						"     %s field at 45° against its plants all casting from mesh 1: SSIM %.3f with impostor"
+						+ " shadows, %.3f with the meshes' (auto), %.3f the all-mesh-1 picture (mesh 3 casting)"
+					)
+					% [
+						plant_name,
+						small.ssim(small.luminance(impostor_shade), full),
+						small.ssim(small.luminance(auto), full),
+						small.ssim(small.luminance(mesh_1), full)
+					]
+				)
+			)
 		if impostor_shade:
 			_compare_shade(
 				plant_name, impostor_shade, auto, small.ssim(small.luminance(impostor_shade), small.luminance(mesh_1))
@@ -886,7 +911,9 @@ func _compare_shade(plant_name: String, ours: Image, theirs: Image, similarity: 
 	var size: Vector2i = ours.get_size()
 	for k: int in 8:
 		var rows: Rect2i = Rect2i(0, k * (size.y / 8), size.x, size.y / 8)
-		var ratio: Vector2 = _shade(ours.get_region(rows)) / _shade(theirs.get_region(rows))
+		var ratio: Vector2 = (
+			Picture.shade(ours.get_region(rows), SHADE_BLOCK) / Picture.shade(theirs.get_region(rows), SHADE_BLOCK)
+		)
 		parts.append("%.3f / %.2f" % [ratio.x, ratio.y])
 		worst = Vector2(maxf(worst.x, absf(ratio.x - 1.0)), maxf(worst.y, absf(ratio.y - 1.0)))
 	print(
@@ -912,29 +939,6 @@ func _compare_shade(plant_name: String, ours: Image, theirs: Image, similarity: 
 			% [plant_name, 100.0 * worst.y, 100.0 * SHADE_CONTRAST_WITHIN]
 		)
 	)
-
-
-## The mean luminance of [param image] and the mean standard deviation of its luminance within
-## blocks of SHADE_BLOCK × SHADE_BLOCK pixels (its contrast at the scale of dappled shade).
-static func _shade(image: Image) -> Vector2:
-	var size: Vector2i = image.get_size()
-	var values: PackedFloat32Array = Picture.new(size.x, size.y).luminance(image)
-	var blocks: Vector2i = size / SHADE_BLOCK
-	var n: float = SHADE_BLOCK * SHADE_BLOCK
-	var total: float = 0.0
-	var spread: float = 0.0
-	for by: int in blocks.y:
-		for bx: int in blocks.x:
-			var sum: float = 0.0
-			var squares: float = 0.0
-			for y: int in range(by * SHADE_BLOCK, (by + 1) * SHADE_BLOCK):
-				for x: int in range(bx * SHADE_BLOCK, (bx + 1) * SHADE_BLOCK):
-					var value: float = values[y * size.x + x]
-					sum += value
-					squares += value * value
-			total += sum
-			spread += sqrt(maxf(squares / n - (sum / n) * (sum / n), 0.0))
-	return Vector2(total / (blocks.x * blocks.y * n), spread / (blocks.x * blocks.y))
 
 
 ## The SSIM of [param ours] and of [param theirs] against [param reference], each eighth of the
