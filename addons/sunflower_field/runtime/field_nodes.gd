@@ -354,12 +354,23 @@ func _set_bucket_mesh(species: int, bucket_in_species: int, mesh: Mesh, shadow_m
 	var node: MultiMeshInstance3D = _dynamic_nodes[slot]
 	var bucket: int = _dynamic_buckets[slot]
 	if node.multimesh.mesh != mesh:
+		_emptied_for(node.multimesh, mesh)
 		node.multimesh.mesh = mesh
 		simulation.set_bucket_multimesh(bucket, _filled_rid(node.multimesh))
 	var twin: MultiMeshInstance3D = node.get_node_or_null(NodePath(CASTER_NAME))
 	if twin and twin.multimesh.mesh != shadow_mesh:
+		_emptied_for(twin.multimesh, shadow_mesh)
 		twin.multimesh.mesh = shadow_mesh
 		simulation.set_bucket_shadow_multimesh(bucket, _filled_rid(twin.multimesh))
+
+
+## Drops the instances the library wrote into [param multimesh] when it is to draw no mesh
+## ([param mesh] null): the renderer refuses a mesh of nothing under instances (an error for each
+## part slot a plant of fewer parts left empty when it took the field's plant's place). The library
+## allocates them anew when the bucket is given a mesh again.
+static func _emptied_for(multimesh: MultiMesh, mesh: Mesh) -> void:
+	if mesh == null:
+		RenderingServer.multimesh_allocate_data(multimesh.get_rid(), 0, RenderingServer.MULTIMESH_TRANSFORM_3D)
 
 
 ## The RID the library fills for [param multimesh]: none (an invalid RID) while it has no mesh (an

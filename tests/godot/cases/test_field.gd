@@ -562,6 +562,42 @@ func _a_plant_at_lod(lod: int) -> int:
 	return 0
 
 
+## A field drawn part by part takes a plant of fewer parts (as Plant from scene… gives the field of a
+## plant of several parts one of one): the slots it leaves empty draw no mesh, with no engine error
+## (the renderer refuses a mesh of nothing under the instances drawn there: one error a slot and
+## level before); given its plant back, the field draws every part again.
+func test_a_plant_of_fewer_parts_takes_the_place_of_one_of_more() -> void:
+	var three: SunflowerPlant = _box_plant(3)
+	field.plant = three
+	field.finish_build()
+	observer.position = Vector3(10.0, 1.7, 7.5)
+	field.advance(0.3)
+	check(not three.drawn_whole() and _drawn(_node("Mesh1Head")) > 0, "the third part's near plants are drawn")
+	field.plant = _box_plant(1)
+	field.advance(0.3)
+	check(_node("Mesh1Head").multimesh.mesh == null, "the slot the plant leaves empty draws nothing")
+	field.plant = three
+	field.advance(0.3)
+	check(_drawn(_node("Mesh1Head")) > 0, "given back, the third part's near plants are drawn again")
+
+
+## A plant of [param parts] boxes at mesh level 1 (a box does not merge: drawn part by part).
+static func _box_plant(parts: int) -> SunflowerPlant:
+	var plant: SunflowerPlant = SunflowerPlant.new()
+	var boxes: Array[Mesh] = []
+	for part: int in parts:
+		boxes.append(BoxMesh.new())
+	plant.mesh_level_1 = boxes
+	return plant
+
+
+## The instances [param node]'s MultiMesh draws.
+static func _drawn(node: MultiMeshInstance3D) -> int:
+	var rid: RID = node.multimesh.get_rid()
+	var visible: int = RenderingServer.multimesh_get_visible_instances(rid)
+	return visible if visible >= 0 else RenderingServer.multimesh_get_instance_count(rid)
+
+
 func test_legend_symbols_place_scenes_and_unknown_symbols_fail() -> void:
 	var stone: Node3D = Node3D.new()
 	stone.name = "Stone"
