@@ -7,7 +7,10 @@ extends RefCounted
 ## the materials it shows and the mesh level it belongs to: a level-of-detail suffix in its name
 ## ([code]_LOD0[/code], [code]-lod1[/code] …) or, for Godot's own manual levels of detail, its
 ## [member GeometryInstance3D.visibility_range_begin]/[code]_end[/code] (the nearest range level 1).
-## What it cannot take is a problem naming the node and the reason.
+## What it cannot take is a problem naming the node and the reason: a shadow proxy (a node that only
+## casts a shadow) and nodes that draw nothing a plant carries (lights, decals, probes) are left out;
+## a node's [member GeometryInstance3D.material_overlay], [member GeometryInstance3D.transparency] and
+## a shadow it does not cast are not carried.
 
 ## The mesh levels a scene's variants fill.
 const LEVELS: int = 3
@@ -53,22 +56,50 @@ static func _collect(
 		if node != root:  # the plant's root stands at the scene root's origin
 			here = spatial.transform if spatial.top_level else to_root * spatial.transform
 	var path: String = String(root.get_path_to(node)) if node != root else String(root.name)
-	if node is MeshInstance3D:
-		_add_mesh_instance(node as MeshInstance3D, path, here, pieces, problems)
-	elif node is MultiMeshInstance3D:
-		_add_multimesh(node as MultiMeshInstance3D, path, here, pieces, problems)
-	elif node is CSGShape3D:
-		_add_csg(node as CSGShape3D, path, here, pieces, problems)
-		return  # the shapes below are part of its mesh
-	elif node is GeometryInstance3D:
+	if node is GeometryInstance3D:
+		_add_geometry(node as GeometryInstance3D, path, here, pieces, problems)
+		if node is CSGShape3D:
+			return  # the shapes below are part of its mesh
+	elif node is VisualInstance3D:
+		problems.append("%s: a %s is not carried into a field's plants; left out" % [path, node.get_class()])
+	for child: Node in node.get_children():
+		_collect(child, root, here, pieces, problems)
+
+
+## Adds what [param instance] draws (a MeshInstance3D, MultiMeshInstance3D or CSG shape), naming what
+## of its look the plant does not carry; any other geometry, or a shadow proxy, is named and left out.
+static func _add_geometry(
+	instance: GeometryInstance3D,
+	path: String,
+	here: Transform3D,
+	pieces: Array[Dictionary],
+	problems: PackedStringArray
+) -> void:
+	if not (instance is MeshInstance3D or instance is MultiMeshInstance3D or instance is CSGShape3D):
 		problems.append(
 			(
 				"%s: a %s is not read (only MeshInstance3D, MultiMeshInstance3D and CSG shapes are); left out"
-				% [path, node.get_class()]
+				% [path, instance.get_class()]
 			)
 		)
-	for child: Node in node.get_children():
-		_collect(child, root, here, pieces, problems)
+		return
+	if instance.cast_shadow == GeometryInstance3D.SHADOW_CASTING_SETTING_SHADOWS_ONLY:
+		problems.append(
+			"%s: it only casts a shadow (a shadow proxy); left out: the plant's levels cast from what they draw" % path
+		)
+		return
+	if instance.material_overlay:
+		problems.append("%s: its material_overlay is not carried; drawn without it" % path)
+	if instance.transparency > 0.0:
+		problems.append("%s: its transparency (%.2f) is not carried; drawn opaque" % [path, instance.transparency])
+	if instance.cast_shadow == GeometryInstance3D.SHADOW_CASTING_SETTING_OFF:
+		problems.append("%s: it casts no shadow in the scene, but a field's plants cast from all they draw" % path)
+	if instance is MeshInstance3D:
+		_add_mesh_instance(instance as MeshInstance3D, path, here, pieces, problems)
+	elif instance is MultiMeshInstance3D:
+		_add_multimesh(instance as MultiMeshInstance3D, path, here, pieces, problems)
+	else:
+		_add_csg(instance as CSGShape3D, path, here, pieces, problems)
 
 
 static func _add_mesh_instance(

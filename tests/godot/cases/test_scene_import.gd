@@ -166,6 +166,41 @@ func test_nodes_it_does_not_read_are_named() -> void:
 	check(warnings.contains("Crown: the CSG shape gives no mesh outside the scene tree"), "the CSG shape named")
 
 
+## What a node shows beyond its meshes and materials is named, not dropped or drawn in silence: a
+## shadow proxy (a 3 m box that only casts a shadow) is left out, the plant as tall as its 2 m trunk;
+## a material overlay, a node's transparency and a shadow it does not cast are named as not carried; a
+## light is named as left out.
+func test_what_a_plant_cannot_carry_from_a_node_is_named() -> void:
+	var root: Node3D = _root()
+	root.add_child(_box_node("Trunk", Vector3(0.2, 2.0, 0.2), Vector3(0.0, 1.0, 0.0)))
+	var proxy: MeshInstance3D = _box_node("ShadowProxy", Vector3(1.0, 3.0, 1.0), Vector3(0.0, 1.5, 0.0))
+	proxy.cast_shadow = GeometryInstance3D.SHADOW_CASTING_SETTING_SHADOWS_ONLY
+	root.add_child(proxy)
+	var crown: MeshInstance3D = _box_node("Crown", Vector3(1.0, 0.5, 1.0), Vector3(0.0, 1.5, 0.0))
+	crown.material_overlay = StandardMaterial3D.new()
+	crown.transparency = 0.5
+	crown.cast_shadow = GeometryInstance3D.SHADOW_CASTING_SETTING_OFF
+	root.add_child(crown)
+	var lamp: OmniLight3D = OmniLight3D.new()
+	lamp.name = "Lamp"
+	root.add_child(lamp)
+	var plant: SunflowerPlant = SunflowerPlant.from_scene(Scenes.packed(root))
+	if not check(plant != null, "a plant of the trunk and the crown"):
+		return
+	check_near(plant.height, 2.0, 1e-3, "as tall as the trunk: the 3 m shadow proxy is not drawn")
+	var box: int = ScenePlant.triangle_count(BoxMesh.new())
+	check_eq(ScenePlant.triangle_count(plant.mesh_level_1[0]), 2 * box, "the trunk and the crown, not the proxy")
+	var warnings: String = "\n".join(take_warnings())
+	for expected: String in [
+		"ShadowProxy: it only casts a shadow (a shadow proxy); left out",
+		"Crown: its material_overlay is not carried",
+		"Crown: its transparency (0.50) is not carried",
+		"Crown: it casts no shadow in the scene",
+		"Lamp: a OmniLight3D is not carried into a field's plants; left out",
+	]:
+		check(warnings.contains(expected), "named: %s (%s)" % [expected, warnings])
+
+
 ## A skinned mesh (as glTF plants with an armature for wind come) in the pose its skeleton holds:
 ## a 1 m box bound to one bone posed 1 m up makes a plant 2 m tall (unposed: 1 m).
 func test_a_skinned_mesh_is_taken_in_its_pose() -> void:
