@@ -35,6 +35,7 @@ HEADLESS_TESTS=(test_addon test_settings test_budget test_scene_import '!test_bu
   '!test_scene_plant.test_each_test_plants_impostor_*' '!test_scene_plant.test_each_test_plants_lone_*'
   '!test_scene_plant.test_empty_slots_of_a_plant_drawn_*'
   '!test_scene_plant.test_a_field_of_each_test_plant_*' '!test_scene_plant.test_a_thin_plants_far_impostor_*'
+  '!test_scene_plant.test_a_dense_plants_impostors_*' '!test_field.test_a_plant_of_fewer_parts_*'
   '!test_field.test_buffers_reach_the_rendering_server' '!test_field.test_near_plants_cast_*'
   '!test_field.test_every_plant_is_drawn_exactly_once_*'
   '!test_field.test_merged_far_tiles_draw_each_place_once_*' '!test_species.test_a_hilly_field_*')
