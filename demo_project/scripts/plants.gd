@@ -30,8 +30,8 @@ static func legend(host: Node) -> Dictionary:
 			push_error("demo: cannot make a plant of %s" % SCENES[symbol])
 			continue
 		plant.flutter = FLUTTER
-		# The maple's impostor shadows are lighter than its branches' (docs/plants.md): its near
-		# plants cast from their meshes.
+		# The maple's impostor shadows are as dark as its meshes', their specks elsewhere
+		# (docs/plants.md): its near plants cast from their meshes' own specks.
 		plant.impostor_shadows = symbol != "t"
 		var baked_name: String = "%s_%s" % [plant.name, _fingerprint(SCENES[symbol])]
 		if not _load_baked(plant, baked_name):

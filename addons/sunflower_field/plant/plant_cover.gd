@@ -45,16 +45,6 @@ static func empty(bounds: AABB) -> Dictionary:
 	return {"bounds": bounds, "cell": cell, "axes": axes, "corners": corners, "sides": sides, "grids": grids}
 
 
-## A copy of [param cover] that can be drawn on without changing it.
-static func copied(cover: Dictionary) -> Dictionary:
-	var grids: Array[PackedByteArray] = []
-	for grid: PackedByteArray in cover.grids:
-		grids.append(grid.duplicate())
-	var out: Dictionary = cover.duplicate()
-	out.grids = grids
-	return out
-
-
 ## Draws a surface's triangles ([param arrays]) into [param cover]'s grids, where [param mask] (its
 ## material's [method cut_out]) is not cut out.
 static func draw(cover: Dictionary, arrays: Array, mask: Dictionary) -> void:

@@ -326,8 +326,10 @@ static func _append(merged: Dictionary, arrays: Array, transform: Transform3D) -
 ## Levels 2 and 3 of [param mesh] ([code]mesh_pieces.gd[/code]): each surface of foliage cards keeps
 ## what makes the level [constant LEVEL_SHARES] of the whole mesh ([constant SMALL_PLANT_SHARES] for a
 ## small plant; at least [constant LEAST_CARD_SHARES]
-## of its cards), grown until the level covers what level 1 covers ([code]plant_cover.gd[/code]; to the
-## area of all when there are more than [constant COVER_CARD_TRIANGLES] card triangles); any
+## of its cards), grown until they cover what level 1's cards cover ([code]plant_cover.gd[/code]; to
+## the area of all when there are more than [constant COVER_CARD_TRIANGLES] card triangles: not to the
+## cover of all, which made up for the twigs the level dropped with leaves, a twiggy tree's far levels
+## greener); any
 ## other surface is simplified to about [constant LEVEL_SHARES] of its triangles, by the engine's
 ## simplifier where that keeps [constant AREA_KEPT] of its area, else by dropping its smallest pieces
 ## (twigs), whichever keeps more area.
@@ -346,16 +348,16 @@ static func _simplified(mesh: ArrayMesh) -> Array:
 	# The cover is measured where the cards are few enough for it to take a moment.
 	var measured: bool = card_triangles > 0 and card_triangles <= COVER_CARD_TRIANGLES
 	var masks: Array[Dictionary] = []  # per surface: where its texture is cut out
-	var whole: Dictionary = PlantCover.empty(bounds)
+	var leaves: Dictionary = PlantCover.empty(bounds)  # what level 1's cards cover
 	for surface: int in mesh.get_surface_count() if measured else 0:
 		masks.append(PlantCover.cut_out(mesh.surface_get_material(surface)))
-		PlantCover.draw(whole, pieces[surface].arrays, masks[-1])
+		if pieces[surface].are_cards():
+			PlantCover.draw(leaves, pieces[surface].arrays, masks[-1])
 	importer.generate_lods(NORMAL_MERGE_ANGLE, NORMAL_SPLIT_ANGLE, [])
 	var triangles: int = triangle_count(mesh)
 	var shares: Array[float] = LEVEL_SHARES if triangles >= SMALL_PLANT else SMALL_PLANT_SHARES
 	var out: Array = []
 	for level: int in [1, 2]:
-		var others: Dictionary = PlantCover.empty(bounds)  # what the surfaces not of cards cover
 		var chosen: Array = []  # per surface: its arrays, or null for cards
 		var others_kept: int = 0
 		for surface: int in importer.get_surface_count():
@@ -365,15 +367,13 @@ static func _simplified(mesh: ArrayMesh) -> Array:
 			var arrays: Array = _simpler_surface(importer, surface, pieces[surface], shares[level])
 			chosen.append(arrays)
 			others_kept += (arrays[Mesh.ARRAY_INDEX] as PackedInt32Array).size() / 3
-			if measured:
-				PlantCover.draw(others, arrays, masks[surface])
 		var card_share: float = (
 			clampf((shares[level] * triangles - others_kept) / card_triangles, LEAST_CARD_SHARES[level], shares[level])
 			if card_triangles > 0
 			else 1.0
 		)
 		var growth: float = (
-			_cover_growth(pieces, masks, card_share, bounds, others, PlantCover.covered(whole)) if measured else 1.0
+			_cover_growth(pieces, masks, card_share, bounds, PlantCover.covered(leaves)) if measured else 1.0
 		)
 		var simpler: ArrayMesh = ArrayMesh.new()
 		var simplified: bool = false
@@ -423,17 +423,16 @@ static func _simpler_surface(importer: ImporterMesh, surface: int, pieces: MeshP
 
 
 ## How much more than to their area the cards of [param pieces] kept at [param share] grow for the
-## level (with [param others], what its other surfaces cover) to cover [param target] cells, each
-## surface cut out by its [param masks]: found by bisection between a quarter and twice (more than
-## once where the twigs the level dropped covered some of it).
+## level to cover [param target] cells, each surface cut out by its [param masks]: found by bisection
+## between a quarter and twice (less than once where the cards overlap less once fewer).
 static func _cover_growth(
-	pieces: Array[MeshPieces], masks: Array[Dictionary], share: float, bounds: AABB, others: Dictionary, target: int
+	pieces: Array[MeshPieces], masks: Array[Dictionary], share: float, bounds: AABB, target: int
 ) -> float:
 	var low: float = 0.25
 	var high: float = 2.0
 	for step: int in COVER_STEPS:
 		var middle: float = sqrt(low * high)
-		var cover: Dictionary = PlantCover.copied(others)
+		var cover: Dictionary = PlantCover.empty(bounds)
 		for surface: int in pieces.size():
 			if pieces[surface].are_cards():
 				var thin: Array = pieces[surface].cards_thinned(

@@ -25,7 +25,11 @@ func after_each() -> void:
 ## Generated levels thin a plant's foliage cards: mesh 2 draws at most 55 % and mesh 3 at most 30 %
 ## of mesh 1's triangles for each test plant of 1 000 or more (the maple, the bush), a plant of a
 ## few dozen cards (the grass clump, a bush of 36 cards) thins too, and each level, seen alone from
-## where it begins (45° above, no shadows), covers within ±10 % of the pixels mesh 1 covers there.
+## where it begins (45° above, no shadows), shows within ±10 % of the leaf-green pixels mesh 1 shows
+## there, and covers at least 0.8 and at most 1.1 of the pixels it covers: the twigs the simplifier
+## drops are not made up for by bigger leaves (grown to the cover of all, the maple's mesh 3 showed
+## 1.37 times mesh 1's leaf green, a weeping willow's 2.2 times: far trees turned greener; grown to
+## their own cover, 0.98, and the maple's mesh 3 covers 0.86).
 func test_generated_levels_thin_the_cards_and_keep_the_cover() -> void:
 	var scenes: Dictionary = {"card_bush": _card_bush()}
 	for file: String in ScenePlantTests.TEST_PLANTS:
@@ -62,29 +66,43 @@ func test_generated_levels_thin_the_cards_and_keep_the_cover() -> void:
 		for level: int in [1, 2]:
 			var begins: float = field.lod_distances[level - 1] * plant.lod_scale_used()
 			camera.look_at_from_position(middle + Vector3(0.0, 1.0, 1.0).normalized() * begins, middle)
-			var covered: Array[float] = []
+			var seen: Array[Vector3] = []  # pixels covered and leaf green, mesh 1's then the level's
 			for drawn: int in [0, level]:
 				field.force_lod = drawn
 				field.advance(0.0)
 				await frames(3)
 				var image: Image = tree.root.get_viewport().get_texture().get_image()
 				image.save_png(artifact_path("thinned_%s_mesh%d_at_mesh%d.png" % [plant_name, drawn + 1, level + 1]))
-				covered.append(Picture.covered_green_light(image).x)
-			var cover: float = covered[1] / maxf(covered[0], 1.0)
-			covers.append("%.2f" % cover)
+				seen.append(Picture.covered_green_light(image))
+			var cover: float = seen[1].x / maxf(seen[0].x, 1.0)
+			var green: float = seen[1].y / maxf(seen[0].y, 1.0)
+			covers.append("%.2f / %.2f" % [green, cover])
 			check(
-				absf(cover - 1.0) <= 0.1,
+				absf(green - 1.0) <= 0.1,
 				(
-					"%s: mesh %d covers %.2f of mesh 1's pixels (%d of %d) from %.1f m, where it begins; within ±10 %%"
-					% [plant_name, level + 1, cover, covered[1], covered[0], begins]
+					(
+						"%s: mesh %d shows %.2f of mesh 1's leaf-green pixels (%d of %d) from %.1f m, where it begins;"
+						+ " within ±10 %%"
+					)
+					% [plant_name, level + 1, green, seen[1].y, seen[0].y, begins]
 				)
 			)
-		figures.append("%s %d / %d / %d, cover %s" % ([plant_name] + triangles + [" / ".join(covers)]))
+			check(
+				cover >= 0.8 and cover <= 1.1,
+				(
+					"%s: mesh %d covers %.2f of mesh 1's pixels (%d of %d) from %.1f m; 0.8–1.1"
+					% [plant_name, level + 1, cover, seen[1].x, seen[0].x, begins]
+				)
+			)
+		figures.append("%s %d / %d / %d, %s" % ([plant_name] + triangles + [", ".join(covers)]))
 		stage.free()
 		stage = null
 	print(
 		(
-			"     triangles at mesh 1 / 2 / 3, and the cover of mesh 2 / 3 of mesh 1's where each begins: %s"
+			(
+				"     triangles at mesh 1 / 2 / 3, and the leaf green / cover of mesh 2, then 3, of mesh 1's where"
+				+ " each begins: %s"
+			)
 			% "; ".join(figures)
 		)
 	)
