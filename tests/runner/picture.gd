@@ -130,6 +130,11 @@ func grown(inside: PackedByteArray, by: int) -> PackedByteArray:
 	return out
 
 
+## The mean luminance of [param ours] over [param inside] (a region) against [param theirs]'.
+func brightness_of(ours: Image, theirs: Image, inside: PackedByteArray) -> float:
+	return mean_in(luminance(ours), inside) / mean_in(luminance(theirs), inside)
+
+
 ## The mean of [param picture] over [param inside] (a region); NAN when it is empty.
 func mean_in(picture: PackedFloat32Array, inside: PackedByteArray) -> float:
 	var sum: float = 0.0

@@ -362,8 +362,7 @@ func _check_drawn_once_along(path: Array[Vector3]) -> Vector2i:
 		var below: int = 0  # plants a drawn tile holds whose distance gives them a level below it
 		for node: MultiMeshInstance3D in _field_nodes():
 			var rid: RID = node.multimesh.get_rid()
-			var visible: int = RenderingServer.multimesh_get_visible_instances(rid)
-			var instances: int = visible if visible >= 0 else RenderingServer.multimesh_get_instance_count(rid)
+			var instances: int = _drawn(node)
 			var tile: bool = node.name.begins_with("FarTile")
 			var shown: bool = node.visible and _in_visibility_range(node, stop) and not _hidden_by_parent(node, stop)
 			if instances == 0 or not (shown or tile):

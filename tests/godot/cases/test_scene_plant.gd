@@ -651,14 +651,7 @@ func test_a_dense_plants_impostors_in_the_sun_are_as_bright_as_its_meshes() -> v
 	var centre: Vector3 = Vector3(2.5 * cell, 0.0, 2.5 * cell)
 	var staged: Stage = Stage.new(tree.root, 400.0, centre)
 	stage = staged.root
-	var field: SunflowerField = SunflowerField.new()
-	field.plant = plant
-	field.cell_size = cell
-	field.map = Maps.filled(5, 5, "user://dense_patch.field")
-	field.wind_power = 0.0
-	stage.add_child(field)
-	field.finish_build()
-	field.set_process(false)
+	var field: SunflowerField = _calm_field(plant, cell, 5, "user://dense_patch.field")
 	var camera: Camera3D = Camera3D.new()
 	stage.add_child(camera)
 	var away: float = 1.25 * plant.lod_scale_used() * SunflowerField.DEFAULT_LOD_DISTANCES[2]
@@ -676,10 +669,7 @@ func test_a_dense_plants_impostors_in_the_sun_are_as_bright_as_its_meshes() -> v
 		picture.luminance(await _field_picture(field, -1, "dense_patch_alone"))
 	)
 	staged.show_scenery(true)
-	var around: PackedByteArray = picture.grown(inside, BRIGHTNESS_GROWTH)
-	var brightness: float = (
-		picture.mean_in(picture.luminance(auto), around) / picture.mean_in(picture.luminance(mesh_1), around)
-	)
+	var brightness: float = picture.brightness_of(auto, mesh_1, picture.grown(inside, BRIGHTNESS_GROWTH))
 	print(
 		"     bush patch %.1f m away at 45°, in the sun: impostors' brightness %.3f of the meshes'" % [away, brightness]
 	)
@@ -707,6 +697,21 @@ func test_a_field_of_each_test_plant_looks_like_its_meshes() -> void:
 	tree.root.size = window
 
 
+## A calm field of [param plant] on [member stage], [param cells] × [param cells] cells of
+## [param cell] metres (its map said read from [param map_path]), built and not processed (the test
+## advances it).
+func _calm_field(plant: SunflowerPlant, cell: float, cells: int, map_path: String) -> SunflowerField:
+	var field: SunflowerField = SunflowerField.new()
+	field.plant = plant
+	field.cell_size = cell
+	field.map = Maps.filled(cells, cells, map_path)
+	field.wind_power = 0.0
+	stage.add_child(field)
+	field.finish_build()
+	field.set_process(false)
+	return field
+
+
 func _compare_field(plant_name: String, plant: SunflowerPlant, window: Vector2i) -> void:
 	var cell: float = maxf(0.5, plant.spacing_metres())
 	var impostors_from: float = SunflowerField.DEFAULT_LOD_DISTANCES[2]
@@ -715,14 +720,7 @@ func _compare_field(plant_name: String, plant: SunflowerPlant, window: Vector2i)
 	var staged: Stage = Stage.new(tree.root, side * 4.0, Vector3(side * 0.5, 0.0, side * 0.5))
 	stage = staged.root
 	plant.impostor_shadows = not plant_name in MESH_SHADOWS
-	var field: SunflowerField = SunflowerField.new()
-	field.plant = plant
-	field.cell_size = cell
-	field.map = Maps.filled(cells, cells, "user://scene_plant_field.field")
-	field.wind_power = 0.0
-	stage.add_child(field)
-	field.finish_build()
-	field.set_process(false)
+	var field: SunflowerField = _calm_field(plant, cell, cells, "user://scene_plant_field.field")
 	var camera: Camera3D = Camera3D.new()
 	camera.far = side * 4.0
 	stage.add_child(camera)
@@ -773,11 +771,7 @@ func _compare_field(plant_name: String, plant: SunflowerPlant, window: Vector2i)
 		var meshes_black: Image = await _impostors_alone(staged, field, plant, "%s_%s_impostors" % [plant_name, view])
 		var inside: PackedByteArray = picture.region(picture.luminance(meshes_black))
 		var around: PackedByteArray = picture.grown(inside, BRIGHTNESS_GROWTH * samples / FIELD_SAMPLES_A_SIDE)
-		var brightness: float = (
-			(picture.mean_in(picture.luminance(auto), around) / picture.mean_in(picture.luminance(mesh_1), around))
-			if inside.count(1) > 0
-			else 1.0
-		)
+		var brightness: float = picture.brightness_of(auto, mesh_1, around) if inside.count(1) > 0 else 1.0
 		# Leaf green where the impostors are drawn (grown as for the brightness), ours against the meshes':
 		# at least 0.85 of theirs from 40 m outside and at 45° (the far maple's filtered views mixed each
 		# pixel's leaf and twig: 0.82 at 45° drawn at 1 280 × 720; one texel of one view a pixel where it
