@@ -43,6 +43,7 @@ const NodeSpace: GDScript = preload("node_space.gd")
 const MeshPieces: GDScript = preload("mesh_pieces.gd")
 const PlantCover: GDScript = preload("plant_cover.gd")
 const CardSlices: GDScript = preload("card_slices.gd")
+const SurfaceTangents: GDScript = preload("surface_tangents.gd")
 
 
 ## The scene's three mesh levels as ArrayMeshes (null where the scene has nothing to draw), with
@@ -237,6 +238,7 @@ static func _merge(pieces: Array[Dictionary], problems: PackedStringArray) -> Ar
 					)
 				)
 				continue
+			arrays = SurfaceTangents.filled(arrays)
 			var material: Material = piece.materials[surface]
 			var format: Array = MeshPieces.VERTEX_ARRAYS.map(func(kind: int) -> bool: return arrays[kind] != null)
 			var group: Dictionary = {}

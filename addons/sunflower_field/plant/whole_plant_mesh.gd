@@ -13,6 +13,7 @@ extends RefCounted
 const PARTS_SHADER: Shader = preload("../shaders/plant_parts.gdshader")
 const WHOLE_SHADER: Shader = preload("../shaders/plant_whole.gdshader")
 const PlantMaterial: GDScript = preload("plant_material.gd")
+const SurfaceTangents: GDScript = preload("surface_tangents.gd")
 ## The vertex arrays a merged surface keeps (the surfaces merged into it must all have the same).
 const KEPT: Array[int] = [Mesh.ARRAY_VERTEX, Mesh.ARRAY_NORMAL, Mesh.ARRAY_TANGENT, Mesh.ARRAY_COLOR, Mesh.ARRAY_TEX_UV]
 
@@ -46,7 +47,7 @@ static func merge(
 			if group.is_empty():
 				group = {"material": material, "arrays": empty_arrays(), "present": []}
 				groups.append(group)
-			if not _append(group, parts[part].surface_get_arrays(surface), part):
+			if not _append(group, SurfaceTangents.filled(parts[part].surface_get_arrays(surface)), part):
 				return null
 	var mesh: ArrayMesh = ArrayMesh.new()
 	for group: Dictionary in groups:

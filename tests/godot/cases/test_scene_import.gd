@@ -416,3 +416,48 @@ func _lower_colour_share(image: Image) -> float:
 			counts.x += 1.0 if pixel.r > 0.8 and pixel.g > 0.7 and pixel.b < 0.3 else 0.0
 			counts.y += 1.0 if pixel.b > 0.8 and pixel.r < 0.2 else 0.0
 	return counts.y / maxf(counts.x + counts.y, 1.0)
+
+
+## A surface of positions alone (a mesh made in code) gets tangents in the plant's meshes, drawn in
+## levels or whole (and a part of such a surface drawn whole): the plant's shaders bend TANGENT, and
+## the engine warned at every draw of a plant mesh without them (23 times in one run of the levels
+## test, whose card bush has no normals). The engine gives a surface with normals a tangent itself.
+func test_a_surface_without_normals_gets_tangents_in_the_plant() -> void:
+	var blade: Array = []
+	blade.resize(Mesh.ARRAY_MAX)
+	blade[Mesh.ARRAY_VERTEX] = PackedVector3Array([Vector3(-0.1, 0, 0), Vector3(0.1, 0, 0), Vector3(0, 1, 0)])
+	var mesh: ArrayMesh = ArrayMesh.new()
+	mesh.add_surface_from_arrays(Mesh.PRIMITIVE_TRIANGLES, blade)
+	mesh.surface_set_material(0, StandardMaterial3D.new())
+	var root: Node3D = _root()
+	var instance: MeshInstance3D = MeshInstance3D.new()
+	instance.name = "Blade"
+	instance.mesh = mesh
+	root.add_child(instance)
+	var plant: SunflowerPlant = SunflowerPlant.from_scene(Scenes.packed(root))
+	if not check(plant != null, "a plant"):
+		return
+	var meshes: Dictionary = {}  # each mesh level, and the mesh it is drawn whole with
+	for level: int in 3:
+		meshes["mesh %d" % (level + 1)] = plant.get("mesh_level_%d" % (level + 1))[0]
+		meshes["mesh %d drawn whole" % (level + 1)] = plant.whole_mesh(level)
+	var own: SunflowerPlant = SunflowerPlant.new()  # the blade given as a part, not by a scene
+	own.mesh_level_1 = [mesh, null, null]
+	meshes["a part of positions alone drawn whole"] = own.whole_mesh(0)
+	for what: String in meshes:
+		var drawn: Mesh = meshes[what]
+		if not check(drawn != null, "%s is made" % what):
+			continue
+		for surface: int in drawn.get_surface_count():
+			var arrays: Array = drawn.surface_get_arrays(surface)
+			var count: int = (arrays[Mesh.ARRAY_VERTEX] as PackedVector3Array).size()
+			var tangents: Variant = arrays[Mesh.ARRAY_TANGENT]
+			if not check(
+				tangents != null and (tangents as PackedFloat32Array).size() == 4 * count,
+				"%s, surface %d: a tangent for each of its %d vertices" % [what, surface, count]
+			):
+				continue
+			var least: float = INF
+			for k: int in count:
+				least = minf(least, Vector3(tangents[4 * k], tangents[4 * k + 1], tangents[4 * k + 2]).length())
+			check_near(least, 1.0, 0.01, "%s, surface %d: unit tangents" % [what, surface])
