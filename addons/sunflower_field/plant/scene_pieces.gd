@@ -3,7 +3,8 @@ extends RefCounted
 ## What a plant scene draws, as the editor shows it, in pieces for [code]scene_plant.gd[/code] to
 ## merge: each visible [MeshInstance3D] (its blend shapes at the node's weights), each instance of a
 ## [MultiMeshInstance3D], and each CSG shape at the top of its tree (its baked mesh), placed by the
-## node transforms relative to the scene's root ([code]top_level[/code] nodes where they stand), with
+## node transforms relative to the scene's root, in the root's rotation and scale, from its origin
+## ([code]top_level[/code] nodes where they stand), with
 ## the materials it shows and the mesh level it belongs to: a level-of-detail suffix in its name
 ## ([code]_LOD0[/code], [code]-lod1[/code] …) or, for Godot's own manual levels of detail, its
 ## [member GeometryInstance3D.visibility_range_begin]/[code]_end[/code] (the nearest range level 1).
@@ -27,7 +28,7 @@ static var _instance_uniform: RegEx
 ## appended to [param problems].
 static func of(root: Node, problems: PackedStringArray) -> Array[Dictionary]:
 	var pieces: Array[Dictionary] = []
-	_collect(root, root, Transform3D.IDENTITY, pieces, problems)
+	_collect(root, root, _root_frame(root), pieces, problems)
 	_levels_from_suffixes(pieces, problems)
 	if not pieces.any(func(piece: Dictionary) -> bool: return piece.level >= 0):
 		_levels_from_ranges(pieces, problems)
@@ -35,6 +36,13 @@ static func of(root: Node, problems: PackedStringArray) -> Array[Dictionary]:
 		piece.erase("suffix")
 		piece.erase("range")
 	return pieces
+
+
+## The frame a plant's pieces are placed in: [param root]'s rotation and scale (the editor shows the
+## scene with them, and an instance of it starts with them: a model turned upright or scaled to metres
+## by its root), not its place (the root's origin is the plant's root).
+static func _root_frame(root: Node) -> Transform3D:
+	return Transform3D((root as Node3D).basis, Vector3.ZERO) if root is Node3D else Transform3D.IDENTITY
 
 
 ## The level of detail a node's name marks (0, 1, 2 …), or -1 for none.
@@ -53,8 +61,10 @@ static func _collect(
 		var spatial: Node3D = node as Node3D
 		if not spatial.visible:
 			return
-		if node != root:  # the plant's root stands at the scene root's origin
-			here = spatial.transform if spatial.top_level else to_root * spatial.transform
+		if node != root and spatial.top_level:  # where it stands, from the scene root's origin
+			here = Transform3D(Basis.IDENTITY, -(root as Node3D).position) * spatial.transform
+		elif node != root:
+			here = to_root * spatial.transform
 	var path: String = String(root.get_path_to(node)) if node != root else String(root.name)
 	if node is GeometryInstance3D:
 		_add_geometry(node as GeometryInstance3D, path, here, pieces, problems)

@@ -461,3 +461,37 @@ func test_a_surface_without_normals_gets_tangents_in_the_plant() -> void:
 			for k: int in count:
 				least = minf(least, Vector3(tangents[4 * k], tangents[4 * k + 1], tangents[4 * k + 2]).length())
 			check_near(least, 1.0, 0.01, "%s, surface %d: unit tangents" % [what, surface])
+
+
+## The scene root's own rotation and scale are the plant's, as the editor shows the scene (and as an
+## instance of it starts): a model turned upright by its root (modelled Z-up) stands up, one scaled by
+## its root (an import in centimetres, its root scaled 0.01) has its size; the root's origin is the
+## plant's root, wherever the root stands (a top_level node's place is measured from it). (Taken
+## without the root's transform, the first plant was 0.2 m tall, lying down, the second 200 m.)
+func test_the_scene_roots_rotation_and_scale_are_the_plants() -> void:
+	var upright: Node3D = _root()
+	upright.rotation = Vector3(-PI / 2.0, 0.0, 0.0)  # +Z up in the model, +Y up in the scene
+	upright.position = Vector3(5.0, 2.0, 0.0)
+	upright.add_child(_box_node("Trunk", Vector3(0.4, 0.4, 3.0), Vector3(0.0, 0.0, 1.5)))
+	var in_centimetres: Node3D = _root()
+	in_centimetres.scale = Vector3(0.01, 0.01, 0.01)
+	in_centimetres.add_child(_box_node("Trunk", Vector3(40.0, 200.0, 40.0), Vector3(0.0, 100.0, 0.0)))
+	for case: Array in [["a root turned upright", upright, 3.0, 0.4], ["a root scaled 0.01", in_centimetres, 2.0, 0.4]]:
+		var plant: SunflowerPlant = SunflowerPlant.from_scene(Scenes.packed(case[1]))
+		if not check(plant != null, "%s: a plant" % case[0]):
+			continue
+		var box: AABB = plant.mesh_level_1[0].get_aabb()
+		check_near(plant.height, case[2], 1e-3, "%s: the plant's height" % case[0])
+		check_near(box.position.y, 0.0, 1e-3, "%s: its base at its root" % case[0])
+		check_near(box.size.x, case[3], 1e-3, "%s: its width" % case[0])
+	# A top_level node stands where it stands, measured from the root's origin.
+	var moved: Node3D = _root()
+	moved.position = Vector3(5.0, 1.0, 0.0)
+	var free: MeshInstance3D = _box_node("Free", Vector3(0.4, 2.0, 0.4), Vector3(5.0, 2.0, 0.0))
+	free.top_level = true
+	moved.add_child(free)
+	var standing: SunflowerPlant = SunflowerPlant.from_scene(Scenes.packed(moved))
+	if check(standing != null, "a root moved, a top_level node: a plant"):
+		var box: AABB = standing.mesh_level_1[0].get_aabb()
+		check_near(box.get_center().x, 0.0, 1e-3, "a top_level node 5 m along, as its root: at the plant's root")
+		check_near(box.position.y, 0.0, 1e-3, "a top_level node from 1 m up, as its root: its base at the root")
