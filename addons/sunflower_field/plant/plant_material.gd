@@ -7,9 +7,9 @@ extends RefCounted
 ## roughness and metallic (and their textures and channels), specular, a normal map and its scale,
 ## emission (colour, energy multiplier, texture and operator; not with physical light units),
 ## back-light (colour and texture: light let through a leaf from behind), ambient occlusion (texture,
-## channel, light affect), alpha scissor, vertex colours as albedo and their encoding, back faces
-## culled or not (the plant material draws both). A material with anything else set (other textures,
-## anything read from UV2, transparency other than alpha scissor, another shading mode, a next
+## channel, light affect), alpha scissor or hash, vertex colours as albedo and their encoding, back
+## faces culled or not (the plant material draws both). A material with anything else set (other
+## textures, anything read from UV2, blended transparency, another shading mode, a next
 ## pass...) is kept as it is: that part is drawn by its own material, without fades, and its plant
 ## part by part. A spatial ShaderMaterial of your own is kept too, drawn by a copy whose shader fades
 ## ([method fading]) and, when its plant is drawn whole, bends ([method bending]). (The far impostors
@@ -47,6 +47,7 @@ const CARRIED: PackedStringArray = [
 	"ao_light_affect",
 	"transparency",
 	"alpha_scissor_threshold",
+	"alpha_hash_scale",
 	"vertex_color_use_as_albedo",
 	"vertex_color_is_srgb",
 	"cull_mode",
@@ -123,7 +124,12 @@ static func adopt(material: Material, has_vertex_colours: bool) -> ShaderMateria
 	var standard: StandardMaterial3D = material as StandardMaterial3D
 	if standard == null or not _only_carried(standard):
 		return null
-	if standard.transparency not in [BaseMaterial3D.TRANSPARENCY_DISABLED, BaseMaterial3D.TRANSPARENCY_ALPHA_SCISSOR]:
+	var cuts: Array[int] = [
+		BaseMaterial3D.TRANSPARENCY_DISABLED,
+		BaseMaterial3D.TRANSPARENCY_ALPHA_SCISSOR,
+		BaseMaterial3D.TRANSPARENCY_ALPHA_HASH,
+	]
+	if standard.transparency not in cuts:
 		return null
 	if standard.cull_mode == BaseMaterial3D.CULL_FRONT:
 		return null
@@ -168,6 +174,8 @@ static func adopt(material: Material, has_vertex_colours: bool) -> ShaderMateria
 		adopted.set_shader_parameter(&"ao_light_affect", standard.ao_light_affect)
 	var scissor: bool = standard.transparency == BaseMaterial3D.TRANSPARENCY_ALPHA_SCISSOR
 	adopted.set_shader_parameter(&"alpha_scissor", standard.alpha_scissor_threshold if scissor else 0.0)
+	var hashed: bool = standard.transparency == BaseMaterial3D.TRANSPARENCY_ALPHA_HASH
+	adopted.set_shader_parameter(&"alpha_hash_scale", maxf(standard.alpha_hash_scale, 1e-3) if hashed else 0.0)
 	adopted.set_shader_parameter(&"vertex_colour_is_srgb", standard.vertex_color_is_srgb)
 	return adopted
 
