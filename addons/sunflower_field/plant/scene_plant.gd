@@ -175,8 +175,8 @@ static func refusal(mesh: Mesh) -> String:
 	return ""
 
 
-## Where [param mesh] (a plant's merged level 1) stands off its root, or "": wholly below it, or
-## starting above it by more than its own height.
+## Where [param mesh] (a plant's merged level 1) stands off its root, or "": wholly below it, off to
+## the side of it by more than half its own width, or starting above it by more than its own height.
 static func placement_problem(mesh: Mesh) -> String:
 	var box: AABB = mesh.get_aabb()
 	if box.end.y <= 0.0:
@@ -186,6 +186,16 @@ static func placement_problem(mesh: Mesh) -> String:
 				+ " move the scene's meshes up so that its base is at the root"
 			)
 			% [box.position.y, box.end.y]
+		)
+	var nearest: Vector2 = Vector2(clampf(0.0, box.position.x, box.end.x), clampf(0.0, box.position.z, box.end.z))
+	if nearest.length() > 0.5 * maxf(box.size.x, box.size.z):
+		return (
+			(
+				"it stands %.2f m from its root across the ground (its middle at x %.2f, z %.2f m), more than"
+				+ " half its own width (%.2f m): its plants would stand off their cells, and their spacing"
+				+ " follows its reach from the root; move the scene's meshes over the root"
+			)
+			% [nearest.length(), box.get_center().x, box.get_center().z, maxf(box.size.x, box.size.z)]
 		)
 	if box.position.y > box.size.y:
 		return (

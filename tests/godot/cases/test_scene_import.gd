@@ -243,6 +243,24 @@ func test_a_plant_wholly_below_its_root_is_warned_about() -> void:
 	check(warned("stands wholly below its root"), "with what to fix")
 
 
+## A scene whose meshes stand off to the side of its root (modelled away from the origin, as a mesh
+## taken out of a larger layout can be) is made a plant, as the scene has it, with a warning saying
+## what to fix: its plants would stand off their cells, and its width, from the root, sets their
+## spacing (a 1 m box 20 m off became a plant 41 m wide without a word). A plant leaning over its
+## root, its base at the root, is not warned about.
+func test_a_plant_off_to_the_side_of_its_root_is_warned_about() -> void:
+	var aside: Node3D = _root()
+	aside.add_child(_box_node("Aside", Vector3(1.0, 2.0, 1.0), Vector3(20.0, 1.0, 0.0)))
+	check(SunflowerPlant.from_scene(Scenes.packed(aside)) != null, "a plant, as the scene has it")
+	check(warned("from its root across the ground"), "with what to fix")
+	var leaning: Node3D = _root()
+	var trunk: MeshInstance3D = _box_node("Trunk", Vector3(0.3, 4.0, 0.3), Vector3(1.0, 1.9, 0.0))
+	trunk.rotation = Vector3(0.0, 0.0, -0.5)  # its foot at the root, its top 2 m over
+	leaning.add_child(trunk)
+	check(SunflowerPlant.from_scene(Scenes.packed(leaning)) != null, "a leaning plant")
+	check(not warned("from its root across the ground"), "a plant leaning over its root is not warned about")
+
+
 ## Instance shader parameters a scene's nodes set (instance_shader_parameters/…) are the plant's:
 ## the field gives them to every node that draws its meshes, so a part tinted by its node is drawn
 ## in that tint (a shader whose default tint is red, the nodes' green); a node that sets another
