@@ -45,7 +45,7 @@ HEADLESS_TESTS=(test_addon test_settings test_budget test_scene_import '!test_bu
 # what each renderer stores differently, and a dense plant's impostors in the sun: the Compatibility
 # renderer finds where a pixel lies in the shadow from the vertices).
 # (Not the stumps': their shader path is plant_bend's, which every render test's plants draw with.)
-OPENGL_TESTS=(test_render 'test_bake.test_a_backlit_*' 'test_scene_plant.test_each_test_plants_lone_*'
+OPENGL_TESTS=(test_render test_plant_materials 'test_bake.test_a_backlit_*' 'test_scene_plant.test_each_test_plants_lone_*'
   'test_scene_plant.test_a_dense_*'
   '!test_render.test_cut_plants_leave_the_stumps_*')
 

@@ -11,8 +11,9 @@ extends RefCounted
 ## faces culled or not (the plant material draws both). A material with anything else set (other
 ## textures, anything read from UV2, blended transparency, another shading mode, a next
 ## pass...) is kept as it is: that part is drawn by its own material, without fades, and its plant
-## part by part. A spatial ShaderMaterial of your own is kept too, drawn by a copy whose shader fades
-## ([method fading]) and, when its plant is drawn whole, bends ([method bending]). (The far impostors
+## part by part. A surface with no material is drawn with the engine's default look
+## ([method _engine_default]). A spatial ShaderMaterial of your own is kept too, drawn by a copy whose
+## shader fades ([method fading]) and, when its plant is drawn whole, bends ([method bending]). (The far impostors
 ## are baked from the albedo, the light given off and the back-light of the parts drawn through the
 ## plant material.)
 
@@ -121,6 +122,8 @@ static func adopt_mesh(mesh: Mesh) -> Mesh:
 ## The plant material drawing [param material] as it looks on a surface with vertex colours
 ## ([param has_vertex_colours]) or without, or null when it cannot (see the script's description).
 static func adopt(material: Material, has_vertex_colours: bool) -> ShaderMaterial:
+	if material == null and not has_vertex_colours:
+		material = _engine_default()
 	var standard: StandardMaterial3D = material as StandardMaterial3D
 	if standard == null or not _only_carried(standard):
 		return null
@@ -178,6 +181,22 @@ static func adopt(material: Material, has_vertex_colours: bool) -> ShaderMateria
 	adopted.set_shader_parameter(&"alpha_hash_scale", maxf(standard.alpha_hash_scale, 1e-3) if hashed else 0.0)
 	adopted.set_shader_parameter(&"vertex_colour_is_srgb", standard.vertex_color_is_srgb)
 	return adopted
+
+
+## The look the engine gives a surface without a material (its default material's shader: albedo 0.6,
+## roughness 0.8, metallic 0.2), as a StandardMaterial3D the plant material carries over: a plant
+## made of meshes with no material (shapes put together in the editor) is drawn as its scene shows it,
+## and fades and bends. (A surface with vertex colours is kept: the engine's default does not show
+## them, the plant material would.)
+static func _engine_default() -> StandardMaterial3D:
+	var grey: StandardMaterial3D = StandardMaterial3D.new()
+	grey.albedo_color = Color(0.6, 0.6, 0.6)
+	if RenderingServer.get_current_rendering_method() != "gl_compatibility":
+		grey.albedo_color = grey.albedo_color.linear_to_srgb()  # a shader's ALBEDO is linear there
+	grey.roughness = 0.8
+	grey.metallic = 0.2
+	grey.resource_name = "the engine's default"
+	return grey
 
 
 ## A copy of [param material], a ShaderMaterial of your own, whose shader fades as the plant

@@ -8,7 +8,6 @@ const Picture: GDScript = preload("res://runner/picture.gd")
 const Stage: GDScript = preload("res://runner/stage.gd")
 const Maps: GDScript = preload("res://runner/maps.gd")
 const Dressing: GDScript = preload("res://runner/dressing.gd")
-const Scenes: GDScript = preload("res://runner/scenes.gd")
 const SHOT: String = "render_demo_field.png"
 ## A part shader of a user's own: flat red; FADE; marks where the cross-fade's one line goes.
 const OWN_SHADER: String = """shader_type spatial;
@@ -380,91 +379,6 @@ func test_plants_drawn_whole_look_as_drawn_part_by_part() -> void:
 	check(similarity > 0.98, "the same picture (SSIM %.4f)" % similarity)
 	check(difference < 0.004, "the same picture (mean difference %.4f)" % difference)
 	check(calls[0] < calls[1], "fewer draw calls drawn whole (%d against %d)" % calls)
-
-
-## A StandardMaterial3D with Alpha Hash (the engine's choice for foliage) is drawn through the plant
-## material, hashed as the engine hashes it: the plant is drawn whole (its levels cross-fade, it bends
-## in the wind), and a card whose alpha runs from 0 to 1 across it, seen close up, keeps as many
-## pixels, as bright, as the scene drawn plainly (each within ±10 %; on the Compatibility renderer,
-## which draws Alpha Hash opaque, half the pixels: the ramp's mean alpha). (Such a material was kept
-## as it was: its plant drawn part by part, without fades, leaning rigidly.)
-func test_an_alpha_hash_material_is_drawn_as_the_plant_material() -> void:
-	var ramp: Image = Image.create(32, 32, false, Image.FORMAT_RGBA8)
-	for y: int in 32:
-		for x: int in 32:
-			ramp.set_pixel(x, y, Color(0.3, 0.7, 0.2, (x + 0.5) / 32.0))
-	var leaf: StandardMaterial3D = StandardMaterial3D.new()
-	leaf.albedo_texture = ImageTexture.create_from_image(ramp)
-	leaf.transparency = BaseMaterial3D.TRANSPARENCY_ALPHA_HASH
-	leaf.cull_mode = BaseMaterial3D.CULL_DISABLED
-	var card: QuadMesh = QuadMesh.new()
-	card.material = leaf
-	var root: Node3D = Node3D.new()
-	root.name = "HashedCard"
-	var node: MeshInstance3D = MeshInstance3D.new()
-	node.name = "Leaf"
-	node.mesh = card
-	node.position = Vector3(0.0, 0.5, 0.0)
-	root.add_child(node)
-	var packed: PackedScene = Scenes.packed(root)
-	var plant: SunflowerPlant = SunflowerPlant.from_scene(packed)
-	if not check(plant != null and plant.drawn_whole(), "a plant drawn whole, through the plant material"):
-		return
-	plant.yaw_range = 0.0
-	for light: Node in scene.find_children("*", "DirectionalLight3D", true, false):
-		(light as DirectionalLight3D).shadow_enabled = false
-	var field: SunflowerField = SunflowerField.new()
-	field.plant = plant
-	field.map = Maps.filled(1, 1, "user://hashed_card.field")
-	field.wind_power = 0.0
-	field.lod_fade = 0.0
-	scene.add_child(field)
-	field.finish_build()
-	field.set_process(false)
-	field.force_lod = 0
-	field.advance(1.0)
-	var place: Vector3 = field.get_plant_info(0)["position"]
-	var plain: Node3D = packed.instantiate() as Node3D
-	plain.position = place
-	scene.add_child(plain)
-	var camera: Camera3D = Camera3D.new()
-	scene.add_child(camera)
-	camera.make_current()
-	camera.look_at_from_position(place + Vector3(0.0, 0.5, 1.6), place + Vector3(0.0, 0.5, 0.0))
-	var picture: Picture = Picture.new(640, 360)
-	var seen: Array[PackedFloat32Array] = []  # the background, then the scene, then the field
-	for shown: Node3D in [null, plain, field]:
-		plain.visible = shown == plain
-		field.visible = shown == field
-		await frames(4)
-		var name: String = "none" if shown == null else ("plain" if shown == plain else "field")
-		seen.append(_snapshot(picture, "render_alpha_hash_%s.png" % name))
-	var covered: Vector2 = Vector2.ZERO  # the pixels the card changes, the scene's then the field's
-	var light: Vector2 = Vector2.ZERO  # the luminance of those pixels
-	for i: int in seen[0].size():
-		for way: int in 2:
-			if absf(seen[way + 1][i] - seen[0][i]) > 0.02:
-				covered[way] += 1.0
-				light[way] += seen[way + 1][i]
-	var cover: float = covered.y / maxf(covered.x, 1.0)
-	var brightness: float = (light.y / maxf(covered.y, 1.0)) / maxf(light.x / maxf(covered.x, 1.0), 1e-6)
-	# The Compatibility renderer draws Alpha Hash opaque (godot#103094): there the scene shows the whole
-	# card, and the plant material, hashing as Forward+ does, keeps the ramp's mean alpha of it.
-	var expected: float = 0.5 if RenderingServer.get_current_rendering_method() == "gl_compatibility" else 1.0
-	print(
-		(
-			(
-				"     an Alpha Hash card drawn by the plant material: %.3f of the pixels of the scene drawn plainly (%d),"
-				+ " %.3f as bright"
-			)
-			% [cover, covered.x, brightness]
-		)
-	)
-	check(
-		absf(cover / expected - 1.0) <= 0.1,
-		"%.1f of the scene's card's pixels (%.3f of %d), ±10 %%" % [expected, cover, covered.x]
-	)
-	check(absf(brightness - 1.0) <= 0.1, "as bright as the scene's hashed card (%.3f)" % brightness)
 
 
 func test_plain_standard_materials_are_drawn_as_the_plant_material() -> void:
