@@ -62,7 +62,8 @@ static func _collect(
 		if not spatial.visible:
 			return
 		if node != root and spatial.top_level:  # where it stands, from the scene root's origin
-			here = Transform3D(Basis.IDENTITY, -(root as Node3D).position) * spatial.transform
+			var origin: Vector3 = (root as Node3D).position if root is Node3D else Vector3.ZERO
+			here = Transform3D(Basis.IDENTITY, -origin) * spatial.transform
 		elif node != root:
 			here = to_root * spatial.transform
 	var path: String = String(root.get_path_to(node)) if node != root else String(root.name)

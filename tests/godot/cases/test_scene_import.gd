@@ -513,3 +513,12 @@ func test_the_scene_roots_rotation_and_scale_are_the_plants() -> void:
 		var box: AABB = standing.mesh_level_1[0].get_aabb()
 		check_near(box.get_center().x, 0.0, 1e-3, "a top_level node 5 m along, as its root: at the plant's root")
 		check_near(box.position.y, 0.0, 1e-3, "a top_level node from 1 m up, as its root: its base at the root")
+	# A root that is no Node3D has no place: a top_level node below it stands where it stands.
+	var plain_root: Node = Node.new()
+	plain_root.name = "Plant"
+	var alone: MeshInstance3D = _box_node("Alone", Vector3(0.4, 2.0, 0.4), Vector3(0.0, 1.0, 0.0))
+	alone.top_level = true
+	plain_root.add_child(alone)
+	var under_node: SunflowerPlant = SunflowerPlant.from_scene(Scenes.packed(plain_root))
+	if check(under_node != null, "a root that is no Node3D, a top_level node: a plant"):
+		check_near(under_node.height, 2.0, 1e-3, "the top_level node under a plain Node root where it stands")
