@@ -120,26 +120,14 @@ static func adopt_mesh(mesh: Mesh) -> Mesh:
 
 
 ## The plant material drawing [param material] as it looks on a surface with vertex colours
-## ([param has_vertex_colours]) or without, or null when it cannot (see the script's description).
+## ([param has_vertex_colours]) or without, or null when it cannot (see the script's description and
+## [method not_carried]).
 static func adopt(material: Material, has_vertex_colours: bool) -> ShaderMaterial:
 	if material == null and not has_vertex_colours:
 		material = _engine_default()
+	if not material is StandardMaterial3D or not not_carried(material, has_vertex_colours).is_empty():
+		return null
 	var standard: StandardMaterial3D = material as StandardMaterial3D
-	if standard == null or not _only_carried(standard):
-		return null
-	var cuts: Array[int] = [
-		BaseMaterial3D.TRANSPARENCY_DISABLED,
-		BaseMaterial3D.TRANSPARENCY_ALPHA_SCISSOR,
-		BaseMaterial3D.TRANSPARENCY_ALPHA_HASH,
-	]
-	if standard.transparency not in cuts:
-		return null
-	if standard.cull_mode == BaseMaterial3D.CULL_FRONT:
-		return null
-	if standard.emission_enabled and ProjectSettings.get_setting(PHYSICAL_LIGHT_UNITS, false):
-		return null  # its energy then depends on emission_intensity too
-	if has_vertex_colours and not standard.vertex_color_use_as_albedo:
-		return null  # the shader multiplies vertex and instance colours: it cannot leave the first out
 	var adopted: ShaderMaterial = ShaderMaterial.new()
 	adopted.shader = PARTS_SHADER
 	adopted.resource_name = standard.resource_name
@@ -181,6 +169,76 @@ static func adopt(material: Material, has_vertex_colours: bool) -> ShaderMateria
 	adopted.set_shader_parameter(&"alpha_hash_scale", maxf(standard.alpha_hash_scale, 1e-3) if hashed else 0.0)
 	adopted.set_shader_parameter(&"vertex_colour_is_srgb", standard.vertex_color_is_srgb)
 	return adopted
+
+
+## What of [param material] on a surface with vertex colours ([param has_vertex_colours]) or without
+## keeps the plant material from drawing it, or "" when nothing does: the field then draws that part
+## with the plant material (a StandardMaterial3D, or no material) or a copy of your shader that fades
+## ([method fading]; a spatial ShaderMaterial). Otherwise the part is drawn by the material as it is,
+## without the levels' cross-fades, and its plant part by part (scene_plant.gd names it).
+static func not_carried(material: Material, has_vertex_colours: bool) -> String:
+	if material == null:
+		return "vertex colours, which the engine's default material does not show" if has_vertex_colours else ""
+	if material is ShaderMaterial:
+		var code: String = (material as ShaderMaterial).shader.code if (material as ShaderMaterial).shader else ""
+		if code.is_empty() or code.contains("plant_fade_discards") or _copyable(code):
+			return ""
+		return "its shader is not a spatial one, or includes a file by a relative path (a copy could not find it)"
+	var standard: StandardMaterial3D = material as StandardMaterial3D
+	if standard == null:
+		return "it is a %s (only StandardMaterial3D and ShaderMaterial are carried)" % material.get_class()
+	var other: String = _first_not_carried(standard)
+	if not other.is_empty():
+		return "its %s is set" % other
+	var cuts: Array[int] = [
+		BaseMaterial3D.TRANSPARENCY_DISABLED,
+		BaseMaterial3D.TRANSPARENCY_ALPHA_SCISSOR,
+		BaseMaterial3D.TRANSPARENCY_ALPHA_HASH,
+	]
+	if standard.transparency not in cuts:
+		return (
+			"it blends its alpha (transparency %s; Alpha Scissor and Alpha Hash are carried)"
+			% [["", "Alpha", "", "", "Alpha Depth Pre-Pass"][standard.transparency]]
+		)
+	if standard.cull_mode == BaseMaterial3D.CULL_FRONT:
+		return "it culls front faces"
+	if standard.emission_enabled and ProjectSettings.get_setting(PHYSICAL_LIGHT_UNITS, false):
+		return "it gives off light with physical light units on (its energy depends on emission_intensity too)"
+	if has_vertex_colours and not standard.vertex_color_use_as_albedo:
+		# The plant shader multiplies vertex and instance colours: it cannot leave the first out.
+		return "its surface has vertex colours it does not use as albedo"
+	return ""
+
+
+## For each material of [param meshes]' surfaces that the plant material cannot draw (each once), a
+## message naming it, why ([method not_carried]) and what follows.
+static func kept_materials(meshes: Array) -> PackedStringArray:
+	var messages: PackedStringArray = []
+	for mesh: Mesh in meshes:
+		for surface: int in mesh.get_surface_count() if mesh else 0:
+			var material: Material = mesh.surface_get_material(surface)
+			var why: String = not_carried(material, mesh.surface_get_format(surface) & Mesh.ARRAY_FORMAT_COLOR != 0)
+			if why.is_empty():
+				continue
+			var named: String = "no material"
+			if material:
+				named = (
+					"%s '%s'"
+					% [
+						material.get_class(),
+						material.resource_path.get_file() if material.resource_path else material.resource_name
+					]
+				)
+			var message: String = (
+				(
+					"%s: %s; the field draws that part with it as it is, without the levels' cross-fades, and the"
+					+ " plant part by part (it leans in the wind as one piece)"
+				)
+				% [named, why]
+			)
+			if message not in messages:
+				messages.append(message)
+	return messages
 
 
 ## The look the engine gives a surface without a material (its default material's shader: albedo 0.6,
@@ -378,13 +436,13 @@ static func regex(pattern: String) -> RegEx:
 	return _patterns[pattern]
 
 
-## Whether every stored property of [param material] other than [constant CARRIED] is as a new
-## StandardMaterial3D has it.
-static func _only_carried(material: StandardMaterial3D) -> bool:
+## The first stored property of [param material] other than [constant CARRIED] that is not as a new
+## StandardMaterial3D has it ("next_pass" for a next pass), or "" when there is none.
+static func _first_not_carried(material: StandardMaterial3D) -> String:
 	if _plain == null:
 		_plain = StandardMaterial3D.new()
 	if material.next_pass != null:
-		return false
+		return "next_pass"
 	for property: Dictionary in material.get_property_list():
 		var name: String = property.name
 		if property.usage & PROPERTY_USAGE_STORAGE == 0 or name in CARRIED or name.begins_with("resource_"):
@@ -392,5 +450,5 @@ static func _only_carried(material: StandardMaterial3D) -> bool:
 		if name == "script" or name == "next_pass":
 			continue
 		if material.get(name) != _plain.get(name):
-			return false
-	return true
+			return name
+	return ""

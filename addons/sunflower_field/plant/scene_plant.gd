@@ -44,6 +44,7 @@ const MeshPieces: GDScript = preload("mesh_pieces.gd")
 const PlantCover: GDScript = preload("plant_cover.gd")
 const CardSlices: GDScript = preload("card_slices.gd")
 const SurfaceTangents: GDScript = preload("surface_tangents.gd")
+const PlantMaterial: GDScript = preload("plant_material.gd")
 
 
 ## The scene's three mesh levels as ArrayMeshes (null where the scene has nothing to draw), with
@@ -73,6 +74,7 @@ static func levels_of(scene: PackedScene) -> Dictionary:
 				levels[level] = levels[level - 1]  # fewer variants than levels: the last repeats
 	else:
 		levels.append_array(_simplified(levels[0]))
+	problems.append_array(PlantMaterial.kept_materials(levels))
 	var bounds: AABB = levels[0].get_aabb() if levels[0] != null else AABB()
 	var bendable: Dictionary = {}  # a level's mesh -> it with its tall cards sliced (a mesh repeats)
 	for level: int in levels.size():

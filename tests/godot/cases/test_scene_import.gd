@@ -243,6 +243,46 @@ func test_a_plant_wholly_below_its_root_is_warned_about() -> void:
 	check(warned("stands wholly below its root"), "with what to fix")
 
 
+## A part whose material the plant material cannot draw is named, with what keeps it and what
+## follows (drawn as it is, without the levels' cross-fades, the plant part by part): a
+## StandardMaterial3D with a setting the plant material does not carry (rim), one that blends its
+## alpha; a plant of carried materials (alpha scissor, alpha hash, none) is not warned about. (Such a
+## plant leaned in the wind as one piece without a word.)
+func test_a_material_the_plant_material_cannot_draw_is_named() -> void:
+	var rim: StandardMaterial3D = StandardMaterial3D.new()
+	rim.resource_name = "Shiny bark"
+	rim.rim_enabled = true
+	var blended: StandardMaterial3D = Scenes.holed_leaves()
+	blended.resource_name = "Glassy leaves"
+	blended.transparency = BaseMaterial3D.TRANSPARENCY_ALPHA
+	var hashed: StandardMaterial3D = Scenes.holed_leaves()
+	hashed.transparency = BaseMaterial3D.TRANSPARENCY_ALPHA_HASH
+	for case: Array in [[rim, blended], [Scenes.holed_leaves(), hashed, null]]:
+		var root: Node3D = _root()
+		for k: int in case.size():
+			var node: MeshInstance3D = _box_node("Part%d" % k, Vector3(0.4, 1.0, 0.4), Vector3(0.0, 0.5 + k, 0.0))
+			node.material_override = case[k]
+			root.add_child(node)
+		check(SunflowerPlant.from_scene(Scenes.packed(root)) != null, "a plant, as the scene has it")
+		var named: PackedStringArray = take_warnings()
+		var kept: PackedStringArray = Array(named).filter(
+			func(warning: String) -> bool: return warning.contains("as it is, without the levels' cross-fades")
+		)
+		if case[0] == rim:
+			check(
+				Array(kept).any(
+					func(w: String) -> bool: return w.contains("'Shiny bark'") and w.contains("rim_enabled")
+				),
+				"the rim material named, and its setting (%s)" % "; ".join(kept)
+			)
+			check(
+				Array(kept).any(func(w: String) -> bool: return w.contains("'Glassy leaves'") and w.contains("blends")),
+				"the blended material named (%s)" % "; ".join(kept)
+			)
+		else:
+			check(kept.is_empty(), "carried materials are not named (%s)" % "; ".join(kept))
+
+
 ## A scene whose meshes stand off to the side of its root (modelled away from the origin, as a mesh
 ## taken out of a larger layout can be) is made a plant, as the scene has it, with a warning saying
 ## what to fix: its plants would stand off their cells, and its width, from the root, sets their
