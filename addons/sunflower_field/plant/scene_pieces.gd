@@ -244,6 +244,33 @@ static func _add_multimesh(
 			)
 		)
 		return
+	var coloured: bool = (
+		multimesh.use_colors
+		and range(count).any(func(k: int) -> bool: return multimesh.get_instance_color(k) != Color.WHITE)
+	)
+	var customised: bool = (
+		multimesh.use_custom_data
+		and range(count).any(
+			func(k: int) -> bool: return multimesh.get_instance_custom_data(k) != Color(0.0, 0.0, 0.0, 0.0)
+		)
+	)
+	if coloured or customised:
+		problems.append(
+			(
+				(
+					"%s: its instances' own %s not carried (a field's plant is one mesh; the field sets each plant's"
+					+ " custom data for the wind): every instance is drawn alike"
+				)
+				% [
+					path,
+					(
+						"colours and custom data are"
+						if coloured and customised
+						else ("colours are" if coloured else "custom data are")
+					)
+				]
+			)
+		)
 	for k: int in count:
 		var placed: Transform3D = here * multimesh.get_instance_transform(k)
 		pieces.append(_piece("%s (instance %d)" % [path, k], multimesh.mesh, materials, placed, [], instance))

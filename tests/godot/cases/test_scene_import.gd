@@ -43,7 +43,8 @@ func test_a_top_level_node_stands_where_it_stands_not_where_its_parent_is() -> v
 
 
 ## (Run by both suites: with a renderer the instances are read; headless, where the renderer keeps no
-## instance transforms, they are named and left out, not taken as three leaves at the root.)
+## instance transforms, they are named and left out, not taken as three leaves at the root.) An
+## instance's own colour, which a field's plant cannot carry, is named.
 func test_multimesh_instances_are_parts_of_the_plant() -> void:
 	var root: Node3D = _root()
 	root.add_child(_box_node("Trunk", Vector3(0.2, 2.0, 0.2), Vector3(0.0, 1.0, 0.0)))
@@ -51,12 +52,14 @@ func test_multimesh_instances_are_parts_of_the_plant() -> void:
 	leaves.name = "Leaves"
 	var multimesh: MultiMesh = MultiMesh.new()
 	multimesh.transform_format = MultiMesh.TRANSFORM_3D
+	multimesh.use_colors = true
 	var leaf: QuadMesh = QuadMesh.new()
 	leaf.size = Vector2(0.3, 0.3)
 	multimesh.mesh = leaf
 	multimesh.instance_count = 3
 	for k: int in 3:
 		multimesh.set_instance_transform(k, Transform3D(Basis(), Vector3(0.5 * (k - 1), 2.5 + 0.3 * k, 0.0)))
+		multimesh.set_instance_color(k, Color.WHITE if k != 1 else Color.RED)
 	leaves.multimesh = multimesh
 	root.add_child(leaves)
 	var plant: SunflowerPlant = SunflowerPlant.from_scene(Scenes.packed(root))
@@ -70,6 +73,7 @@ func test_multimesh_instances_are_parts_of_the_plant() -> void:
 	var trunk: int = ScenePlant.triangle_count(BoxMesh.new())
 	check_eq(ScenePlant.triangle_count(plant.mesh_level_1[0]), trunk + 3 * 2, "the trunk and three leaf quads")
 	check_near(plant.height, 2.5 + 0.6 + 0.15, 1e-3, "as tall as the highest leaf instance")
+	check(warned("Leaves: its instances' own colours are not carried"), "the red instance's colour is named as lost")
 
 
 func test_visibility_range_variants_are_mesh_levels() -> void:
