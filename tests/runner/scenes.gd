@@ -1,6 +1,8 @@
 extends RefCounted
 ## Scenes the tests build in code.
 
+const Maps: GDScript = preload("res://runner/maps.gd")
+
 
 ## [param root] and everything under it packed as a scene (every node owned by the root, so that it
 ## is saved); the nodes are freed.
@@ -36,3 +38,23 @@ static func shader_material(code: String, material_name: String = "") -> ShaderM
 	material.shader = Shader.new()
 	material.shader.code = code
 	return material
+
+
+## [param plant] (made of [param packed]) alone in a calm field under [param parent], its levels
+## not faded, each casting its own shadow (as the scene does), built and advanced (not processed), and
+## the scene drawn plainly at the plant's root: [code][field, scene][/code], to draw one or the other.
+static func plant_beside_its_scene(parent: Node, plant: SunflowerPlant, packed: PackedScene) -> Array[Node3D]:
+	var field: SunflowerField = SunflowerField.new()
+	field.plant = plant
+	field.map = Maps.filled(1, 1, "user://plant_beside_its_scene.field")
+	field.wind_power = 0.0
+	field.lod_fade = 0.0
+	field.cheap_shadows = false
+	parent.add_child(field)
+	field.finish_build()
+	field.set_process(false)
+	field.advance(1.0)
+	var plain: Node3D = packed.instantiate() as Node3D
+	plain.position = field.get_plant_info(0)["position"]
+	parent.add_child(plain)
+	return [field, plain]

@@ -4,7 +4,6 @@ extends TestCase
 ## StandardMaterial3D settings the material carries are test_render's: the demo field drawn five ways.)
 
 const Picture: GDScript = preload("res://runner/picture.gd")
-const Maps: GDScript = preload("res://runner/maps.gd")
 const Scenes: GDScript = preload("res://runner/scenes.gd")
 const Stage: GDScript = preload("res://runner/stage.gd")
 
@@ -43,11 +42,9 @@ func test_an_alpha_hash_material_is_drawn_as_the_plant_material() -> void:
 	node.mesh = card
 	node.position = Vector3(0.0, 0.5, 0.0)
 	root.add_child(node)
-	var packed: PackedScene = Scenes.packed(root)
-	var plant: SunflowerPlant = SunflowerPlant.from_scene(packed)
-	if not check(plant != null and plant.drawn_whole(), "a plant drawn whole, through the plant material"):
+	var seen: Dictionary = await _beside_its_scene(Scenes.packed(root), Vector3(0.0, 0.5, 1.6), "alpha_hash")
+	if seen.is_empty():
 		return
-	var seen: Dictionary = await _beside_its_scene(packed, plant, Vector3(0.0, 0.5, 1.6), "alpha_hash")
 	var covered: Vector2 = seen.covered
 	var light: Vector2 = seen.light
 	var cover: float = covered.y / maxf(covered.x, 1.0)
@@ -89,11 +86,9 @@ func test_meshes_without_a_material_are_drawn_as_the_engine_draws_them() -> void
 	crown.scale = Vector3(1.6, 1.2, 1.6)
 	crown.position = Vector3(0.0, 2.4, 0.0)
 	root.add_child(crown)
-	var packed: PackedScene = Scenes.packed(root)
-	var plant: SunflowerPlant = SunflowerPlant.from_scene(packed)
-	if not check(plant != null and plant.drawn_whole(), "a plant drawn whole, through the plant material"):
+	var seen: Dictionary = await _beside_its_scene(Scenes.packed(root), Vector3(1.0, 1.5, 3.0), "no_material")
+	if seen.is_empty():
 		return
-	var seen: Dictionary = await _beside_its_scene(packed, plant, Vector3(1.0, 1.5, 3.0), "no_material")
 	var similarity: float = Picture.new(640, 360).ssim(seen.pictures[1], seen.pictures[0])
 	var covered: Vector2 = seen.covered
 	var light: Vector2 = seen.light
@@ -109,29 +104,25 @@ func test_meshes_without_a_material_are_drawn_as_the_engine_draws_them() -> void
 	check(absf(brightness - 1.0) <= 0.03, "as bright as the scene (%.3f, ±3 %%)" % brightness)
 
 
-## [param plant], made of [param packed], drawn alone by a calm field at mesh 1 beside the scene drawn
-## plainly at its root, no shadows, from [param eye] (from the root) looking at the plant's middle:
+## The plant made of [param packed] (checked: drawn whole, through the plant material; else {}), drawn
+## alone by a calm field at mesh 1 beside the scene drawn plainly at its root, no shadows, from
+## [param eye] (from the root) looking at the plant's middle:
 ## [code]{"pictures": [scene's, field's], "covered": Vector2, "light": Vector2}[/code], covered: the
 ## pixels each changes from the empty picture (the scene's, the field's), light: the sum of those
 ## pixels' luminance. The pictures are saved as material_[param name]_none / _plain / _field.png.
-func _beside_its_scene(packed: PackedScene, plant: SunflowerPlant, eye: Vector3, name: String) -> Dictionary:
+func _beside_its_scene(packed: PackedScene, eye: Vector3, name: String) -> Dictionary:
+	var plant: SunflowerPlant = SunflowerPlant.from_scene(packed)
+	if not check(plant != null and plant.drawn_whole(), "%s: a plant drawn whole, through the plant material" % name):
+		return {}
 	plant.yaw_range = 0.0
 	for light: Node in scene.find_children("*", "DirectionalLight3D", true, false):
 		(light as DirectionalLight3D).shadow_enabled = false
-	var field: SunflowerField = SunflowerField.new()
-	field.plant = plant
-	field.map = Maps.filled(1, 1, "user://beside_its_scene.field")
-	field.wind_power = 0.0
-	field.lod_fade = 0.0
-	scene.add_child(field)
-	field.finish_build()
-	field.set_process(false)
+	var both: Array[Node3D] = Scenes.plant_beside_its_scene(scene, plant, packed)
+	var field: SunflowerField = both[0] as SunflowerField
+	var plain: Node3D = both[1]
 	field.force_lod = 0
-	field.advance(1.0)
-	var place: Vector3 = field.get_plant_info(0)["position"]
-	var plain: Node3D = packed.instantiate() as Node3D
-	plain.position = place
-	scene.add_child(plain)
+	field.advance(0.0)
+	var place: Vector3 = plain.position
 	var camera: Camera3D = Camera3D.new()
 	scene.add_child(camera)
 	camera.make_current()

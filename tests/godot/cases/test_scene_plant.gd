@@ -302,20 +302,10 @@ func _compare_lone_plant(plant_name: String, packed: PackedScene) -> void:
 	if not check(plant != null, "%s: a plant is made of the scene" % plant_name):
 		return
 	plant.yaw_range = 0.0
-	var field: SunflowerField = SunflowerField.new()
-	field.plant = plant
-	field.map = Maps.filled(1, 1, ONE_PLANT_MAP)
-	field.wind_power = 0.0
-	field.lod_fade = 0.0
-	field.cheap_shadows = false  # each level casts its own shadow, as the plain scene does
-	stage.add_child(field)
-	field.finish_build()
-	field.set_process(false)
-	field.advance(1.0)
-	var root: Vector3 = field.get_plant_info(0)["position"]
-	var plain: Node3D = packed.instantiate() as Node3D
-	plain.position = root
-	stage.add_child(plain)
+	var shown: Array[Node3D] = Scenes.plant_beside_its_scene(stage, plant, packed)
+	var field: SunflowerField = shown[0] as SunflowerField
+	var plain: Node3D = shown[1]
+	var root: Vector3 = plain.position
 	var camera: Camera3D = Camera3D.new()
 	stage.add_child(camera)
 	camera.fov = 50.0
