@@ -210,35 +210,45 @@ static func not_carried(material: Material, has_vertex_colours: bool) -> String:
 	return ""
 
 
-## For each material of [param meshes]' surfaces that the plant material cannot draw (each once), a
-## message naming it, why ([method not_carried]) and what follows.
+## For each material of [param meshes]' surfaces that the plant material cannot draw, or whose shader
+## of your own the field cannot bend as one plant (it reads UV2 or uses world_vertex_coords), a
+## message naming it, why ([method not_carried]) and what follows (each once).
 static func kept_materials(meshes: Array) -> PackedStringArray:
 	var messages: PackedStringArray = []
 	for mesh: Mesh in meshes:
 		for surface: int in mesh.get_surface_count() if mesh else 0:
 			var material: Material = mesh.surface_get_material(surface)
 			var why: String = not_carried(material, mesh.surface_get_format(surface) & Mesh.ARRAY_FORMAT_COLOR != 0)
-			if why.is_empty():
-				continue
-			var named: String = "no material"
-			if material:
-				named = (
-					"%s '%s'"
-					% [
-						material.get_class(),
-						material.resource_path.get_file() if material.resource_path else material.resource_name
-					]
+			var message: String = ""
+			if not why.is_empty():
+				message = (
+					(
+						"%s: %s; the field draws that part with it as it is, without the levels' cross-fades, and"
+						+ " the plant part by part (it leans in the wind as one piece)"
+					)
+					% [_named(material), why]
 				)
-			var message: String = (
-				(
-					"%s: %s; the field draws that part with it as it is, without the levels' cross-fades, and the"
-					+ " plant part by part (it leans in the wind as one piece)"
-				)
-				% [named, why]
-			)
-			if message not in messages:
+			elif material is ShaderMaterial and (material as ShaderMaterial).shader:
+				var unbent: RegExMatch = regex(NOT_BENDING_PATTERN).search((material as ShaderMaterial).shader.code)
+				if unbent and unbent.get_string(1) != "plant_place":
+					message = (
+						(
+							"%s: its shader uses %s, so the field cannot bend it as one plant: it draws the plant part"
+							+ " by part (it leans in the wind as one piece; its levels still cross-fade)"
+						)
+						% [_named(material), unbent.get_string(1)]
+					)
+			if not message.is_empty() and message not in messages:
 				messages.append(message)
 	return messages
+
+
+## [param material] as a warning names it: its class and file (or name).
+static func _named(material: Material) -> String:
+	if material == null:
+		return "no material"
+	var file: String = material.resource_path.get_file() if material.resource_path else material.resource_name
+	return "%s '%s'" % [material.get_class(), file]
 
 
 ## The look the engine gives a surface without a material (its default material's shader: albedo 0.6,

@@ -250,7 +250,8 @@ func test_a_plant_wholly_below_its_root_is_warned_about() -> void:
 ## A part whose material the plant material cannot draw is named, with what keeps it and what
 ## follows (drawn as it is, without the levels' cross-fades, the plant part by part): a
 ## StandardMaterial3D with a setting the plant material does not carry (rim), one that blends its
-## alpha; a plant of carried materials (alpha scissor, alpha hash, none) is not warned about. (Such a
+## alpha, and a shader of your own the field cannot bend as one plant (world_vertex_coords); a plant of
+## carried materials (alpha scissor, alpha hash, none) is not warned about. (Such a
 ## plant leaned in the wind as one piece without a word.)
 func test_a_material_the_plant_material_cannot_draw_is_named() -> void:
 	var rim: StandardMaterial3D = StandardMaterial3D.new()
@@ -261,7 +262,11 @@ func test_a_material_the_plant_material_cannot_draw_is_named() -> void:
 	blended.transparency = BaseMaterial3D.TRANSPARENCY_ALPHA
 	var hashed: StandardMaterial3D = Scenes.holed_leaves()
 	hashed.transparency = BaseMaterial3D.TRANSPARENCY_ALPHA_HASH
-	for case: Array in [[rim, blended], [Scenes.holed_leaves(), hashed, null]]:
+	var worldly: ShaderMaterial = Scenes.shader_material(
+		"shader_type spatial;\nrender_mode world_vertex_coords;\nvoid fragment() { ALBEDO = vec3(0.2, 0.5, 0.1); }\n",
+		"World leaves"
+	)
+	for case: Array in [[rim, blended, worldly], [Scenes.holed_leaves(), hashed, null]]:
 		var root: Node3D = _root()
 		for k: int in case.size():
 			var node: MeshInstance3D = _box_node("Part%d" % k, Vector3(0.4, 1.0, 0.4), Vector3(0.0, 0.5 + k, 0.0))
@@ -282,6 +287,12 @@ func test_a_material_the_plant_material_cannot_draw_is_named() -> void:
 			check(
 				Array(kept).any(func(w: String) -> bool: return w.contains("'Glassy leaves'") and w.contains("blends")),
 				"the blended material named (%s)" % "; ".join(kept)
+			)
+			check(
+				Array(named).any(
+					func(w: String) -> bool: return w.contains("'World leaves'") and w.contains("world_vertex_coords")
+				),
+				"the shader the field cannot bend named (%s)" % "; ".join(named)
 			)
 		else:
 			check(kept.is_empty(), "carried materials are not named (%s)" % "; ".join(kept))
