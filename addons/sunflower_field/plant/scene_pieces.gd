@@ -244,12 +244,16 @@ static func _add_multimesh(
 			)
 		)
 		return
+	# Lost only where the materials show them: instance colours come through COLOR (a StandardMaterial3D
+	# shows it as albedo when told to), custom data through INSTANCE_CUSTOM.
 	var coloured: bool = (
 		multimesh.use_colors
+		and materials.any(func(material: Material) -> bool: return _reads(material, "COLOR"))
 		and range(count).any(func(k: int) -> bool: return multimesh.get_instance_color(k) != Color.WHITE)
 	)
 	var customised: bool = (
 		multimesh.use_custom_data
+		and materials.any(func(material: Material) -> bool: return _reads(material, "INSTANCE_CUSTOM"))
 		and range(count).any(
 			func(k: int) -> bool: return multimesh.get_instance_custom_data(k) != Color(0.0, 0.0, 0.0, 0.0)
 		)
@@ -396,6 +400,15 @@ static func _materials_shown(instance: GeometryInstance3D, mesh: Mesh) -> Array[
 			shown = (instance as MeshInstance3D).get_surface_override_material(surface)
 		materials.append(shown if shown else mesh.surface_get_material(surface))
 	return materials
+
+
+## Whether [param material] shows what the shader reads as [param built_in] ("COLOR": a
+## StandardMaterial3D that uses vertex colours as albedo; either: a ShaderMaterial whose code names it).
+static func _reads(material: Material, built_in: String) -> bool:
+	if material is BaseMaterial3D:
+		return built_in == "COLOR" and (material as BaseMaterial3D).vertex_color_use_as_albedo
+	var shader: Shader = (material as ShaderMaterial).shader if material is ShaderMaterial else null
+	return shader != null and shader.code.contains(built_in)
 
 
 static func _has_bone_weights(mesh: Mesh) -> bool:

@@ -44,7 +44,7 @@ func test_a_top_level_node_stands_where_it_stands_not_where_its_parent_is() -> v
 
 ## (Run by both suites: with a renderer the instances are read; headless, where the renderer keeps no
 ## instance transforms, they are named and left out, not taken as three leaves at the root.) An
-## instance's own colour, which a field's plant cannot carry, is named.
+## instance's own colour, which a field's plant cannot carry, is named where its material shows it.
 func test_multimesh_instances_are_parts_of_the_plant() -> void:
 	var root: Node3D = _root()
 	root.add_child(_box_node("Trunk", Vector3(0.2, 2.0, 0.2), Vector3(0.0, 1.0, 0.0)))
@@ -55,6 +55,8 @@ func test_multimesh_instances_are_parts_of_the_plant() -> void:
 	multimesh.use_colors = true
 	var leaf: QuadMesh = QuadMesh.new()
 	leaf.size = Vector2(0.3, 0.3)
+	leaf.material = StandardMaterial3D.new()
+	(leaf.material as StandardMaterial3D).vertex_color_use_as_albedo = true  # shows instance colours
 	multimesh.mesh = leaf
 	multimesh.instance_count = 3
 	for k: int in 3:
@@ -74,6 +76,17 @@ func test_multimesh_instances_are_parts_of_the_plant() -> void:
 	check_eq(ScenePlant.triangle_count(plant.mesh_level_1[0]), trunk + 3 * 2, "the trunk and three leaf quads")
 	check_near(plant.height, 2.5 + 0.6 + 0.15, 1e-3, "as tall as the highest leaf instance")
 	check(warned("Leaves: its instances' own colours are not carried"), "the red instance's colour is named as lost")
+	# Colours a material does not show (no vertex colours as albedo) are not lost: nothing is said.
+	(leaf.material as StandardMaterial3D).vertex_color_use_as_albedo = false
+	var unshown: Node3D = _root()
+	var copy: MultiMeshInstance3D = MultiMeshInstance3D.new()
+	copy.name = "Leaves"
+	copy.multimesh = multimesh
+	unshown.add_child(copy)
+	check(
+		SunflowerPlant.from_scene(Scenes.packed(unshown)) != null, "a plant of the same leaves, their colours unshown"
+	)
+	check(not warned("own colours are not carried"), "colours its material does not show are not named")
 
 
 func test_visibility_range_variants_are_mesh_levels() -> void:
