@@ -258,21 +258,19 @@ static func _add_multimesh(
 			func(k: int) -> bool: return multimesh.get_instance_custom_data(k) != Color(0.0, 0.0, 0.0, 0.0)
 		)
 	)
-	if coloured or customised:
+	var lost: PackedStringArray = []
+	if coloured:
+		lost.append("colours")
+	if customised:
+		lost.append("custom data")
+	if not lost.is_empty():
 		problems.append(
 			(
 				(
-					"%s: its instances' own %s not carried (a field's plant is one mesh; the field sets each plant's"
-					+ " custom data for the wind): every instance is drawn alike"
+					"%s: its instances' own %s are not carried (a field's plant is one mesh; the field sets each"
+					+ " plant's custom data for the wind): every instance is drawn alike"
 				)
-				% [
-					path,
-					(
-						"colours and custom data are"
-						if coloured and customised
-						else ("colours are" if coloured else "custom data are")
-					)
-				]
+				% [path, " and ".join(lost)]
 			)
 		)
 	for k: int in count:
