@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Benchmarks (numbers, not pass/fail). Prints twelve tables:
+# Benchmarks (numbers, not pass/fail). Prints seventeen tables:
 #   1. the C++ core alone: per-frame time and memory, 1M vs 4M plants;
 #   2. the engine: the demo's recording mode on the demo, large and million-plant fields;
 #   3. the thesis' experiment (Tables 3-5): a 1 500-plant field at distances 5 and 40 m, every plant
@@ -21,6 +21,9 @@
 #      time at head height in the large field, without a budget and under caps on the near triangles.
 #  12. Far plants against the native way (tools/measure_far_cost.sh): primitives, draw calls and software
 #      frame time from 40 m outside and 25 m up at 45°, against whole plants near and front-view quads far.
+#  13–14. Placement by rules and play's changes, the core alone; 15. play's changes in the engine.
+#  16. Forests of the Sapling test plants, their levels thinned against every level mesh 1.
+#  17. Making a plant's levels: plants of many foliage cards through SunflowerPlant.from_scene.
 # Results (JSON per run) go to build/bench/; BENCH_FRAMES and BENCH_RESOLUTION change the runs.
 set -euo pipefail
 repo=$(cd "$(dirname "$0")/.." && pwd)
@@ -125,6 +128,10 @@ echo "## 16. Forests: a field of each Sapling test plant, its levels thinned aga
 timeout 900 xvfb-run -a -s "-screen 0 1280x720x24" "$godot" --rendering-driver vulkan --audio-driver Dummy \
   --resolution "$resolution" --path "$repo/tests/godot" --script res://bench/forest_bench.gd 2>&1 | grep '^|' ||
   echo "bench: the forest benchmark failed" >&2
+echo
+echo "## 17. Making a plant's levels: plants of many foliage cards through SunflowerPlant.from_scene (headless)"
+timeout 900 "$godot" --headless --audio-driver Dummy --path "$repo/tests/godot" --script res://bench/levels_bench.gd 2>&1 | grep '^|' ||
+  echo "bench: the levels benchmark failed" >&2
 echo
 echo "## 9. The editor opening a scene with a million-plant field (frame intervals; the plugin's frame probe)"
 editor_project=$(mktemp -d)

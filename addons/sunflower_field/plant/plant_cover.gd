@@ -46,7 +46,8 @@ static func empty(bounds: AABB) -> Dictionary:
 
 
 ## Draws a surface's triangles ([param arrays]) into [param cover]'s grids, where [param mask] (its
-## material's [method cut_out]) is not cut out.
+## material's [method cut_out]) is not cut out: row by row, each row's cells between the triangle's
+## edges (a thin card standing across the grid visits the cells it covers, not its bounding box).
 static func draw(cover: Dictionary, arrays: Array, mask: Dictionary) -> void:
 	var positions: PackedVector3Array = arrays[Mesh.ARRAY_VERTEX]
 	var indices: PackedInt32Array = arrays[Mesh.ARRAY_INDEX]
@@ -56,6 +57,9 @@ static func draw(cover: Dictionary, arrays: Array, mask: Dictionary) -> void:
 	var masked: bool = not mask.is_empty() and uvs.size() == positions.size()
 	var mask_size: Vector2i = mask.get("size", Vector2i.ONE)
 	var opaque: PackedByteArray = mask.get("opaque", PackedByteArray())
+	var across_x: Array[float] = [0.0, 0.0, 0.0]  # per edge of a triangle: its x at y = 0, its dx/dy
+	var across_slope: Array[float] = [0.0, 0.0, 0.0]
+	var bounding: Array[int] = [0, 0, 0]
 	for view: int in VIEWS.size():
 		var axes: Basis = cover.axes[view]
 		var corner: Vector2 = cover.corners[view]
@@ -72,33 +76,51 @@ static func draw(cover: Dictionary, arrays: Array, mask: Dictionary) -> void:
 			var twice_area: float = (b - a).cross(c - a)
 			if twice_area == 0.0:
 				continue
-			# The cells whose centre the triangle covers (a sliver thinner than a cell covers few).
-			var low: Vector2i = Vector2i(
-				maxi(0, floori(minf(a.x, minf(b.x, c.x)))), maxi(0, floori(minf(a.y, minf(b.y, c.y))))
-			)
-			var high: Vector2i = Vector2i(
-				mini(side.x - 1, floori(maxf(a.x, maxf(b.x, c.x)))), mini(side.y - 1, floori(maxf(a.y, maxf(b.y, c.y))))
-			)
-			for y: int in range(low.y, high.y + 1):
-				for x: int in range(low.x, high.x + 1):
-					var at: Vector2 = Vector2(x + 0.5, y + 0.5)
-					var s1: float = (b - a).cross(at - a) * twice_area
-					var s2: float = (c - b).cross(at - b) * twice_area
-					var s3: float = (a - c).cross(at - c) * twice_area
-					if s1 < 0.0 or s2 < 0.0 or s3 < 0.0:
-						continue
-					if masked:  # the texture there: s1, s2, s3 are c's, a's and b's weights times twice_area²
-						var uv: Vector2 = (
-							(uvs[indices[k]] * s2 + uvs[indices[k + 1]] * s3 + uvs[indices[k + 2]] * s1)
-							/ (twice_area * twice_area)
-						)
+			# The rows whose cells' centres (x + 0.5, y + 0.5) the triangle's height spans.
+			var first_row: int = maxi(0, ceili(minf(a.y, minf(b.y, c.y)) - 0.5))
+			var last_row: int = mini(side.y - 1, floori(maxf(a.y, maxf(b.y, c.y)) - 0.5))
+			if last_row < first_row:
+				continue
+			# The texture coordinates at a cell's centre: uv_a + uv_x * (x - a.x) + uv_y * (y - a.y).
+			var uv_a: Vector2 = Vector2.ZERO
+			var uv_x: Vector2 = Vector2.ZERO
+			var uv_y: Vector2 = Vector2.ZERO
+			if masked:
+				uv_a = uvs[indices[k]]
+				var to_b: Vector2 = uvs[indices[k + 1]] - uv_a
+				var to_c: Vector2 = uvs[indices[k + 2]] - uv_a
+				uv_x = (to_b * (c - a).y - to_c * (b - a).y) / twice_area
+				uv_y = (to_c * (b - a).x - to_b * (c - a).x) / twice_area
+			# Each edge p → q keeps the centres on the triangle's side of it: where it is not level, a
+			# row's x at most (or at least) where the edge crosses the row, x = p.x + (y - p.y) dx/dy.
+			for edge: int in 3:
+				var p: Vector2 = a if edge == 0 else (b if edge == 1 else c)
+				var along: Vector2 = (b if edge == 0 else (c if edge == 1 else a)) - p
+				across_x[edge] = p.x - p.y * along.x / along.y if along.y != 0.0 else 0.0
+				across_slope[edge] = along.x / along.y if along.y != 0.0 else 0.0
+				bounding[edge] = int(signf(along.y * twice_area))  # 1: a high bound, -1: a low one
+			for y: int in range(first_row, last_row + 1):
+				var row_y: float = y + 0.5
+				var low: float = -INF
+				var high: float = INF
+				for edge: int in 3:
+					if bounding[edge] > 0:
+						high = minf(high, across_x[edge] + row_y * across_slope[edge])
+					elif bounding[edge] < 0:
+						low = maxf(low, across_x[edge] + row_y * across_slope[edge])
+				var from: int = maxi(0, ceili(low - 0.5))
+				var to: int = mini(side.x - 1, floori(high - 0.5))
+				var row: int = y * side.x
+				for x: int in range(from, to + 1):
+					if masked:
+						var uv: Vector2 = uv_a + uv_x * (x + 0.5 - a.x) + uv_y * (row_y - a.y)
 						var texel: Vector2i = Vector2i(
 							posmod(floori(uv.x * mask_size.x), mask_size.x),
 							posmod(floori(uv.y * mask_size.y), mask_size.y)
 						)
 						if not opaque[texel.y * mask_size.x + texel.x]:
 							continue
-					grid[y * side.x + x] = 1
+					grid[row + x] = 1
 		cover.grids[view] = grid
 
 

@@ -10,6 +10,7 @@ const Scenes: GDScript = preload("res://runner/scenes.gd")
 const ScenePlant: GDScript = preload("res://addons/sunflower_field/plant/scene_plant.gd")
 const MeshPieces: GDScript = preload("res://addons/sunflower_field/plant/mesh_pieces.gd")
 const CardSlices: GDScript = preload("res://addons/sunflower_field/plant/card_slices.gd")
+const PlantCover: GDScript = preload("res://addons/sunflower_field/plant/plant_cover.gd")
 ## The Sapling test plants (TEST_PLANTS in TEST_PLANT_FOLDER).
 const ScenePlantTests: GDScript = preload("res://cases/test_scene_plant.gd")
 
@@ -280,6 +281,49 @@ func test_a_plant_of_many_cards_keeps_their_area() -> void:
 		var share: float = (thinned[Mesh.ARRAY_INDEX] as PackedInt32Array).size() / 6.0 / cards
 		check_near(share, ScenePlant.LEVEL_SHARES[level - 1], 0.01, "mesh %d keeps its share of the cards" % level)
 		check_near(_area_of(thinned) / all_area, 1.0, 0.03, "mesh %d: the area of all the cards" % level)
+
+
+## What a card covers is counted cell by cell (plant_cover.gd): in a 1 m cube's grids of 64 cells a
+## side, a half-metre square card facing the first view covers the 32 × 32 cells whose centres it
+## holds, there and nowhere it is seen edge-on; half of it (one triangle, either winding) covers the
+## cells on its side of the diagonal; cut out by its texture's right half, its left half's cells
+## (u below a half: z below 0.5, the first view's columns 32 to 47).
+func test_a_cards_cover_is_counted_cell_by_cell() -> void:
+	var bounds: AABB = AABB(Vector3.ZERO, Vector3.ONE)
+	var square: PackedVector3Array = [
+		Vector3(0.5, 0.25, 0.25), Vector3(0.5, 0.25, 0.75), Vector3(0.5, 0.75, 0.75), Vector3(0.5, 0.75, 0.25)
+	]
+	var uvs: PackedVector2Array = [Vector2(0, 1), Vector2(1, 1), Vector2(1, 0), Vector2(0, 0)]
+	var left_half: Dictionary = {"size": Vector2i(2, 1), "opaque": PackedByteArray([1, 0])}
+	var cases: Array[Array] = [  # indices, mask, the cells covered in the first view
+		[PackedInt32Array([0, 1, 2, 0, 2, 3]), {}, 32 * 32],
+		[PackedInt32Array([0, 1, 2]), {}, 32 * 33 / 2],
+		[PackedInt32Array([0, 2, 1]), {}, 32 * 33 / 2],
+		[PackedInt32Array([0, 1, 2, 0, 2, 3]), left_half, 16 * 32],
+	]
+	for case: Array in cases:
+		var arrays: Array = []
+		arrays.resize(Mesh.ARRAY_MAX)
+		arrays[Mesh.ARRAY_VERTEX] = square
+		arrays[Mesh.ARRAY_TEX_UV] = uvs
+		arrays[Mesh.ARRAY_INDEX] = case[0]
+		var cover: Dictionary = PlantCover.empty(bounds)
+		PlantCover.draw(cover, arrays, case[1])
+		var seen: Array[int] = []
+		for grid: PackedByteArray in cover.grids:
+			seen.append(grid.count(1))
+		var what: String = "%d triangles%s" % [(case[0] as PackedInt32Array).size() / 3, ", cut out" if case[1] else ""]
+		check_eq(seen[0], case[2], "%s: the cells facing it" % what)
+		check_eq(seen.slice(1, 4), [0, 0, 0], "%s: none where it is seen edge-on" % what)
+		check(seen[4] > case[2] / 2 and seen[4] < case[2], "%s: fewer at 45° (%d)" % [what, seen[4]])
+		if case[1]:
+			var columns: Vector2i = Vector2i(64, 0)
+			for cell: int in (cover.grids[0] as PackedByteArray).size():
+				if cover.grids[0][cell]:
+					columns = Vector2i(
+						mini(columns.x, cell % cover.sides[0].x), maxi(columns.y, cell % cover.sides[0].x)
+					)
+			check_eq(columns, Vector2i(32, 47), "%s: the cells of its texture's opaque half" % what)
 
 
 ## Whether every point of [param points] is (about) one of [param others].
