@@ -47,13 +47,29 @@ func ssim(a: PackedFloat32Array, b: PackedFloat32Array) -> float:
 	var n: float = WINDOW * WINDOW
 	var total: float = 0.0
 	var windows: int = 0
+	var stride: int = width + 1
 	for y: int in height - WINDOW + 1:
+		# A window's sum is the integral at its four corners: bottom right - top right - bottom left
+		# + top left (written out here: a call per sum took most of the time).
 		for x: int in width - WINDOW + 1:
-			var mean_a: float = _window_sum(sum_a, x, y) / n
-			var mean_b: float = _window_sum(sum_b, x, y) / n
-			var var_a: float = _window_sum(sum_aa, x, y) / n - mean_a * mean_a
-			var var_b: float = _window_sum(sum_bb, x, y) / n - mean_b * mean_b
-			var covariance: float = _window_sum(sum_ab, x, y) / n - mean_a * mean_b
+			var top_left: int = y * stride + x
+			var bottom_left: int = top_left + WINDOW * stride
+			var top_right: int = top_left + WINDOW
+			var bottom_right: int = bottom_left + WINDOW
+			var mean_a: float = (sum_a[bottom_right] - sum_a[top_right] - sum_a[bottom_left] + sum_a[top_left]) / n
+			var mean_b: float = (sum_b[bottom_right] - sum_b[top_right] - sum_b[bottom_left] + sum_b[top_left]) / n
+			var var_a: float = (
+				(sum_aa[bottom_right] - sum_aa[top_right] - sum_aa[bottom_left] + sum_aa[top_left]) / n
+				- mean_a * mean_a
+			)
+			var var_b: float = (
+				(sum_bb[bottom_right] - sum_bb[top_right] - sum_bb[bottom_left] + sum_bb[top_left]) / n
+				- mean_b * mean_b
+			)
+			var covariance: float = (
+				(sum_ab[bottom_right] - sum_ab[top_right] - sum_ab[bottom_left] + sum_ab[top_left]) / n
+				- mean_a * mean_b
+			)
 			total += (
 				((2.0 * mean_a * mean_b + C1) * (2.0 * covariance + C2))
 				/ ((mean_a * mean_a + mean_b * mean_b + C1) * (var_a + var_b + C2))
@@ -183,17 +199,12 @@ func _integral(values: PackedFloat32Array) -> PackedFloat64Array:
 	out.resize(stride * (height + 1))
 	for y: int in height:
 		var row: float = 0.0
+		var source: int = y * width
+		var above: int = y * stride + 1
 		for x: int in width:
-			row += values[y * width + x]
-			out[(y + 1) * stride + x + 1] = out[y * stride + x + 1] + row
+			row += values[source + x]
+			out[above + stride + x] = out[above + x] + row
 	return out
-
-
-func _window_sum(integral: PackedFloat64Array, x: int, y: int) -> float:
-	var stride: int = width + 1
-	var top: int = y * stride
-	var bottom: int = (y + WINDOW) * stride
-	return integral[bottom + x + WINDOW] - integral[top + x + WINDOW] - integral[bottom + x] + integral[top + x]
 
 
 ## The pixels of [param image] that are not black (covered), of those the leaf green ones, and the
