@@ -1,7 +1,7 @@
 @tool
 extends RefCounted
-## A surface's pieces: the triangles joined by shared vertices (or vertices at one place) — a leaf
-## card, a blade, a twig. A plant's coarser mesh levels thin them, as the engines that draw forests
+## A surface's pieces: the triangles joined by shared edges (or edges whose ends are at one place) — a
+## leaf card, a blade, a twig. A plant's coarser mesh levels thin them, as the engines that draw forests
 ## do: a surface of foliage cards keeps a share of its cards, spread evenly over the plant, and
 ## the kept cards grow (fewer, bigger leaves; a coarser level keeps a subset of a finer level's cards,
 ## so no card comes back as the plant moves away); a surface of branches keeps its biggest pieces,
@@ -10,8 +10,9 @@ extends RefCounted
 ## of the bounds it is given.
 
 ## A piece of at most this many triangles is a card, and a surface whose pieces have at most this many
-## on average is of cards (a Sapling maple's leaves, welded where they touch, average 4.1). Bigger
-## pieces of a surface of cards (a trunk merged with its leaves) are kept as they are.
+## on average is of cards (a Sapling maple's leaves are 4 each; so are a Sapling Japanese maple's,
+## five to a stalk, touching at its end). Bigger pieces of a surface of cards (a trunk merged with its
+## leaves) are kept as they are.
 const CARD_TRIANGLES: float = 8.0
 ## The vertex arrays a plant's merged surfaces have (scene_plant.gd keeps these alone; a tangent is
 ## four numbers a vertex, any other one value).
@@ -42,22 +43,30 @@ func _init(surface_arrays: Array) -> void:
 	arrays = surface_arrays
 	var positions: PackedVector3Array = arrays[Mesh.ARRAY_VERTEX]
 	var indices: PackedInt32Array = arrays[Mesh.ARRAY_INDEX]
-	var parent: Array[int] = []
-	parent.assign(range(positions.size()))
-	var first_at: Dictionary = {}  # a place -> the first vertex there
+	# Triangles join where they share an edge: its two ends, by place (a surface's vertices split at
+	# seams are at one place). Leaves that only touch at a point (a cluster on one stalk) stay apart.
+	var place_of: PackedInt32Array = []  # a vertex -> the number of its place
+	place_of.resize(positions.size())
+	var places: Dictionary = {}  # a place -> its number
 	for vertex: int in positions.size():
-		var place: Vector3 = positions[vertex]
-		if first_at.has(place):
-			_join(parent, first_at[place], vertex)
-		else:
-			first_at[place] = vertex
+		place_of[vertex] = places.get(positions[vertex], places.size())
+		places[positions[vertex]] = place_of[vertex]
+	var parent: Array[int] = []
+	parent.assign(range(indices.size() / 3))
+	var edge_of: Dictionary = {}  # an edge (its ends' places) -> the first triangle along it
 	for k: int in range(0, indices.size() - 2, 3):
-		_join(parent, indices[k], indices[k + 1])
-		_join(parent, indices[k], indices[k + 2])
-	var number: Dictionary = {}  # a piece's root vertex -> its number
+		for corner: int in 3:
+			var a: int = place_of[indices[k + corner]]
+			var b: int = place_of[indices[k + (corner + 1) % 3]]
+			var edge: int = mini(a, b) * places.size() + maxi(a, b)
+			if edge_of.has(edge):
+				_join(parent, edge_of[edge], k / 3)
+			else:
+				edge_of[edge] = k / 3
+	var number: Dictionary = {}  # a piece's root triangle -> its number
 	piece_of.resize(indices.size() / 3)
 	for triangle: int in piece_of.size():
-		var root: int = _root_of(parent, indices[3 * triangle])
+		var root: int = _root_of(parent, triangle)
 		if not number.has(root):
 			number[root] = number.size()
 		piece_of[triangle] = number[root]
@@ -68,6 +77,12 @@ func _init(surface_arrays: Array) -> void:
 	centre.resize(count)
 	lowest.resize(count)
 	lowest.fill(INF)
+	var corners: PackedInt32Array = []  # per piece: the vertices counted in its centre
+	corners.resize(count)
+	var first_piece: PackedInt32Array = []  # per vertex: the first piece it was counted for, or -1
+	first_piece.resize(positions.size())
+	first_piece.fill(-1)
+	var also_counted: Dictionary = {}  # a vertex of more than one piece -> the others it was counted for
 	for triangle: int in piece_of.size():
 		var a: Vector3 = positions[indices[3 * triangle]]
 		var across: Vector3 = (positions[indices[3 * triangle + 1]] - a).cross(positions[indices[3 * triangle + 2]] - a)
@@ -75,11 +90,16 @@ func _init(surface_arrays: Array) -> void:
 		area[piece] += 0.5 * across.length()
 		triangles[piece] += 1
 		normal[piece] += across
-	var corners: PackedInt32Array = []
-	corners.resize(count)
-	for vertex: int in positions.size():
-		var piece: int = number.get(_root_of(parent, vertex), -1)
-		if piece >= 0:  # a vertex no triangle uses is in no piece
+		for corner: int in 3:
+			var vertex: int = indices[3 * triangle + corner]
+			if first_piece[vertex] == piece:
+				continue
+			if first_piece[vertex] < 0:
+				first_piece[vertex] = piece
+			elif also_counted.get(vertex, PackedInt32Array()).has(piece):
+				continue
+			else:
+				also_counted[vertex] = also_counted.get(vertex, PackedInt32Array()) + PackedInt32Array([piece])
 			centre[piece] += positions[vertex]
 			corners[piece] += 1
 			lowest[piece] = minf(lowest[piece], positions[vertex].y)
@@ -163,12 +183,14 @@ func biggest(share: float) -> Array:
 
 
 ## The kept pieces' triangles re-indexed over the vertices they use: [code]{"indices", "used" (the
-## vertices, in their new order), "piece_of_vertex"}[/code].
+## vertices, in their new order), "piece_of_vertex"}[/code]. A vertex two kept pieces share is used
+## once for each (each card grows about its own centre).
 func _picked_triangles(keeps: PackedByteArray) -> Dictionary:
 	var indices: PackedInt32Array = arrays[Mesh.ARRAY_INDEX]
-	var new_index: PackedInt32Array = []
+	var new_index: PackedInt32Array = []  # per vertex: its new number for the first piece that used it
 	new_index.resize((arrays[Mesh.ARRAY_VERTEX] as PackedVector3Array).size())
 	new_index.fill(-1)
+	var other_index: Dictionary = {}  # [a vertex, another piece] -> its new number for that piece
 	var used: PackedInt32Array = []
 	var piece_of_vertex: PackedInt32Array = []
 	var out: PackedInt32Array = []
@@ -182,7 +204,14 @@ func _picked_triangles(keeps: PackedByteArray) -> Dictionary:
 				new_index[vertex] = used.size()
 				used.append(vertex)
 				piece_of_vertex.append(piece)
-			out.append(new_index[vertex])
+			elif piece_of_vertex[new_index[vertex]] != piece and not other_index.has([vertex, piece]):
+				other_index[[vertex, piece]] = used.size()
+				used.append(vertex)
+				piece_of_vertex.append(piece)
+			var number: int = new_index[vertex]
+			if piece_of_vertex[number] != piece:
+				number = other_index[[vertex, piece]]
+			out.append(number)
 	return {"indices": out, "used": used, "piece_of_vertex": piece_of_vertex}
 
 
@@ -260,6 +289,7 @@ static func _reversed(value: int, bits: int) -> int:
 	return out
 
 
+## Joins the sets of triangles [param a] and [param b] are in (a forest of [param parent] links).
 static func _join(parent: Array[int], a: int, b: int) -> void:
 	var root_a: int = _root_of(parent, a)
 	var root_b: int = _root_of(parent, b)
@@ -267,8 +297,9 @@ static func _join(parent: Array[int], a: int, b: int) -> void:
 		parent[maxi(root_a, root_b)] = mini(root_a, root_b)
 
 
-static func _root_of(parent: Array[int], vertex: int) -> int:
-	while parent[vertex] != vertex:
-		parent[vertex] = parent[parent[vertex]]
-		vertex = parent[vertex]
-	return vertex
+## The first triangle of the set [param triangle] is in (halving the links on the way).
+static func _root_of(parent: Array[int], triangle: int) -> int:
+	while parent[triangle] != triangle:
+		parent[triangle] = parent[parent[triangle]]
+		triangle = parent[triangle]
+	return triangle
