@@ -57,6 +57,8 @@ static func draw(cover: Dictionary, arrays: Array, mask: Dictionary) -> void:
 	var masked: bool = not mask.is_empty() and uvs.size() == positions.size()
 	var mask_size: Vector2i = mask.get("size", Vector2i.ONE)
 	var opaque: PackedByteArray = mask.get("opaque", PackedByteArray())
+	var uv_scale: Vector2 = mask.get("uv_scale", Vector2.ONE)
+	var uv_offset: Vector2 = mask.get("uv_offset", Vector2.ZERO)
 	var across_x: Array[float] = [0.0, 0.0, 0.0]  # per edge of a triangle: its x at y = 0, its dx/dy
 	var across_slope: Array[float] = [0.0, 0.0, 0.0]
 	var bounding: Array[int] = [0, 0, 0]
@@ -86,9 +88,9 @@ static func draw(cover: Dictionary, arrays: Array, mask: Dictionary) -> void:
 			var uv_x: Vector2 = Vector2.ZERO
 			var uv_y: Vector2 = Vector2.ZERO
 			if masked:
-				uv_a = uvs[indices[k]]
-				var to_b: Vector2 = uvs[indices[k + 1]] - uv_a
-				var to_c: Vector2 = uvs[indices[k + 2]] - uv_a
+				uv_a = uvs[indices[k]] * uv_scale + uv_offset
+				var to_b: Vector2 = (uvs[indices[k + 1]] - uvs[indices[k]]) * uv_scale
+				var to_c: Vector2 = (uvs[indices[k + 2]] - uvs[indices[k]]) * uv_scale
 				uv_x = (to_b * (c - a).y - to_c * (b - a).y) / twice_area
 				uv_y = (to_c * (b - a).x - to_b * (c - a).x) / twice_area
 			# Each edge p → q keeps the centres on the triangle's side of it: where it is not level, a
@@ -132,18 +134,24 @@ static func covered(cover: Dictionary) -> int:
 	return total
 
 
-## Where [param material]'s texture is cut out: [code]{"size": Vector2i, "opaque": PackedByteArray}[/code]
-## (1 where alpha is at or above its cut-off, 0.5 for blended or hashed alpha) of a BaseMaterial3D's
-## albedo texture when its transparency is on, or of a ShaderMaterial's first texture parameter with
-## alpha; empty for any other material, or a texture whose pixels cannot be read (nothing cut out).
+## Where [param material]'s texture is cut out: [code]{"size": Vector2i, "opaque": PackedByteArray,
+## "uv_scale": Vector2, "uv_offset": Vector2}[/code] (1 where alpha is at or above its cut-off, 0.5 for
+## blended or hashed alpha) of a BaseMaterial3D's albedo texture when its transparency is on, read
+## where its UV1 scale and offset put a vertex's UV (a glTF texture transform, a leaf atlas), or of a
+## ShaderMaterial's first texture parameter with alpha, at the UV as it is; empty for any other
+## material, a triplanar one, or a texture whose pixels cannot be read (nothing cut out).
 static func cut_out(material: Material) -> Dictionary:
 	var texture: Texture2D = null
 	var threshold: float = 0.5
+	var uv_scale: Vector2 = Vector2.ONE
+	var uv_offset: Vector2 = Vector2.ZERO
 	if material is BaseMaterial3D:
 		var base: BaseMaterial3D = material as BaseMaterial3D
-		if base.transparency == BaseMaterial3D.TRANSPARENCY_DISABLED:
+		if base.transparency == BaseMaterial3D.TRANSPARENCY_DISABLED or base.uv1_triplanar:
 			return {}
 		texture = base.albedo_texture
+		uv_scale = Vector2(base.uv1_scale.x, base.uv1_scale.y)
+		uv_offset = Vector2(base.uv1_offset.x, base.uv1_offset.y)
 		if base.transparency == BaseMaterial3D.TRANSPARENCY_ALPHA_SCISSOR:
 			threshold = base.alpha_scissor_threshold
 	elif material is ShaderMaterial and (material as ShaderMaterial).shader != null:
@@ -160,7 +168,7 @@ static func cut_out(material: Material) -> Dictionary:
 	for y: int in image.get_height():
 		for x: int in image.get_width():
 			opaque[y * image.get_width() + x] = 1 if image.get_pixel(x, y).a >= threshold else 0
-	return {"size": image.get_size(), "opaque": opaque}
+	return {"size": image.get_size(), "opaque": opaque, "uv_scale": uv_scale, "uv_offset": uv_offset}
 
 
 ## [param texture]'s pixels, at most 64 a side, or null.

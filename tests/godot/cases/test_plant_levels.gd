@@ -333,43 +333,60 @@ func test_a_plant_of_many_cards_keeps_their_area() -> void:
 ## side, a half-metre square card facing the first view covers the 32 × 32 cells whose centres it
 ## holds, there and nowhere it is seen edge-on; half of it (one triangle, either winding) covers the
 ## cells on its side of the diagonal; cut out by its texture's right half, its left half's cells
-## (u below a half: z below 0.5, the first view's columns 32 to 47).
+## (u below a half: z below 0.5, the first view's columns 32 to 47). A StandardMaterial3D's UV1
+## scale and offset move where the texture is read (a leaf atlas, a glTF texture transform): scaled
+## by a half, the card reads the opaque half only; offset by a half too, the clear half only.
 func test_a_cards_cover_is_counted_cell_by_cell() -> void:
 	var bounds: AABB = AABB(Vector3.ZERO, Vector3.ONE)
 	var square: PackedVector3Array = [
 		Vector3(0.5, 0.25, 0.25), Vector3(0.5, 0.25, 0.75), Vector3(0.5, 0.75, 0.75), Vector3(0.5, 0.75, 0.25)
 	]
 	var uvs: PackedVector2Array = [Vector2(0, 1), Vector2(1, 1), Vector2(1, 0), Vector2(0, 0)]
-	var left_half: Dictionary = {"size": Vector2i(2, 1), "opaque": PackedByteArray([1, 0])}
-	var cases: Array[Array] = [  # indices, mask, the cells covered in the first view
-		[PackedInt32Array([0, 1, 2, 0, 2, 3]), {}, 32 * 32],
-		[PackedInt32Array([0, 1, 2]), {}, 32 * 33 / 2],
-		[PackedInt32Array([0, 2, 1]), {}, 32 * 33 / 2],
-		[PackedInt32Array([0, 1, 2, 0, 2, 3]), left_half, 16 * 32],
+	var quad: PackedInt32Array = [0, 1, 2, 0, 2, 3]
+	var halves: Image = Image.create(2, 1, false, Image.FORMAT_RGBA8)
+	halves.set_pixel(0, 0, Color(0.2, 0.5, 0.1, 1.0))
+	halves.set_pixel(1, 0, Color(0.2, 0.5, 0.1, 0.0))
+	var cases: Array[Array] = [  # what, indices, mask, the cells covered in the first view
+		["a square", quad, {}, 32 * 32],
+		["a triangle", PackedInt32Array([0, 1, 2]), {}, 32 * 33 / 2],
+		["a triangle wound the other way", PackedInt32Array([0, 2, 1]), {}, 32 * 33 / 2],
+		["a square cut out", quad, {"size": Vector2i(2, 1), "opaque": PackedByteArray([1, 0])}, 16 * 32],
+		["a square reading its texture's left half", quad, PlantCover.cut_out(_cut_by(halves, 0.0)), 32 * 32],
+		["a square reading its texture's right half", quad, PlantCover.cut_out(_cut_by(halves, 0.5)), 0],
 	]
 	for case: Array in cases:
 		var arrays: Array = []
 		arrays.resize(Mesh.ARRAY_MAX)
 		arrays[Mesh.ARRAY_VERTEX] = square
 		arrays[Mesh.ARRAY_TEX_UV] = uvs
-		arrays[Mesh.ARRAY_INDEX] = case[0]
+		arrays[Mesh.ARRAY_INDEX] = case[1]
 		var cover: Dictionary = PlantCover.empty(bounds)
-		PlantCover.draw(cover, arrays, case[1])
+		PlantCover.draw(cover, arrays, case[2])
 		var seen: Array[int] = []
 		for grid: PackedByteArray in cover.grids:
 			seen.append(grid.count(1))
-		var what: String = "%d triangles%s" % [(case[0] as PackedInt32Array).size() / 3, ", cut out" if case[1] else ""]
-		check_eq(seen[0], case[2], "%s: the cells facing it" % what)
-		check_eq(seen.slice(1, 4), [0, 0, 0], "%s: none where it is seen edge-on" % what)
-		check(seen[4] > case[2] / 2 and seen[4] < case[2], "%s: fewer at 45° (%d)" % [what, seen[4]])
-		if case[1]:
+		check_eq(seen[0], case[3], "%s: the cells facing it" % case[0])
+		check_eq(seen.slice(1, 4), [0, 0, 0], "%s: none where it is seen edge-on" % case[0])
+		if case[3] > 0:
+			check(seen[4] > case[3] / 2 and seen[4] < case[3], "%s: fewer at 45° (%d)" % [case[0], seen[4]])
+		if case[3] == 16 * 32:
 			var columns: Vector2i = Vector2i(64, 0)
 			for cell: int in (cover.grids[0] as PackedByteArray).size():
 				if cover.grids[0][cell]:
 					columns = Vector2i(
 						mini(columns.x, cell % cover.sides[0].x), maxi(columns.y, cell % cover.sides[0].x)
 					)
-			check_eq(columns, Vector2i(32, 47), "%s: the cells of its texture's opaque half" % what)
+			check_eq(columns, Vector2i(32, 47), "%s: the cells of its texture's opaque half" % case[0])
+
+
+## A cut-out material of [param texture] read at UV1 scaled by a half across, offset by [param offset].
+func _cut_by(texture: Image, offset: float) -> StandardMaterial3D:
+	var material: StandardMaterial3D = StandardMaterial3D.new()
+	material.transparency = BaseMaterial3D.TRANSPARENCY_ALPHA_SCISSOR
+	material.albedo_texture = ImageTexture.create_from_image(texture)
+	material.uv1_scale = Vector3(0.5, 1.0, 1.0)
+	material.uv1_offset = Vector3(offset, 0.0, 0.0)
+	return material
 
 
 ## Whether every point of [param points] is (about) one of [param others].
