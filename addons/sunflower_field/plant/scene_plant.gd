@@ -31,7 +31,7 @@ const LEAST_CARD_SHARES: Array[float] = [1.0, 0.25, 0.1]
 ## Card triangles above which the kept cards grow to the area of all instead of to the cover measured:
 ## measuring takes time in proportion to the cards (tests/godot/bench/levels_bench.gd, performance.md
 ## table 17: a plant of 20 000 card triangles made in 4.9 s of blades, 9.4 s of broad cut-out cards;
-## of 40 000, 3.8 s unmeasured, 9.7 s and 18.2 s measured).
+## of 40 000, 3.9 s unmeasured, 9.7 s and 18.2 s measured).
 const COVER_CARD_TRIANGLES: int = 20_000
 ## Bisection steps that find how much the kept cards of a level grow (to within 8^(1 / 2^steps)).
 const COVER_STEPS: int = 5
