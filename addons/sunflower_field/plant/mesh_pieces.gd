@@ -19,6 +19,9 @@ const CARD_TRIANGLES: float = 8.0
 const VERTEX_ARRAYS: Array[int] = [
 	Mesh.ARRAY_VERTEX, Mesh.ARRAY_NORMAL, Mesh.ARRAY_TANGENT, Mesh.ARRAY_COLOR, Mesh.ARRAY_TEX_UV, Mesh.ARRAY_TEX_UV2
 ]
+## Pieces whose areas are within a step of 2^(1 / this) of each other are of one size when a
+## surface of branches keeps its biggest ([method biggest]).
+const SIZE_CLASSES_AN_OCTAVE: float = 4.0
 ## A card whose lowest point is within this share of the bounds' height of their bottom stands on it.
 const STANDING_SHARE: float = 0.02
 
@@ -165,11 +168,25 @@ func cards_thinned(share: float, growth: float, bounds: AABB) -> Array:
 
 
 ## The surface with only its biggest pieces (by area) that hold at most [param share] of its
-## triangles — at least the biggest one — as they are: a branch surface without its twigs.
+## triangles — at least the biggest one — as they are: a branch surface without its twigs. Pieces of
+## about one size (within [constant SIZE_CLASSES_AN_OCTAVE]'s step) are kept spread evenly over the
+## plant ([method _spread]), not in the order they were made: a curtain of like twigs thins all round.
 func biggest(share: float) -> Array:
 	var order: Array[int] = []
 	order.assign(range(count))
-	order.sort_custom(func(a: int, b: int) -> bool: return area[a] > area[b] or (area[a] == area[b] and a < b))
+	var size_class: PackedInt32Array = []
+	size_class.resize(count)
+	for piece: int in count:
+		size_class[piece] = floori(log(maxf(area[piece], 1e-12)) / log(2.0) * SIZE_CLASSES_AN_OCTAVE)
+	var rank: PackedInt32Array = []
+	rank.resize(count)
+	var spread: Array[int] = _spread(order)
+	for k: int in spread.size():
+		rank[spread[k]] = k
+	order.sort_custom(
+		func(a: int, b: int) -> bool:
+			return size_class[a] > size_class[b] or (size_class[a] == size_class[b] and rank[a] < rank[b])
+	)
 	var keeps: PackedByteArray = []
 	keeps.resize(count)
 	var kept: int = 0
@@ -245,30 +262,38 @@ func _chosen(kept: int) -> PackedByteArray:
 	return keeps
 
 
-## The cards in the order they are kept: in the order of a curve through space (Morton's, over their
-## centres), ranked by their place's bits reversed — so that any number of the first is spread evenly
-## over the plant, and fewer kept are always among more kept. Found once (every level and every step
+## The cards in the order they are kept ([method _spread]). Found once (every level and every step
 ## of the growth's search keeps a number of the first).
 func _card_order() -> Array[int]:
-	if _order.size() == cards.size():
-		return _order
-	var box: AABB = AABB(centre[cards[0]], Vector3.ZERO)
-	for piece: int in cards:
+	if _order.size() != cards.size():
+		_order = _spread(Array(cards))
+	return _order
+
+
+## [param pieces] in the order of a curve through space (Morton's, over their centres), ranked by
+## their place's bits reversed: any number of the first is spread evenly over the plant, and fewer
+## of the first are always among more.
+func _spread(pieces: Array) -> Array[int]:
+	var out: Array[int] = []
+	if pieces.is_empty():
+		return out
+	var box: AABB = AABB(centre[pieces[0]], Vector3.ZERO)
+	for piece: int in pieces:
 		box = box.expand(centre[piece])
-	var codes: Dictionary = {}  # a card -> its place on the curve, ties in the pieces' order
-	for piece: int in cards:
+	var codes: Dictionary = {}  # a piece -> its place on the curve, ties in the pieces' order
+	for piece: int in pieces:
 		var at: Vector3 = (centre[piece] - box.position) / box.size.max(Vector3.ONE * 1e-9)
 		codes[piece] = _morton(at) * count + piece
 	var along: Array[int] = []
-	along.assign(Array(cards))
+	along.assign(pieces)
 	along.sort_custom(func(a: int, b: int) -> bool: return codes[a] < codes[b])
 	var bits: int = maxi(1, ceili(log(float(along.size())) / log(2.0)))
 	var rank: Dictionary = {}
 	for place: int in along.size():
 		rank[along[place]] = _reversed(place, bits) * along.size() + place
-	_order = along.duplicate()
-	_order.sort_custom(func(a: int, b: int) -> bool: return rank[a] < rank[b])
-	return _order
+	out = along.duplicate()
+	out.sort_custom(func(a: int, b: int) -> bool: return rank[a] < rank[b])
+	return out
 
 
 ## The Morton code of [param at] (each coordinate 0 to 1) on a grid of 1 024 a side.

@@ -126,6 +126,16 @@ static func draw(cover: Dictionary, arrays: Array, mask: Dictionary) -> void:
 		cover.grids[view] = grid
 
 
+## A copy of [param cover] whose grids are drawn into apart from its own.
+static func copied(cover: Dictionary) -> Dictionary:
+	var grids: Array[PackedByteArray] = []
+	for grid: PackedByteArray in cover.grids:
+		grids.append(grid.duplicate())
+	var out: Dictionary = cover.duplicate()
+	out.grids = grids
+	return out
+
+
 ## The cells [param cover] has covered, over its views.
 static func covered(cover: Dictionary) -> int:
 	var total: int = 0
