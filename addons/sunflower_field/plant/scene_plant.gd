@@ -400,6 +400,7 @@ static func _simplified(mesh: ArrayMesh) -> Array:
 			PlantCover.draw(whole, pieces[surface].arrays, masks[surface])
 	importer.generate_lods(NORMAL_MERGE_ANGLE, NORMAL_SPLIT_ANGLE, [])
 	var shares: Array[float] = LEVEL_SHARES if triangles >= SMALL_PLANT else SMALL_PLANT_SHARES
+	var measure_branches: bool = measured and card_triangles < triangles  # the level's cover, its branches'
 	var out: Array = []
 	for level: int in [1, 2]:
 		var branch_share: float = shares[level]
@@ -423,21 +424,25 @@ static func _simplified(mesh: ArrayMesh) -> Array:
 				var pieces_of: MeshPieces = pieces[surface]
 				cards[-1] = pieces_of.cards_thinned(card_share, growth * pieces_of.area_growth(card_share), bounds)
 				cards_kept += (cards[-1][Mesh.ARRAY_INDEX] as PackedInt32Array).size() / 3
-				if measured:
+				if measure_branches:
 					PlantCover.draw(cards_cover, cards[-1], masks[surface])
 		# Branches keep more of their triangles while the level, its branches at their thickest, covers
 		# less than COVER_KEPT of level 1; then they thicken as little as makes it cover that much.
 		var most: float = maxf(shares[level], LEVEL_MOST_SHARES[level]) * triangles
 		var least_cover: float = COVER_KEPT * PlantCover.covered(whole)
 		var thickest: float = BRANCH_THICKENING[level] * bounds.get_longest_axis_size() / PlantCover.CELLS
-		while measured and branch_share < 1.0 and _cover_with(cards_cover, branches, masks, thickest) < least_cover:
+		while (
+			measure_branches
+			and branch_share < 1.0
+			and _cover_with(cards_cover, branches, masks, thickest) < least_cover
+		):
 			branch_share = minf(1.0, branch_share * BRANCH_SHARE_STEP)
 			var more: Array = _branches(importer, pieces, branch_share)
 			if more[-1] + cards_kept > most:
 				break
 			branches = more
 		var thickness: float = 0.0
-		if measured and _cover_with(cards_cover, branches, masks, 0.0) < least_cover:
+		if measure_branches and _cover_with(cards_cover, branches, masks, 0.0) < least_cover:
 			var low: float = 0.0
 			var high: float = thickest
 			for step: int in COVER_STEPS:

@@ -4,13 +4,20 @@ extends SceneTree
 ## thinned and their kept cards grown to the cover measured (plant_cover.gd) up to
 ## [constant ScenePlant.COVER_CARD_TRIANGLES] card triangles. Two kinds of card on a 1 m square:
 ## blades (1 cm wide, 0.3–0.6 m tall, leaning) and broad cards (30 cm wide, cut out by a disc in their
-## texture, the slow case of the cover's rows). Prints the median of [constant RUNS] runs.
+## texture, the slow case of the cover's rows); then the Sapling test plants, and curtains of twigs
+## (the branches' cover measured, [constant ScenePlant.COVER_BRANCH_TRIANGLES], their kept twigs
+## thickened). Prints the median of [constant RUNS] runs.
 
 const ScenePlant: GDScript = preload("res://addons/sunflower_field/plant/scene_plant.gd")
 const Scenes: GDScript = preload("res://runner/scenes.gd")
+const MeshPieces: GDScript = preload("res://addons/sunflower_field/plant/mesh_pieces.gd")
 const RUNS: int = 3
 ## Cards per plant (two triangles each).
 const CARDS: Array[int] = [5_000, 10_000, 20_000]
+## Twigs per curtain (48 triangles each, seven leaf cards beside each).
+const TWIGS: Array[int] = [48, 400, 800]
+## The test plants (test_scene_plant.gd).
+const ScenePlantTests: GDScript = preload("res://cases/test_scene_plant.gd")
 
 
 func _initialize() -> void:
@@ -31,6 +38,29 @@ func _initialize() -> void:
 			times.append("%.1f" % seconds[RUNS / 2])
 		var unmeasured: String = " (unmeasured)" if 2 * cards > ScenePlant.COVER_CARD_TRIANGLES else ""
 		print("| %d | %d | %s%s | %s%s |" % [cards, 2 * cards, times[0], unmeasured, times[1], unmeasured])
+	print("")
+	print("| plant | triangles (leaves / other) | made (s) |")
+	print("|---|---|---|")
+	var plants: Dictionary = {}
+	for file: String in ScenePlantTests.TEST_PLANTS:
+		plants[file.get_basename()] = load(ScenePlantTests.TEST_PLANT_FOLDER.path_join(file))
+	for twigs: int in TWIGS:
+		plants["curtain of %d twigs" % twigs] = Scenes.twig_curtain(twigs)
+	for plant_name: String in plants:
+		var seconds: Array[float] = []
+		var plant: SunflowerPlant = null
+		for run: int in RUNS:
+			var started: int = Time.get_ticks_usec()
+			plant = SunflowerPlant.from_scene(plants[plant_name])
+			seconds.append((Time.get_ticks_usec() - started) / 1e6)
+		seconds.sort()
+		var mesh: ArrayMesh = plant.mesh_level_1[0] if plant else null
+		var leaves: int = 0
+		for surface: int in mesh.get_surface_count() if mesh else 0:
+			var pieces: MeshPieces = MeshPieces.new(mesh.surface_get_arrays(surface))
+			leaves += pieces.piece_of.size() if pieces.are_cards() else 0
+		var triangles: int = ScenePlant.triangle_count(mesh) if mesh else 0
+		print("| %s | %d / %d | %.2f |" % [plant_name, leaves, triangles - leaves, seconds[RUNS / 2]])
 	quit()
 
 

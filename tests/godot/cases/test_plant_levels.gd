@@ -37,7 +37,7 @@ func after_each() -> void:
 ## positions and UVs alone, is drawn without the engine's warning of a mesh without tangents (23 of
 ## them before).
 func test_generated_levels_thin_the_cards_and_keep_the_cover() -> void:
-	var scenes: Dictionary = {"card_bush": _card_bush(), "twig_curtain": _twig_curtain()}
+	var scenes: Dictionary = {"card_bush": _card_bush(), "twig_curtain": Scenes.twig_curtain(48)}
 	for file: String in ScenePlantTests.TEST_PLANTS:
 		scenes[file.get_basename()] = load(ScenePlantTests.TEST_PLANT_FOLDER.path_join(file)) as PackedScene
 	var figures: PackedStringArray = []
@@ -489,76 +489,6 @@ func _card_bush() -> PackedScene:
 	arrays[Mesh.ARRAY_TEX_UV] = uvs
 	arrays[Mesh.ARRAY_INDEX] = indices
 	return _leaves_scene("CardBush", arrays, Scenes.holed_leaves())
-
-
-## A tree whose twigs are most of what it covers, as a weeping willow's: a trunk, 48 drooping twigs
-## round its top (tubes of 8 bends, 2 304 triangles) and seven leaf cards beside each twig, the twigs
-## and the leaves on nodes of their own.
-func _twig_curtain() -> PackedScene:
-	var positions: PackedVector3Array = []
-	var indices: PackedInt32Array = []
-	var tube: Callable = func(spine: PackedVector3Array, radius: float) -> void:
-		for bend: int in spine.size():
-			var along: Vector3 = spine[mini(bend + 1, spine.size() - 1)] - spine[maxi(bend - 1, 0)]
-			var across: Vector3 = along.cross(Vector3.UP if absf(along.normalized().y) < 0.9 else Vector3.RIGHT)
-			across = across.normalized() * radius
-			for side: int in 3:
-				positions.append(spine[bend] + across.rotated(along.normalized(), TAU * side / 3.0))
-		for bend: int in spine.size() - 1:
-			for side: int in 3:
-				var a: int = positions.size() - 3 * spine.size() + 3 * bend + side
-				var b: int = a - side + (side + 1) % 3
-				indices.append_array(PackedInt32Array([a, b + 3, b, a, a + 3, b + 3]))
-	tube.call(PackedVector3Array([Vector3.ZERO, Vector3(0, 3, 0)]), 0.08)
-	var tips: PackedVector3Array = []
-	for twig: int in 48:
-		var out: Vector3 = Vector3.RIGHT.rotated(Vector3.UP, TAU * (twig + 0.37 * (twig % 3)) / 48.0)
-		var spine: PackedVector3Array = []
-		for bend: int in 9:
-			var along: float = bend / 8.0
-			spine.append(
-				(
-					out * (0.1 + 1.2 * sin(along * PI * 0.5))
-					+ Vector3.UP * (3.0 - (2.0 + 0.5 * (twig % 2)) * along * along)
-				)
-			)
-		tube.call(spine, 0.03)
-		tips.append_array(spine.slice(2))
-	var twigs: Array = []
-	twigs.resize(Mesh.ARRAY_MAX)
-	twigs[Mesh.ARRAY_VERTEX] = positions
-	twigs[Mesh.ARRAY_INDEX] = indices
-	var corners: PackedVector3Array = []
-	var leaf_indices: PackedInt32Array = []
-	for leaf: int in tips.size():
-		# Beside its twig, the sides taking turns.
-		var side: Vector3 = Vector3(tips[leaf].z, 0.0, -tips[leaf].x).normalized() * (0.02 if leaf % 2 else -0.02)
-		var near: Vector3 = tips[leaf] + side * 2.0
-		var far: Vector3 = tips[leaf] + side * 10.0
-		var first: int = corners.size()
-		leaf_indices.append_array(PackedInt32Array([first, first + 1, first + 2, first, first + 2, first + 3]))
-		corners.append_array(
-			PackedVector3Array(
-				[near - Vector3.UP * 0.1, far - Vector3.UP * 0.1, far + Vector3.UP * 0.1, near + Vector3.UP * 0.1]
-			)
-		)
-	var leaves: Array = []
-	leaves.resize(Mesh.ARRAY_MAX)
-	leaves[Mesh.ARRAY_VERTEX] = corners
-	leaves[Mesh.ARRAY_INDEX] = leaf_indices
-	var green: StandardMaterial3D = StandardMaterial3D.new()
-	green.albedo_color = Color(0.2, 0.5, 0.1)
-	var scene: Node3D = (_leaves_scene("TwigCurtain", leaves, green) as PackedScene).instantiate()
-	var twig_mesh: ArrayMesh = ArrayMesh.new()
-	twig_mesh.add_surface_from_arrays(Mesh.PRIMITIVE_TRIANGLES, twigs)
-	var bark: StandardMaterial3D = StandardMaterial3D.new()
-	bark.albedo_color = Color(0.35, 0.25, 0.15)
-	var twig_node: MeshInstance3D = MeshInstance3D.new()
-	twig_node.name = "Twigs"
-	twig_node.mesh = twig_mesh
-	twig_node.material_override = bark
-	scene.add_child(twig_node)
-	return Scenes.packed(scene)
 
 
 ## A plant scene [param root_name] of one node, "Leaves", drawing a mesh of [param arrays] with
