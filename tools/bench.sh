@@ -23,7 +23,7 @@
 #      frame time from 40 m outside and 25 m up at 45°, against whole plants near and front-view quads far.
 #  13–14. Placement by rules and play's changes, the core alone; 15. play's changes in the engine.
 #  16. Forests of the Sapling test plants, their levels thinned against every level mesh 1.
-#  17. Making a plant's levels: plants of many foliage cards through SunflowerPlant.from_scene.
+#  17. Making a plant's levels: plants of many foliage cards, the test plants and curtains of twigs through SunflowerPlant.from_scene.
 # Results (JSON per run) go to build/bench/; BENCH_FRAMES and BENCH_RESOLUTION change the runs.
 set -euo pipefail
 repo=$(cd "$(dirname "$0")/.." && pwd)
@@ -129,7 +129,7 @@ timeout 900 xvfb-run -a -s "-screen 0 1280x720x24" "$godot" --rendering-driver v
   --resolution "$resolution" --path "$repo/tests/godot" --script res://bench/forest_bench.gd 2>&1 | grep '^|' ||
   echo "bench: the forest benchmark failed" >&2
 echo
-echo "## 17. Making a plant's levels: plants of many foliage cards through SunflowerPlant.from_scene (headless)"
+echo "## 17. Making a plant's levels: plants of many foliage cards, the test plants and curtains of twigs through SunflowerPlant.from_scene (headless)"
 timeout 900 "$godot" --headless --audio-driver Dummy --path "$repo/tests/godot" --script res://bench/levels_bench.gd 2>&1 | grep '^|' ||
   echo "bench: the levels benchmark failed" >&2
 echo

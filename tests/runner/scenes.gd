@@ -30,6 +30,78 @@ static func holed_leaves() -> StandardMaterial3D:
 	return leaves
 
 
+## A tree whose twigs are most of what it covers, as a weeping willow's: a trunk 3 m tall, [param twigs]
+## drooping twigs round its top (tubes of 8 bends, 48 triangles each) and seven green leaf cards beside
+## each twig, the twigs (brown) and the leaves on nodes of their own.
+static func twig_curtain(twigs: int) -> PackedScene:
+	var positions: PackedVector3Array = []
+	var indices: PackedInt32Array = []
+	var tube: Callable = func(spine: PackedVector3Array, radius: float) -> void:
+		for bend: int in spine.size():
+			var along: Vector3 = spine[mini(bend + 1, spine.size() - 1)] - spine[maxi(bend - 1, 0)]
+			var across: Vector3 = along.cross(Vector3.UP if absf(along.normalized().y) < 0.9 else Vector3.RIGHT)
+			across = across.normalized() * radius
+			for side: int in 3:
+				positions.append(spine[bend] + across.rotated(along.normalized(), TAU * side / 3.0))
+		for bend: int in spine.size() - 1:
+			for side: int in 3:
+				var a: int = positions.size() - 3 * spine.size() + 3 * bend + side
+				var b: int = a - side + (side + 1) % 3
+				indices.append_array(PackedInt32Array([a, b + 3, b, a, a + 3, b + 3]))
+	tube.call(PackedVector3Array([Vector3.ZERO, Vector3(0, 3, 0)]), 0.08)
+	var tips: PackedVector3Array = []
+	for twig: int in twigs:
+		var out: Vector3 = Vector3.RIGHT.rotated(Vector3.UP, TAU * (twig + 0.37 * (twig % 3)) / twigs)
+		var spine: PackedVector3Array = []
+		for bend: int in 9:
+			var along: float = bend / 8.0
+			spine.append(
+				(
+					out * (0.1 + 1.2 * sin(along * PI * 0.5))
+					+ Vector3.UP * (3.0 - (2.0 + 0.5 * (twig % 2)) * along * along)
+				)
+			)
+		tube.call(spine, 0.03)
+		tips.append_array(spine.slice(2))
+	var twig_arrays: Array = []
+	twig_arrays.resize(Mesh.ARRAY_MAX)
+	twig_arrays[Mesh.ARRAY_VERTEX] = positions
+	twig_arrays[Mesh.ARRAY_INDEX] = indices
+	var corners: PackedVector3Array = []
+	var leaf_indices: PackedInt32Array = []
+	for leaf: int in tips.size():
+		# Beside its twig, the sides taking turns.
+		var side: Vector3 = Vector3(tips[leaf].z, 0.0, -tips[leaf].x).normalized() * (0.02 if leaf % 2 else -0.02)
+		var near: Vector3 = tips[leaf] + side * 2.0
+		var far: Vector3 = tips[leaf] + side * 10.0
+		var first: int = corners.size()
+		leaf_indices.append_array(PackedInt32Array([first, first + 1, first + 2, first, first + 2, first + 3]))
+		corners.append_array(
+			PackedVector3Array(
+				[near - Vector3.UP * 0.1, far - Vector3.UP * 0.1, far + Vector3.UP * 0.1, near + Vector3.UP * 0.1]
+			)
+		)
+	var leaves: Array = []
+	leaves.resize(Mesh.ARRAY_MAX)
+	leaves[Mesh.ARRAY_VERTEX] = corners
+	leaves[Mesh.ARRAY_INDEX] = leaf_indices
+	var green: StandardMaterial3D = StandardMaterial3D.new()
+	green.albedo_color = Color(0.2, 0.5, 0.1)
+	var bark: StandardMaterial3D = StandardMaterial3D.new()
+	bark.albedo_color = Color(0.35, 0.25, 0.15)
+	var root: Node3D = Node3D.new()
+	root.name = "TwigCurtain"
+	for part: Array in [["Twigs", twig_arrays, bark], ["Leaves", leaves, green]]:
+		var mesh: ArrayMesh = ArrayMesh.new()
+		mesh.add_surface_from_arrays(Mesh.PRIMITIVE_TRIANGLES, part[1])
+		var node: MeshInstance3D = MeshInstance3D.new()
+		node.name = part[0]
+		node.mesh = mesh
+		node.material_override = part[2]
+		root.add_child(node)
+	return packed(root)
+
+
 ## A ShaderMaterial of a shader of [param code], named [param material_name] (the name the addon's
 ## warnings give a material).
 static func shader_material(code: String, material_name: String = "") -> ShaderMaterial:
