@@ -229,8 +229,14 @@ static func kept_materials(meshes: Array) -> PackedStringArray:
 					% [_named(material), why]
 				)
 			elif material is ShaderMaterial and (material as ShaderMaterial).shader:
-				var unbent: RegExMatch = regex(NOT_BENDING_PATTERN).search((material as ShaderMaterial).shader.code)
-				if unbent and unbent.get_string(1) != "plant_place":
+				var unbent: RegExMatch = null  # the first use the field cannot bend (bending already can)
+				for found: RegExMatch in regex(NOT_BENDING_PATTERN).search_all(
+					(material as ShaderMaterial).shader.code
+				):
+					if found.get_string(1) != "plant_place":
+						unbent = found
+						break
+				if unbent:
 					message = (
 						(
 							"%s: its shader uses %s, so the field cannot bend it as one plant: it draws the plant part"

@@ -479,8 +479,9 @@ func test_a_shader_of_your_own_is_made_to_fade() -> void:
 ## the bend's include after the shader_type and render_mode lines, its call first in vertex() (or a
 ## vertex() of that call when it has none). A shader that reads UV2 (where the merged mesh keeps each
 ## vertex's part), has world-space vertices or bends already, and one that is not spatial, cannot; a
-## part whose own shader cannot bend keeps its plant drawn part by part. The merged mesh's material is
-## the copy with the plant's part lengths and flutter; your material and the fading copy stay.
+## part whose own shader cannot bend keeps its plant drawn part by part, and its warning names what it
+## uses (UV2, also where the shader names plant_place before it). The merged mesh's material is the
+## copy with the plant's part lengths and flutter; your material and the fading copy stay.
 func test_a_shader_of_your_own_is_made_to_bend_when_drawn_whole() -> void:
 	var code: String = "shader_type spatial;\nrender_mode unshaded;\nuniform vec4 tint;\n"
 	code += "void vertex() {\n\tVERTEX.y += 0.0;\n}\nvoid fragment() {\n\tALBEDO = tint.rgb;\n}\n"
@@ -529,6 +530,14 @@ func test_a_shader_of_your_own_is_made_to_bend_when_drawn_whole() -> void:
 	uv2_mesh.surface_set_material(0, uv2_material)
 	plant.mesh_level_1 = [uv2_mesh, null, null]
 	check(not plant.drawn_whole(), "a shader that reads UV2 keeps its plant drawn part by part")
+	var uv2_named: PackedStringArray = PlantMaterialScript.kept_materials([uv2_mesh])
+	check(uv2_named.size() == 1 and uv2_named[0].contains("its shader uses UV2"), "and is named: %s" % [uv2_named])
+	uv2_shader.code = uv2_shader.code.replace("uniform vec4 tint;", "uniform vec4 tint; // plant_place")
+	uv2_named = PlantMaterialScript.kept_materials([uv2_mesh])
+	check(
+		uv2_named.size() == 1 and uv2_named[0].contains("its shader uses UV2"),
+		"named for its UV2 when plant_place comes first: %s" % [uv2_named]
+	)
 
 
 ## Checks that [param made] (a test shader's code, "render_mode unshaded;" then "uniform vec4 tint;")
