@@ -372,7 +372,7 @@ static func _append(merged: Dictionary, arrays: Array, transform: Transform3D) -
 ## [constant COVER_CARD_TRIANGLES], [constant COVER_BRANCH_TRIANGLES]), the kept branches keep more
 ## of their triangles (by [constant BRANCH_SHARE_STEP], up to [constant LEVEL_MOST_SHARES] of the
 ## plant) while even at their thickest ([constant BRANCH_THICKENING]) it would, then thicken as little
-## as makes it cover that much ([method _thickened]).
+## as makes it cover that much ([method thickened]).
 static func _simplified(mesh: ArrayMesh) -> Array:
 	if mesh == null:
 		return [null, null]
@@ -442,7 +442,13 @@ static func _simplified(mesh: ArrayMesh) -> Array:
 				break
 			branches = more
 		var thickness: float = 0.0
-		if measure_branches and _cover_with(cards_cover, branches, masks, 0.0) < least_cover:
+		var thin_cover: int = _cover_with(cards_cover, branches, masks, 0.0) if measure_branches else 0
+		# (Thickening that covers nothing more, as a ribbon's, moves it for nothing: it is left as it is.)
+		if (
+			measure_branches
+			and thin_cover < least_cover
+			and _cover_with(cards_cover, branches, masks, thickest) > thin_cover
+		):
 			var low: float = 0.0
 			var high: float = thickest
 			for step: int in COVER_STEPS:
@@ -454,7 +460,7 @@ static func _simplified(mesh: ArrayMesh) -> Array:
 			thickness = high
 		for surface: int in pieces.size():
 			if cards[surface] == null:
-				branches[surface] = _thickened(branches[surface], thickness)
+				branches[surface] = thickened(branches[surface], thickness)
 		var simpler: ArrayMesh = ArrayMesh.new()
 		var simplified: bool = false
 		for surface: int in importer.get_surface_count():
@@ -472,15 +478,15 @@ static func _cover_with(cards_cover: Dictionary, branches: Array, masks: Array[D
 	var cover: Dictionary = PlantCover.copied(cards_cover)
 	for surface: int in branches.size() - 1:
 		if branches[surface] != null:
-			PlantCover.draw(cover, _thickened(branches[surface], thickness), masks[surface])
+			PlantCover.draw(cover, thickened(branches[surface], thickness), masks[surface])
 	return PlantCover.covered(cover)
 
 
 ## [param arrays] with each vertex moved [param thickness] metres out along the surface's normal
-## where it is (its vertices' normals there summed, or its triangles' where it has none, for the
-## surface to stay closed): a twig of a centimetre thickened by one grows to three, a trunk of half
-## a metre hardly changes.
-static func _thickened(arrays: Array, thickness: float) -> Array:
+## where it is (its vertices' normals there summed, or where it has none its triangles', each by its
+## angle there, for the surface to stay closed): a twig of a centimetre thickened by one grows to
+## three, a trunk of half a metre hardly changes.
+static func thickened(arrays: Array, thickness: float) -> Array:
 	if thickness <= 0.0:
 		return arrays
 	var positions: PackedVector3Array = arrays[Mesh.ARRAY_VERTEX]
@@ -497,7 +503,10 @@ static func _thickened(arrays: Array, thickness: float) -> Array:
 			var normal: Vector3 = (positions[indices[k + 2]] - a).cross(positions[indices[k + 1]] - a).normalized()
 			for corner: int in 3:
 				var at: Vector3 = positions[indices[k + corner]]
-				outward[at] = outward.get(at, Vector3.ZERO) + normal
+				var to_next: Vector3 = positions[indices[k + (corner + 1) % 3]] - at
+				var to_last: Vector3 = positions[indices[k + (corner + 2) % 3]] - at
+				# Weighed by the triangle's angle there: a face counts alike however it is cut.
+				outward[at] = outward.get(at, Vector3.ZERO) + normal * to_next.angle_to(to_last)
 	var moved: PackedVector3Array = positions.duplicate()
 	for vertex: int in positions.size():
 		var normal: Vector3 = outward.get(positions[vertex], Vector3.ZERO)

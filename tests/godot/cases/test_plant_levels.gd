@@ -278,6 +278,48 @@ func test_branches_keep_their_biggest_pieces_spread_round_the_plant() -> void:
 	)
 
 
+## A level's branches thicken outwards (scene_plant.gd): a closed square tube thickened by 1 cm has
+## every vertex 1 cm farther out along its corner's normal, whether the mesh has normals or they are
+## its triangles' (the engine's front faces, wound clockwise); wound the other way round, the same
+## tube's triangles face in, and it thins.
+func test_branches_thicken_outwards() -> void:
+	var positions: PackedVector3Array = []
+	var indices: PackedInt32Array = []
+	for ring: int in 2:
+		for corner: int in 4:
+			var turn: float = TAU * corner / 4.0
+			positions.append(Vector3(cos(turn) * 0.1, ring * 1.0, sin(turn) * 0.1))
+	for side: int in 4:
+		var a: int = side
+		var b: int = (side + 1) % 4
+		indices.append_array(PackedInt32Array([a, b, b + 4, a, b + 4, a + 4]))
+	var arrays: Array = []
+	arrays.resize(Mesh.ARRAY_MAX)
+	arrays[Mesh.ARRAY_VERTEX] = positions
+	arrays[Mesh.ARRAY_INDEX] = indices
+	var out_normals: PackedVector3Array = []
+	for at: Vector3 in positions:
+		out_normals.append(Vector3(at.x, 0.0, at.z).normalized())
+	var with_normals: Array = arrays.duplicate()
+	with_normals[Mesh.ARRAY_NORMAL] = out_normals
+	var inside_out: Array = arrays.duplicate()
+	inside_out[Mesh.ARRAY_INDEX] = PackedInt32Array(Array(indices).map(func(k: int) -> int: return k))
+	for k: int in range(0, indices.size(), 3):
+		inside_out[Mesh.ARRAY_INDEX][k + 1] = indices[k + 2]
+		inside_out[Mesh.ARRAY_INDEX][k + 2] = indices[k + 1]
+	for case: Array in [
+		["normals", with_normals, 0.11], ["its triangles", arrays, 0.11], ["inside out", inside_out, 0.09]
+	]:
+		var thick: PackedVector3Array = ScenePlant.thickened(case[1], 0.01)[Mesh.ARRAY_VERTEX]
+		var reach: Array = Array(thick).map(
+			func(at: Vector3) -> float: return snappedf(Vector2(at.x, at.z).length(), 1e-4)
+		)
+		check(
+			reach.all(func(r: float) -> bool: return is_equal_approx(r, case[2])),
+			"%s: every corner at %.2f m: %s" % [case[0], case[2], reach]
+		)
+
+
 ## Cards standing on the base and spanning most of the plant are sliced so that they bend: each of
 ## their triangles within one slice of the height, the area, the cards and their facing kept; a leaf
 ## off the base, and a short blade, left as they are.
