@@ -2,13 +2,14 @@ extends SceneTree
 ## Generated levels benchmark (numbers, not pass/fail; tools/bench.sh runs it headless): how long
 ## [method SunflowerPlant.from_scene] takes to make a plant of many foliage cards, its levels 2 and 3
 ## thinned and their kept cards grown to the cover measured (plant_cover.gd) up to
-## [constant ScenePlant.COVER_CARD_TRIANGLES] card triangles. Two kinds of card on a 1 m square:
+## [constant PlantLevels.COVER_CARD_TRIANGLES] card triangles. Two kinds of card on a 1 m square:
 ## blades (1 cm wide, 0.3–0.6 m tall, leaning) and broad cards (30 cm wide, cut out by a disc in their
 ## texture, the slow case of the cover's rows); then the Sapling test plants, and curtains of twigs
-## (the branches' cover measured, [constant ScenePlant.COVER_BRANCH_TRIANGLES], their kept twigs
+## (the branches' cover measured, [constant PlantLevels.COVER_BRANCH_TRIANGLES], their kept twigs
 ## thickened). Prints the median of [constant RUNS] runs.
 
 const ScenePlant: GDScript = preload("res://addons/sunflower_field/plant/scene_plant.gd")
+const PlantLevels: GDScript = preload("res://addons/sunflower_field/plant/plant_levels.gd")
 const Scenes: GDScript = preload("res://runner/scenes.gd")
 const MeshPieces: GDScript = preload("res://addons/sunflower_field/plant/mesh_pieces.gd")
 const RUNS: int = 3
@@ -36,7 +37,7 @@ func _initialize() -> void:
 					push_error("levels_bench: no plant made of %d cards" % cards)
 			seconds.sort()
 			times.append("%.1f" % seconds[RUNS / 2])
-		var unmeasured: String = " (unmeasured)" if 2 * cards > ScenePlant.COVER_CARD_TRIANGLES else ""
+		var unmeasured: String = " (unmeasured)" if 2 * cards > PlantLevels.COVER_CARD_TRIANGLES else ""
 		print("| %d | %d | %s%s | %s%s |" % [cards, 2 * cards, times[0], unmeasured, times[1], unmeasured])
 	print("")
 	print("| plant | triangles (leaves / other) | made (s) |")

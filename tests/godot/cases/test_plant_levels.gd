@@ -1,5 +1,5 @@
 extends TestCase
-## A plant's generated mesh levels (scene_plant.gd, mesh_pieces.gd, plant_cover.gd): fewer triangles, the foliage
+## A plant's generated mesh levels (plant_levels.gd, mesh_pieces.gd, plant_cover.gd): fewer triangles, the foliage
 ## cards thinned to fewer and bigger ones, the cover kept where each level begins; tall standing cards
 ## sliced so that they bend (card_slices.gd).
 
@@ -8,6 +8,7 @@ const Stage: GDScript = preload("res://runner/stage.gd")
 const Maps: GDScript = preload("res://runner/maps.gd")
 const Scenes: GDScript = preload("res://runner/scenes.gd")
 const ScenePlant: GDScript = preload("res://addons/sunflower_field/plant/scene_plant.gd")
+const PlantLevels: GDScript = preload("res://addons/sunflower_field/plant/plant_levels.gd")
 const MeshPieces: GDScript = preload("res://addons/sunflower_field/plant/mesh_pieces.gd")
 const CardSlices: GDScript = preload("res://addons/sunflower_field/plant/card_slices.gd")
 const PlantCover: GDScript = preload("res://addons/sunflower_field/plant/plant_cover.gd")
@@ -278,7 +279,7 @@ func test_branches_keep_their_biggest_pieces_spread_round_the_plant() -> void:
 	)
 
 
-## A level's branches thicken outwards (scene_plant.gd): a closed square tube thickened by 1 cm has
+## A level's branches thicken outwards (plant_levels.gd): a closed square tube thickened by 1 cm has
 ## every vertex 1 cm farther out along its corner's normal, whether the mesh has normals or they are
 ## its triangles' (the engine's front faces, wound clockwise); wound the other way round, the same
 ## tube's triangles face in, and it thins.
@@ -310,7 +311,7 @@ func test_branches_thicken_outwards() -> void:
 	for case: Array in [
 		["normals", with_normals, 0.11], ["its triangles", arrays, 0.11], ["inside out", inside_out, 0.09]
 	]:
-		var thick: PackedVector3Array = ScenePlant.thickened(case[1], 0.01)[Mesh.ARRAY_VERTEX]
+		var thick: PackedVector3Array = PlantLevels.thickened(case[1], 0.01)[Mesh.ARRAY_VERTEX]
 		var reach: Array = Array(thick).map(
 			func(at: Vector3) -> float: return snappedf(Vector2(at.x, at.z).length(), 1e-4)
 		)
@@ -378,7 +379,7 @@ func test_tall_standing_cards_are_sliced_and_stay_whole() -> void:
 	)
 
 
-## A plant of more cards than the cover is measured for (ScenePlant.COVER_CARD_TRIANGLES) still
+## A plant of more cards than the cover is measured for (PlantLevels.COVER_CARD_TRIANGLES) still
 ## thins, its kept cards grown to the area of all, as that limit says (measured, they would grow to
 ## the cover: 0.95 of the area for 3 900 such cards).
 func test_a_plant_of_many_cards_keeps_their_area() -> void:
@@ -386,7 +387,7 @@ func test_a_plant_of_many_cards_keeps_their_area() -> void:
 	random.seed = 60
 	var positions: PackedVector3Array = []
 	var indices: PackedInt32Array = []
-	var cards: int = ScenePlant.COVER_CARD_TRIANGLES / 2 + 100  # just over the limit
+	var cards: int = PlantLevels.COVER_CARD_TRIANGLES / 2 + 100  # just over the limit
 	for card: int in cards:
 		var centre: Vector3 = Vector3(
 			random.randf_range(-1.5, 1.5), random.randf_range(0.5, 3.5), random.randf_range(-1.5, 1.5)
@@ -418,7 +419,7 @@ func test_a_plant_of_many_cards_keeps_their_area() -> void:
 	for level: int in [2, 3]:
 		var thinned: Array = (plant.get("mesh_level_%d" % level)[0] as ArrayMesh).surface_get_arrays(0)
 		var share: float = (thinned[Mesh.ARRAY_INDEX] as PackedInt32Array).size() / 6.0 / cards
-		check_near(share, ScenePlant.LEVEL_SHARES[level - 1], 0.01, "mesh %d keeps its share of the cards" % level)
+		check_near(share, PlantLevels.LEVEL_SHARES[level - 1], 0.01, "mesh %d keeps its share of the cards" % level)
 		check_near(_area_of(thinned) / all_area, 1.0, 0.03, "mesh %d: the area of all the cards" % level)
 
 
