@@ -63,10 +63,7 @@ static func twig_curtain(twigs: int) -> PackedScene:
 			)
 		tube.call(spine, 0.03)
 		tips.append_array(spine.slice(2))
-	var twig_arrays: Array = []
-	twig_arrays.resize(Mesh.ARRAY_MAX)
-	twig_arrays[Mesh.ARRAY_VERTEX] = positions
-	twig_arrays[Mesh.ARRAY_INDEX] = indices
+	var twig_arrays: Array = surface_arrays(positions, indices)
 	var corners: PackedVector3Array = []
 	var leaf_indices: PackedInt32Array = []
 	for leaf: int in tips.size():
@@ -81,10 +78,7 @@ static func twig_curtain(twigs: int) -> PackedScene:
 				[near - Vector3.UP * 0.1, far - Vector3.UP * 0.1, far + Vector3.UP * 0.1, near + Vector3.UP * 0.1]
 			)
 		)
-	var leaves: Array = []
-	leaves.resize(Mesh.ARRAY_MAX)
-	leaves[Mesh.ARRAY_VERTEX] = corners
-	leaves[Mesh.ARRAY_INDEX] = leaf_indices
+	var leaves: Array = surface_arrays(corners, leaf_indices)
 	var green: StandardMaterial3D = StandardMaterial3D.new()
 	green.albedo_color = Color(0.2, 0.5, 0.1)
 	var bark: StandardMaterial3D = StandardMaterial3D.new()
@@ -100,6 +94,15 @@ static func twig_curtain(twigs: int) -> PackedScene:
 		node.material_override = part[2]
 		root.add_child(node)
 	return packed(root)
+
+
+## A surface's arrays of [param positions] and [param indices] alone.
+static func surface_arrays(positions: PackedVector3Array, indices: PackedInt32Array) -> Array:
+	var arrays: Array = []
+	arrays.resize(Mesh.ARRAY_MAX)
+	arrays[Mesh.ARRAY_VERTEX] = positions
+	arrays[Mesh.ARRAY_INDEX] = indices
+	return arrays
 
 
 ## A ShaderMaterial of a shader of [param code], named [param material_name] (the name the addon's

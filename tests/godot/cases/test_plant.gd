@@ -532,8 +532,14 @@ func test_a_shader_of_your_own_is_made_to_bend_when_drawn_whole() -> void:
 	check(not plant.drawn_whole(), "a shader that reads UV2 keeps its plant drawn part by part")
 	var uv2_named: PackedStringArray = PlantMaterialScript.kept_materials([uv2_mesh])
 	check(uv2_named.size() == 1 and uv2_named[0].contains("its shader uses UV2"), "and is named: %s" % [uv2_named])
-	uv2_shader.code = uv2_shader.code.replace("uniform vec4 tint;", "uniform vec4 tint; // plant_place")
-	uv2_named = PlantMaterialScript.kept_materials([uv2_mesh])
+	# (A shader of its own: changing a drawn shader's code frees its pipelines off the render thread.)
+	var named_first: Shader = Shader.new()
+	named_first.code = uv2_shader.code.replace("uniform vec4 tint;", "uniform vec4 tint; // plant_place")
+	var named_first_mesh: ArrayMesh = mesh.duplicate()
+	var named_first_material: ShaderMaterial = ShaderMaterial.new()
+	named_first_material.shader = named_first
+	named_first_mesh.surface_set_material(0, named_first_material)
+	uv2_named = PlantMaterialScript.kept_materials([named_first_mesh])
 	check(
 		uv2_named.size() == 1 and uv2_named[0].contains("its shader uses UV2"),
 		"named for its UV2 when plant_place comes first: %s" % [uv2_named]

@@ -214,10 +214,7 @@ func test_leaves_touching_at_a_point_are_cards_of_their_own() -> void:
 					positions.append(stalk)
 				var at_stalk: int = stalk_vertex if shared else first + 3
 				indices.append_array(PackedInt32Array([at_stalk, first, first + 1, at_stalk, first + 1, first + 2]))
-		var arrays: Array = []
-		arrays.resize(Mesh.ARRAY_MAX)
-		arrays[Mesh.ARRAY_VERTEX] = positions
-		arrays[Mesh.ARRAY_INDEX] = indices
+		var arrays: Array = Scenes.surface_arrays(positions, indices)
 		var what: String = "one shared vertex at the stalk" if shared else "corners at one place"
 		var leaves: MeshPieces = MeshPieces.new(arrays)
 		check_eq(leaves.count, 200, "%s: a card a leaf" % what)
@@ -254,10 +251,7 @@ func test_branches_keep_their_biggest_pieces_spread_round_the_plant() -> void:
 	for twig: int in 56:
 		var out: Vector3 = Vector3.RIGHT.rotated(Vector3.UP, TAU * (twig / 8.0 if twig < 8 else (twig + 0.5) / 48.0))
 		strip.call(Vector3(0, 2.5, 0) + out * 0.1, Vector3(0, 2.5, 0) + out * (1.1 if twig < 8 else 0.6), 0.02)
-	var arrays: Array = []
-	arrays.resize(Mesh.ARRAY_MAX)
-	arrays[Mesh.ARRAY_VERTEX] = positions
-	arrays[Mesh.ARRAY_INDEX] = indices
+	var arrays: Array = Scenes.surface_arrays(positions, indices)
 	var pieces: MeshPieces = MeshPieces.new(arrays)
 	check_eq(pieces.count, 57, "a trunk and 56 twigs")
 	var kept: MeshPieces = MeshPieces.new(pieces.biggest(0.4))
@@ -294,10 +288,7 @@ func test_branches_thicken_outwards() -> void:
 		var a: int = side
 		var b: int = (side + 1) % 4
 		indices.append_array(PackedInt32Array([a, b, b + 4, a, b + 4, a + 4]))
-	var arrays: Array = []
-	arrays.resize(Mesh.ARRAY_MAX)
-	arrays[Mesh.ARRAY_VERTEX] = positions
-	arrays[Mesh.ARRAY_INDEX] = indices
+	var arrays: Array = Scenes.surface_arrays(positions, indices)
 	var out_normals: PackedVector3Array = []
 	for at: Vector3 in positions:
 		out_normals.append(Vector3(at.x, 0.0, at.z).normalized())
@@ -336,10 +327,7 @@ func test_tall_standing_cards_are_sliced_and_stay_whole() -> void:
 		var first: int = positions.size()
 		positions.append_array(card)
 		indices.append_array(PackedInt32Array([first, first + 1, first + 2, first, first + 2, first + 3]))
-	var arrays: Array = []
-	arrays.resize(Mesh.ARRAY_MAX)
-	arrays[Mesh.ARRAY_VERTEX] = positions
-	arrays[Mesh.ARRAY_INDEX] = indices
+	var arrays: Array = Scenes.surface_arrays(positions, indices)
 	var uvs: PackedVector2Array = []
 	for vertex: Vector3 in positions:
 		uvs.append(Vector2(vertex.x, vertex.y))
@@ -405,10 +393,7 @@ func test_a_plant_of_many_cards_keeps_their_area() -> void:
 			)
 		)
 		indices.append_array(PackedInt32Array([first, first + 1, first + 2, first, first + 2, first + 3]))
-	var arrays: Array = []
-	arrays.resize(Mesh.ARRAY_MAX)
-	arrays[Mesh.ARRAY_VERTEX] = positions
-	arrays[Mesh.ARRAY_INDEX] = indices
+	var arrays: Array = Scenes.surface_arrays(positions, indices)
 	var scene: PackedScene = _leaves_scene("Crown", arrays, null)
 	var started: int = Time.get_ticks_msec()
 	var plant: SunflowerPlant = SunflowerPlant.from_scene(scene)
@@ -449,11 +434,8 @@ func test_a_cards_cover_is_counted_cell_by_cell() -> void:
 		["a square reading its texture's right half", quad, PlantCover.cut_out(_cut_by(halves, 0.5)), 0],
 	]
 	for case: Array in cases:
-		var arrays: Array = []
-		arrays.resize(Mesh.ARRAY_MAX)
-		arrays[Mesh.ARRAY_VERTEX] = square
+		var arrays: Array = Scenes.surface_arrays(square, case[1] as PackedInt32Array)
 		arrays[Mesh.ARRAY_TEX_UV] = uvs
-		arrays[Mesh.ARRAY_INDEX] = case[1]
 		var cover: Dictionary = PlantCover.empty(bounds)
 		PlantCover.draw(cover, arrays, case[2])
 		var seen: Array[int] = []
@@ -526,11 +508,8 @@ func _card_bush() -> PackedScene:
 			positions.append_array(PackedVector3Array([foot - side, foot + side, tip + side, tip - side]))
 			uvs.append_array(PackedVector2Array([Vector2(0, 1), Vector2(1, 1), Vector2(1, 0), Vector2(0, 0)]))
 			indices.append_array(PackedInt32Array([first, first + 1, first + 2, first, first + 2, first + 3]))
-	var arrays: Array = []
-	arrays.resize(Mesh.ARRAY_MAX)
-	arrays[Mesh.ARRAY_VERTEX] = positions
+	var arrays: Array = Scenes.surface_arrays(positions, indices)
 	arrays[Mesh.ARRAY_TEX_UV] = uvs
-	arrays[Mesh.ARRAY_INDEX] = indices
 	return _leaves_scene("CardBush", arrays, Scenes.holed_leaves())
 
 
