@@ -24,8 +24,8 @@ const AREA_KEPT: float = 0.8
 const LEAST_CARD_SHARES: Array[float] = [1.0, 0.25, 0.1]
 ## Card triangles above which the kept cards grow to the area of all instead of to the cover measured:
 ## measuring takes time in proportion to the cards (tests/godot/bench/levels_bench.gd, performance.md
-## table 17: a plant of 20 000 card triangles made in 4.9 s of blades, 9.4 s of broad cut-out cards;
-## of 40 000, 3.9 s unmeasured, 9.7 s and 18.2 s measured).
+## table 17: a plant of 20 000 card triangles made in 5.2 s of blades, 9.9 s of broad cut-out cards;
+## of 40 000, 4.3 s unmeasured; measured, with this limit raised by hand, 9.7 s and 18.2 s).
 const COVER_CARD_TRIANGLES: int = 20_000
 ## Triangles of other surfaces (trunks, branches, twigs) above which a generated level's cover is not
 ## measured, its branches kept at [constant LEVEL_SHARES] as they come.
