@@ -17,16 +17,17 @@ const VIEWS: Array[Vector3] = [
 ]
 
 
-## Empty grids over [param bounds], one per view: [code]{"bounds", "cell", "axes": [Basis] (a view's
+## Empty grids over [param bounds], one per view of [param views] ([constant VIEWS], or some of
+## them: a big plant's cover is measured in one): [code]{"bounds", "cell", "axes": [Basis] (a view's
 ## grid's x and y directions, and its origin's offset in the basis' z), "corners": [Vector2],
 ## "sides": [Vector2i], "grids": [PackedByteArray]}[/code].
-static func empty(bounds: AABB) -> Dictionary:
+static func empty(bounds: AABB, views: Array[Vector3] = VIEWS) -> Dictionary:
 	var cell: float = maxf(bounds.get_longest_axis_size(), 1e-6) / CELLS
 	var axes: Array[Basis] = []
 	var corners: Array[Vector2] = []
 	var sides: Array[Vector2i] = []
 	var grids: Array[PackedByteArray] = []
-	for view: Vector3 in VIEWS:
+	for view: Vector3 in views:
 		var across: Vector3 = (Vector3.UP if absf(view.y) < 0.9 else Vector3.BACK).cross(view).normalized()
 		var up: Vector3 = view.cross(across)
 		var low: Vector2 = Vector2(INF, INF)
@@ -62,7 +63,7 @@ static func draw(cover: Dictionary, arrays: Array, mask: Dictionary) -> void:
 	var across_x: Array[float] = [0.0, 0.0, 0.0]  # per edge of a triangle: its x at y = 0, its dx/dy
 	var across_slope: Array[float] = [0.0, 0.0, 0.0]
 	var bounding: Array[int] = [0, 0, 0]
-	for view: int in VIEWS.size():
+	for view: int in (cover.axes as Array).size():
 		var axes: Basis = cover.axes[view]
 		var corner: Vector2 = cover.corners[view]
 		var side: Vector2i = cover.sides[view]

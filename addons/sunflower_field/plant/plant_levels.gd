@@ -22,14 +22,18 @@ const AREA_KEPT: float = 0.8
 ## makes the level [constant LEVEL_SHARES] of the whole, but no fewer than this share of them (a tree
 ## whose trunk the simplifier cannot thin keeps this much of its crown).
 const LEAST_CARD_SHARES: Array[float] = [1.0, 0.25, 0.1]
-## Card triangles above which the kept cards grow to the area of all instead of to the cover measured:
-## measuring takes time in proportion to the cards (tests/godot/bench/levels_bench.gd, performance.md
-## table 17: a plant of 20 000 card triangles made in 5.2 s of blades, 9.9 s of broad cut-out cards;
-## of 40 000, 4.3 s unmeasured; measured, with this limit raised by hand, 9.7 s and 18.2 s).
+## Card triangles above which a plant's cover is measured in one view, not five: measuring takes time
+## in proportion to the triangles and views (tests/godot/bench/levels_bench.gd, performance.md table
+## 17: a plant of 20 000 card triangles made in 5.2 s of blades, 9.9 s of broad cut-out cards).
 const COVER_CARD_TRIANGLES: int = 20_000
-## Triangles of other surfaces (trunks, branches, twigs) above which a generated level's cover is not
-## measured, its branches kept at [constant LEVEL_SHARES] as they come.
+## Triangles of other surfaces (trunks, branches, twigs) above which a plant's cover is measured in
+## one view, not five.
 const COVER_BRANCH_TRIANGLES: int = 40_000
+## Triangles up to which a plant over [constant COVER_CARD_TRIANGLES] or
+## [constant COVER_BRANCH_TRIANGLES] has its cover measured in one view, 45° above (a Sapling pine of
+## 153 178 triangles made in 3.4 s, 1.9 s unmeasured); above it, the kept cards grow to the area of
+## all the cards and the branches are kept as they are simplified.
+const COVER_ONE_VIEW_TRIANGLES: int = 200_000
 ## The least share of level 1's cover (the whole plant's, [code]plant_cover.gd[/code]) a generated
 ## level keeps where the cover is measured: where its simplified branches lose more (a twiggy tree,
 ## whose twigs are most of what it covers: a Sapling weeping willow's mesh 3 covered 0.63 of mesh 1),
@@ -58,17 +62,17 @@ const PlantCover: GDScript = preload("plant_cover.gd")
 ## Levels 2 and 3 of [param mesh], a plant's merged level 1 ([code]mesh_pieces.gd[/code]): each
 ## surface of foliage cards keeps what makes the level [constant LEVEL_SHARES] of the whole mesh
 ## ([constant SMALL_PLANT_SHARES] for a small plant; at least [constant LEAST_CARD_SHARES] of its
-## cards), grown until they cover what level 1's cards cover ([code]plant_cover.gd[/code]; to the
-## area of all when there are more than [constant COVER_CARD_TRIANGLES] card triangles: not to the
+## cards), grown until they cover what level 1's cards cover ([code]plant_cover.gd[/code]; not to the
 ## cover of all, which made up for the twigs the level dropped with leaves, a twiggy tree's far
 ## levels greener); any other surface is simplified to about [constant LEVEL_SHARES] of its
 ## triangles, by the engine's simplifier where that keeps [constant AREA_KEPT] of its area, else by
 ## dropping its smallest pieces (twigs, like ones spread round the plant), whichever keeps more
-## area; where the level would cover less than [constant COVER_KEPT] of level 1 (where the cover is
-## measured: [constant COVER_CARD_TRIANGLES], [constant COVER_BRANCH_TRIANGLES]), the kept branches
+## area; where the level would cover less than [constant COVER_KEPT] of level 1, the kept branches
 ## keep more of their triangles (by [constant BRANCH_SHARE_STEP], up to [constant LEVEL_MOST_SHARES]
 ## of the plant) while even at their thickest ([constant BRANCH_THICKENING]) it would, then thicken
-## as little as makes it cover that much ([method thickened]).
+## as little as makes it cover that much ([method thickened]). The cover is measured in five views,
+## or in one above [constant COVER_CARD_TRIANGLES] or [constant COVER_BRANCH_TRIANGLES]; above
+## [constant COVER_ONE_VIEW_TRIANGLES] it is not: the kept cards grow to the area of all.
 static func generated(mesh: ArrayMesh) -> Array:
 	if mesh == null:
 		return [null, null]
@@ -84,10 +88,14 @@ static func generated(mesh: ArrayMesh) -> Array:
 	var triangles: int = 0
 	for surface_pieces: MeshPieces in pieces:
 		triangles += surface_pieces.piece_of.size()
-	# The cover is measured where the plant is small enough for it to take a moment.
-	var measured: bool = card_triangles <= COVER_CARD_TRIANGLES and triangles - card_triangles <= COVER_BRANCH_TRIANGLES
+	# The cover is measured where it takes a moment: in five views, or in one (45° above).
+	var all_views: bool = (
+		card_triangles <= COVER_CARD_TRIANGLES and triangles - card_triangles <= COVER_BRANCH_TRIANGLES
+	)
+	var measured: bool = all_views or triangles <= COVER_ONE_VIEW_TRIANGLES
+	var views: Array[Vector3] = PlantCover.VIEWS if all_views else ([PlantCover.VIEWS[3]] as Array[Vector3])
 	var masks: Array[Dictionary] = []  # per surface: where its texture is cut out
-	var leaves: Dictionary = PlantCover.empty(bounds)  # what level 1's cards cover
+	var leaves: Dictionary = PlantCover.empty(bounds, views)  # what level 1's cards cover
 	for surface: int in mesh.get_surface_count() if measured else 0:
 		masks.append(PlantCover.cut_out(mesh.surface_get_material(surface)))
 		if pieces[surface].are_cards():
@@ -109,13 +117,13 @@ static func generated(mesh: ArrayMesh) -> Array:
 			else 1.0
 		)
 		var growth: float = (
-			_cover_growth(pieces, masks, card_share, bounds, PlantCover.covered(leaves))
+			_cover_growth(pieces, masks, card_share, bounds, PlantCover.covered(leaves), views)
 			if measured and card_triangles > 0
 			else 1.0
 		)
 		var cards: Array = []  # per surface: its thinned cards, or null for a branch
 		var cards_kept: int = 0
-		var cards_cover: Dictionary = PlantCover.empty(bounds)
+		var cards_cover: Dictionary = PlantCover.empty(bounds, views)
 		for surface: int in pieces.size():
 			cards.append(null)
 			if pieces[surface].are_cards():
@@ -265,13 +273,13 @@ static func _simpler_surface(importer: ImporterMesh, surface: int, pieces: MeshP
 ## level to cover [param target] cells, each surface cut out by its [param masks]: found by bisection
 ## between a quarter and twice (less than once where the cards overlap less once fewer).
 static func _cover_growth(
-	pieces: Array[MeshPieces], masks: Array[Dictionary], share: float, bounds: AABB, target: int
+	pieces: Array[MeshPieces], masks: Array[Dictionary], share: float, bounds: AABB, target: int, views: Array[Vector3]
 ) -> float:
 	var low: float = 0.25
 	var high: float = 2.0
 	for step: int in COVER_STEPS:
 		var middle: float = sqrt(low * high)
-		var cover: Dictionary = PlantCover.empty(bounds)
+		var cover: Dictionary = PlantCover.empty(bounds, views)
 		for surface: int in pieces.size():
 			if pieces[surface].are_cards():
 				var thin: Array = pieces[surface].cards_thinned(

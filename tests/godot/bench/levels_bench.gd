@@ -1,8 +1,8 @@
 extends SceneTree
 ## Generated levels benchmark (numbers, not pass/fail; tools/bench.sh runs it headless): how long
 ## [method SunflowerPlant.from_scene] takes to make a plant of many foliage cards, its levels 2 and 3
-## thinned and their kept cards grown to the cover measured (plant_cover.gd) up to
-## [constant PlantLevels.COVER_CARD_TRIANGLES] card triangles. Two kinds of card on a 1 m square:
+## thinned and their kept cards grown to the cover measured (plant_cover.gd: in five views up to
+## [constant PlantLevels.COVER_CARD_TRIANGLES] card triangles, in one above). Two kinds of card on a 1 m square:
 ## blades (1 cm wide, 0.3–0.6 m tall, leaning) and broad cards (30 cm wide, cut out by a disc in their
 ## texture, the slow case of the cover's rows); then the Sapling test plants, and curtains of twigs
 ## (the branches' cover measured, [constant PlantLevels.COVER_BRANCH_TRIANGLES], their kept twigs
@@ -37,8 +37,12 @@ func _initialize() -> void:
 					push_error("levels_bench: no plant made of %d cards" % cards)
 			seconds.sort()
 			times.append("%.1f" % seconds[RUNS / 2])
-		var unmeasured: String = " (unmeasured)" if 2 * cards > PlantLevels.COVER_CARD_TRIANGLES else ""
-		print("| %d | %d | %s%s | %s%s |" % [cards, 2 * cards, times[0], unmeasured, times[1], unmeasured])
+		var how: String = ""  # how the cover is measured: in five views, one, or not at all
+		if 2 * cards > PlantLevels.COVER_ONE_VIEW_TRIANGLES:
+			how = " (unmeasured)"
+		elif 2 * cards > PlantLevels.COVER_CARD_TRIANGLES:
+			how = " (one view)"
+		print("| %d | %d | %s%s | %s%s |" % [cards, 2 * cards, times[0], how, times[1], how])
 	print("")
 	print("| plant | triangles (leaves / other) | made (s) |")
 	print("|---|---|---|")

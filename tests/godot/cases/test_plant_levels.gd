@@ -367,10 +367,12 @@ func test_tall_standing_cards_are_sliced_and_stay_whole() -> void:
 	)
 
 
-## A plant of more cards than the cover is measured for (PlantLevels.COVER_CARD_TRIANGLES) still
-## thins, its kept cards grown to the area of all, as that limit says (measured, they would grow to
-## the cover: 0.95 of the area for 3 900 such cards).
-func test_a_plant_of_many_cards_keeps_their_area() -> void:
+## A plant of more cards than the cover is measured for in five views (PlantLevels.COVER_CARD_TRIANGLES)
+## still thins, its kept cards grown to the cover measured in one view, 45° above (up to
+## PlantLevels.COVER_ONE_VIEW_TRIANGLES): about 0.95 of the area of all the cards, as for 3 900 such
+## cards measured in five views (grown to the area of all, as they were before, a Sapling pine's mesh
+## 3 showed 1.15 times mesh 1's leaf green; measured in one view, 1.06).
+func test_a_plant_of_many_cards_keeps_their_cover() -> void:
 	var random: RandomNumberGenerator = RandomNumberGenerator.new()
 	random.seed = 60
 	var positions: PackedVector3Array = []
@@ -405,7 +407,8 @@ func test_a_plant_of_many_cards_keeps_their_area() -> void:
 		var thinned: Array = (plant.get("mesh_level_%d" % level)[0] as ArrayMesh).surface_get_arrays(0)
 		var share: float = (thinned[Mesh.ARRAY_INDEX] as PackedInt32Array).size() / 6.0 / cards
 		check_near(share, PlantLevels.LEVEL_SHARES[level - 1], 0.01, "mesh %d keeps its share of the cards" % level)
-		check_near(_area_of(thinned) / all_area, 1.0, 0.03, "mesh %d: the area of all the cards" % level)
+		var area: float = _area_of(thinned) / all_area
+		check(area > 0.9 and area < 0.98, "mesh %d: grown to the cover, under the area of all (%.3f)" % [level, area])
 
 
 ## What a card covers is counted cell by cell (plant_cover.gd): in a 1 m cube's grids of 64 cells a
