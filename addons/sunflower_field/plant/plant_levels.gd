@@ -24,7 +24,7 @@ const AREA_KEPT: float = 0.8
 const LEAST_CARD_SHARES: Array[float] = [1.0, 0.25, 0.1]
 ## Card triangles above which a plant's cover is measured in one view, not five: measuring takes time
 ## in proportion to the triangles and views (tests/godot/bench/levels_bench.gd, performance.md table
-## 17: a plant of 20 000 card triangles made in 5.2 s of blades, 9.9 s of broad cut-out cards).
+## 17: a plant of 20 000 card triangles made in 5.1 s of blades, 9.2 s of broad cut-out cards).
 const COVER_CARD_TRIANGLES: int = 20_000
 ## Triangles of other surfaces (trunks, branches, twigs) above which a plant's cover is measured in
 ## one view, not five.
