@@ -40,6 +40,7 @@ var lowest: PackedFloat32Array = []
 ## The pieces that are cards.
 var cards: PackedInt32Array = []
 var _order: Array[int] = []  # the cards in the order they are kept (_card_order)
+var _biggest: Array[int] = []  # the pieces in the order biggest() keeps them (_biggest_order)
 
 
 func _init(surface_arrays: Array) -> void:
@@ -172,31 +173,39 @@ func cards_thinned(share: float, growth: float, bounds: AABB) -> Array:
 ## about one size (within [constant SIZE_CLASSES_AN_OCTAVE]'s step) are kept spread evenly over the
 ## plant ([method _spread]), not in the order they were made: a curtain of like twigs thins all round.
 func biggest(share: float) -> Array:
-	var order: Array[int] = []
-	order.assign(range(count))
-	var size_class: PackedInt32Array = []
-	size_class.resize(count)
-	for piece: int in count:
-		size_class[piece] = floori(log(maxf(area[piece], 1e-12)) / log(2.0) * SIZE_CLASSES_AN_OCTAVE)
-	var rank: PackedInt32Array = []
-	rank.resize(count)
-	var spread: Array[int] = _spread(order)
-	for k: int in spread.size():
-		rank[spread[k]] = k
-	order.sort_custom(
-		func(a: int, b: int) -> bool:
-			return size_class[a] > size_class[b] or (size_class[a] == size_class[b] and rank[a] < rank[b])
-	)
 	var keeps: PackedByteArray = []
 	keeps.resize(count)
 	var kept: int = 0
-	for piece: int in order:
+	for piece: int in _biggest_order():
 		if kept > 0 and kept + triangles[piece] > share * piece_of.size():
 			break
 		keeps[piece] = 1
 		kept += triangles[piece]
 	var picked: Dictionary = _picked_triangles(keeps)
 	return _arrays_of(picked.used, picked.indices)
+
+
+## The pieces in the order [method biggest] keeps them: by size class, bigger first, and in each
+## class in [method _spread]'s order. Found once (each level and each step of a level's share keeps
+## a number of the first).
+func _biggest_order() -> Array[int]:
+	if _biggest.size() == count:
+		return _biggest
+	var size_class: PackedInt32Array = []
+	size_class.resize(count)
+	for piece: int in count:
+		size_class[piece] = floori(log(maxf(area[piece], 1e-12)) / log(2.0) * SIZE_CLASSES_AN_OCTAVE)
+	_biggest.assign(range(count))
+	var rank: PackedInt32Array = []
+	rank.resize(count)
+	var spread: Array[int] = _spread(_biggest)
+	for k: int in spread.size():
+		rank[spread[k]] = k
+	_biggest.sort_custom(
+		func(a: int, b: int) -> bool:
+			return size_class[a] > size_class[b] or (size_class[a] == size_class[b] and rank[a] < rank[b])
+	)
+	return _biggest
 
 
 ## The kept pieces' triangles re-indexed over the vertices they use: [code]{"indices", "used" (the

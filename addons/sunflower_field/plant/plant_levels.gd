@@ -80,14 +80,13 @@ static func generated(mesh: ArrayMesh) -> Array:
 	var importer: ImporterMesh = ImporterMesh.new()
 	var pieces: Array[MeshPieces] = []
 	var card_triangles: int = 0
+	var triangles: int = 0
 	for surface: int in mesh.get_surface_count():
 		var arrays: Array = mesh.surface_get_arrays(surface)
 		importer.add_surface(Mesh.PRIMITIVE_TRIANGLES, arrays, [], {}, mesh.surface_get_material(surface))
 		pieces.append(MeshPieces.new(arrays))
 		card_triangles += pieces[-1].piece_of.size() if pieces[-1].are_cards() else 0
-	var triangles: int = 0
-	for surface_pieces: MeshPieces in pieces:
-		triangles += surface_pieces.piece_of.size()
+		triangles += pieces[-1].piece_of.size()
 	# The cover is measured where it takes a moment: in five views, or in one (45° above).
 	var all_views: bool = (
 		card_triangles <= COVER_CARD_TRIANGLES and triangles - card_triangles <= COVER_BRANCH_TRIANGLES
@@ -137,24 +136,18 @@ static func generated(mesh: ArrayMesh) -> Array:
 		var most: float = maxf(shares[level], LEVEL_MOST_SHARES[level]) * triangles
 		var least_cover: float = COVER_KEPT * PlantCover.covered(whole)
 		var thickest: float = BRANCH_THICKENING[level] * bounds.get_longest_axis_size() / PlantCover.CELLS
-		while (
-			measure_branches
-			and branch_share < 1.0
-			and _cover_with(cards_cover, branches, masks, thickest) < least_cover
-		):
+		var thickest_cover: int = _cover_with(cards_cover, branches, masks, thickest) if measure_branches else 0
+		while measure_branches and branch_share < 1.0 and thickest_cover < least_cover:
 			branch_share = minf(1.0, branch_share * BRANCH_SHARE_STEP)
 			var more: Array = _branches(importer, pieces, branch_share)
 			if more[-1] + cards_kept > most:
 				break
 			branches = more
+			thickest_cover = _cover_with(cards_cover, branches, masks, thickest)
 		var thickness: float = 0.0
 		var thin_cover: int = _cover_with(cards_cover, branches, masks, 0.0) if measure_branches else 0
 		# (Thickening that covers nothing more, as a ribbon's, moves it for nothing: it is left as it is.)
-		if (
-			measure_branches
-			and thin_cover < least_cover
-			and _cover_with(cards_cover, branches, masks, thickest) > thin_cover
-		):
+		if measure_branches and thin_cover < least_cover and thickest_cover > thin_cover:
 			var low: float = 0.0
 			var high: float = thickest
 			for step: int in COVER_STEPS:
